@@ -1,0 +1,26 @@
+# SPDX-License-Identifier: MIT
+# Every third-party dependency comes from a Debian package (scripts/install-deps.sh).
+find_package(Eigen3 3.4 REQUIRED NO_MODULE)
+find_package(OpenMP REQUIRED COMPONENTS CXX)
+find_package(fmt REQUIRED)
+find_package(spdlog REQUIRED)
+find_package(tomlplusplus REQUIRED)
+find_package(CLI11 REQUIRED)
+find_package(nlohmann_json 3.10 REQUIRED)
+
+# SuiteSparse (UMFPACK and its ordering libraries) has no CMake config in Debian 12.
+find_path(UMFPACK_INCLUDE_DIR umfpack.h PATH_SUFFIXES suitesparse REQUIRED)
+find_library(UMFPACK_LIBRARY umfpack REQUIRED)
+find_library(AMD_LIBRARY amd REQUIRED)
+find_library(SUITESPARSECONFIG_LIBRARY suitesparseconfig REQUIRED)
+add_library(trifem_umfpack INTERFACE)
+target_include_directories(trifem_umfpack SYSTEM INTERFACE ${UMFPACK_INCLUDE_DIR})
+target_link_libraries(trifem_umfpack INTERFACE ${UMFPACK_LIBRARY} ${AMD_LIBRARY}
+                      ${SUITESPARSECONFIG_LIBRARY})
+
+if(TRIFEM_BUILD_TESTS)
+  find_package(GTest REQUIRED)
+endif()
+if(TRIFEM_BUILD_BENCHMARKS)
+  find_package(benchmark REQUIRED)
+endif()

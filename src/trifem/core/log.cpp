@@ -1,0 +1,27 @@
+// SPDX-License-Identifier: MIT
+#include "trifem/core/log.hpp"
+
+#include <spdlog/sinks/basic_file_sink.h>
+#include <spdlog/sinks/stdout_color_sinks.h>
+
+namespace trifem::log {
+
+void configure(Level level) {
+  auto logger = spdlog::stdout_color_mt("trifem");
+  logger->set_pattern("%v");
+  switch (level) {
+  case Level::Quiet: logger->set_level(spdlog::level::warn); break;
+  case Level::Normal: logger->set_level(spdlog::level::info); break;
+  case Level::Verbose: logger->set_level(spdlog::level::debug); break;
+  }
+  spdlog::set_default_logger(logger);
+}
+
+void add_file(const std::string& path) {
+  auto sink = std::make_shared<spdlog::sinks::basic_file_sink_mt>(path, true);
+  sink->set_pattern("%v");
+  sink->set_level(spdlog::level::debug);
+  spdlog::default_logger()->sinks().push_back(sink);
+}
+
+} // namespace trifem::log

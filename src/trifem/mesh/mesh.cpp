@@ -1,0 +1,189 @@
+// SPDX-License-Identifier: MIT
+#include "trifem/mesh/mesh.hpp"
+
+#include "trifem/core/error.hpp"
+#include "trifem/mesh/hex_faces.hpp"
+
+#include <algorithm>
+#include <fmt/ranges.h>
+#include <unordered_map>
+
+namespace trifem::mesh {
+namespace {
+
+template <class Map>
+std::string available_names(const Map& map) {
+  std::vector<std::string> names;
+  for (const auto& [name, _] : map)
+    names.push_back(name);
+  return names.empty() ? std::string("(none)") : fmt::format("{}", fmt::join(names, ", "));
+}
+
+template <class Map, class Value>
+void insert_unique(Map& map, const std::string& kind, const std::string& name, Value value) {
+  TRIFEM_CHECK(!name.empty(), "a {} needs a non-empty name", kind);
+  TRIFEM_CHECK(!map.contains(name), "{} '{}' is defined twice", kind, name);
+  map.emplace(name, std::move(value));
+}
+
+template <class Map>
+const auto& find_named(const Map& map, const std::string& kind, const std::string& name) {
+  const auto it = map.find(name);
+  TRIFEM_CHECK(it != map.end(), "undefined {} '{}' (available: {})", kind, name,
+               available_names(map));
+  return it->second;
+}
+
+/// Key of a face independent of node order: the sorted node indices.
+using FaceKey = std::array<Index, 4>;
+FaceKey face_key(std::array<Index, 4> nodes) {
+  std::sort(nodes.begin(), nodes.end());
+  return nodes;
+}
+struct FaceKeyHash {
+  std::size_t operator()(const FaceKey& k) const {
+    std::size_t h = 0;
+    for (Index v : k)
+      h = h * 1000003u ^ static_cast<std::size_t>(v);
+    return h;
+  }
+};
+
+Facet make_facet(const Mesh& mesh, Index cell, int face) {
+  Facet f;
+  f.cell = cell;
+  f.local_face = face;
+  for (int i = 0; i < 4; ++i)
+    f.nodes[i] = mesh.cell(cell)[kHexFaces[face][i]];
+  return f;
+}
+
+} // namespace
+
+Index Mesh::add_node(const Vec3& x) {
+  nodes_.push_back(x);
+  return static_cast<Index>(nodes_.size()) - 1;
+}
+
+Index Mesh::add_cell(const Hex8& nodes) {
+  for (Index n : nodes)
+    TRIFEM_CHECK(n >= 0 && n < num_nodes(), "cell {} refers to node {} but the mesh has {} nodes",
+                 num_cells(), n, num_nodes());
+  cells_.push_back(nodes);
+  return static_cast<Index>(cells_.size()) - 1;
+}
+
+void Mesh::add_node_set(const std::string& name, std::vector<Index> nodes) {
+  std::sort(nodes.begin(), nodes.end());
+  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+  TRIFEM_CHECK(nodes.empty() || (nodes.front() >= 0 && nodes.back() < num_nodes()),
+               "node set '{}' refers to a node outside 0..{}", name, num_nodes() - 1);
+  insert_unique(node_sets_, "node set", name, std::move(nodes));
+}
+
+void Mesh::add_surface(const std::string& name, Surface surface) {
+  std::vector<Index> nodes = surface_nodes(surface);
+  insert_unique(surfaces_, "surface", name, std::move(surface));
+  add_node_set(name, std::move(nodes));
+}
+
+void Mesh::add_cell_block(const std::string& name, std::vector<Index> cells) {
+  for (Index c : cells)
+    TRIFEM_CHECK(c >= 0 && c < num_cells(), "cell block '{}' refers to cell {} outside 0..{}",
+                 name, c, num_cells() - 1);
+  insert_unique(cell_blocks_, "cell block", name, std::move(cells));
+}
+
+const std::vector<Index>& Mesh::node_set(const std::string& name) const {
+  return find_named(node_sets_, "node set", name);
+}
+const Surface& Mesh::surface(const std::string& name) const {
+  return find_named(surfaces_, "surface", name);
+}
+const std::vector<Index>& Mesh::cell_block(const std::string& name) const {
+  return find_named(cell_blocks_, "cell block", name);
+}
+
+void Mesh::append(const Mesh& other) {
+  const Index node_offset = num_nodes();
+  const Index cell_offset = num_cells();
+  nodes_.insert(nodes_.end(), other.nodes_.begin(), other.nodes_.end());
+  for (Hex8 c : other.cells_) {
+    for (Index& n : c)
+      n += node_offset;
+    cells_.push_back(c);
+  }
+  for (const auto& [name, nodes] : other.node_sets_) {
+    if (other.surfaces_.contains(name))
+      continue; // re-created with the surface below
+    std::vector<Index> shifted = nodes;
+    for (Index& n : shifted)
+      n += node_offset;
+    add_node_set(name, std::move(shifted));
+  }
+  for (const auto& [name, surface] : other.surfaces_) {
+    Surface shifted = surface;
+    for (Facet& f : shifted.facets) {
+      f.cell += cell_offset;
+      for (Index& n : f.nodes)
+        n += node_offset;
+    }
+    add_surface(name, std::move(shifted));
+  }
+  for (const auto& [name, cells] : other.cell_blocks_) {
+    std::vector<Index> shifted = cells;
+    for (Index& c : shifted)
+      c += cell_offset;
+    add_cell_block(name, std::move(shifted));
+  }
+}
+
+std::vector<Facet> Mesh::find_facets(const std::vector<std::array<Index, 4>>& quads) const {
+  std::unordered_map<FaceKey, Facet, FaceKeyHash> faces;
+  for (Index c = 0; c < num_cells(); ++c) {
+    for (int f = 0; f < 6; ++f) {
+      Facet facet = make_facet(*this, c, f);
+      faces.try_emplace(face_key(facet.nodes), facet);
+    }
+  }
+  std::vector<Facet> found;
+  found.reserve(quads.size());
+  for (const auto& quad : quads) {
+    const auto it = faces.find(face_key(quad));
+    TRIFEM_CHECK(it != faces.end(), "quad ({}) is not a face of any hex8 cell",
+                 fmt::join(quad, ", "));
+    found.push_back(it->second);
+  }
+  return found;
+}
+
+std::vector<Facet> Mesh::boundary_facets() const {
+  std::unordered_map<FaceKey, std::pair<Facet, int>, FaceKeyHash> faces;
+  for (Index c = 0; c < num_cells(); ++c) {
+    for (int f = 0; f < 6; ++f) {
+      Facet facet = make_facet(*this, c, f);
+      auto [it, inserted] = faces.try_emplace(face_key(facet.nodes), facet, 0);
+      ++it->second.second;
+    }
+  }
+  std::vector<Facet> boundary;
+  for (const auto& [key, entry] : faces)
+    if (entry.second == 1)
+      boundary.push_back(entry.first);
+  std::sort(boundary.begin(), boundary.end(), [](const Facet& a, const Facet& b) {
+    return a.cell != b.cell ? a.cell < b.cell : a.local_face < b.local_face;
+  });
+  return boundary;
+}
+
+std::vector<Index> surface_nodes(const Surface& surface) {
+  std::vector<Index> nodes;
+  nodes.reserve(surface.facets.size() * 4);
+  for (const Facet& f : surface.facets)
+    nodes.insert(nodes.end(), f.nodes.begin(), f.nodes.end());
+  std::sort(nodes.begin(), nodes.end());
+  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+  return nodes;
+}
+
+} // namespace trifem::mesh

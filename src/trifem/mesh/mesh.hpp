@@ -1,0 +1,89 @@
+// SPDX-License-Identifier: MIT
+// Unstructured hex8 mesh with named node sets, surfaces and cell blocks.
+// The mesh knows geometry and topology only: no DOFs, no fields.
+#pragma once
+
+#include "trifem/core/types.hpp"
+#include "trifem/tensor/tensor.hpp"
+
+#include <array>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace trifem::mesh {
+
+/// Hex8 connectivity (VTK/Gmsh order, see hex_faces.hpp).
+using Hex8 = std::array<Index, 8>;
+
+/// A quad4 boundary facet. `nodes` are ordered so that the right-hand rule gives the normal
+/// pointing out of `cell`; `local_face` indexes kHexFaces.
+struct Facet {
+  std::array<Index, 4> nodes{};
+  Index cell = -1;
+  int local_face = -1;
+};
+
+/// A named surface: a list of oriented facets.
+struct Surface {
+  std::vector<Facet> facets;
+};
+
+/// Hex8 mesh with named sets. Names are unique per kind.
+class Mesh {
+public:
+  /// Appends a node at reference position x; returns its index.
+  Index add_node(const Vec3& x);
+  /// Appends a hex8 cell; returns its index. Nodes must exist.
+  Index add_cell(const Hex8& nodes);
+
+  Index num_nodes() const { return static_cast<Index>(nodes_.size()); }
+  Index num_cells() const { return static_cast<Index>(cells_.size()); }
+  const Vec3& node(Index i) const { return nodes_[i]; }
+  const Hex8& cell(Index c) const { return cells_[c]; }
+  const std::vector<Vec3>& nodes() const { return nodes_; }
+  const std::vector<Hex8>& cells() const { return cells_; }
+
+  /// Registers a named node set (sorted, duplicates removed). Throws InputError on a name clash.
+  void add_node_set(const std::string& name, std::vector<Index> nodes);
+  /// Registers a named surface and, under the same name, the node set of its nodes.
+  void add_surface(const std::string& name, Surface surface);
+  /// Registers a named cell block.
+  void add_cell_block(const std::string& name, std::vector<Index> cells);
+
+  bool has_node_set(const std::string& name) const { return node_sets_.contains(name); }
+  bool has_surface(const std::string& name) const { return surfaces_.contains(name); }
+  bool has_cell_block(const std::string& name) const { return cell_blocks_.contains(name); }
+
+  /// Named lookups; throw InputError naming the missing set and listing the available ones.
+  const std::vector<Index>& node_set(const std::string& name) const;
+  const Surface& surface(const std::string& name) const;
+  const std::vector<Index>& cell_block(const std::string& name) const;
+
+  const std::map<std::string, std::vector<Index>>& node_sets() const { return node_sets_; }
+  const std::map<std::string, Surface>& surfaces() const { return surfaces_; }
+  const std::map<std::string, std::vector<Index>>& cell_blocks() const { return cell_blocks_; }
+
+  /// Appends another mesh (nodes and cells renumbered; names kept, clashes are errors).
+  /// Nodes are not merged: separate bodies stay separate (contact later joins them).
+  void append(const Mesh& other);
+
+  /// For each quad (four node indices, any order), the outward-oriented facet of the cell face
+  /// with exactly these nodes. Throws InputError naming the first quad that is no cell face.
+  std::vector<Facet> find_facets(const std::vector<std::array<Index, 4>>& quads) const;
+
+  /// Facets of all cell faces that belong to exactly one cell (the mesh boundary).
+  std::vector<Facet> boundary_facets() const;
+
+private:
+  std::vector<Vec3> nodes_;
+  std::vector<Hex8> cells_;
+  std::map<std::string, std::vector<Index>> node_sets_;
+  std::map<std::string, Surface> surfaces_;
+  std::map<std::string, std::vector<Index>> cell_blocks_;
+};
+
+/// Sorted, unique node indices of a surface.
+std::vector<Index> surface_nodes(const Surface& surface);
+
+} // namespace trifem::mesh

@@ -1,1 +1,64 @@
-int main() { return 0; }
+// SPDX-License-Identifier: MIT
+// trifem command-line interface: run, check, --version.
+#include "run.hpp"
+#include "trifem/core/error.hpp"
+#include "trifem/core/log.hpp"
+#include "trifem/io/case_reader.hpp"
+
+#include <CLI/CLI.hpp>
+#include <iostream>
+
+using namespace trifem;
+
+namespace {
+
+/// Runs `action`, mapping exceptions to exit codes with one clear message.
+template <class F>
+int guarded(F&& action) {
+  try {
+    return action();
+  } catch (const InputError& e) {
+    std::cerr << "error: " << e.what() << '\n';
+    return app::kInvalidInput;
+  } catch (const std::exception& e) {
+    std::cerr << "internal error: " << e.what() << '\n';
+    return app::kInternalError;
+  }
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+  CLI::App cli{"trifem: finite elements for charged-hydrated soft tissues"};
+  cli.set_version_flag("--version", std::string("trifem ") + TRIFEM_VERSION);
+  cli.require_subcommand(1);
+  bool quiet = false, verbose = false;
+  cli.add_flag("-q,--quiet", quiet, "only warnings and errors");
+  cli.add_flag("-v,--verbose", verbose, "also Newton iterations");
+
+  std::string case_file, output_dir;
+  auto* run = cli.add_subcommand("run", "run an analysis");
+  run->add_option("case", case_file, "case file (.toml)")->required();
+  run->add_option("-o,--output", output_dir, "output directory (default: results/<case name>)");
+  auto* check = cli.add_subcommand("check", "validate a case without solving");
+  check->add_option("case", case_file, "case file (.toml)")->required();
+
+  try {
+    cli.parse(argc, argv);
+  } catch (const CLI::Success& e) {
+    return cli.exit(e);
+  } catch (const CLI::ParseError& e) {
+    cli.exit(e);
+    return app::kUsage;
+  }
+  log::configure(quiet ? log::Level::Quiet : verbose ? log::Level::Verbose : log::Level::Normal);
+  return guarded([&] {
+    const io::CaseSpec spec = io::read_case(case_file);
+    if (check->parsed())
+      return app::check_case(spec);
+    const std::filesystem::path out =
+        output_dir.empty() ? std::filesystem::path("results") / spec.file.stem()
+                           : std::filesystem::path(output_dir);
+    return app::run_case(spec, out);
+  });
+}

@@ -35,7 +35,9 @@ bool Range::contains(Real v) const {
 }
 
 std::string Range::describe() const {
-  return fmt::format("{}{}, {}{}", lo_open ? "(" : "[", bound(lo), bound(hi), hi_open ? ")" : "]");
+  const bool lo_inf = lo <= -1e300, hi_inf = hi >= 1e300;
+  return fmt::format("{}{}, {}{}", lo_open || lo_inf ? "(" : "[", bound(lo), bound(hi),
+                     hi_open || hi_inf ? ")" : "]");
 }
 
 ParameterValues validate_parameters(const std::vector<ParameterSchema>& schema,

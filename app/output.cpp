@@ -1,0 +1,115 @@
+// SPDX-License-Identifier: MIT
+#include "output.hpp"
+
+#include "trifem/core/error.hpp"
+#include "trifem/core/log.hpp"
+#include "trifem/io/vtu_writer.hpp"
+
+#include <chrono>
+#include <cmath>
+
+namespace trifem::app {
+namespace {
+
+std::vector<std::string> history_columns(const Model& model) {
+  std::vector<std::string> cols = {"time [s]", "step", "dt [s]", "iterations"};
+  for (const auto& r : model.reactions)
+    for (const char* c : {"Rx", "Ry", "Rz"})
+      cols.push_back(fmt::format("{}.{} [N]", r.name, c));
+  for (const auto& p : model.probes)
+    for (const char* c : {"x", "y", "z"})
+      cols.push_back(fmt::format("{}.{}{} [mm]", p.name, p.quantity == "position" ? "" : "u", c));
+  return cols;
+}
+
+io::UnstructuredGrid volume_grid(const Model& model) {
+  io::UnstructuredGrid grid;
+  grid.points = model.mesh.nodes();
+  for (const auto& cell : model.mesh.cells())
+    grid.add_cell(io::vtk_cell::kHexahedron, cell);
+  return grid;
+}
+
+} // namespace
+
+OutputWriter::OutputWriter(const Model& model, const io::OutputSpec& spec,
+                           std::filesystem::path directory)
+    : model_(model), spec_(spec), directory_(std::move(directory)) {
+  std::error_code ec;
+  std::filesystem::create_directories(directory_, ec);
+  TRIFEM_CHECK(!ec, "cannot create the output directory {}: {}", directory_.string(),
+               ec.message());
+  pvd_ = std::make_unique<io::PvdWriter>(directory_ / "results.pvd");
+  history_ = std::make_unique<io::CsvWriter>(history_file(), history_columns(model));
+}
+
+bool OutputWriter::is_output_time(Real time) const {
+  for (Real t : spec_.times)
+    if (std::abs(t - time) <= 1e-10 * std::max(1.0, std::abs(t)))
+      return true;
+  if (spec_.interval <= 0.0)
+    return true;
+  const Real k = time / spec_.interval;
+  return std::abs(k - std::round(k)) <= 1e-8;
+}
+
+std::vector<double> OutputWriter::history_row(Real time, int step, Real dt, int iterations) const {
+  const Vector& x = model_.problem->state();
+  const Vector& R = model_.problem->full_residual();
+  std::vector<double> row = {time, double(step), dt, double(iterations)};
+  for (const auto& r : model_.reactions)
+    for (int k = 0; k < 3; ++k) {
+      double sum = 0.0;
+      for (Index d : r.dofs[k])
+        sum += R[d];
+      row.push_back(sum);
+    }
+  for (const auto& p : model_.probes)
+    for (int k = 0; k < 3; ++k) {
+      const Real u = x[model_.dofs.dof(model_.displacement, p.node, k)];
+      row.push_back(p.quantity == "position" ? model_.mesh.node(p.node)[k] + u : u);
+    }
+  return row;
+}
+
+void OutputWriter::write_vtu(Real time) {
+  io::UnstructuredGrid grid = volume_grid(model_);
+  const Vector& x = model_.problem->state();
+  const Vector& R = model_.problem->full_residual();
+  const Index n = model_.mesh.num_nodes();
+  io::DataArray u{"displacement [mm]", 3, std::vector<double>(3 * n)};
+  io::DataArray reaction{"reaction_forces [N]", 3, std::vector<double>(3 * n, 0.0)};
+  for (Index a = 0; a < n; ++a)
+    for (int k = 0; k < 3; ++k) {
+      const Index d = model_.dofs.dof(model_.displacement, a, k);
+      u.values[3 * a + k] = x[d];
+      if (model_.dofs.is_constrained(d))
+        reaction.values[3 * a + k] = R[d];
+    }
+  const Index cells = model_.solid->num_elements();
+  io::DataArray stress{"stress [MPa]", 6, std::vector<double>(6 * cells)};
+  io::DataArray volume{"relative_volume", 1, std::vector<double>(cells)};
+  for (Index e = 0; e < cells; ++e) {
+    const physics::CellStress s = model_.solid->stress(e, x);
+    const Vec6 v = voigt::stress(s.cauchy);
+    std::copy(v.data(), v.data() + 6, stress.values.begin() + 6 * e);
+    volume.values[e] = s.J;
+  }
+  grid.point_data = {std::move(u), std::move(reaction)};
+  grid.cell_data = {std::move(stress), std::move(volume)};
+  const auto file = directory_ / fmt::format("volume_{:04d}.vtu", vtu_count_++);
+  if (const auto bad = io::write_vtu(file, grid); bad > 0)
+    log::warn("  {} non-finite values written to {}", bad, file.string());
+  pvd_->add(time, file);
+}
+
+void OutputWriter::write(Real time, int step, Real dt, int iterations, bool volume) {
+  const auto start = std::chrono::steady_clock::now();
+  const auto row = history_row(time, step, dt, iterations);
+  history_->write_row(row);
+  if (volume && spec_.vtu)
+    write_vtu(time);
+  seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+} // namespace trifem::app

@@ -1,0 +1,45 @@
+// SPDX-License-Identifier: MIT
+// Result files of a run: VTU series + .pvd, history.csv, summary.json.
+#pragma once
+
+#include "model.hpp"
+#include "trifem/io/csv_writer.hpp"
+#include "trifem/io/pvd_writer.hpp"
+#include "trifem/solver/time_loop.hpp"
+
+#include <filesystem>
+#include <memory>
+
+namespace trifem::app {
+
+/// Writes results as the run advances; everything written stays valid if the run stops.
+class OutputWriter {
+public:
+  /// Creates `directory` (InputError if impossible) and the history file.
+  OutputWriter(const Model& model, const io::OutputSpec& spec, std::filesystem::path directory);
+
+  /// Writes the state at `time`: a history row always, a VTU file if `volume` is set.
+  void write(Real time, int step, Real dt, int iterations, bool volume);
+  /// True if `time` is an output time (interval multiple or listed time).
+  bool is_output_time(Real time) const;
+
+  const std::filesystem::path& directory() const { return directory_; }
+  std::filesystem::path pvd_file() const { return pvd_->file(); }
+  std::filesystem::path history_file() const { return directory_ / "history.csv"; }
+  int vtu_count() const { return vtu_count_; }
+  double seconds() const { return seconds_; }
+
+private:
+  void write_vtu(Real time);
+  std::vector<double> history_row(Real time, int step, Real dt, int iterations) const;
+
+  const Model& model_;
+  io::OutputSpec spec_;
+  std::filesystem::path directory_;
+  std::unique_ptr<io::PvdWriter> pvd_;
+  std::unique_ptr<io::CsvWriter> history_;
+  int vtu_count_ = 0;
+  double seconds_ = 0.0;
+};
+
+} // namespace trifem::app

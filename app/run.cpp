@@ -1,0 +1,136 @@
+// SPDX-License-Identifier: MIT
+#include "run.hpp"
+
+#include "model.hpp"
+#include "output.hpp"
+#include "trifem/core/error.hpp"
+#include "trifem/core/log.hpp"
+#include "trifem/linalg/linear_solver.hpp"
+
+#include <chrono>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <omp.h>
+
+namespace trifem::app {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+solver::StepSettings step_settings(const io::CaseSpec& spec) {
+  const io::TimeSpec& t = spec.time;
+  solver::StepSettings s;
+  s.end_time = t.end_time;
+  s.dt = t.dt;
+  s.dt_min = t.dt_min > 0 ? t.dt_min : t.dt * 1e-6;
+  s.dt_max = t.dt_max > 0 ? t.dt_max : t.dt;
+  s.growth = t.growth;
+  s.cutback = t.cutback;
+  s.target_iterations = t.target_iterations;
+  s.must_points = spec.output.times;
+  if (spec.output.interval > 0)
+    for (Real time = spec.output.interval; time < t.end_time; time += spec.output.interval)
+      s.must_points.push_back(time);
+  for (const auto& [name, curve] : spec.curves)
+    for (const auto& p : curve.points)
+      if (p.first > 0 && p.first < t.end_time)
+        s.must_points.push_back(p.first);
+  return s;
+}
+
+solver::NewtonSettings newton_settings(const io::SolverSpec& s) {
+  solver::NewtonSettings n;
+  n.max_iterations = s.max_iterations;
+  n.residual_tolerance = s.residual_tolerance;
+  n.increment_tolerance = s.increment_tolerance;
+  n.line_search = s.line_search;
+  return n;
+}
+
+void log_model(const io::CaseSpec& spec, const Model& model) {
+  log::info("trifem {}  case {}", TRIFEM_VERSION, spec.file.string());
+  if (!spec.title.empty())
+    log::info("  {}", spec.title);
+  log::info("  mesh: {} nodes, {} hex8 cells; {} equations, {} prescribed DOFs; {} threads",
+            model.mesh.num_nodes(), model.mesh.num_cells(), model.dofs.num_equations(),
+            model.dofs.num_constrained(), omp_get_max_threads());
+  log::info("  scales: length {:.4g} mm, modulus {:.4g} MPa", model.length_scale,
+            model.modulus_scale);
+}
+
+void write_summary(const std::filesystem::path& file, const io::CaseSpec& spec,
+                   const Model& model, const solver::RunReport& run,
+                   const solver::PhaseTimes& phases, double output_s, double wall_s) {
+  nlohmann::json j;
+  j["trifem_version"] = TRIFEM_VERSION;
+  j["case"] = spec.file.string();
+  j["status"] = run.success ? "completed" : "failed";
+  j["failure"] = run.failure;
+  j["end_time_s"] = run.end_time;
+  j["steps"] = run.steps;
+  j["newton_iterations"] = run.iterations;
+  j["cutbacks"] = run.cutbacks;
+  j["failed_attempts"] = run.failed_attempts;
+  j["mesh"] = {{"nodes", model.mesh.num_nodes()}, {"cells", model.mesh.num_cells()}};
+  j["dofs"] = {{"equations", model.dofs.num_equations()},
+               {"prescribed", model.dofs.num_constrained()}};
+  j["threads"] = omp_get_max_threads();
+  j["wall_time_s"] = {{"total", wall_s},
+                      {"assembly", phases.assembly},
+                      {"factorization", phases.factorization},
+                      {"solve", phases.solve},
+                      {"output", output_s}};
+  std::ofstream out(file);
+  out << j.dump(2) << '\n';
+}
+
+} // namespace
+
+int run_case(const io::CaseSpec& spec, const std::filesystem::path& output_dir) {
+  const auto start = Clock::now();
+  std::unique_ptr<Model> model = build_model(spec);
+  log_model(spec, *model);
+  OutputWriter output(*model, spec.output, output_dir);
+  log::add_file((output_dir / "run.log").string());
+
+  solver::NewtonSolver newton(newton_settings(spec.solver),
+                              linalg::make_linear_solver(spec.solver.linear_solver));
+  solver::StepController controller(step_settings(spec));
+  solver::Linearization initial;
+  model->problem->linearize(initial, false); // reactions of the initial state
+  output.write(0.0, 0, 0.0, 0, true);
+
+  auto observer = [&](const solver::StepInfo& info) {
+    log::info("step {:4d}  t = {:<10.5g} dt = {:<9.3g} iterations {:2d}  residual {:.2e}",
+              info.step, info.time, info.dt, info.newton->iterations,
+              info.newton->final_residual);
+    output.write(info.time, info.step, info.dt, info.newton->iterations,
+                 output.is_output_time(info.time) || controller.finished());
+  };
+  const solver::RunReport run =
+      solver::run_time_loop(*model->problem, newton, controller, observer);
+  const double wall = std::chrono::duration<double>(Clock::now() - start).count();
+  write_summary(output_dir / "summary.json", spec, *model, run, newton.times(), output.seconds(),
+                wall);
+  log::info("{}: {} steps, {} Newton iterations, {} cutbacks, {:.2f} s (assembly {:.2f}, "
+            "factorization {:.2f}, solve {:.2f}, output {:.2f})",
+            run.success ? "completed" : "FAILED", run.steps, run.iterations, run.cutbacks, wall,
+            newton.times().assembly, newton.times().factorization, newton.times().solve,
+            output.seconds());
+  log::info("results: {} ({} VTU files), {}, {}", output.pvd_file().string(), output.vtu_count(),
+            output.history_file().string(), (output_dir / "summary.json").string());
+  if (!run.success) {
+    log::error("error: {}", run.failure);
+    return kAnalysisFailed;
+  }
+  return kSuccess;
+}
+
+int check_case(const io::CaseSpec& spec) {
+  std::unique_ptr<Model> model = build_model(spec);
+  log_model(spec, *model);
+  log::info("check passed: the case is valid");
+  return kSuccess;
+}
+
+} // namespace trifem::app

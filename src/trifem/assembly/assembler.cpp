@@ -1,0 +1,104 @@
+// SPDX-License-Identifier: MIT
+#include "trifem/assembly/fe_problem.hpp"
+
+#include "trifem/core/error.hpp"
+
+#include <algorithm>
+
+namespace trifem::assembly {
+namespace {
+
+/// Adds value at (row, col) of a compressed column-major matrix whose pattern contains it.
+inline void add_entry(SparseMatrix& A, Index row, Index col, Real value) {
+  const Index* begin = A.innerIndexPtr() + A.outerIndexPtr()[col];
+  const Index* end = A.innerIndexPtr() + A.outerIndexPtr()[col + 1];
+  const Index* it = std::lower_bound(begin, end, row);
+  TRIFEM_ASSERT(it != end && *it == row, "entry ({}, {}) is not in the pattern", row, col);
+  A.valuePtr()[it - A.innerIndexPtr()] += value;
+}
+
+/// Thread-private buffers of one element evaluation.
+struct Scratch {
+  physics::LocalVector r;
+  physics::LocalMatrix K;
+  std::vector<Index> rows;
+};
+
+void scatter(const dofs::DofMap& map, std::span<const Index> dofs, Scratch& s,
+             AssembledSystem& out, bool with_jacobian) {
+  const Index n = static_cast<Index>(dofs.size());
+  for (Index i = 0; i < n; ++i)
+    out.residual[dofs[i]] += s.r[i];
+  if (!with_jacobian)
+    return;
+  s.rows.resize(n);
+  for (Index i = 0; i < n; ++i)
+    s.rows[i] = map.equation(dofs[i]);
+  for (Index j = 0; j < n; ++j) {
+    const Index eq = map.equation(dofs[j]);
+    SparseMatrix& A = eq >= 0 ? out.Kff : out.Kfc;
+    const Index col = eq >= 0 ? eq : map.constrained_index(dofs[j]);
+    for (Index i = 0; i < n; ++i)
+      if (s.rows[i] >= 0 && s.K(i, j) != 0.0)
+        add_entry(A, s.rows[i], col, s.K(i, j));
+  }
+}
+
+} // namespace
+
+Assembler::Assembler(const dofs::DofMap& map, std::vector<const physics::Term*> terms)
+    : map_(map), terms_(std::move(terms)) {
+  TRIFEM_VERIFY(map.finalized(), "the DOF map must be finalized before assembly");
+  stencils_.reserve(terms_.size());
+  for (const physics::Term* t : terms_) {
+    stencils_.push_back(collect_stencils(*t));
+    colours_.push_back(colour_elements(stencils_.back(), map.num_dofs()));
+  }
+  std::vector<const Stencils*> all;
+  for (const auto& s : stencils_)
+    all.push_back(&s);
+  pattern_ = build_pattern(map, all);
+}
+
+AssembledSystem Assembler::make_system() const {
+  return {Vector::Zero(map_.num_dofs()), pattern_.Kff, pattern_.Kfc};
+}
+
+bool Assembler::assemble_term(std::size_t t, const physics::EvalState& state,
+                              AssembledSystem& out, bool with_jacobian) const {
+  const physics::Term& term = *terms_[t];
+  const Stencils& stencils = stencils_[t];
+  bool admissible = true;
+  for (const auto& colour : colours_[t]) {
+    const Index count = static_cast<Index>(colour.size());
+#pragma omp parallel reduction(&& : admissible)
+    {
+      Scratch s;
+#pragma omp for schedule(static)
+      for (Index k = 0; k < count; ++k) {
+        const Index e = colour[k];
+        if (!term.evaluate(e, state, s.r, with_jacobian ? &s.K : nullptr)) {
+          admissible = false;
+          continue;
+        }
+        scatter(map_, stencils.of(e), s, out, with_jacobian);
+      }
+    }
+  }
+  return admissible;
+}
+
+bool Assembler::assemble(const physics::EvalState& state, AssembledSystem& out,
+                         bool with_jacobian) const {
+  out.residual.setZero(map_.num_dofs());
+  if (with_jacobian) {
+    out.Kff.coeffs().setZero();
+    out.Kfc.coeffs().setZero();
+  }
+  bool admissible = true;
+  for (std::size_t t = 0; t < terms_.size() && admissible; ++t)
+    admissible = assemble_term(t, state, out, with_jacobian);
+  return admissible;
+}
+
+} // namespace trifem::assembly

@@ -1,0 +1,87 @@
+// SPDX-License-Identifier: MIT
+#include "trifem/assembly/fe_problem.hpp"
+
+#include "trifem/core/error.hpp"
+
+namespace trifem::assembly {
+
+FeProblem::FeProblem(const dofs::DofMap& map, std::vector<dofs::DirichletCondition> conditions,
+                     std::vector<std::unique_ptr<physics::Term>> terms,
+                     std::vector<solver::FieldScale> scales)
+    : map_(map), conditions_(std::move(conditions)), terms_(std::move(terms)),
+      scales_(std::move(scales)) {
+  TRIFEM_VERIFY(static_cast<int>(scales_.size()) == map.num_fields(), "one scale per field");
+  equation_fields_.resize(map.num_equations());
+  for (Index eq = 0; eq < map.num_equations(); ++eq)
+    equation_fields_[eq] = map.field_of(map.dof_of_equation(eq)).index;
+  std::vector<const physics::Term*> views;
+  for (const auto& t : terms_)
+    views.push_back(t.get());
+  assembler_ = std::make_unique<Assembler>(map, std::move(views));
+  system_ = assembler_->make_system();
+  x_ = x_old_ = saved_ = target_ = Vector::Zero(map.num_dofs());
+  dofs::prescribed_values(conditions_, time_, x_);
+  x_old_ = target_ = x_;
+}
+
+void FeProblem::set_state(const Vector& x) {
+  TRIFEM_VERIFY(x.size() == map_.num_dofs(), "state size mismatch");
+  x_ = x_old_ = target_ = x;
+}
+
+solver::SolveStatus FeProblem::linearize(solver::Linearization& lin, bool with_jacobian) {
+  if (!assembler_->assemble(eval_state(), system_, with_jacobian))
+    return solver::SolveStatus::Inadmissible;
+  const Index neq = map_.num_equations();
+  lin.residual.resize(neq);
+  for (Index eq = 0; eq < neq; ++eq)
+    lin.residual[eq] = system_.residual[map_.dof_of_equation(eq)];
+  if (!with_jacobian)
+    return solver::SolveStatus::Converged;
+  Vector pending(map_.num_constrained());
+  for (Index c = 0; c < map_.num_constrained(); ++c) {
+    const Index d = map_.dof_of_constrained(c);
+    pending[c] = target_[d] - x_[d];
+  }
+  lin.constraint_rhs = system_.Kfc * pending;
+  lin.jacobian = system_.Kff;
+  return solver::SolveStatus::Converged;
+}
+
+solver::SolveStatus FeProblem::update(const Vector& dx, Real step) {
+  for (Index eq = 0; eq < map_.num_equations(); ++eq)
+    x_[map_.dof_of_equation(eq)] += step * dx[eq];
+  for (Index c = 0; c < map_.num_constrained(); ++c) {
+    const Index d = map_.dof_of_constrained(c);
+    x_[d] += step * (target_[d] - x_[d]);
+  }
+  return solver::SolveStatus::Converged;
+}
+
+bool FeProblem::constraints_satisfied() const {
+  for (Index c = 0; c < map_.num_constrained(); ++c) {
+    const Index d = map_.dof_of_constrained(c);
+    if (x_[d] != target_[d])
+      return false;
+  }
+  return true;
+}
+
+void FeProblem::begin_step(Real time, Real dt) {
+  time_ = time;
+  dt_ = dt;
+  dofs::prescribed_values(conditions_, time_, target_);
+}
+
+void FeProblem::commit_step() {
+  x_old_ = x_;
+  time_old_ = time_;
+}
+
+void FeProblem::reject_step() {
+  x_ = x_old_;
+  time_ = time_old_;
+  dofs::prescribed_values(conditions_, time_, target_);
+}
+
+} // namespace trifem::assembly

@@ -1,0 +1,92 @@
+// SPDX-License-Identifier: MIT
+// The assembled finite element problem: terms + DOF map + prescribed values + state.
+// Implements the solver's TransientProblem; this is where elements meet the Newton solver.
+#pragma once
+
+#include "trifem/assembly/system_pattern.hpp"
+#include "trifem/dofs/dirichlet.hpp"
+#include "trifem/solver/nonlinear_problem.hpp"
+
+#include <memory>
+#include <vector>
+
+namespace trifem::assembly {
+
+/// Global residual over all DOFs and the two Jacobian blocks.
+struct AssembledSystem {
+  Vector residual;  ///< R at every DOF (reactions at constrained DOFs)
+  SparseMatrix Kff; ///< dR_f/dx_f
+  SparseMatrix Kfc; ///< dR_f/dx_c
+};
+
+/// Loops over terms (colour by colour, elements of a colour in parallel) and scatters.
+class Assembler {
+public:
+  Assembler(const dofs::DofMap& map, std::vector<const physics::Term*> terms);
+  /// Assembles residual and (if with_jacobian) both Jacobian blocks. False if some element
+  /// reported an inadmissible state.
+  bool assemble(const physics::EvalState& state, AssembledSystem& out, bool with_jacobian) const;
+  /// An AssembledSystem with the right sizes and patterns (values zero).
+  AssembledSystem make_system() const;
+
+private:
+  bool assemble_term(std::size_t t, const physics::EvalState& state, AssembledSystem& out,
+                     bool with_jacobian) const;
+
+  const dofs::DofMap& map_;
+  std::vector<const physics::Term*> terms_;
+  std::vector<Stencils> stencils_;
+  std::vector<std::vector<std::vector<Index>>> colours_;
+  SystemPattern pattern_;
+};
+
+/// A transient/quasi-static problem: R(x, t) = 0 with prescribed DOFs.
+class FeProblem final : public solver::TransientProblem {
+public:
+  /// `map` must be finalized with the constrained DOFs of `conditions`. `scales` gives one
+  /// FieldScale per field of `map`.
+  FeProblem(const dofs::DofMap& map, std::vector<dofs::DirichletCondition> conditions,
+            std::vector<std::unique_ptr<physics::Term>> terms,
+            std::vector<solver::FieldScale> scales);
+
+  // NonlinearProblem
+  Index num_equations() const override { return map_.num_equations(); }
+  const std::vector<int>& equation_fields() const override { return equation_fields_; }
+  const std::vector<solver::FieldScale>& field_scales() const override { return scales_; }
+  int pattern_id() const override { return 0; }
+  solver::SolveStatus linearize(solver::Linearization& lin, bool with_jacobian) override;
+  solver::SolveStatus update(const Vector& dx, Real step) override;
+  bool constraints_satisfied() const override;
+  void save_iterate() override { saved_ = x_; }
+  void restore_iterate() override { x_ = saved_; }
+
+  // TransientProblem
+  void begin_step(Real time, Real dt) override;
+  void commit_step() override;
+  void reject_step() override;
+
+  /// Current state (all DOFs) and time.
+  const Vector& state() const { return x_; }
+  Real time() const { return time_; }
+  /// Sets the state (e.g. initial conditions) at the current time.
+  void set_state(const Vector& x);
+  /// Residual at every DOF of the last evaluation: reactions at constrained DOFs.
+  const Vector& full_residual() const { return system_.residual; }
+  const dofs::DofMap& dof_map() const { return map_; }
+  const std::vector<std::unique_ptr<physics::Term>>& terms() const { return terms_; }
+
+private:
+  physics::EvalState eval_state() const { return {x_, x_old_, time_, dt_}; }
+
+  const dofs::DofMap& map_;
+  std::vector<dofs::DirichletCondition> conditions_;
+  std::vector<std::unique_ptr<physics::Term>> terms_;
+  std::vector<solver::FieldScale> scales_;
+  std::vector<int> equation_fields_;
+  std::unique_ptr<Assembler> assembler_;
+  AssembledSystem system_;
+  Vector x_, x_old_, saved_, target_;
+  Real time_ = 0.0, time_old_ = 0.0, dt_ = 0.0;
+};
+
+} // namespace trifem::assembly

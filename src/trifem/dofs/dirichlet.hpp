@@ -1,0 +1,28 @@
+// SPDX-License-Identifier: MIT
+// Prescribed DOF values: value(t) = magnitude * curve(t) on a list of DOFs.
+#pragma once
+
+#include "trifem/dofs/dof_map.hpp"
+#include "trifem/dofs/load_curve.hpp"
+
+#include <vector>
+
+namespace trifem::dofs {
+
+/// A set of DOFs sharing one prescribed value history (zero: a fixed condition).
+struct DirichletCondition {
+  std::vector<Index> dofs;
+  Real magnitude = 0.0;
+  LoadCurve curve = LoadCurve::constant(1.0);
+
+  Real value(Real t) const { return magnitude * curve(t); }
+};
+
+/// Marks the DOFs of every condition as constrained in `map` (before finalize()).
+void constrain_all(const std::vector<DirichletCondition>& conditions, DofMap& map);
+
+/// Writes the prescribed values at time t into `target` (size num_dofs; other entries kept).
+/// Later conditions override earlier ones on shared DOFs.
+void prescribed_values(const std::vector<DirichletCondition>& conditions, Real t, Vector& target);
+
+} // namespace trifem::dofs

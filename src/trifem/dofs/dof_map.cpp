@@ -1,0 +1,49 @@
+// SPDX-License-Identifier: MIT
+#include "trifem/dofs/dof_map.hpp"
+
+#include "trifem/core/error.hpp"
+
+namespace trifem::dofs {
+
+FieldId DofMap::add_field(std::string name, Index num_entities, int components) {
+  TRIFEM_VERIFY(!finalized_, "cannot add field '{}' after finalize()", name);
+  TRIFEM_VERIFY(num_entities >= 0 && components > 0, "bad size of field '{}'", name);
+  fields_.push_back({std::move(name), num_entities, components, num_dofs_});
+  num_dofs_ += num_entities * components;
+  constrained_.resize(num_dofs_, 0);
+  return FieldId{static_cast<int>(fields_.size()) - 1};
+}
+
+FieldId DofMap::field_of(Index dof) const {
+  for (int f = num_fields() - 1; f >= 0; --f)
+    if (dof >= fields_[f].offset)
+      return FieldId{f};
+  TRIFEM_VERIFY(false, "DOF {} belongs to no field", dof);
+  return {};
+}
+
+void DofMap::constrain(Index dof) {
+  TRIFEM_VERIFY(!finalized_, "cannot constrain DOF {} after finalize()", dof);
+  TRIFEM_VERIFY(dof >= 0 && dof < num_dofs_, "DOF {} out of range", dof);
+  constrained_[dof] = 1;
+}
+
+void DofMap::finalize() {
+  equation_.assign(num_dofs_, -1);
+  constrained_index_.assign(num_dofs_, -1);
+  equation_dofs_.clear();
+  constrained_dofs_.clear();
+  for (Index d = 0; d < num_dofs_; ++d) {
+    if (constrained_[d]) {
+      constrained_index_[d] = static_cast<Index>(constrained_dofs_.size());
+      constrained_dofs_.push_back(d);
+    } else {
+      equation_[d] = static_cast<Index>(equation_dofs_.size());
+      equation_dofs_.push_back(d);
+    }
+  }
+  num_equations_ = static_cast<Index>(equation_dofs_.size());
+  finalized_ = true;
+}
+
+} // namespace trifem::dofs

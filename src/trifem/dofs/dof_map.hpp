@@ -1,0 +1,79 @@
+// SPDX-License-Identifier: MIT
+// Fields -> degrees of freedom -> equations.
+//
+// Every field lives on a set of entities (nodes, cells, or any indexed set such as contact
+// slave nodes) with a fixed number of components. DOFs are numbered field by field:
+// dof = offset(field) + entity * components + component. After finalize(), every free DOF has
+// an equation number; constrained DOFs have a constrained number instead. Vectors of "all DOFs"
+// hold the full state (prescribed values included); residual entries at constrained DOFs are
+// the reactions.
+#pragma once
+
+#include "trifem/core/types.hpp"
+
+#include <string>
+#include <vector>
+
+namespace trifem::dofs {
+
+/// Typed handle of a field (never a string lookup in hot code).
+struct FieldId {
+  int index = -1;
+  bool valid() const { return index >= 0; }
+  friend bool operator==(FieldId, FieldId) = default;
+};
+
+/// Description of a field.
+struct FieldInfo {
+  std::string name;
+  Index num_entities = 0;
+  int components = 0;
+  Index offset = 0; ///< first DOF of the field
+};
+
+/// DOF numbering and the free/constrained split.
+class DofMap {
+public:
+  /// Adds a field on `num_entities` entities with `components` components each.
+  FieldId add_field(std::string name, Index num_entities, int components);
+
+  Index num_dofs() const { return num_dofs_; }
+  int num_fields() const { return static_cast<int>(fields_.size()); }
+  const FieldInfo& field(FieldId f) const { return fields_[f.index]; }
+
+  /// Global DOF of (field, entity, component).
+  Index dof(FieldId f, Index entity, int component) const {
+    return fields_[f.index].offset + entity * fields_[f.index].components + component;
+  }
+  /// Field that owns a DOF.
+  FieldId field_of(Index dof) const;
+
+  /// Marks a DOF as constrained (prescribed). Must precede finalize().
+  void constrain(Index dof);
+  bool is_constrained(Index dof) const { return constrained_[dof]; }
+
+  /// Numbers equations (free DOFs, in DOF order) and constrained DOFs.
+  void finalize();
+  bool finalized() const { return finalized_; }
+
+  Index num_equations() const { return num_equations_; }
+  Index num_constrained() const { return num_dofs_ - num_equations_; }
+  /// Equation of a free DOF, or -1.
+  Index equation(Index dof) const { return equation_[dof]; }
+  /// Index among constrained DOFs, or -1.
+  Index constrained_index(Index dof) const { return constrained_index_[dof]; }
+  /// DOF of an equation.
+  Index dof_of_equation(Index eq) const { return equation_dofs_[eq]; }
+  /// DOF of a constrained index.
+  Index dof_of_constrained(Index c) const { return constrained_dofs_[c]; }
+
+private:
+  std::vector<FieldInfo> fields_;
+  Index num_dofs_ = 0;
+  Index num_equations_ = 0;
+  bool finalized_ = false;
+  std::vector<char> constrained_;
+  std::vector<Index> equation_, constrained_index_, equation_dofs_, constrained_dofs_;
+};
+
+} // namespace trifem::dofs

@@ -1,0 +1,699 @@
+// SPDX-License-Identifier: MIT
+// Gmsh MSH reader: line-based manual parsing of the ASCII 4.1 and 2.2 formats.
+#include "trifem/mesh/gmsh_reader.hpp"
+
+#include "trifem/core/error.hpp"
+#include "trifem/mesh/hex_faces.hpp"
+
+#include <algorithm>
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <fstream>
+#include <limits>
+#include <map>
+#include <span>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+namespace trifem::mesh {
+namespace {
+
+/// Gmsh node and element tags (size_t in Gmsh; signed here to detect bad input).
+using Tag = std::int64_t;
+/// (dimension, tag) of a physical group or of a geometric entity.
+using DimTag = std::pair<int, int>;
+
+constexpr int kGmshQuad4 = 3;
+constexpr int kGmshHex8 = 5;
+
+/// Reads a text file line by line and splits each line into blank-separated fields.
+class LineReader {
+public:
+  explicit LineReader(const std::filesystem::path& file) : in_(file), file_(file.string()) {
+    TRIFEM_CHECK(in_.is_open(), "{}: cannot open the mesh file", location());
+  }
+
+  /// Advances to the next non-blank line; false at the end of the file.
+  bool next_line() {
+    while (std::getline(in_, line_)) {
+      ++line_no_;
+      if (!line_.empty() && line_.back() == '\r')
+        line_.pop_back();
+      pos_ = 0;
+      if (!at_line_end())
+        return true;
+    }
+    line_.clear();
+    pos_ = 0;
+    return false;
+  }
+
+  /// Advances to the next non-blank line; InputError at the end of the file.
+  void require_line() {
+    TRIFEM_CHECK(next_line(), "{}: unexpected end of file: section ${} is truncated (no $End{})",
+                 location(), section_, section_);
+  }
+
+  /// True if the current line has no fields left.
+  bool at_line_end() {
+    while (pos_ < line_.size() && is_blank(line_[pos_]))
+      ++pos_;
+    return pos_ >= line_.size();
+  }
+
+  /// Next field of the current line; empty at the end of the line.
+  std::string_view field() {
+    at_line_end();
+    const std::size_t begin = pos_;
+    while (pos_ < line_.size() && !is_blank(line_[pos_]))
+      ++pos_;
+    return std::string_view(line_).substr(begin, pos_ - begin);
+  }
+
+  /// The unread rest of the current line without surrounding blanks; consumes it.
+  std::string_view rest() {
+    at_line_end();
+    std::size_t end = line_.size();
+    while (end > pos_ && is_blank(line_[end - 1]))
+      --end;
+    const std::string_view text = std::string_view(line_).substr(pos_, end - pos_);
+    pos_ = line_.size();
+    return text;
+  }
+
+  /// Parses the next field of the current line as a number; `what` names it in errors.
+  template <class T>
+  T number(std::string_view what) {
+    std::string_view text = field();
+    if (text.starts_with('+')) // from_chars rejects an explicit plus sign
+      text.remove_prefix(1);
+    T value{};
+    const char* end = text.data() + text.size();
+    const auto [ptr, ec] = std::from_chars(text.data(), end, value);
+    if (text.empty() || ec != std::errc() || ptr != end) [[unlikely]]
+      bad_field(what, text);
+    return value;
+  }
+
+  /// Like number(), but continues on the next line when the current one is used up.
+  template <class T>
+  T number_any_line(std::string_view what) {
+    if (at_line_end())
+      require_line();
+    return number<T>(what);
+  }
+
+  /// "<file>:<line>" of the current line.
+  std::string location() const { return at(line_no_); }
+  /// "<file>:<line>" of any line.
+  std::string at(long line) const { return fmt::format("{}:{}", file_, std::max(line, 1L)); }
+  long line() const { return line_no_; }
+  const std::string& section() const { return section_; }
+  void set_section(std::string_view name) { section_ = name; }
+
+private:
+  static bool is_blank(char c) { return c == ' ' || c == '\t'; }
+
+  [[noreturn]] void bad_field(std::string_view what, std::string_view text) const {
+    TRIFEM_CHECK(!text.empty(), "{}: expected {}, found the end of the line", location(), what);
+    TRIFEM_CHECK(!text.starts_with('$'), "{}: expected {}, found '{}': section ${} is truncated",
+                 location(), what, text, section_);
+    throw InputError(fmt::format("{}: expected {}, found '{}'", location(), what, text));
+  }
+
+  std::ifstream in_;
+  std::string file_;
+  std::string line_;
+  std::size_t pos_ = 0;
+  long line_no_ = 0;
+  std::string section_ = "MeshFormat";
+};
+
+/// A Gmsh element type: number, name and dimension.
+struct ElementType {
+  int type;
+  const char* name;
+  int dim;
+};
+
+constexpr ElementType kElementTypes[] = {
+    {1, "line2", 1},         {2, "triangle3", 2},     {3, "quad4", 2},      {4, "tetra4", 3},
+    {5, "hexahedron8", 3},   {6, "prism6", 3},        {7, "pyramid5", 3},   {8, "line3", 1},
+    {9, "triangle6", 2},     {10, "quad9", 2},        {11, "tetra10", 3},   {12, "hexahedron27", 3},
+    {13, "prism18", 3},      {14, "pyramid14", 3},    {15, "point", 0},     {16, "quad8", 2},
+    {17, "hexahedron20", 3}, {18, "prism15", 3},      {19, "pyramid13", 3}, {20, "triangle9", 2},
+    {21, "triangle10", 2},   {26, "line4", 1},        {27, "line5", 1},     {28, "line6", 1},
+    {29, "tetra20", 3},      {92, "hexahedron64", 3},
+};
+
+const ElementType* find_element_type(int type) {
+  for (const ElementType& t : kElementTypes)
+    if (t.type == type)
+      return &t;
+  return nullptr;
+}
+
+/// Maps Gmsh node tags to dense indices: a vector for tags up to about twice the node count,
+/// a hash map for larger ones.
+class NodeMap {
+public:
+  /// Clears the map and sizes the dense range for `num_nodes` nodes.
+  void reset(Tag num_nodes) {
+    dense_.clear();
+    sparse_.clear();
+    limit_ = 2 * num_nodes + 1024;
+  }
+
+  /// Stores tag -> index; false if the tag is already present. Requires tag > 0.
+  bool insert(Tag tag, Index index) {
+    if (tag >= limit_)
+      return sparse_.emplace(tag, index).second;
+    if (tag >= std::ssize(dense_))
+      dense_.resize(
+          static_cast<std::size_t>(std::min(limit_, std::max(tag + 1, 2 * std::ssize(dense_)))),
+          -1);
+    Index& slot = dense_[static_cast<std::size_t>(tag)];
+    if (slot >= 0)
+      return false;
+    slot = index;
+    return true;
+  }
+
+  /// Index of a tag, -1 if absent.
+  Index find(Tag tag) const {
+    if (tag >= 0 && tag < std::ssize(dense_))
+      return dense_[static_cast<std::size_t>(tag)];
+    const auto it = sparse_.find(tag);
+    return it == sparse_.end() ? -1 : it->second;
+  }
+
+private:
+  Tag limit_ = 1024;
+  std::vector<Index> dense_;
+  std::unordered_map<Tag, Index> sparse_;
+};
+
+/// Name of a physical group and the line that named it.
+struct GroupName {
+  std::string name;
+  long line = 0;
+};
+
+/// A quad4 element of a physical surface, kept until all hexes are known.
+struct PendingQuad {
+  std::array<Index, 4> nodes{};
+  Tag element = 0;
+  long line = 0;
+  int physical = 0;
+};
+
+/// One element line: its tag, type, the dimension of its entity (-1 if unknown) and its
+/// physical groups.
+struct ElementHeader {
+  Tag tag = 0;
+  int type = 0;
+  int entity_dim = -1;
+  std::span<const int> physicals;
+};
+
+/// Everything gathered from the sections.
+struct GmshData {
+  int major_version = 0;
+  bool seen_nodes = false;
+  bool seen_elements = false;
+  long elements_line = 0;
+  std::map<DimTag, GroupName> names;                   ///< (dim, physical tag) -> name
+  std::map<DimTag, std::vector<int>> entity_physicals; ///< (dim, entity tag) -> physical tags
+  std::map<DimTag, long> first_use; ///< (dim, physical tag) -> first element line
+  NodeMap node_map;
+  Mesh mesh;
+  std::map<int, std::vector<Index>> volume_cells; ///< physical volume tag -> cells
+  std::vector<Index> unassigned_cells;
+  std::vector<PendingQuad> quads;
+  std::map<DimTag, std::vector<Index>> point_sets; ///< physical points/curves -> nodes
+};
+
+Tag read_count(LineReader& in, std::string_view what) {
+  const Tag n = in.number<Tag>(what);
+  TRIFEM_CHECK(n >= 0 && n <= std::numeric_limits<Index>::max(), "{}: invalid {} {}", in.location(),
+               what, n);
+  return n;
+}
+
+void expect_section_end(LineReader& in) {
+  in.require_line();
+  const std::string_view text = in.rest();
+  TRIFEM_CHECK(text.starts_with("$End") && text.substr(4) == in.section(),
+               "{}: expected $End{}, found '{}' (section ${} holds more entries than declared)",
+               in.location(), in.section(), text, in.section());
+}
+
+void skip_section(LineReader& in) {
+  const std::string end = "$End" + in.section();
+  do
+    in.require_line();
+  while (in.rest() != end);
+}
+
+void read_mesh_format(LineReader& in, GmshData& d) {
+  TRIFEM_CHECK(in.next_line(), "{}: empty file", in.location());
+  const std::string_view header = in.rest();
+  TRIFEM_CHECK(header == "$MeshFormat", "{}: not a Gmsh MSH file: expected $MeshFormat, found '{}'",
+               in.location(), header);
+  in.require_line();
+  const std::string version(in.field());
+  const int file_type = in.number<int>("file type");
+  in.number<int>("data size");
+  if (version == "4.1")
+    d.major_version = 4;
+  else if (version == "2.2" || version == "2.1" || version == "2.0" || version == "2")
+    d.major_version = 2;
+  TRIFEM_CHECK(d.major_version != 0,
+               "{}: unsupported MSH format version '{}' (supported: 4.1 and 2.2 ASCII)",
+               in.location(), version);
+  TRIFEM_CHECK(file_type == 0,
+               "{}: binary MSH files are not supported (file type {}); save the mesh as ASCII",
+               in.location(), file_type);
+  expect_section_end(in);
+}
+
+void read_physical_names(LineReader& in, GmshData& d) {
+  in.require_line();
+  const Tag count = read_count(in, "number of physical names");
+  for (Tag i = 0; i < count; ++i) {
+    in.require_line();
+    const int dim = in.number<int>("physical group dimension");
+    const int tag = in.number<int>("physical tag");
+    TRIFEM_CHECK(dim >= 0 && dim <= 3, "{}: invalid physical group dimension {}", in.location(),
+                 dim);
+    std::string_view name = in.rest();
+    if (name.size() >= 2 && name.front() == '"' && name.back() == '"')
+      name = name.substr(1, name.size() - 2);
+    d.names[{dim, tag}] = GroupName{std::string(name), in.line()};
+  }
+  expect_section_end(in);
+}
+
+/// One line of $Entities (4.1): tag, point or bounding box, physical tags, bounding entities.
+void read_entity(LineReader& in, GmshData& d, int dim) {
+  in.require_line();
+  const int tag = in.number<int>("entity tag");
+  for (int k = 0; k < (dim == 0 ? 3 : 6); ++k)
+    in.number<double>("entity coordinate");
+  const Tag num_physicals = read_count(in, "number of physical tags");
+  std::vector<int> physicals;
+  for (Tag k = 0; k < num_physicals; ++k)
+    physicals.push_back(in.number<int>("physical tag"));
+  if (!physicals.empty())
+    d.entity_physicals[{dim, tag}] = std::move(physicals);
+}
+
+void read_entities(LineReader& in, GmshData& d) {
+  in.require_line();
+  std::array<Tag, 4> counts{};
+  for (Tag& n : counts)
+    n = read_count(in, "number of entities");
+  for (int dim = 0; dim < 4; ++dim)
+    for (Tag i = 0; i < counts[dim]; ++i)
+      read_entity(in, d, dim);
+  expect_section_end(in);
+}
+
+Vec3 read_point(LineReader& in) {
+  Vec3 x;
+  for (int k = 0; k < 3; ++k)
+    x[k] = in.number<double>("node coordinate");
+  TRIFEM_CHECK(x.allFinite(), "{}: non-finite node coordinate", in.location());
+  return x;
+}
+
+void add_node_tag(LineReader& in, GmshData& d, Tag tag, Index index) {
+  TRIFEM_CHECK(tag > 0, "{}: node tag {} must be positive", in.location(), tag);
+  TRIFEM_CHECK(d.node_map.insert(tag, index), "{}: node tag {} is defined twice", in.location(),
+               tag);
+}
+
+/// One entity block of $Nodes (4.1): header, node tags, coordinates. Returns its node count.
+Tag read_node_block_v4(LineReader& in, GmshData& d, Tag remaining) {
+  in.require_line();
+  in.number<int>("entity dimension");
+  in.number<int>("entity tag");
+  in.number<int>("parametric flag");
+  const Tag count = read_count(in, "number of nodes in the block");
+  TRIFEM_CHECK(count <= remaining, "{}: the node block holds more nodes than $Nodes declares",
+               in.location());
+  const Index first = d.mesh.num_nodes();
+  for (Tag i = 0; i < count; ++i)
+    add_node_tag(in, d, in.number_any_line<Tag>("node tag"), first + static_cast<Index>(i));
+  for (Tag i = 0; i < count; ++i) {
+    in.require_line();
+    d.mesh.add_node(read_point(in)); // parametric coordinates, if any, are ignored
+  }
+  return count;
+}
+
+void read_nodes_v4(LineReader& in, GmshData& d) {
+  in.require_line();
+  const Tag num_blocks = read_count(in, "number of node blocks");
+  const Tag num_nodes = read_count(in, "number of nodes");
+  in.number<Tag>("minimum node tag");
+  in.number<Tag>("maximum node tag");
+  d.node_map.reset(num_nodes);
+  Tag total = 0;
+  for (Tag b = 0; b < num_blocks; ++b)
+    total += read_node_block_v4(in, d, num_nodes - total);
+  TRIFEM_CHECK(total == num_nodes, "{}: $Nodes declares {} nodes but its blocks hold {}",
+               in.location(), num_nodes, total);
+  expect_section_end(in);
+}
+
+void read_nodes_v2(LineReader& in, GmshData& d) {
+  in.require_line();
+  const Tag num_nodes = read_count(in, "number of nodes");
+  d.node_map.reset(num_nodes);
+  for (Tag i = 0; i < num_nodes; ++i) {
+    in.require_line();
+    add_node_tag(in, d, in.number<Tag>("node tag"), d.mesh.num_nodes());
+    d.mesh.add_node(read_point(in));
+  }
+  expect_section_end(in);
+}
+
+Index read_node_ref(LineReader& in, const GmshData& d, const ElementHeader& e) {
+  const Tag tag = in.number<Tag>("node tag");
+  const Index index = d.node_map.find(tag);
+  TRIFEM_CHECK(index >= 0, "{}: element {} refers to node tag {}, which is not defined in $Nodes",
+               in.location(), e.tag, tag);
+  return index;
+}
+
+/// Reads exactly nodes.size() node tags, which must end the line.
+void read_element_nodes(LineReader& in, const GmshData& d, const ElementHeader& e,
+                        std::span<Index> nodes) {
+  for (Index& n : nodes)
+    n = read_node_ref(in, d, e);
+  TRIFEM_CHECK(in.at_line_end(), "{}: element {} of type {} has more than {} node tags",
+               in.location(), e.tag, e.type, nodes.size());
+}
+
+void note_use(GmshData& d, DimTag group, long line) {
+  d.first_use.try_emplace(group, line);
+}
+
+/// Rejects a hex whose Jacobian determinant at the centre is negative or zero.
+void check_hex_orientation(const LineReader& in, const Mesh& mesh, Tag tag, const Hex8& cell) {
+  Mat3 jac = Mat3::Zero(); // column k: dx/dxi_k at xi = 0, i.e. sum_a x_a xi_a[k] / 8
+  for (int a = 0; a < 8; ++a)
+    for (int k = 0; k < 3; ++k)
+      jac.col(k) += (kHexNodeCoords[a][k] / 8.0) * mesh.node(cell[a]);
+  const Real det = jac.determinant();
+  const Real scale = jac.col(0).norm() * jac.col(1).norm() * jac.col(2).norm();
+  TRIFEM_CHECK(det >= 0.0,
+               "{}: hex8 element {} has negative volume (inverted node order; expected nodes "
+               "0-3 counter-clockwise seen from nodes 4-7)",
+               in.location(), tag);
+  TRIFEM_CHECK(det > 1e-12 * scale, "{}: hex8 element {} is degenerate (zero volume)",
+               in.location(), tag);
+}
+
+void read_hex(LineReader& in, GmshData& d, const ElementHeader& e) {
+  Hex8 cell;
+  read_element_nodes(in, d, e, cell);
+  check_hex_orientation(in, d.mesh, e.tag, cell);
+  const Index c = d.mesh.add_cell(cell);
+  for (int p : e.physicals) {
+    d.volume_cells[p].push_back(c);
+    note_use(d, {3, p}, in.line());
+  }
+  if (e.physicals.empty())
+    d.unassigned_cells.push_back(c);
+}
+
+void read_quad(LineReader& in, GmshData& d, const ElementHeader& e) {
+  if (e.physicals.empty())
+    return; // a quad in no physical surface is not needed
+  PendingQuad quad{.nodes = {}, .element = e.tag, .line = in.line(), .physical = 0};
+  read_element_nodes(in, d, e, quad.nodes);
+  for (int p : e.physicals) {
+    quad.physical = p;
+    d.quads.push_back(quad);
+    note_use(d, {2, p}, in.line());
+  }
+}
+
+/// A point or curve element: its nodes join the node sets of its physical groups.
+void read_low_dim_element(LineReader& in, GmshData& d, const ElementHeader& e, int dim) {
+  if (e.physicals.empty())
+    return;
+  std::vector<Index> nodes;
+  while (!in.at_line_end())
+    nodes.push_back(read_node_ref(in, d, e));
+  TRIFEM_CHECK(!nodes.empty(), "{}: element {} has no nodes", in.location(), e.tag);
+  for (int p : e.physicals) {
+    std::vector<Index>& set = d.point_sets[{dim, p}];
+    set.insert(set.end(), nodes.begin(), nodes.end());
+    note_use(d, {dim, p}, in.line());
+  }
+}
+
+/// The rest of an element line after its tag (4.1) or its tag list (2.2).
+void read_element(LineReader& in, GmshData& d, const ElementHeader& e) {
+  const ElementType* type = find_element_type(e.type);
+  TRIFEM_CHECK(!type || e.entity_dim < 0 || type->dim == e.entity_dim,
+               "{}: element {} of type {} ({}, dimension {}) is in a block of dimension {}",
+               in.location(), e.tag, e.type, type->name, type->dim, e.entity_dim);
+  const int dim = type ? type->dim : e.entity_dim;
+  if (dim == 0 || dim == 1)
+    return read_low_dim_element(in, d, e, dim);
+  if (e.type == kGmshHex8)
+    return read_hex(in, d, e);
+  if (e.type == kGmshQuad4)
+    return read_quad(in, d, e);
+  throw InputError(fmt::format("{}: element {} has unsupported element type {} ({}); trifem reads "
+                               "hex8 (type 5) volumes and quad4 (type 3) surfaces only",
+                               in.location(), e.tag, e.type, type ? type->name : "unknown"));
+}
+
+/// One entity block of $Elements (4.1). Returns its element count.
+Tag read_element_block_v4(LineReader& in, GmshData& d) {
+  in.require_line();
+  const int entity_dim = in.number<int>("entity dimension");
+  const int entity_tag = in.number<int>("entity tag");
+  const int type = in.number<int>("element type");
+  const Tag count = read_count(in, "number of elements in the block");
+  TRIFEM_CHECK(entity_dim >= 0 && entity_dim <= 3, "{}: invalid entity dimension {}", in.location(),
+               entity_dim);
+  const auto it = d.entity_physicals.find({entity_dim, entity_tag});
+  ElementHeader e{.type = type, .entity_dim = entity_dim, .physicals = {}};
+  if (it != d.entity_physicals.end())
+    e.physicals = it->second;
+  for (Tag i = 0; i < count; ++i) {
+    in.require_line();
+    e.tag = in.number<Tag>("element tag");
+    read_element(in, d, e);
+  }
+  return count;
+}
+
+void read_elements_v4(LineReader& in, GmshData& d) {
+  in.require_line();
+  const Tag num_blocks = read_count(in, "number of element blocks");
+  const Tag num_elements = read_count(in, "number of elements");
+  Tag total = 0;
+  for (Tag b = 0; b < num_blocks; ++b)
+    total += read_element_block_v4(in, d);
+  TRIFEM_CHECK(total == num_elements, "{}: $Elements declares {} elements but its blocks hold {}",
+               in.location(), num_elements, total);
+  expect_section_end(in);
+}
+
+void read_elements_v2(LineReader& in, GmshData& d) {
+  in.require_line();
+  const Tag count = read_count(in, "number of elements");
+  for (Tag i = 0; i < count; ++i) {
+    in.require_line();
+    ElementHeader e{.tag = in.number<Tag>("element tag"),
+                    .type = in.number<int>("element type"),
+                    .entity_dim = -1,
+                    .physicals = {}};
+    const Tag num_tags = read_count(in, "number of element tags");
+    int physical = 0; // the first tag is the physical group, 0 for none
+    for (Tag k = 0; k < num_tags; ++k) {
+      const int value = in.number<int>("element tag list entry");
+      if (k == 0)
+        physical = value;
+    }
+    if (physical != 0)
+      e.physicals = std::span<const int>(&physical, 1);
+    read_element(in, d, e);
+  }
+  expect_section_end(in);
+}
+
+void read_section(LineReader& in, GmshData& d) {
+  const std::string_view header = in.rest();
+  TRIFEM_CHECK(header.size() > 1 && header.front() == '$' && !header.starts_with("$End"),
+               "{}: expected a section header such as $Nodes, found '{}'", in.location(), header);
+  in.set_section(header.substr(1));
+  const std::string& name = in.section();
+  if (name == "PhysicalNames") {
+    read_physical_names(in, d);
+  } else if (name == "Entities" && d.major_version == 4) {
+    read_entities(in, d);
+  } else if (name == "Nodes") {
+    TRIFEM_CHECK(!d.seen_nodes, "{}: second $Nodes section", in.location());
+    d.seen_nodes = true;
+    if (d.major_version == 4)
+      read_nodes_v4(in, d);
+    else
+      read_nodes_v2(in, d);
+  } else if (name == "Elements") {
+    TRIFEM_CHECK(!d.seen_elements, "{}: second $Elements section", in.location());
+    d.seen_elements = true;
+    d.elements_line = in.line();
+    if (d.major_version == 4)
+      read_elements_v4(in, d);
+    else
+      read_elements_v2(in, d);
+  } else {
+    TRIFEM_CHECK(name != "MeshFormat", "{}: second $MeshFormat section", in.location());
+    skip_section(in);
+  }
+}
+
+std::string group_name(const GmshData& d, DimTag group) {
+  static constexpr const char* kPrefix[] = {"point", "curve", "surface", "volume"};
+  const auto it = d.names.find(group);
+  if (it != d.names.end() && !it->second.name.empty())
+    return it->second.name;
+  return fmt::format("{}_{}", kPrefix[group.first], group.second);
+}
+
+/// The line that defines a group: its $PhysicalNames entry, else its first element.
+long group_line(const GmshData& d, DimTag group) {
+  const auto it = d.names.find(group);
+  return it != d.names.end() ? it->second.line : d.first_use.at(group);
+}
+
+/// Runs a Mesh registration and prefixes its errors (name clashes) with file and line.
+template <class F>
+void register_named(const LineReader& in, long line, F&& add) {
+  try {
+    add();
+  } catch (const InputError& err) {
+    throw InputError(fmt::format("{}: {}", in.at(line), err.what()));
+  }
+}
+
+void add_cell_blocks(const LineReader& in, GmshData& d) {
+  if (d.names.empty() && d.first_use.empty()) { // no physical groups at all
+    std::vector<Index> all(static_cast<std::size_t>(d.mesh.num_cells()));
+    for (Index c = 0; c < d.mesh.num_cells(); ++c)
+      all[c] = c;
+    d.mesh.add_cell_block("volume", std::move(all));
+    return;
+  }
+  for (auto& entry : d.volume_cells) {
+    const DimTag group{3, entry.first};
+    register_named(in, group_line(d, group),
+                   [&] { d.mesh.add_cell_block(group_name(d, group), std::move(entry.second)); });
+  }
+  if (!d.unassigned_cells.empty())
+    register_named(in, d.elements_line,
+                   [&] { d.mesh.add_cell_block("unassigned", std::move(d.unassigned_cells)); });
+}
+
+/// Node indices of a quad in ascending order: identifies a face regardless of orientation.
+using QuadKey = std::array<Index, 4>;
+
+QuadKey sorted_key(QuadKey q) {
+  std::sort(q.begin(), q.end());
+  return q;
+}
+
+struct QuadKeyHash {
+  std::size_t operator()(const QuadKey& q) const {
+    std::size_t h = 0;
+    for (Index v : q)
+      h = h * 1000003u ^ static_cast<std::size_t>(v);
+    return h;
+  }
+};
+
+/// The outward-oriented facet of each pending quad, taken from the first hex (lowest index)
+/// that has the quad as a face. Only the quads are hashed, so this stays cheap for large meshes.
+std::vector<Facet> orient_quads(const LineReader& in, const GmshData& d) {
+  std::unordered_map<QuadKey, std::size_t, QuadKeyHash> slot_of;
+  std::vector<std::size_t> slot(d.quads.size());
+  for (std::size_t i = 0; i < d.quads.size(); ++i)
+    slot[i] = slot_of.try_emplace(sorted_key(d.quads[i].nodes), slot_of.size()).first->second;
+  std::vector<Facet> found(slot_of.size()); // cell -1: not found yet
+  for (Index c = 0; c < d.mesh.num_cells(); ++c) {
+    for (int f = 0; f < 6; ++f) {
+      Facet facet{.nodes = {}, .cell = c, .local_face = f};
+      for (int a = 0; a < 4; ++a)
+        facet.nodes[a] = d.mesh.cell(c)[kHexFaces[f][a]];
+      const auto it = slot_of.find(sorted_key(facet.nodes));
+      if (it != slot_of.end() && found[it->second].cell < 0)
+        found[it->second] = facet;
+    }
+  }
+  std::vector<Facet> facets;
+  facets.reserve(d.quads.size());
+  for (std::size_t i = 0; i < d.quads.size(); ++i) {
+    const PendingQuad& q = d.quads[i];
+    TRIFEM_CHECK(found[slot[i]].cell >= 0,
+                 "{}: quad4 element {} of physical surface '{}' is not a face of any hex8 element",
+                 in.at(q.line), q.element, group_name(d, {2, q.physical}));
+    facets.push_back(found[slot[i]]);
+  }
+  return facets;
+}
+
+void add_surfaces(const LineReader& in, GmshData& d) {
+  const std::vector<Facet> facets = orient_quads(in, d);
+  std::map<int, Surface> surfaces;
+  for (std::size_t i = 0; i < facets.size(); ++i)
+    surfaces[d.quads[i].physical].facets.push_back(facets[i]);
+  for (auto& entry : surfaces) {
+    const DimTag group{2, entry.first};
+    register_named(in, group_line(d, group),
+                   [&] { d.mesh.add_surface(group_name(d, group), std::move(entry.second)); });
+  }
+}
+
+void add_point_sets(const LineReader& in, GmshData& d) {
+  for (auto& entry : d.point_sets)
+    register_named(in, group_line(d, entry.first), [&] {
+      d.mesh.add_node_set(group_name(d, entry.first), std::move(entry.second));
+    });
+}
+
+Mesh finish(const LineReader& in, GmshData& d) {
+  TRIFEM_CHECK(d.seen_nodes, "{}: the file has no $Nodes section", in.location());
+  TRIFEM_CHECK(d.seen_elements, "{}: the file has no $Elements section", in.location());
+  TRIFEM_CHECK(d.mesh.num_cells() > 0, "{}: the file has no hex8 (type 5) elements",
+               in.at(d.elements_line));
+  add_cell_blocks(in, d);
+  add_surfaces(in, d);
+  add_point_sets(in, d);
+  return std::move(d.mesh);
+}
+
+} // namespace
+
+Mesh read_gmsh(const std::filesystem::path& file) {
+  LineReader in(file);
+  GmshData data;
+  read_mesh_format(in, data);
+  while (in.next_line())
+    read_section(in, data);
+  return finish(in, data);
+}
+
+} // namespace trifem::mesh

@@ -1,0 +1,31 @@
+// SPDX-License-Identifier: MIT
+// Reader for Gmsh MSH files (ASCII 4.1 and 2.2) producing a hex8 Mesh.
+#pragma once
+
+#include "trifem/mesh/mesh.hpp"
+
+#include <filesystem>
+
+namespace trifem::mesh {
+
+/// Reads a Gmsh MSH file (format 4.1 ASCII; also 2.2 ASCII).
+///
+/// - Hex8 (type 5) volume elements become cells. Physical volume groups become named cell
+///   blocks. If the file defines no physical groups at all, every hex goes into block "volume";
+///   otherwise hexes in no physical volume go into block "unassigned" (created only if needed).
+/// - Quad4 (type 3) elements in physical surface groups become named surfaces, oriented outward
+///   against the hex that owns the face (each also registers a node set of the same name).
+///   Quads in no physical group are ignored.
+/// - Elements of dimension 0 or 1 in physical point/curve groups become node sets; otherwise
+///   they are ignored.
+/// - Names come from $PhysicalNames; an unnamed physical group of dimension 0/1/2/3 is called
+///   "point_<tag>", "curve_<tag>", "surface_<tag>" or "volume_<tag>".
+/// - Nodes are renumbered densely 0..n-1 in file order.
+///
+/// Throws InputError, with a message starting with "<file>:<line>: ", for a missing, empty,
+/// binary or truncated file, an unsupported version, an undefined node tag, any other volume or
+/// surface element type (tets, prisms, triangles, second order...), a hex with negative volume,
+/// or a quad of a physical surface that is not a face of any hex.
+Mesh read_gmsh(const std::filesystem::path& file);
+
+} // namespace trifem::mesh

@@ -1,0 +1,33 @@
+// SPDX-License-Identifier: MIT
+// Total Lagrangian hex8 solid element: internal force and consistent tangent.
+#pragma once
+
+#include "trifem/fe/hex8.hpp"
+#include "trifem/material/elastic_law.hpp"
+
+namespace trifem::physics {
+
+using HexVector = Eigen::Matrix<Real, 24, 1>;
+using HexMatrix = Eigen::Matrix<Real, 24, 24>;
+
+/// Deformation gradient F = I + sum_a u_a (x) dN_a/dX at one Gauss point.
+inline Mat3 deformation_gradient(const fe::HexShapeGrad& dN_dX, const fe::HexCoords& u) {
+  return Mat3::Identity() + u.transpose() * dN_dX;
+}
+
+/// Internal force f_a = int F S dN_a/dX dV and, if K is given,
+/// K_ab = int [ (dN_a . S dN_b) I + B_a^T D B_b ] dV (Bonet & Wood eqs 9.13, 9.44).
+/// DOF order: node-major (u_0x, u_0y, u_0z, u_1x, ...). Returns false if J <= 0 at a Gauss
+/// point.
+bool solid_hex8(const fe::HexGeometry& geo, const fe::HexCoords& u,
+                const material::ElasticLaw& law, HexVector& f, HexMatrix* K);
+
+/// Volume-averaged Cauchy stress and J of a hex8 (for output).
+struct CellStress {
+  Mat3 cauchy = Mat3::Zero();
+  Real J = 1.0;
+};
+CellStress solid_hex8_stress(const fe::HexGeometry& geo, const fe::HexCoords& u,
+                             const material::ElasticLaw& law);
+
+} // namespace trifem::physics

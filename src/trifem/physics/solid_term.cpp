@@ -1,0 +1,62 @@
+// SPDX-License-Identifier: MIT
+#include "trifem/physics/solid_term.hpp"
+
+#include "trifem/core/error.hpp"
+
+namespace trifem::physics {
+
+SolidTerm::SolidTerm(const mesh::Mesh& mesh, const dofs::DofMap& dofs, dofs::FieldId displacement,
+                     std::vector<Index> cells,
+                     std::vector<std::shared_ptr<const material::ElasticLaw>> laws)
+    : mesh_(mesh), dofs_(dofs), u_(displacement), cells_(std::move(cells)),
+      laws_(std::move(laws)) {
+  TRIFEM_VERIFY(cells_.size() == laws_.size(), "one law per cell expected");
+  geometry_.reserve(cells_.size());
+  for (Index c : cells_) {
+    fe::HexCoords X;
+    for (int a = 0; a < 8; ++a)
+      X.row(a) = mesh.node(mesh.cell(c)[a]).transpose();
+    auto geo = fe::hex8_geometry(X);
+    TRIFEM_CHECK(geo.has_value(),
+                 "cell {} is inverted or degenerate (det(dX/dxi) <= 0 at a Gauss point); "
+                 "check its node order",
+                 c);
+    geometry_.push_back(*geo);
+  }
+}
+
+void SolidTerm::element_dofs(Index e, std::vector<Index>& dofs) const {
+  dofs.resize(24);
+  const auto& nodes = mesh_.cell(cells_[e]);
+  for (int a = 0; a < 8; ++a)
+    for (int k = 0; k < 3; ++k)
+      dofs[3 * a + k] = dofs_.dof(u_, nodes[a], k);
+}
+
+fe::HexCoords SolidTerm::displacements(Index e, const Vector& x) const {
+  fe::HexCoords u;
+  const auto& nodes = mesh_.cell(cells_[e]);
+  for (int a = 0; a < 8; ++a)
+    for (int k = 0; k < 3; ++k)
+      u(a, k) = x[dofs_.dof(u_, nodes[a], k)];
+  return u;
+}
+
+bool SolidTerm::evaluate(Index e, const EvalState& state, LocalVector& r, LocalMatrix* K) const {
+  HexVector f;
+  HexMatrix Ke;
+  const bool ok = solid_hex8(geometry_[e], displacements(e, state.x), *laws_[e], f,
+                             K ? &Ke : nullptr);
+  if (!ok)
+    return false;
+  r = f;
+  if (K)
+    *K = Ke;
+  return true;
+}
+
+CellStress SolidTerm::stress(Index e, const Vector& x) const {
+  return solid_hex8_stress(geometry_[e], displacements(e, x), *laws_[e]);
+}
+
+} // namespace trifem::physics

@@ -1,0 +1,45 @@
+// SPDX-License-Identifier: MIT
+// Hex8 hyperelastic solid over a set of cells (total Lagrangian).
+#pragma once
+
+#include "trifem/dofs/dof_map.hpp"
+#include "trifem/fe/hex8.hpp"
+#include "trifem/material/elastic_law.hpp"
+#include "trifem/mesh/mesh.hpp"
+#include "trifem/physics/solid_kernel.hpp"
+#include "trifem/physics/term.hpp"
+
+#include <memory>
+
+namespace trifem::physics {
+
+/// Internal virtual work of hyperelastic hex8 cells. Each cell has a law (shared, immutable).
+class SolidTerm final : public Term {
+public:
+  /// `cells[i]` uses `laws[i]`; reference geometry is computed once here. Throws InputError
+  /// naming the cell if a cell is inverted or degenerate in the reference configuration.
+  SolidTerm(const mesh::Mesh& mesh, const dofs::DofMap& dofs, dofs::FieldId displacement,
+            std::vector<Index> cells, std::vector<std::shared_ptr<const material::ElasticLaw>> laws);
+
+  std::string name() const override { return "solid"; }
+  Index num_elements() const override { return static_cast<Index>(cells_.size()); }
+  void element_dofs(Index e, std::vector<Index>& dofs) const override;
+  bool evaluate(Index e, const EvalState& state, LocalVector& r, LocalMatrix* K) const override;
+
+  /// Mesh cell of element e.
+  Index cell(Index e) const { return cells_[e]; }
+  /// Averaged Cauchy stress and J of element e at state x.
+  CellStress stress(Index e, const Vector& x) const;
+
+private:
+  fe::HexCoords displacements(Index e, const Vector& x) const;
+
+  const mesh::Mesh& mesh_;
+  const dofs::DofMap& dofs_;
+  dofs::FieldId u_;
+  std::vector<Index> cells_;
+  std::vector<std::shared_ptr<const material::ElasticLaw>> laws_;
+  std::vector<fe::HexGeometry> geometry_;
+};
+
+} // namespace trifem::physics

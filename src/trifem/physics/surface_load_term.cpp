@@ -1,0 +1,98 @@
+// SPDX-License-Identifier: MIT
+#include "trifem/physics/surface_load_term.hpp"
+
+#include "trifem/fe/hex8.hpp"
+
+namespace trifem::physics {
+namespace {
+
+Mat3 skew(const Vec3& v) {
+  Mat3 S;
+  S << 0, -v[2], v[1], v[2], 0, -v[0], -v[1], v[0], 0;
+  return S;
+}
+
+void facet_dofs(const mesh::Facet& f, const dofs::DofMap& map, dofs::FieldId u,
+                std::vector<Index>& dofs) {
+  dofs.resize(12);
+  for (int a = 0; a < 4; ++a)
+    for (int k = 0; k < 3; ++k)
+      dofs[3 * a + k] = map.dof(u, f.nodes[a], k);
+}
+
+} // namespace
+
+PressureTerm::PressureTerm(const mesh::Mesh& mesh, const dofs::DofMap& dofs,
+                           dofs::FieldId displacement, std::vector<mesh::Facet> facets,
+                           Real magnitude, dofs::LoadCurve curve)
+    : mesh_(mesh), dofs_(dofs), u_(displacement), facets_(std::move(facets)),
+      magnitude_(magnitude), curve_(std::move(curve)) {}
+
+void PressureTerm::element_dofs(Index e, std::vector<Index>& dofs) const {
+  facet_dofs(facets_[e], dofs_, u_, dofs);
+}
+
+bool PressureTerm::evaluate(Index e, const EvalState& state, LocalVector& r,
+                            LocalMatrix* K) const {
+  const mesh::Facet& f = facets_[e];
+  fe::QuadCoords x;
+  for (int a = 0; a < 4; ++a)
+    for (int k = 0; k < 3; ++k)
+      x(a, k) = mesh_.node(f.nodes[a])[k] + state.x[dofs_.dof(u_, f.nodes[a], k)];
+  const Real p = magnitude_ * curve_(state.time);
+  r.setZero(12);
+  if (K)
+    K->setZero(12, 12);
+  for (const auto& qp : fe::quad_gauss_2x2()) {
+    const fe::QuadShape N = fe::quad4_shape(qp.xi);
+    const fe::QuadShapeGrad dN = fe::quad4_shape_grad(qp.xi);
+    const Vec3 t1 = x.transpose() * dN.col(0), t2 = x.transpose() * dN.col(1);
+    const Vec3 area = t1.cross(t2) * qp.weight; // n da
+    for (int a = 0; a < 4; ++a) {
+      r.segment<3>(3 * a) += p * N[a] * area; // R = f_int - f_ext, f_ext = -p n da
+      if (!K)
+        continue;
+      for (int b = 0; b < 4; ++b)
+        K->block<3, 3>(3 * a, 3 * b) +=
+            p * N[a] * qp.weight * (dN(b, 1) * skew(t1) - dN(b, 0) * skew(t2));
+    }
+  }
+  return true;
+}
+
+TractionTerm::TractionTerm(const mesh::Mesh& mesh, const dofs::DofMap& dofs,
+                           dofs::FieldId displacement, std::vector<mesh::Facet> facets,
+                           Vec3 traction, dofs::LoadCurve curve)
+    : mesh_(mesh), dofs_(dofs), u_(displacement), facets_(std::move(facets)),
+      traction_(traction), curve_(std::move(curve)) {
+  nodal_area_.reserve(facets_.size());
+  for (const auto& f : facets_) {
+    fe::QuadCoords X;
+    for (int a = 0; a < 4; ++a)
+      X.row(a) = mesh.node(f.nodes[a]).transpose();
+    Eigen::Matrix<Real, 4, 1> w = Eigen::Matrix<Real, 4, 1>::Zero();
+    for (const auto& qp : fe::quad_gauss_2x2()) {
+      const fe::QuadShapeGrad dN = fe::quad4_shape_grad(qp.xi);
+      const Vec3 T1 = X.transpose() * dN.col(0), T2 = X.transpose() * dN.col(1);
+      w += fe::quad4_shape(qp.xi) * T1.cross(T2).norm() * qp.weight;
+    }
+    nodal_area_.push_back(w);
+  }
+}
+
+void TractionTerm::element_dofs(Index e, std::vector<Index>& dofs) const {
+  facet_dofs(facets_[e], dofs_, u_, dofs);
+}
+
+bool TractionTerm::evaluate(Index e, const EvalState& state, LocalVector& r,
+                            LocalMatrix* K) const {
+  const Vec3 t = traction_ * curve_(state.time);
+  r.resize(12);
+  for (int a = 0; a < 4; ++a)
+    r.segment<3>(3 * a) = -nodal_area_[e][a] * t;
+  if (K)
+    K->setZero(12, 12);
+  return true;
+}
+
+} // namespace trifem::physics

@@ -1,0 +1,53 @@
+// SPDX-License-Identifier: MIT
+// Surface loads on quad4 facets: follower pressure and dead traction.
+#pragma once
+
+#include "trifem/dofs/dof_map.hpp"
+#include "trifem/dofs/load_curve.hpp"
+#include "trifem/mesh/mesh.hpp"
+#include "trifem/physics/term.hpp"
+
+namespace trifem::physics {
+
+/// Follower pressure p(t) = magnitude * curve(t) on the current surface:
+/// f_ext,a = -int N_a p n da = -int N_a p (x_xi x x_eta) dxi deta. Positive p pushes into the
+/// body. Its tangent is the (unsymmetric) load stiffness.
+class PressureTerm final : public Term {
+public:
+  PressureTerm(const mesh::Mesh& mesh, const dofs::DofMap& dofs, dofs::FieldId displacement,
+               std::vector<mesh::Facet> facets, Real magnitude, dofs::LoadCurve curve);
+  std::string name() const override { return "pressure"; }
+  Index num_elements() const override { return static_cast<Index>(facets_.size()); }
+  void element_dofs(Index e, std::vector<Index>& dofs) const override;
+  bool evaluate(Index e, const EvalState& state, LocalVector& r, LocalMatrix* K) const override;
+
+private:
+  const mesh::Mesh& mesh_;
+  const dofs::DofMap& dofs_;
+  dofs::FieldId u_;
+  std::vector<mesh::Facet> facets_;
+  Real magnitude_;
+  dofs::LoadCurve curve_;
+};
+
+/// Dead traction t(t) = vector * curve(t) per reference area: f_ext,a = int N_a t dA.
+class TractionTerm final : public Term {
+public:
+  TractionTerm(const mesh::Mesh& mesh, const dofs::DofMap& dofs, dofs::FieldId displacement,
+               std::vector<mesh::Facet> facets, Vec3 traction, dofs::LoadCurve curve);
+  std::string name() const override { return "traction"; }
+  Index num_elements() const override { return static_cast<Index>(facets_.size()); }
+  void element_dofs(Index e, std::vector<Index>& dofs) const override;
+  bool evaluate(Index e, const EvalState& state, LocalVector& r, LocalMatrix* K) const override;
+
+private:
+  const mesh::Mesh& mesh_;
+  const dofs::DofMap& dofs_;
+  dofs::FieldId u_;
+  std::vector<mesh::Facet> facets_;
+  std::vector<Eigen::Matrix<Real, 4, 1>> nodal_area_; ///< int N_a dA per facet
+  Vec3 traction_;
+  dofs::LoadCurve curve_;
+};
+
+} // namespace trifem::physics

@@ -1,0 +1,39 @@
+// SPDX-License-Identifier: MIT
+// A weak-form term: residual and Jacobian contributions of a list of "elements" (cells,
+// facets, contact pairs, ...). Assembly loops over terms without knowing what they are.
+#pragma once
+
+#include "trifem/core/types.hpp"
+
+#include <Eigen/Dense>
+#include <string>
+#include <vector>
+
+namespace trifem::physics {
+
+/// The state seen by terms during one evaluation. Vectors hold all DOFs.
+struct EvalState {
+  const Vector& x;     ///< current iterate (prescribed values included)
+  const Vector& x_old; ///< converged state at the start of the step
+  Real time = 0.0;     ///< end time of the step [s]
+  Real dt = 0.0;       ///< step size [s]
+};
+
+using LocalVector = Eigen::VectorXd;
+using LocalMatrix = Eigen::MatrixXd;
+
+/// Residual R = f_int - f_ext and dR/dx of a set of elements. Implementations hold only
+/// immutable data; history variables live in the state vectors or in explicit state arrays.
+class Term {
+public:
+  virtual ~Term() = default;
+  virtual std::string name() const = 0;
+  virtual Index num_elements() const = 0;
+  /// Global DOFs of element e; fixed for the whole run (defines the sparsity pattern).
+  virtual void element_dofs(Index e, std::vector<Index>& dofs) const = 0;
+  /// Residual (and, if K is given, Jacobian) of element e, ordered as element_dofs.
+  /// Returns false if the state is inadmissible (e.g. J <= 0): nothing else is then used.
+  virtual bool evaluate(Index e, const EvalState& state, LocalVector& r, LocalMatrix* K) const = 0;
+};
+
+} // namespace trifem::physics

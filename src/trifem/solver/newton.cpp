@@ -1,0 +1,199 @@
+// SPDX-License-Identifier: MIT
+#include "trifem/solver/newton.hpp"
+
+#include "trifem/core/log.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace trifem::solver {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+} // namespace
+
+const char* to_string(SolveStatus status) {
+  switch (status) {
+  case SolveStatus::Converged: return "converged";
+  case SolveStatus::Inadmissible: return "inadmissible state (e.g. J <= 0)";
+  case SolveStatus::Diverged: return "diverged";
+  case SolveStatus::MaxIterations: return "maximum Newton iterations reached";
+  case SolveStatus::FactorizationFailed: return "linear solver failed (singular matrix?)";
+  }
+  return "unknown";
+}
+
+NewtonSolver::NewtonSolver(NewtonSettings settings,
+                           std::unique_ptr<linalg::LinearSolver> linear_solver)
+    : settings_(settings), linear_(std::move(linear_solver)) {}
+
+std::vector<Real> NewtonSolver::field_norms(const NonlinearProblem& problem, const Vector& v,
+                                            bool inf) const {
+  std::vector<Real> norms(problem.field_scales().size(), 0.0);
+  const auto& fields = problem.equation_fields();
+  for (Index i = 0; i < v.size(); ++i) {
+    Real& n = norms[fields[i]];
+    n = inf ? std::max(n, std::abs(v[i])) : n + v[i] * v[i];
+  }
+  if (!inf)
+    for (Real& n : norms)
+      n = std::sqrt(n);
+  return norms;
+}
+
+Real NewtonSolver::scaled_residual(const NonlinearProblem& problem, const Vector& r) const {
+  const std::vector<Real> norms = field_norms(problem, r, false);
+  Real sum = 0.0;
+  for (std::size_t f = 0; f < norms.size(); ++f)
+    sum += std::pow(norms[f] / reference_[f], 2);
+  return std::sqrt(sum);
+}
+
+bool NewtonSolver::residual_converged(const NonlinearProblem& problem, const Vector& r) const {
+  const std::vector<Real> norms = field_norms(problem, r, false);
+  const auto& scales = problem.field_scales();
+  for (std::size_t f = 0; f < norms.size(); ++f) {
+    const bool relative = norms[f] <= settings_.residual_tolerance * reference_[f];
+    const bool absolute = norms[f] <= settings_.absolute_floor * scales[f].residual;
+    if (!relative && !absolute)
+      return false;
+  }
+  return true;
+}
+
+bool NewtonSolver::increment_converged(const NonlinearProblem& problem, const Vector& dx,
+                                       Real step) const {
+  const std::vector<Real> norms = field_norms(problem, dx, true);
+  const auto& scales = problem.field_scales();
+  for (std::size_t f = 0; f < norms.size(); ++f)
+    if (step * norms[f] > settings_.increment_tolerance * scales[f].size)
+      return false;
+  return true;
+}
+
+SolveStatus NewtonSolver::factor_and_solve(NonlinearProblem& problem, Linearization& lin,
+                                           Vector& dx) {
+  auto start = Clock::now();
+  if (analyzed_pattern_ != problem.pattern_id()) {
+    linear_->analyze_pattern(lin.jacobian);
+    analyzed_pattern_ = problem.pattern_id();
+  }
+  const bool factored = linear_->factorize(lin.jacobian);
+  times_.factorization += seconds_since(start);
+  if (!factored)
+    return SolveStatus::FactorizationFailed;
+  start = Clock::now();
+  const Vector rhs = -(lin.residual + lin.constraint_rhs);
+  const bool solved = linear_->solve(rhs, dx);
+  times_.solve += seconds_since(start);
+  return solved ? SolveStatus::Converged : SolveStatus::FactorizationFailed;
+}
+
+SolveStatus NewtonSolver::line_search(NonlinearProblem& problem, const Vector& dx,
+                                      const Vector& r0, Real& step, Linearization& lin) {
+  // Energy line search (Bathe, FE Procedures, sec. 8.4.2): find s with g(s) = dx . R(x + s dx)
+  // small compared with g(0); secant updates of s, halving after inadmissible trials.
+  const Real g0 = dx.dot(r0);
+  const bool search = settings_.line_search && problem.constraints_satisfied() && g0 < 0.0;
+  problem.save_iterate();
+  step = 1.0;
+  for (int trial = 0; trial <= settings_.max_backtracks; ++trial) {
+    if (trial > 0)
+      problem.restore_iterate();
+    const auto start = Clock::now();
+    const bool admissible = problem.update(dx, step) == SolveStatus::Converged &&
+                            problem.linearize(lin, true) == SolveStatus::Converged &&
+                            lin.residual.allFinite();
+    times_.assembly += seconds_since(start);
+    if (!admissible) {
+      step *= 0.5;
+      continue;
+    }
+    const Real g = dx.dot(lin.residual);
+    if (!search || std::abs(g) <= settings_.line_search_tolerance * std::abs(g0) ||
+        trial == settings_.max_backtracks)
+      return SolveStatus::Converged;
+    // secant estimate of the zero of g, kept in [0.1 step, 1]
+    const Real secant = (g0 - g) != 0.0 ? step * g0 / (g0 - g) : 0.5 * step;
+    const Real next = std::clamp(secant, 0.1 * step, 1.0);
+    if (std::abs(next - step) <= 0.05 * step)
+      return SolveStatus::Converged;
+    step = next;
+  }
+  problem.restore_iterate();
+  return SolveStatus::Inadmissible;
+}
+
+NewtonReport NewtonSolver::solve(NonlinearProblem& problem) {
+  NewtonReport report;
+  Linearization lin;
+  auto start = Clock::now();
+  if (problem.linearize(lin, true) != SolveStatus::Converged) {
+    report.status = SolveStatus::Inadmissible;
+    report.failure_reason = "the start state of the step cannot be evaluated";
+    return report;
+  }
+  times_.assembly += seconds_since(start);
+
+  // Reference residual per field: the larger of the residual and the residual the pending
+  // constraint increment would cause, never below the absolute floor.
+  const auto& scales = problem.field_scales();
+  const std::vector<Real> r0 = field_norms(problem, lin.residual, false);
+  const std::vector<Real> c0 = field_norms(problem, lin.residual + lin.constraint_rhs, false);
+  reference_.assign(scales.size(), 0.0);
+  for (std::size_t f = 0; f < scales.size(); ++f)
+    reference_[f] = std::max({r0[f], c0[f], settings_.absolute_floor * scales[f].residual});
+
+  Vector dx = Vector::Zero(problem.num_equations());
+  Real step = 1.0;
+  for (int k = 0;; ++k) {
+    if (!lin.residual.allFinite()) {
+      report.status = SolveStatus::Diverged;
+      report.failure_reason = "non-finite residual";
+      return report;
+    }
+    const Real merit = scaled_residual(problem, lin.residual);
+    report.residual_history.push_back(merit);
+    report.final_residual = merit;
+    report.iterations = k;
+    const bool increment_ok = k == 0 || increment_converged(problem, dx, step);
+    if (problem.constraints_satisfied() && residual_converged(problem, lin.residual) &&
+        increment_ok) {
+      report.status = SolveStatus::Converged;
+      return report;
+    }
+    if (merit > settings_.divergence_factor) {
+      report.status = SolveStatus::Diverged;
+      report.failure_reason = fmt::format("residual grew to {:.3e} x its start value", merit);
+      return report;
+    }
+    if (k == settings_.max_iterations) {
+      report.status = SolveStatus::MaxIterations;
+      report.failure_reason = fmt::format("no convergence in {} iterations (residual {:.3e})", k,
+                                          merit);
+      return report;
+    }
+    const SolveStatus solved = factor_and_solve(problem, lin, dx);
+    if (solved != SolveStatus::Converged) {
+      report.status = solved;
+      report.failure_reason = "the linear solver failed (singular Jacobian?)";
+      return report;
+    }
+    const Vector r0 = lin.residual;
+    const SolveStatus searched = line_search(problem, dx, r0, step, lin);
+    if (searched != SolveStatus::Converged) {
+      report.status = searched;
+      report.failure_reason = "every trial step of the line search was inadmissible";
+      return report;
+    }
+    log::debug("    iteration {:2d}: residual {:.3e}, step {:.3g}", k + 1,
+               scaled_residual(problem, lin.residual), step);
+  }
+}
+
+} // namespace trifem::solver

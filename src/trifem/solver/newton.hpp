@@ -1,0 +1,68 @@
+// SPDX-License-Identifier: MIT
+// Newton-Raphson with backtracking line search and per-field scaled convergence tests.
+#pragma once
+
+#include "trifem/linalg/linear_solver.hpp"
+#include "trifem/solver/nonlinear_problem.hpp"
+
+#include <chrono>
+#include <memory>
+#include <vector>
+
+namespace trifem::solver {
+
+/// Newton settings.
+struct NewtonSettings {
+  int max_iterations = 20;
+  Real residual_tolerance = 1e-8;  ///< ||R_f|| <= tol * max(||R_f^0||, eps_abs R_char_f)
+  Real increment_tolerance = 1e-8; ///< ||dx_f||_inf <= tol * size_f
+  Real absolute_floor = 1e-13;     ///< ||R_f|| <= floor * R_char_f counts as converged
+  bool line_search = true;
+  Real line_search_tolerance = 0.9; ///< accept s when |dx.R(s)| <= tol |dx.R(0)|
+  int max_backtracks = 8;
+  Real divergence_factor = 1e6; ///< residual growth over the first that counts as divergence
+};
+
+/// Wall-clock time spent per phase [s].
+struct PhaseTimes {
+  double assembly = 0.0;
+  double factorization = 0.0;
+  double solve = 0.0;
+};
+
+/// What one Newton solve did.
+struct NewtonReport {
+  SolveStatus status = SolveStatus::MaxIterations;
+  int iterations = 0;
+  std::vector<Real> residual_history; ///< scaled residual norm at each evaluation
+  Real final_residual = 0.0;
+  std::string failure_reason;
+};
+
+/// Newton solver. Owns the linear solver and reuses its symbolic analysis across calls while
+/// the problem's pattern_id is unchanged.
+class NewtonSolver {
+public:
+  NewtonSolver(NewtonSettings settings, std::unique_ptr<linalg::LinearSolver> linear_solver);
+  NewtonReport solve(NonlinearProblem& problem);
+  const PhaseTimes& times() const { return times_; }
+  const NewtonSettings& settings() const { return settings_; }
+
+private:
+  /// Max over fields of ||R_f||_2 / max(R0_f, floor R_char_f): 1 means "at tolerance scale".
+  Real scaled_residual(const NonlinearProblem& problem, const Vector& r) const;
+  std::vector<Real> field_norms(const NonlinearProblem& problem, const Vector& v, bool inf) const;
+  bool residual_converged(const NonlinearProblem& problem, const Vector& r) const;
+  bool increment_converged(const NonlinearProblem& problem, const Vector& dx, Real step) const;
+  SolveStatus factor_and_solve(NonlinearProblem& problem, Linearization& lin, Vector& dx);
+  SolveStatus line_search(NonlinearProblem& problem, const Vector& dx, const Vector& r0,
+                          Real& step, Linearization& lin);
+
+  NewtonSettings settings_;
+  std::unique_ptr<linalg::LinearSolver> linear_;
+  int analyzed_pattern_ = -1;
+  std::vector<Real> reference_; ///< per-field reference residual of the current solve
+  PhaseTimes times_;
+};
+
+} // namespace trifem::solver

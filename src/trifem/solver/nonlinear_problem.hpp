@@ -1,0 +1,73 @@
+// SPDX-License-Identifier: MIT
+// What the Newton solver sees of a discretised problem (it knows nothing of elements).
+#pragma once
+
+#include "trifem/core/types.hpp"
+
+#include <string>
+#include <vector>
+
+namespace trifem::solver {
+
+/// Outcome of a numerical operation; failures make the step controller cut the step back.
+enum class SolveStatus {
+  Converged,
+  Inadmissible,        ///< a trial state is unphysical (J <= 0, ...), never evaluated further
+  Diverged,            ///< residual grows or becomes non-finite
+  MaxIterations,       ///< Newton did not converge in the allowed iterations
+  FactorizationFailed, ///< singular or failed LU factorization
+};
+
+/// Human-readable status.
+const char* to_string(SolveStatus status);
+
+/// Characteristic scales of one field, for unit-independent convergence tests.
+struct FieldScale {
+  std::string name;
+  Real residual = 1.0; ///< characteristic residual (e.g. modulus * length^2 for forces)
+  Real size = 1.0;     ///< characteristic size of the unknown (e.g. model length)
+};
+
+/// The linearisation of the problem at its current state.
+struct Linearization {
+  Vector residual;        ///< R at free equations
+  Vector constraint_rhs;  ///< K_fc * (pending increment of constrained DOFs)
+  SparseMatrix jacobian;  ///< dR/dx at free equations (pattern fixed while pattern_id is)
+};
+
+/// A nonlinear system R(x) = 0 over free equations, with prescribed DOFs that may still have
+/// a pending increment towards their target (applied together with the Newton update).
+class NonlinearProblem {
+public:
+  virtual ~NonlinearProblem() = default;
+  virtual Index num_equations() const = 0;
+  /// Field index of every equation, and the scales of each field.
+  virtual const std::vector<int>& equation_fields() const = 0;
+  virtual const std::vector<FieldScale>& field_scales() const = 0;
+  /// Changes whenever the sparsity pattern of the Jacobian changes (symbolic re-analysis).
+  virtual int pattern_id() const = 0;
+  /// Evaluates residual and, if `with_jacobian`, Jacobian and constraint_rhs at the current
+  /// state. Returns Inadmissible if the state cannot be evaluated.
+  virtual SolveStatus linearize(Linearization& lin, bool with_jacobian) = 0;
+  /// Moves the state by step * dx on free equations and step * (pending increment) on
+  /// constrained DOFs. Returns Inadmissible (state unchanged) if the trial state is unphysical.
+  virtual SolveStatus update(const Vector& dx, Real step) = 0;
+  /// True once all constrained DOFs have reached their targets.
+  virtual bool constraints_satisfied() const = 0;
+  /// Saves / restores the iterate (for line search).
+  virtual void save_iterate() = 0;
+  virtual void restore_iterate() = 0;
+};
+
+/// A problem advanced in time by steps (hooks used by the time loop).
+class TransientProblem : public NonlinearProblem {
+public:
+  /// Sets loads and prescribed targets for the step ending at `time` with size `dt`.
+  virtual void begin_step(Real time, Real dt) = 0;
+  /// Accepts the converged step (history variables become the new old state).
+  virtual void commit_step() = 0;
+  /// Returns to the state at the beginning of the step (after a failure).
+  virtual void reject_step() = 0;
+};
+
+} // namespace trifem::solver

@@ -1,0 +1,32 @@
+# SPDX-License-Identifier: MIT
+# Two entry points for newcomers and CI:
+#   make run   - install missing Debian packages, build (Release), run the flagship example
+#   make test  - same set-up, then the whole test suite through ctest
+BUILD_DIR ?= build
+JOBS ?= $(shell nproc)
+EXAMPLE ?= cantilever
+
+.PHONY: all deps configure build run test clean format
+
+all: build
+
+deps:
+	@bash scripts/install-deps.sh
+
+configure: deps
+	@cmake -S . -B $(BUILD_DIR) -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
+
+build: configure
+	@cmake --build $(BUILD_DIR) -j $(JOBS)
+
+run: build
+	@bash examples/run_example.sh $(EXAMPLE) $(BUILD_DIR)
+
+test: build
+	@cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS)
+
+format:
+	@git ls-files '*.cpp' '*.hpp' | xargs clang-format -i
+
+clean:
+	@rm -rf $(BUILD_DIR) results

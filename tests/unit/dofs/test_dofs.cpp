@@ -1,0 +1,59 @@
+// SPDX-License-Identifier: MIT
+// DOF numbering, constraints and load curves.
+#include "trifem/core/error.hpp"
+#include "trifem/dofs/dirichlet.hpp"
+
+#include <gtest/gtest.h>
+
+using namespace trifem;
+
+TEST(DofMap, NumbersFieldsContiguouslyAndSplitsFreeAndConstrained) {
+  dofs::DofMap map;
+  const auto u = map.add_field("u", 4, 3);
+  const auto p = map.add_field("p", 2, 1);
+  EXPECT_EQ(map.num_dofs(), 14);
+  EXPECT_EQ(map.dof(u, 2, 1), 7);
+  EXPECT_EQ(map.dof(p, 1, 0), 13);
+  EXPECT_EQ(map.field_of(13), p);
+  EXPECT_EQ(map.field_of(11), u);
+  map.constrain(map.dof(u, 0, 0));
+  map.constrain(map.dof(p, 1, 0));
+  map.finalize();
+  EXPECT_EQ(map.num_equations(), 12);
+  EXPECT_EQ(map.num_constrained(), 2);
+  EXPECT_EQ(map.equation(0), -1);
+  EXPECT_EQ(map.equation(1), 0);
+  EXPECT_EQ(map.constrained_index(13), 1);
+  for (Index eq = 0; eq < map.num_equations(); ++eq)
+    EXPECT_EQ(map.equation(map.dof_of_equation(eq)), eq);
+}
+
+TEST(Dirichlet, PrescribedValuesFollowTheCurve) {
+  dofs::DirichletCondition c{{1, 3}, 2.0,
+                             dofs::LoadCurve({{0, 0}, {2, 1}}, dofs::Interpolation::Linear)};
+  Vector x = Vector::Zero(4);
+  dofs::prescribed_values({c}, 1.0, x);
+  EXPECT_DOUBLE_EQ(x[1], 1.0);
+  EXPECT_DOUBLE_EQ(x[3], 1.0);
+  EXPECT_DOUBLE_EQ(x[0], 0.0);
+}
+
+TEST(LoadCurve, InterpolatesAndHoldsOutside) {
+  const std::vector<std::pair<Real, Real>> pts = {{0, 0}, {1, 2}, {3, 2}};
+  const dofs::LoadCurve lin(pts, dofs::Interpolation::Linear);
+  EXPECT_DOUBLE_EQ(lin(0.5), 1.0);
+  EXPECT_DOUBLE_EQ(lin(-1.0), 0.0);
+  EXPECT_DOUBLE_EQ(lin(10.0), 2.0);
+  const dofs::LoadCurve step(pts, dofs::Interpolation::Step);
+  EXPECT_DOUBLE_EQ(step(0.99), 0.0);
+  EXPECT_DOUBLE_EQ(step(1.0), 2.0);
+  const dofs::LoadCurve smooth(pts, dofs::Interpolation::Smooth);
+  EXPECT_DOUBLE_EQ(smooth(0.5), 1.0);
+  EXPECT_NEAR((smooth(1e-4) - smooth(0)) / 1e-4, 0.0, 1e-3); // zero slope at the points
+  EXPECT_EQ(lin.breakpoints(), (std::vector<Real>{0, 1, 3}));
+}
+
+TEST(LoadCurve, RejectsNonIncreasingTimes) {
+  EXPECT_THROW(dofs::LoadCurve({{0, 0}, {0, 1}}, dofs::Interpolation::Linear), InputError);
+  EXPECT_THROW(dofs::LoadCurve({}, dofs::Interpolation::Linear), InputError);
+}

@@ -1,0 +1,105 @@
+// SPDX-License-Identifier: MIT
+// Step controller, linear solver backends, and Newton on a small algebraic problem.
+#include "trifem/core/error.hpp"
+#include "trifem/solver/newton.hpp"
+#include "trifem/solver/step_controller.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace trifem;
+
+namespace {
+
+/// R_i(x) = x_i^3 + x_{i+1} - b_i: a small nonlinear system with a known root x = 1.
+class CubicProblem final : public solver::NonlinearProblem {
+public:
+  explicit CubicProblem(Index n) : x_(Vector::Constant(n, 3.0)), fields_(n, 0) {
+    b_ = Vector::Constant(n, 2.0);
+    b_[n - 1] = 1.0;
+  }
+  Index num_equations() const override { return x_.size(); }
+  const std::vector<int>& equation_fields() const override { return fields_; }
+  const std::vector<solver::FieldScale>& field_scales() const override { return scales_; }
+  int pattern_id() const override { return 0; }
+  solver::SolveStatus linearize(solver::Linearization& lin, bool with_jacobian) override {
+    const Index n = x_.size();
+    lin.residual = x_.array().cube().matrix() - b_;
+    lin.residual.head(n - 1) += x_.tail(n - 1);
+    if (with_jacobian) {
+      std::vector<Eigen::Triplet<Real>> t;
+      for (Index i = 0; i < n; ++i) {
+        t.emplace_back(i, i, 3 * x_[i] * x_[i]);
+        if (i + 1 < n)
+          t.emplace_back(i, i + 1, 1.0);
+      }
+      lin.jacobian.resize(n, n);
+      lin.jacobian.setFromTriplets(t.begin(), t.end());
+      lin.constraint_rhs = Vector::Zero(n);
+    }
+    return solver::SolveStatus::Converged;
+  }
+  solver::SolveStatus update(const Vector& dx, Real step) override {
+    x_ += step * dx;
+    return solver::SolveStatus::Converged;
+  }
+  bool constraints_satisfied() const override { return true; }
+  void save_iterate() override { saved_ = x_; }
+  void restore_iterate() override { x_ = saved_; }
+  const Vector& x() const { return x_; }
+
+private:
+  Vector x_, saved_, b_;
+  std::vector<int> fields_;
+  std::vector<solver::FieldScale> scales_{{"x", 1.0, 1.0}};
+};
+
+} // namespace
+
+TEST(Newton, SolvesACubicSystemQuadratically) {
+  for (const auto& backend : linalg::available_linear_solvers()) {
+    CubicProblem problem(5);
+    solver::NewtonSolver newton({}, linalg::make_linear_solver(backend));
+    const auto report = newton.solve(problem);
+    ASSERT_EQ(report.status, solver::SolveStatus::Converged) << backend;
+    EXPECT_LE((problem.x() - Vector::Ones(5)).norm(), 1e-10) << backend;
+    EXPECT_LE(report.iterations, 12) << backend;
+  }
+}
+
+TEST(LinearSolver, UnknownBackendIsAnInputError) {
+  EXPECT_THROW(linalg::make_linear_solver("pardiso"), InputError);
+}
+
+TEST(StepController, LandsOnMustPointsAndTheEnd) {
+  solver::StepSettings s;
+  s.end_time = 1.0;
+  s.dt = s.dt_max = 0.3;
+  s.dt_min = 1e-3;
+  s.must_points = {0.5};
+  solver::StepController c(s);
+  std::vector<Real> times;
+  while (!c.finished()) {
+    const Real dt = c.next_step();
+    c.accept(dt, 10); // hard steps: no growth
+    times.push_back(c.time());
+  }
+  EXPECT_NEAR(times.back(), 1.0, 1e-15);
+  EXPECT_NE(std::find(times.begin(), times.end(), 0.5), times.end());
+}
+
+TEST(StepController, CutsBackThenStopsAtTheMinimumStep) {
+  solver::StepSettings s;
+  s.dt = s.dt_max = 0.1;
+  s.dt_min = 0.025;
+  solver::StepController c(s);
+  EXPECT_TRUE(c.reject(c.next_step()));
+  EXPECT_DOUBLE_EQ(c.dt(), 0.05);
+  EXPECT_TRUE(c.reject(c.next_step()));
+  EXPECT_DOUBLE_EQ(c.dt(), 0.025);
+  EXPECT_FALSE(c.reject(c.next_step()));
+  EXPECT_EQ(c.cutbacks(), 3);
+  c.accept(c.next_step(), 2); // an easy step regrows dt
+  EXPECT_NEAR(c.dt(), 0.0375, 1e-15);
+}

@@ -26,6 +26,19 @@ int guarded(F&& action) {
   }
 }
 
+/// The first argument that is not a flag must be a known command.
+void check_command_name(int argc, char** argv) {
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg.starts_with("-"))
+      continue;
+    if (arg != "run" && arg != "check")
+      throw CLI::ParseError("unknown command '" + arg + "' (expected run or check)",
+                            CLI::ExitCodes::ExtrasError);
+    return;
+  }
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -44,11 +57,12 @@ int main(int argc, char** argv) {
   check->add_option("case", case_file, "case file (.toml)")->required();
 
   try {
+    check_command_name(argc, argv);
     cli.parse(argc, argv);
   } catch (const CLI::Success& e) {
     return cli.exit(e);
   } catch (const CLI::ParseError& e) {
-    cli.exit(e);
+    std::cerr << "error: " << e.what() << " (see 'trifem --help')\n";
     return app::kUsage;
   }
   log::configure(quiet ? log::Level::Quiet : verbose ? log::Level::Verbose : log::Level::Normal);

@@ -9,6 +9,7 @@
 
 #include <chrono>
 #include <fstream>
+#include <iostream>
 #include <nlohmann/json.hpp>
 #include <omp.h>
 
@@ -84,21 +85,35 @@ void write_summary(const std::filesystem::path& file, const io::CaseSpec& spec,
   out << j.dump(2) << '\n';
 }
 
+/// build_model with errors prefixed by the case file, like the reader's.
+std::unique_ptr<Model> build_model_for(const io::CaseSpec& spec) {
+  try {
+    return build_model(spec);
+  } catch (const InputError& e) {
+    throw InputError(fmt::format("{}: {}", spec.file.string(), e.what()));
+  }
+}
+
 } // namespace
 
 int run_case(const io::CaseSpec& spec, const std::filesystem::path& output_dir) {
   const auto start = Clock::now();
-  std::unique_ptr<Model> model = build_model(spec);
-  log_model(spec, *model);
+  std::unique_ptr<Model> model = build_model_for(spec);
   OutputWriter output(*model, spec.output, output_dir);
   log::add_file((output_dir / "run.log").string());
+  log_model(spec, *model);
 
   solver::NewtonSolver newton(newton_settings(spec.solver),
                               linalg::make_linear_solver(spec.solver.linear_solver));
   solver::StepController controller(step_settings(spec));
   solver::Linearization initial;
-  model->problem->linearize(initial, false); // reactions of the initial state
-  output.write(0.0, 0, 0.0, 0, true);
+  if (model->problem->linearize(initial, false) != solver::SolveStatus::Converged) {
+    std::cerr << "error: " << spec.file.string()
+              << ": the initial state (t = 0) inverts an element (J <= 0); prescribed values "
+                 "without a load curve apply from t = 0\n";
+    return kAnalysisFailed;
+  }
+  output.write(0.0, 0, 0.0, 0, true); // the initial state, with its reactions
 
   auto observer = [&](const solver::StepInfo& info) {
     log::info("step {:4d}  t = {:<10.5g} dt = {:<9.3g} iterations {:2d}  residual {:.2e}",
@@ -120,14 +135,14 @@ int run_case(const io::CaseSpec& spec, const std::filesystem::path& output_dir) 
   log::info("results: {} ({} VTU files), {}, {}", output.pvd_file().string(), output.vtu_count(),
             output.history_file().string(), (output_dir / "summary.json").string());
   if (!run.success) {
-    log::error("error: {}", run.failure);
+    std::cerr << "error: " << spec.file.string() << ": " << run.failure << '\n';
     return kAnalysisFailed;
   }
   return kSuccess;
 }
 
 int check_case(const io::CaseSpec& spec) {
-  std::unique_ptr<Model> model = build_model(spec);
+  std::unique_ptr<Model> model = build_model_for(spec);
   log_model(spec, *model);
   log::info("check passed: the case is valid");
   return kSuccess;

@@ -141,9 +141,12 @@ struct AssemblyFixture {
   std::unique_ptr<assembly::Assembler> assembler;
   assembly::AssembledSystem system;
   Vector x;
+  Index colours = 0;
 
   explicit AssemblyFixture(int n) : model(n, false) {
     solid = model.make_solid_term();
+    colours = static_cast<Index>(
+        assembly::colour_elements(assembly::collect_stencils(*solid), model.map.num_dofs()).size());
     assembler = std::make_unique<assembly::Assembler>(
         model.map, std::vector<const physics::Term*>{solid.get()});
     system = assembler->make_system();
@@ -168,6 +171,7 @@ void set_size_counters(benchmark::State& state, const AssemblyFixture& fx) {
   state.counters["elements"] = static_cast<double>(fx.model.mesh.num_cells());
   state.counters["equations"] = static_cast<double>(fx.model.map.num_equations());
   state.counters["nnz_Kff"] = static_cast<double>(fx.system.Kff.nonZeros());
+  state.counters["colours"] = static_cast<double>(fx.colours);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -298,8 +302,8 @@ int main(int argc, char** argv) {
   for (const auto& law : material::registered_laws()) {
     benchmark::RegisterBenchmark(("BM_Hex8Kernel/" + law.type).c_str(), bm_hex8_kernel, law.type,
                                  true);
-    benchmark::RegisterBenchmark(("BM_Hex8Residual/" + law.type).c_str(), bm_hex8_kernel,
-                                 law.type, false);
+    benchmark::RegisterBenchmark(("BM_Hex8Residual/" + law.type).c_str(), bm_hex8_kernel, law.type,
+                                 false);
   }
   benchmark::RegisterBenchmark("BM_AssembleSystem", bm_assemble_system)
       ->Arg(10)

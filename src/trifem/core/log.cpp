@@ -22,6 +22,7 @@ void add_file(const std::string& path) {
   sink->set_pattern("%v");
   sink->set_level(spdlog::level::debug);
   spdlog::default_logger()->sinks().push_back(sink);
+  spdlog::default_logger()->flush_on(spdlog::level::info);
 }
 
 } // namespace trifem::log

@@ -135,7 +135,8 @@ NewtonReport NewtonSolver::solve(NonlinearProblem& problem) {
   auto start = Clock::now();
   if (problem.linearize(lin, true) != SolveStatus::Converged) {
     report.status = SolveStatus::Inadmissible;
-    report.failure_reason = "the start state of the step cannot be evaluated";
+    report.failure_reason =
+        "the state at the start of the step cannot be evaluated (an element is inverted)";
     return report;
   }
   times_.assembly += seconds_since(start);
@@ -188,7 +189,8 @@ NewtonReport NewtonSolver::solve(NonlinearProblem& problem) {
     const SolveStatus searched = line_search(problem, dx, r0, step, lin);
     if (searched != SolveStatus::Converged) {
       report.status = searched;
-      report.failure_reason = "every trial step of the line search was inadmissible";
+      report.failure_reason =
+          "every trial step of the line search inverts an element (J <= 0)";
       return report;
     }
     log::debug("    iteration {:2d}: residual {:.3e}, step {:.3g}", k + 1,

@@ -49,9 +49,9 @@ void StepController::accept(Real dt, int iterations) {
 }
 
 bool StepController::reject(Real dt) {
-  ++cutbacks_;
   if (dt <= settings_.dt_min * (1.0 + 1e-12))
     return false;
+  ++cutbacks_;
   dt_ = std::max(settings_.dt_min, dt * settings_.cutback);
   return true;
 }

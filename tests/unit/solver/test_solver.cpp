@@ -99,7 +99,7 @@ TEST(StepController, CutsBackThenStopsAtTheMinimumStep) {
   EXPECT_TRUE(c.reject(c.next_step()));
   EXPECT_DOUBLE_EQ(c.dt(), 0.025);
   EXPECT_FALSE(c.reject(c.next_step()));
-  EXPECT_EQ(c.cutbacks(), 3);
+  EXPECT_EQ(c.cutbacks(), 2);
   c.accept(c.next_step(), 2); // an easy step regrows dt
   EXPECT_NEAR(c.dt(), 0.0375, 1e-15);
 }

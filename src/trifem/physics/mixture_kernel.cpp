@@ -1,0 +1,309 @@
+// SPDX-License-Identifier: MIT
+#include "trifem/physics/mixture_kernel.hpp"
+
+#include "trifem/physics/solid_kernel.hpp"
+
+#include <cmath>
+
+namespace trifem::physics {
+namespace {
+
+using Grad = Eigen::Matrix<Real, 98, 1>; ///< derivative of a scalar w.r.t. the local unknowns
+using Node3 = Eigen::Matrix<Real, 8, 3>;
+
+/// Current-configuration values at one Gauss point.
+struct PointData {
+  fe::HexShape N;
+  Node3 b;   ///< spatial gradients b_a = F^-T Grad N_a
+  Real dv;   ///< J dV
+  Vec3 w, jp, jm;     ///< interpolated fluxes
+  Mat3 Gw, Gp, Gm;    ///< flux gradients sum_a x_a (x) b_a
+};
+
+/// Element integrals in the current configuration (FORMULATION 2.2, 4.2).
+struct Integrals {
+  std::array<PointData, 8> qp;
+  Real V = 0.0;
+  Node3 g = Node3::Zero();                               ///< g_a = int b_a dv
+  Eigen::Matrix<Real, 8, 8> m = Eigen::Matrix<Real, 8, 8>::Zero(); ///< int N_a N_b dv
+};
+
+const std::array<fe::HexShape, 8>& shape_at_gauss_points() {
+  static const std::array<fe::HexShape, 8> N = [] {
+    std::array<fe::HexShape, 8> out;
+    for (int q = 0; q < 8; ++q)
+      out[q] = fe::hex8_shape(fe::hex_gauss_2x2x2()[q].xi);
+    return out;
+  }();
+  return N;
+}
+
+bool integrate(const fe::HexGeometry& geo, const MixtureUnknowns& x, bool ions, Integrals& I) {
+  for (int q = 0; q < 8; ++q) {
+    PointData& d = I.qp[q];
+    const Mat3 F = deformation_gradient(geo.dN_dX[q], x.u);
+    const Real J = F.determinant();
+    if (!(J > 0.0))
+      return false;
+    d.N = shape_at_gauss_points()[q];
+    d.b = geo.dN_dX[q] * F.inverse();
+    d.dv = J * geo.dV[q];
+    d.w = x.w.transpose() * d.N;
+    d.Gw = x.w.transpose() * d.b;
+    if (ions) {
+      d.jp = x.jp.transpose() * d.N;
+      d.jm = x.jm.transpose() * d.N;
+      d.Gp = x.jp.transpose() * d.b;
+      d.Gm = x.jm.transpose() * d.b;
+    }
+    I.V += d.dv;
+    I.g += d.b * d.dv;
+    I.m += d.N * d.N.transpose() * d.dv;
+  }
+  return true;
+}
+
+/// Flux of a nodal field out of the element: sum_a g_a . j_a.
+Real outflow(const Node3& g, const fe::HexCoords& j) { return (g.array() * j.array()).sum(); }
+
+MixtureChemistry chemistry(const Integrals& I, const MixtureUnknowns& x, const MixtureHistory& h,
+                           const material::MixtureProperties& mat, const MixtureStep& step,
+                           bool ions) {
+  MixtureChemistry c;
+  c.V = I.V;
+  c.Vw = I.V - mat.phi_s0 * h.V0;
+  c.phi_w = c.Vw / c.V;
+  c.A_ww = 1.0 / mat.permeability;
+  c.mu_w = x.p;
+  c.admissible = c.Vw > 0.0;
+  if (!ions || !c.admissible)
+    return c;
+  const material::Electrochemistry& ch = *step.chem;
+  const Real RT = ch.RT();
+  const Real N_plus = h.N_plus - step.dt * outflow(I.g, x.jp);
+  const Real N_minus = h.N_minus - step.dt * outflow(I.g, x.jm);
+  c.admissible = N_plus > 0.0 && N_minus > 0.0;
+  if (!c.admissible)
+    return c;
+  c.c_plus = N_plus / c.Vw;
+  c.c_minus = N_minus / c.Vw;
+  c.c_fixed = h.N_fixed / c.Vw;
+  c.mu_w = x.p - RT * (mat.osmotic * (c.c_plus + c.c_minus) - 2.0 * ch.osmotic_bath * ch.c_ref);
+  c.mu_plus = RT * std::log(mat.gamma_plus * c.c_plus / (ch.gamma_bath * ch.c_ref)) + x.eta;
+  c.mu_minus = RT * std::log(mat.gamma_minus * c.c_minus / (ch.gamma_bath * ch.c_ref)) - x.eta;
+  c.A_wp = RT / (c.phi_w * mat.d_plus);
+  c.A_wm = RT / (c.phi_w * mat.d_minus);
+  c.A_ww += c.A_wp * c.c_plus + c.A_wm * c.c_minus;
+  c.A_pp = c.A_wp / c.c_plus;
+  c.A_mm = c.A_wm / c.c_minus;
+  return c;
+}
+
+/// Mass-matrix products W_a = sum_b m_ab x_b (rows = nodes).
+Node3 mass_product(const Integrals& I, const fe::HexCoords& x) { return I.m * x; }
+
+void residual(const Integrals& I, const MixtureChemistry& c, const MixtureUnknowns& x,
+              const MixtureHistory& h, const MixtureStep& step, const MixtureLayout& L,
+              const HexVector& f_int, LocalVector& r) {
+  r.setZero(L.size());
+  const Node3 W = mass_product(I, x.w);
+  Node3 Rw = c.mu_w * I.g - c.A_ww * W;
+  for (int a = 0; a < 8; ++a)
+    r.segment<3>(L.u(a, 0)) = f_int.segment<3>(3 * a) - (x.p - step.prestress) * I.g.row(a).transpose();
+  r[L.p()] = (I.V - h.V_old) / step.dt + outflow(I.g, x.w);
+  if (L.ions) {
+    const Node3 P = mass_product(I, x.jp), M = mass_product(I, x.jm);
+    Rw += c.A_wp * P + c.A_wm * M;
+    const Node3 Rp = c.mu_plus * I.g + c.A_wp * W - c.A_pp * P;
+    const Node3 Rm = c.mu_minus * I.g + c.A_wm * W - c.A_mm * M;
+    for (int a = 0; a < 8; ++a) {
+      r.segment<3>(L.jp(a, 0)) = Rp.row(a).transpose();
+      r.segment<3>(L.jm(a, 0)) = Rm.row(a).transpose();
+    }
+    r[L.eta()] = outflow(I.g, x.jp) - outflow(I.g, x.jm) -
+                 (h.N_plus - h.N_minus - h.N_fixed) / step.dt;
+  }
+  for (int a = 0; a < 8; ++a)
+    r.segment<3>(L.w(a, 0)) = Rw.row(a).transpose();
+}
+
+/// d(outflow)/du_c = int [(div j) b_c - (grad j)^T b_c] dv  (FORMULATION 4.2, q_b).
+Node3 outflow_shape_derivative(const Integrals& I, Mat3 PointData::*grad) {
+  Node3 q = Node3::Zero();
+  for (const PointData& d : I.qp) {
+    const Mat3& G = d.*grad;
+    q += (G.trace() * d.b - d.b * G) * d.dv;
+  }
+  return q;
+}
+
+/// Derivatives of the element-constant chemistry w.r.t. the local unknowns.
+struct ChemistryGradients {
+  Grad V, mu_w, mu_plus, mu_minus, A_ww, A_wp, A_wm, A_pp, A_mm, Qp, Qm;
+};
+
+ChemistryGradients chemistry_gradients(const Integrals& I, const MixtureChemistry& c,
+                                       const MixtureHistory& h,
+                                       const material::MixtureProperties& mat,
+                                       const MixtureStep& step, const MixtureLayout& L) {
+  ChemistryGradients d;
+  for (Grad* v : {&d.V, &d.mu_w, &d.mu_plus, &d.mu_minus, &d.A_ww, &d.A_wp, &d.A_wm, &d.A_pp,
+                  &d.A_mm, &d.Qp, &d.Qm})
+    v->setZero();
+  for (int a = 0; a < 8; ++a)
+    d.V.segment<3>(L.u(a, 0)) = I.g.row(a).transpose();
+  d.mu_w[L.p()] = 1.0;
+  if (!L.ions)
+    return d;
+  const Real RT = step.chem->RT();
+  const Node3 qp = outflow_shape_derivative(I, &PointData::Gp);
+  const Node3 qm = outflow_shape_derivative(I, &PointData::Gm);
+  for (int a = 0; a < 8; ++a) {
+    d.Qp.segment<3>(L.u(a, 0)) = qp.row(a).transpose();
+    d.Qm.segment<3>(L.u(a, 0)) = qm.row(a).transpose();
+    d.Qp.segment<3>(L.jp(a, 0)) = I.g.row(a).transpose();
+    d.Qm.segment<3>(L.jm(a, 0)) = I.g.row(a).transpose();
+  }
+  const Grad dcp = (-step.dt * d.Qp - c.c_plus * d.V) / c.Vw;
+  const Grad dcm = (-step.dt * d.Qm - c.c_minus * d.V) / c.Vw;
+  const Grad dphi = (mat.phi_s0 * h.V0 / (c.V * c.V)) * d.V;
+  d.mu_w -= RT * mat.osmotic * (dcp + dcm);
+  d.mu_plus = (RT / c.c_plus) * dcp;
+  d.mu_plus[L.eta()] += 1.0;
+  d.mu_minus = (RT / c.c_minus) * dcm;
+  d.mu_minus[L.eta()] -= 1.0;
+  d.A_wp = (-c.A_wp / c.phi_w) * dphi;
+  d.A_wm = (-c.A_wm / c.phi_w) * dphi;
+  d.A_ww = c.A_wp * dcp + c.c_plus * d.A_wp + c.A_wm * dcm + c.c_minus * d.A_wm;
+  d.A_pp = -c.A_pp * (dcp / c.c_plus + dphi / c.phi_w);
+  d.A_mm = -c.A_mm * (dcm / c.c_minus + dphi / c.phi_w);
+  return d;
+}
+
+/// Adds s * H_ab (dg_a/du_b) to the u-columns of the 3 rows starting at `row`, for all a, b.
+void add_area_derivative(const Integrals& I, const std::array<Real, 4>& s,
+                         const std::array<int, 4>& row_offset, int rows, LocalMatrix& K) {
+  for (const PointData& d : I.qp)
+    for (int a = 0; a < 8; ++a)
+      for (int b = 0; b < 8; ++b) {
+        if (a == b)
+          continue;
+        const Mat3 H = (d.b.row(a).transpose() * d.b.row(b) - d.b.row(b).transpose() * d.b.row(a)) * d.dv;
+        for (int f = 0; f < rows; ++f)
+          K.block<3, 3>(row_offset[f] + 3 * a, MixtureLayout::u(b, 0)) += s[f] * H;
+      }
+}
+
+void tangent(const Integrals& I, const MixtureChemistry& c, const MixtureUnknowns& x,
+             const MixtureHistory& h, const material::MixtureProperties& mat,
+             const MixtureStep& step, const MixtureLayout& L, const HexMatrix& K_solid,
+             LocalMatrix& K) {
+  const int n = L.size();
+  K.setZero(n, n);
+  K.topLeftCorner<24, 24>() = K_solid;
+  const ChemistryGradients d = chemistry_gradients(I, c, h, mat, step, L);
+  const Node3 W = mass_product(I, x.w);
+  const Node3 P = L.ions ? mass_product(I, x.jp) : Node3::Zero();
+  const Node3 M = L.ions ? mass_product(I, x.jm) : Node3::Zero();
+  const Node3 qw = outflow_shape_derivative(I, &PointData::Gw);
+  for (int a = 0; a < 8; ++a) {
+    const Vec3 ga = I.g.row(a).transpose();
+    K.block<3, 1>(L.u(a, 0), L.p()) = -ga;
+    K.block<1, 3>(L.p(), L.w(a, 0)) = ga.transpose();
+    K.block<1, 3>(L.p(), L.u(a, 0)) = ga.transpose() / step.dt + qw.row(a);
+    // rank-one terms of the element-constant chemistry
+    K.block(L.w(a, 0), 0, 3, n) += (ga * d.mu_w.head(n).transpose()) -
+                                    (W.row(a).transpose() * d.A_ww.head(n).transpose());
+    if (L.ions) {
+      K.block(L.w(a, 0), 0, 3, n) += P.row(a).transpose() * d.A_wp.head(n).transpose() +
+                                      M.row(a).transpose() * d.A_wm.head(n).transpose();
+      K.block(L.jp(a, 0), 0, 3, n) += ga * d.mu_plus.head(n).transpose() +
+                                       W.row(a).transpose() * d.A_wp.head(n).transpose() -
+                                       P.row(a).transpose() * d.A_pp.head(n).transpose();
+      K.block(L.jm(a, 0), 0, 3, n) += ga * d.mu_minus.head(n).transpose() +
+                                       W.row(a).transpose() * d.A_wm.head(n).transpose() -
+                                       M.row(a).transpose() * d.A_mm.head(n).transpose();
+    }
+    // friction blocks (element-constant coefficients times the current mass matrix)
+    for (int b = 0; b < 8; ++b) {
+      const Real mab = I.m(a, b);
+      for (int k = 0; k < 3; ++k) {
+        K(L.w(a, k), L.w(b, k)) -= c.A_ww * mab;
+        if (!L.ions)
+          continue;
+        K(L.w(a, k), L.jp(b, k)) += c.A_wp * mab;
+        K(L.w(a, k), L.jm(b, k)) += c.A_wm * mab;
+        K(L.jp(a, k), L.w(b, k)) += c.A_wp * mab;
+        K(L.jm(a, k), L.w(b, k)) += c.A_wm * mab;
+        K(L.jp(a, k), L.jp(b, k)) -= c.A_pp * mab;
+        K(L.jm(a, k), L.jm(b, k)) -= c.A_mm * mab;
+      }
+    }
+  }
+  // shape derivatives of the mass-matrix products: d(sum_b m_ab x_b)/du_c = int N_a x_h (x) b_c dv
+  for (const PointData& q : I.qp) {
+    const Vec3 zw = -c.A_ww * q.w + (L.ions ? Vec3(c.A_wp * q.jp + c.A_wm * q.jm) : Vec3::Zero());
+    const Vec3 zp = c.A_wp * q.w - c.A_pp * q.jp;
+    const Vec3 zm = c.A_wm * q.w - c.A_mm * q.jm;
+    for (int a = 0; a < 8; ++a)
+      for (int cc = 0; cc < 8; ++cc) {
+        const Real s = q.N[a] * q.dv;
+        const Eigen::RowVector3d bc = q.b.row(cc);
+        K.block<3, 3>(L.w(a, 0), L.u(cc, 0)) += s * zw * bc;
+        if (L.ions) {
+          K.block<3, 3>(L.jp(a, 0), L.u(cc, 0)) += s * zp * bc;
+          K.block<3, 3>(L.jm(a, 0), L.u(cc, 0)) += s * zm * bc;
+        }
+      }
+  }
+  add_area_derivative(I, {-(x.p - step.prestress), c.mu_w, c.mu_plus, c.mu_minus},
+                      {0, 24, 48, 72}, L.ions ? 4 : 2, K);
+  if (L.ions)
+    K.row(L.eta()) = (d.Qp - d.Qm).head(n).transpose();
+}
+
+} // namespace
+
+bool mixture_hex8(const fe::HexGeometry& geo, const MixtureUnknowns& x,
+                  const MixtureHistory& history, const material::MixtureProperties& mat,
+                  const MixtureStep& step, const MixtureLayout& layout, LocalVector& r,
+                  LocalMatrix* K) {
+  Integrals I;
+  if (!integrate(geo, x, layout.ions, I))
+    return false;
+  const MixtureChemistry c = chemistry(I, x, history, mat, step, layout.ions);
+  if (!c.admissible)
+    return false;
+  HexVector f_int;
+  HexMatrix K_solid;
+  if (!solid_hex8(geo, x.u, *mat.solid, f_int, K ? &K_solid : nullptr))
+    return false;
+  residual(I, c, x, history, step, layout, f_int, r);
+  if (K)
+    tangent(I, c, x, history, mat, step, layout, K_solid, *K);
+  return true;
+}
+
+MixtureCellOutput mixture_hex8_output(const fe::HexGeometry& geo, const MixtureUnknowns& x,
+                                      const MixtureHistory& history,
+                                      const material::MixtureProperties& mat,
+                                      const MixtureStep& step, bool ions) {
+  MixtureCellOutput out;
+  Integrals I;
+  if (!integrate(geo, x, ions, I))
+    return out;
+  out.chem = chemistry(I, x, history, mat, step, ions);
+  for (const PointData& d : I.qp) {
+    out.w += d.w * d.dv / I.V;
+    if (ions) {
+      out.j_plus += d.jp * d.dv / I.V;
+      out.j_minus += d.jm * d.dv / I.V;
+    }
+  }
+  const CellStress s = solid_hex8_stress(geo, x.u, *mat.solid);
+  out.solid_stress = s.cauchy;
+  out.J = s.J;
+  return out;
+}
+
+} // namespace trifem::physics

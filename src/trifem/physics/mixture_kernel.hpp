@@ -1,0 +1,78 @@
+// SPDX-License-Identifier: MIT
+// Hex8 element of the triphasic (and biphasic) mixture: residual of the paper's eqs 14-19 with
+// backward Euler and its consistent tangent (FORMULATION sections 2-4).
+#pragma once
+
+#include "trifem/fe/hex8.hpp"
+#include "trifem/material/mixture.hpp"
+#include "trifem/physics/term.hpp"
+
+namespace trifem::physics {
+
+/// Local DOF layout, field-major: u (24), w (24), [j+ (24), j- (24)], p, [eta].
+struct MixtureLayout {
+  bool ions = true;
+  int size() const { return ions ? 98 : 49; }
+  static int u(int a, int k) { return 3 * a + k; }
+  static int w(int a, int k) { return 24 + 3 * a + k; }
+  static int jp(int a, int k) { return 48 + 3 * a + k; }
+  static int jm(int a, int k) { return 72 + 3 * a + k; }
+  int p() const { return ions ? 96 : 48; }
+  static int eta() { return 97; }
+};
+
+/// Nodal and element unknowns of one element, in physical units.
+struct MixtureUnknowns {
+  fe::HexCoords u, w, jp, jm; ///< rows = nodes; fluxes are spatial vectors
+  Real p = 0.0;               ///< hydrostatic pressure [MPa]
+  Real eta = 0.0;             ///< Faraday constant x electric potential [mJ/mmol]
+};
+
+/// Element history and invariant data.
+struct MixtureHistory {
+  Real V0 = 0.0;       ///< reference volume [mm^3]
+  Real V_old = 0.0;    ///< volume at the last converged step [mm^3]
+  Real N_plus = 0.0;   ///< cation moles at the last converged step [mmol]
+  Real N_minus = 0.0;  ///< anion moles at the last converged step [mmol]
+  Real N_fixed = 0.0;  ///< fixed-charge moles at the end of the step [mEq]
+  Real N_fixed_old = 0.0; ///< fixed-charge moles at the last converged step [mEq]
+};
+
+/// Step data shared by all elements.
+struct MixtureStep {
+  Real dt = 1.0;          ///< step size [s]
+  Real prestress = 0.0;   ///< constant Cauchy prestress Pi0: momentum uses p - Pi0 (IC-3a)
+  const material::Electrochemistry* chem = nullptr;
+};
+
+/// Element-constant chemistry derived from the unknowns (also used for output).
+struct MixtureChemistry {
+  Real V = 0, Vw = 0, phi_w = 0;         ///< volume, water volume [mm^3], porosity
+  Real c_plus = 0, c_minus = 0, c_fixed = 0; ///< concentrations per water volume [mmol/mm^3]
+  Real mu_w = 0;                         ///< bath-normalised water potential [MPa]
+  Real mu_plus = 0, mu_minus = 0;        ///< bath-normalised ion potentials [mJ/mmol]
+  Real A_ww = 0, A_wp = 0, A_wm = 0, A_pp = 0, A_mm = 0; ///< resistance coefficients
+  bool admissible = false;               ///< Vw > 0, N+- > 0, J > 0 everywhere
+};
+
+/// Residual (natural rows, physical units: R^u [N], R^w [N], R^+- [mJ mm^2/mmol... see docs],
+/// R^p [mm^3/s], R^eta [mmol/s]) and, if K is given, dR/d(unknowns). Returns false if the
+/// state is inadmissible (J <= 0 at a Gauss point, water volume or ion moles <= 0).
+bool mixture_hex8(const fe::HexGeometry& geo, const MixtureUnknowns& x,
+                  const MixtureHistory& history, const material::MixtureProperties& mat,
+                  const MixtureStep& step, const MixtureLayout& layout, LocalVector& r,
+                  LocalMatrix* K);
+
+/// Element chemistry and volume-averaged fluxes at a state (for output and initial states).
+struct MixtureCellOutput {
+  MixtureChemistry chem;
+  Vec3 w = Vec3::Zero(), j_plus = Vec3::Zero(), j_minus = Vec3::Zero();
+  Mat3 solid_stress = Mat3::Zero(); ///< Cauchy stress of the solid matrix [MPa]
+  Real J = 1.0;
+};
+MixtureCellOutput mixture_hex8_output(const fe::HexGeometry& geo, const MixtureUnknowns& x,
+                                      const MixtureHistory& history,
+                                      const material::MixtureProperties& mat,
+                                      const MixtureStep& step, bool ions);
+
+} // namespace trifem::physics

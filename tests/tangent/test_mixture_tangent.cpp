@@ -1,0 +1,154 @@
+// SPDX-License-Identifier: MIT
+// Finite-difference check of the full triphasic (98 columns) and biphasic (49 columns) element
+// tangent at a deformed, non-equilibrium state with non-zero fluxes on a distorted hex8.
+#include "trifem/material/registry.hpp"
+#include "trifem/physics/mixture_kernel.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace trifem;
+using physics::LocalMatrix;
+using physics::LocalVector;
+
+namespace {
+
+/// Typical magnitudes (mm-N-s-mmol) used for the FD steps and the column scaling.
+constexpr Real kU = 1e-2, kW = 1e-5, kJ = 1e-9, kP = 1e-2, kEta = 10.0;
+
+struct Setup {
+  fe::HexGeometry geo;
+  physics::MixtureUnknowns x;
+  physics::MixtureHistory h;
+  material::MixtureProperties mat;
+  material::Electrochemistry chem;
+  physics::MixtureStep step;
+};
+
+Setup make_setup(bool ions, const std::string& solid) {
+  Setup s;
+  std::srand(ions ? 3 : 4);
+  fe::HexCoords X;
+  const Real r[8][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
+                        {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
+  for (int a = 0; a < 8; ++a)
+    for (int k = 0; k < 3; ++k)
+      X(a, k) = r[a][k] + 0.15 * (std::rand() / Real(RAND_MAX) - 0.5);
+  s.geo = *fe::hex8_geometry(X);
+  s.x.u = 0.08 * fe::HexCoords::Random();
+  s.x.w = 2e-5 * fe::HexCoords::Random();
+  s.x.jp = 3e-9 * fe::HexCoords::Random();
+  s.x.jm = 2e-9 * fe::HexCoords::Random();
+  s.x.p = 0.12;
+  s.x.eta = -1500.0;
+  s.mat = material::make_mixture(
+      ions, material::create_law(solid, {{"E", 0.3}, {"nu", 0.2}}, "solid"),
+      ions ? material::ParameterValues{{"phi_s0", 0.25}, {"permeability", 1.07e-3},
+                                       {"fixed_charge", 2e-4}, {"d_plus", 5e-4},
+                                       {"d_minus", 8e-4}, {"osmotic", 0.93}}
+           : material::ParameterValues{{"phi_s0", 0.25}, {"permeability", 1.07e-3}},
+      "m");
+  Real V0 = 0.0;
+  for (Real dV : s.geo.dV)
+    V0 += dV;
+  s.h.V0 = V0;
+  s.h.V_old = 0.97 * V0;
+  const Real Vw = V0 * 0.75;
+  s.h.N_fixed = s.h.N_fixed_old = 2e-4 * Vw;
+  s.h.N_plus = 2.9e-4 * Vw;
+  s.h.N_minus = 0.85e-4 * Vw;
+  s.step = {0.7, 0.05, &s.chem};
+  return s;
+}
+
+/// Scale of local unknown i.
+Real typical(const physics::MixtureLayout& L, int i) {
+  if (i < 24)
+    return kU;
+  if (i < 48)
+    return kW;
+  if (i == L.p())
+    return kP;
+  if (L.ions && i == L.eta())
+    return kEta;
+  return kJ;
+}
+
+void set_unknown(physics::MixtureUnknowns& x, const physics::MixtureLayout& L, int i, Real v) {
+  if (i == L.p())
+    x.p = v;
+  else if (L.ions && i == L.eta())
+    x.eta = v;
+  else {
+    fe::HexCoords* fields[4] = {&x.u, &x.w, &x.jp, &x.jm};
+    (*fields[i / 24])((i % 24) / 3, i % 3) = v;
+  }
+}
+
+Real get_unknown(const physics::MixtureUnknowns& x, const physics::MixtureLayout& L, int i) {
+  if (i == L.p())
+    return x.p;
+  if (L.ions && i == L.eta())
+    return x.eta;
+  const fe::HexCoords* fields[4] = {&x.u, &x.w, &x.jp, &x.jm};
+  return (*fields[i / 24])((i % 24) / 3, i % 3);
+}
+
+void check_tangent(bool ions, const std::string& solid) {
+  Setup s = make_setup(ions, solid);
+  const physics::MixtureLayout L{ions};
+  LocalVector r;
+  LocalMatrix K;
+  ASSERT_TRUE(physics::mixture_hex8(s.geo, s.x, s.h, s.mat, s.step, L, r, &K));
+  LocalVector r_only;
+  ASSERT_TRUE(physics::mixture_hex8(s.geo, s.x, s.h, s.mat, s.step, L, r_only, nullptr));
+  EXPECT_LE((r - r_only).norm(), 1e-14 * r.norm());
+  const int n = L.size();
+  LocalMatrix K_fd(n, n);
+  for (int j = 0; j < n; ++j) {
+    const Real h = 1e-4 * typical(L, j), x0 = get_unknown(s.x, L, j);
+    physics::MixtureUnknowns xp = s.x, xm = s.x;
+    set_unknown(xp, L, j, x0 + h);
+    set_unknown(xm, L, j, x0 - h);
+    LocalVector rp, rm;
+    ASSERT_TRUE(physics::mixture_hex8(s.geo, xp, s.h, s.mat, s.step, L, rp, nullptr));
+    ASSERT_TRUE(physics::mixture_hex8(s.geo, xm, s.h, s.mat, s.step, L, rm, nullptr));
+    K_fd.col(j) = (rp - rm) / (2 * h);
+  }
+  // compare block by block (row field x column field), columns scaled by typical values
+  const char* names[6] = {"u", "w", "j+", "j-", "p", "eta"};
+  auto field = [&](int i) { return i < 96 && i < L.p() ? i / 24 : (i == L.p() ? 4 : 5); };
+  for (int fr = 0; fr < 6; ++fr) {
+    for (int fc = 0; fc < 6; ++fc) {
+      Real num = 0.0, den = 0.0, scale = 0.0;
+      for (int i = 0; i < n; ++i)
+        scale = std::max(scale, field(i) == fr ? K.row(i).cwiseAbs().maxCoeff() : 0.0);
+      for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j)
+          if (field(i) == fr && field(j) == fc) {
+            const Real t = typical(L, j);
+            num += std::pow((K(i, j) - K_fd(i, j)) * t, 2);
+            den += std::pow(K(i, j) * t, 2);
+          }
+      if (den == 0.0 && num == 0.0)
+        continue;
+      // relative to the block, or to the row-field's largest entry for tiny blocks
+      const Real rel = std::sqrt(num) / std::max(std::sqrt(den), 1e-8 * scale * typical(L, 0));
+      EXPECT_LE(rel, 1e-6) << "rel " << rel << " " << (ions ? "triphasic " : "biphasic ") << solid << " block d"
+                           << names[fr] << "/d" << names[fc];
+    }
+  }
+}
+
+} // namespace
+
+TEST(MixtureHex8, TriphasicTangentMatchesFiniteDifferencesSvk) {
+  check_tangent(true, "saint-venant-kirchhoff");
+}
+TEST(MixtureHex8, TriphasicTangentMatchesFiniteDifferencesNeoHookean) {
+  check_tangent(true, "neo-hookean");
+}
+TEST(MixtureHex8, BiphasicTangentMatchesFiniteDifferences) {
+  check_tangent(false, "saint-venant-kirchhoff");
+}

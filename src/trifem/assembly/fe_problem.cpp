@@ -74,6 +74,8 @@ void FeProblem::begin_step(Real time, Real dt) {
 }
 
 void FeProblem::commit_step() {
+  for (auto& t : terms_)
+    t->commit(eval_state());
   x_old_ = x_;
   time_old_ = time_;
 }

@@ -34,6 +34,8 @@ public:
   /// Residual (and, if K is given, Jacobian) of element e, ordered as element_dofs.
   /// Returns false if the state is inadmissible (e.g. J <= 0): nothing else is then used.
   virtual bool evaluate(Index e, const EvalState& state, LocalVector& r, LocalMatrix* K) const = 0;
+  /// Called once per converged step with the converged state: history variables advance.
+  virtual void commit(const EvalState& /*state*/) {}
 };
 
 } // namespace trifem::physics

@@ -54,6 +54,14 @@ Real NewtonSolver::scaled_residual(const NonlinearProblem& problem, const Vector
   return std::sqrt(sum);
 }
 
+Real NewtonSolver::growth(const NonlinearProblem& problem, const std::vector<Real>& norms) const {
+  (void)problem;
+  Real g = 0.0;
+  for (std::size_t f = 0; f < norms.size(); ++f)
+    g = std::max(g, norms[f] / initial_reference_[f]);
+  return g;
+}
+
 bool NewtonSolver::residual_converged(const NonlinearProblem& problem, const Vector& r) const {
   const std::vector<Real> norms = field_norms(problem, r, false);
   const auto& scales = problem.field_scales();
@@ -150,6 +158,7 @@ NewtonReport NewtonSolver::solve(NonlinearProblem& problem) {
   for (std::size_t f = 0; f < scales.size(); ++f)
     reference_[f] = std::max({r0[f], c0[f], settings_.absolute_floor * scales[f].residual});
 
+  initial_reference_ = reference_;
   Vector dx = Vector::Zero(problem.num_equations());
   Real step = 1.0;
   for (int k = 0;; ++k) {
@@ -158,6 +167,10 @@ NewtonReport NewtonSolver::solve(NonlinearProblem& problem) {
       report.failure_reason = "non-finite residual";
       return report;
     }
+    // The reference of each field is the largest residual seen in this solve (its load scale).
+    const std::vector<Real> norms = field_norms(problem, lin.residual, false);
+    for (std::size_t f = 0; f < norms.size(); ++f)
+      reference_[f] = std::max(reference_[f], norms[f]);
     const Real merit = scaled_residual(problem, lin.residual);
     report.residual_history.push_back(merit);
     report.final_residual = merit;
@@ -168,9 +181,10 @@ NewtonReport NewtonSolver::solve(NonlinearProblem& problem) {
       report.status = SolveStatus::Converged;
       return report;
     }
-    if (merit > settings_.divergence_factor) {
+    if (growth(problem, norms) > settings_.divergence_factor) {
       report.status = SolveStatus::Diverged;
-      report.failure_reason = fmt::format("residual grew to {:.3e} x its start value", merit);
+      report.failure_reason =
+          fmt::format("residual grew to {:.3e} x its start value", growth(problem, norms));
       return report;
     }
     if (k == settings_.max_iterations) {

@@ -61,7 +61,11 @@ private:
   NewtonSettings settings_;
   std::unique_ptr<linalg::LinearSolver> linear_;
   int analyzed_pattern_ = -1;
-  std::vector<Real> reference_; ///< per-field reference residual of the current solve
+  /// Largest residual over the start value per field (divergence test).
+  Real growth(const NonlinearProblem& problem, const std::vector<Real>& norms) const;
+
+  std::vector<Real> reference_;         ///< per-field reference residual (running maximum)
+  std::vector<Real> initial_reference_; ///< per-field reference at the start of the solve
   PhaseTimes times_;
 };
 

@@ -65,7 +65,7 @@ inline DonnanState donnan(double cF, double c_bath, double RT, double faraday,
   TRIFEM_CHECK(cF >= 0.0 && c_bath > 0.0 && RT > 0.0 && faraday > 0.0 && gamma_ratio_K > 0.0,
                "donnan: need cF >= 0, c* > 0, RT > 0, F > 0, K > 0");
   const double root_K_c2 = 2.0 * std::sqrt(gamma_ratio_K) * c_bath; // sqrt(4 K c*²)
-  const double sum = std::hypot(cF, root_K_c2);                      // c⁺ + c⁻
+  const double sum = std::hypot(cF, root_K_c2);                     // c⁺ + c⁻
   const double c_plus = 0.5 * (cF + sum);
   const double c_minus = gamma_ratio_K * c_bath * c_bath / c_plus;
   // Φ(c⁺ + c⁻) − 2Φ*c* = Φ (sum − 2√K c*) + 2c*(Φ√K − Φ*),  sum − 2√K c* = cF²/(sum + 2√K c*)
@@ -118,8 +118,8 @@ inline ChargedMedium paper_medium(const PaperParameters& p = paper_parameters) {
 
 /// Donnan state of the medium at volume ratio J: donnan(cF(J), ...).
 inline DonnanState donnan_at(const ChargedMedium& m, double J) {
-  return donnan(fixed_charge(m.cF0, m.phi_s0, J), m.c_bath, m.RT, m.faraday, m.gamma_ratio_K,
-                m.phi, m.phi_bath, m.gamma_plus, m.gamma_plus_bath);
+  return donnan(fixed_charge(m.cF0, m.phi_s0, J), m.c_bath, m.RT, m.faraday, m.gamma_ratio_K, m.phi,
+                m.phi_bath, m.gamma_plus, m.gamma_plus_bath);
 }
 
 /// dΠ/dJ of the medium (see donnan_pressure_derivative_dJ).
@@ -225,7 +225,8 @@ double safeguarded_newton(Fn&& f, double a, double b, double rel_tol = 1e-14) {
       next = 0.5 * (a + b);
     last_step = std::abs(next - x);
     x = next;
-    if (last_step <= rel_tol * std::abs(x) || b - a <= 4.0 * std::numeric_limits<double>::epsilon() * std::abs(x))
+    if (last_step <= rel_tol * std::abs(x) ||
+        b - a <= 4.0 * std::numeric_limits<double>::epsilon() * std::abs(x))
       return x;
   }
   TRIFEM_VERIFY(false, "safeguarded_newton: no convergence on [{}, {}]", a, b);
@@ -267,8 +268,7 @@ inline SwellingState swelling_equilibrium(SolidLaw law, Deformation mode, double
       TRIFEM_CHECK(b < 1e4, "swelling_equilibrium: no root below stretch 1e4");
     }
   } else if (f1 > 0.0) { // shrinking: march toward J = phi_s0, where Π → ∞ if cF0 > 0
-    const double l_min =
-        mode == Deformation::Isotropic ? std::cbrt(m.phi_s0) : m.phi_s0;
+    const double l_min = mode == Deformation::Isotropic ? std::cbrt(m.phi_s0) : m.phi_s0;
     for (a = 0.5 * (1.0 + l_min); f(a).first > 0.0; a = 0.5 * (a + l_min)) {
       b = a;
       TRIFEM_CHECK(a - l_min > 1e-12, "swelling_equilibrium: no root above J = phi_s0");
@@ -406,7 +406,9 @@ inline double ramp_g_images(double S) {
   return g;
 }
 
-inline double ramp_g(double S) { return S < 0.1 ? ramp_g_images(S) : ramp_g_eigen(S); }
+inline double ramp_g(double S) {
+  return S < 0.1 ? ramp_g_images(S) : ramp_g_eigen(S);
+}
 
 } // namespace detail
 

@@ -1,0 +1,201 @@
+// SPDX-License-Identifier: MIT
+#include "trifem/physics/mixture_term.hpp"
+
+#include "trifem/core/error.hpp"
+#include "trifem/physics/solid_kernel.hpp"
+
+#include <cmath>
+
+namespace trifem::physics {
+namespace {
+
+/// Donnan equilibrium with a bath of concentration c_bath (FORMULATION 5.2).
+struct Donnan {
+  Real c_plus, c_minus, pressure, eta;
+};
+
+Donnan donnan(Real c_fixed, const material::MixtureProperties& m,
+              const material::Electrochemistry& chem, Real c_bath) {
+  const Real K = chem.gamma_bath * chem.gamma_bath / (m.gamma_plus * m.gamma_minus);
+  Donnan d;
+  d.c_plus = 0.5 * (c_fixed + std::sqrt(c_fixed * c_fixed + 4.0 * K * c_bath * c_bath));
+  d.c_minus = d.c_plus - c_fixed;
+  d.pressure =
+      chem.RT() * (m.osmotic * (d.c_plus + d.c_minus) - 2.0 * chem.osmotic_bath * c_bath);
+  d.eta = -chem.RT() * std::log(m.gamma_plus * d.c_plus / (chem.gamma_bath * c_bath));
+  return d;
+}
+
+Real current_volume(const fe::HexGeometry& geo, const fe::HexCoords& u) {
+  Real V = 0.0;
+  for (int q = 0; q < 8; ++q)
+    V += deformation_gradient(geo.dN_dX[q], u).determinant() * geo.dV[q];
+  return V;
+}
+
+} // namespace
+
+MixtureTerm::MixtureTerm(const mesh::Mesh& mesh, const dofs::DofMap& dofs, MixtureFields fields,
+                         std::vector<Index> cells,
+                         std::vector<std::shared_ptr<const material::MixtureProperties>> props,
+                         const material::Electrochemistry& chem,
+                         std::optional<dofs::LoadCurve> fixed_charge_curve)
+    : mesh_(mesh), dofs_(dofs), fields_(fields), cells_(std::move(cells)),
+      props_(std::move(props)), chem_(chem), fixed_charge_curve_(std::move(fixed_charge_curve)) {
+  TRIFEM_VERIFY(cells_.size() == props_.size(), "one mixture per cell expected");
+  geometry_.reserve(cells_.size());
+  history_.resize(cells_.size());
+  prestress_.assign(cells_.size(), 0.0);
+  for (std::size_t e = 0; e < cells_.size(); ++e) {
+    TRIFEM_CHECK(!props_[e]->charged || has_ions(),
+                 "cell {} is triphasic but the model has no ion fields", cells_[e]);
+    fe::HexCoords X;
+    for (int a = 0; a < 8; ++a)
+      X.row(a) = mesh.node(mesh.cell(cells_[e])[a]).transpose();
+    auto geo = fe::hex8_geometry(X);
+    TRIFEM_CHECK(geo.has_value(), "cell {} is inverted or degenerate; check its node order",
+                 cells_[e]);
+    geometry_.push_back(*geo);
+    MixtureHistory& h = history_[e];
+    for (Real dV : geo->dV)
+      h.V0 += dV;
+    h.V_old = h.V0;
+    h.N_fixed = h.N_fixed_old = props_[e]->fixed_charge * props_[e]->phi_w0() * h.V0;
+  }
+}
+
+void MixtureTerm::element_dofs(Index e, std::vector<Index>& dofs) const {
+  const bool charged = ions(e);
+  dofs.clear();
+  const auto& nodes = mesh_.cell(cells_[e]);
+  for (dofs::FieldId f : {fields_.u, fields_.w, fields_.j_plus, fields_.j_minus}) {
+    if (!charged && (f == fields_.j_plus || f == fields_.j_minus))
+      continue;
+    for (int a = 0; a < 8; ++a)
+      for (int k = 0; k < 3; ++k)
+        dofs.push_back(dofs_.dof(f, nodes[a], k));
+  }
+  dofs.push_back(dofs_.dof(fields_.p, cells_[e], 0));
+  if (charged)
+    dofs.push_back(dofs_.dof(fields_.eta, cells_[e], 0));
+}
+
+MixtureUnknowns MixtureTerm::unknowns(Index e, const Vector& x) const {
+  MixtureUnknowns v;
+  const auto& nodes = mesh_.cell(cells_[e]);
+  const bool charged = ions(e);
+  v.jp.setZero();
+  v.jm.setZero();
+  for (int a = 0; a < 8; ++a)
+    for (int k = 0; k < 3; ++k) {
+      v.u(a, k) = x[dofs_.dof(fields_.u, nodes[a], k)];
+      v.w(a, k) = x[dofs_.dof(fields_.w, nodes[a], k)];
+      if (charged) {
+        v.jp(a, k) = chem_.c_ref * x[dofs_.dof(fields_.j_plus, nodes[a], k)];
+        v.jm(a, k) = chem_.c_ref * x[dofs_.dof(fields_.j_minus, nodes[a], k)];
+      }
+    }
+  v.p = x[dofs_.dof(fields_.p, cells_[e], 0)];
+  if (charged)
+    v.eta = x[dofs_.dof(fields_.eta, cells_[e], 0)] / chem_.c_ref;
+  return v;
+}
+
+MixtureHistory MixtureTerm::history_at(Index e, Real time) const {
+  MixtureHistory h = history_[e];
+  if (fixed_charge_curve_)
+    h.N_fixed = props_[e]->fixed_charge * props_[e]->phi_w0() * h.V0 * (*fixed_charge_curve_)(time);
+  return h;
+}
+
+MixtureStep MixtureTerm::step(Index e, Real dt) const {
+  return {dt > 0.0 ? dt : 1.0, prestress_[e], &chem_};
+}
+
+void MixtureTerm::scale(Index e, Real dt, LocalVector& r, LocalMatrix* K) const {
+  const MixtureLayout L{ions(e)};
+  const int n = L.size();
+  Eigen::VectorXd row = Eigen::VectorXd::Ones(n), col = Eigen::VectorXd::Ones(n);
+  row.segment(24, 24).setConstant(-dt);
+  row[L.p()] = -dt;
+  if (L.ions) {
+    row.segment(48, 48).setConstant(-dt * chem_.c_ref);
+    col.segment(48, 48).setConstant(chem_.c_ref);
+    row[L.eta()] = -dt / chem_.c_ref;
+    col[L.eta()] = 1.0 / chem_.c_ref;
+  }
+  r.array() *= row.array();
+  if (K)
+    *K = row.asDiagonal() * (*K) * col.asDiagonal();
+}
+
+bool MixtureTerm::evaluate(Index e, const EvalState& state, LocalVector& r,
+                           LocalMatrix* K) const {
+  const MixtureStep s = step(e, state.dt);
+  if (!mixture_hex8(geometry_[e], unknowns(e, state.x), history_at(e, state.time), *props_[e], s,
+                    MixtureLayout{ions(e)}, r, K))
+    return false;
+  scale(e, s.dt, r, K);
+  return true;
+}
+
+MixtureCellOutput MixtureTerm::output(Index e, const Vector& x) const {
+  // dt = 0: concentrations from the committed moles, without a pending flux update
+  const MixtureStep s{0.0, prestress_[e], &chem_};
+  return mixture_hex8_output(geometry_[e], unknowns(e, x), history_[e], *props_[e], s, ions(e));
+}
+
+void MixtureTerm::commit(const EvalState& state) {
+  for (Index e = 0; e < num_elements(); ++e) {
+    const MixtureHistory h = history_at(e, state.time);
+    const MixtureCellOutput out = mixture_hex8_output(geometry_[e], unknowns(e, state.x), h,
+                                                      *props_[e], step(e, state.dt), ions(e));
+    MixtureHistory& next = history_[e];
+    next.V_old = out.chem.V;
+    if (ions(e)) {
+      next.N_plus = out.chem.c_plus * out.chem.Vw;
+      next.N_minus = out.chem.c_minus * out.chem.Vw;
+      next.N_fixed_old = next.N_fixed = h.N_fixed;
+    }
+  }
+}
+
+void MixtureTerm::initialize(InitialState kind, Real time, Vector& x) {
+  for (Index e = 0; e < num_elements(); ++e) {
+    const material::MixtureProperties& m = *props_[e];
+    MixtureHistory& h = history_[e];
+    h = history_at(e, time);
+    h.N_fixed_old = h.N_fixed;
+    h.V_old = current_volume(geometry_[e], unknowns(e, x).u);
+    x[dofs_.dof(fields_.p, cells_[e], 0)] = 0.0;
+    prestress_[e] = 0.0;
+    if (!ions(e))
+      continue;
+    const Real Vw = h.V_old - m.phi_s0 * h.V0;
+    TRIFEM_CHECK(Vw > 0.0, "cell {}: the initial state has no water volume (J <= phi_s0)",
+                 cells_[e]);
+    const Donnan d = donnan(h.N_fixed / Vw, m, chem_, chem_.c_ref);
+    h.N_plus = d.c_plus * Vw;
+    h.N_minus = d.c_minus * Vw;
+    x[dofs_.dof(fields_.p, cells_[e], 0)] = d.pressure;
+    x[dofs_.dof(fields_.eta, cells_[e], 0)] = chem_.c_ref * d.eta;
+    if (kind == InitialState::DonnanPrestressed)
+      prestress_[e] = d.pressure;
+  }
+}
+
+Real MixtureTerm::total_moles(bool cation) const {
+  Real n = 0.0;
+  for (const auto& h : history_)
+    n += cation ? h.N_plus : h.N_minus;
+  return n;
+}
+
+Real MixtureTerm::total_water_volume() const {
+  Real v = 0.0;
+  for (std::size_t e = 0; e < history_.size(); ++e)
+    v += history_[e].V_old - props_[e]->phi_s0 * history_[e].V0;
+  return v;
+}
+
+} // namespace trifem::physics

@@ -1,0 +1,83 @@
+// SPDX-License-Identifier: MIT
+// The biphasic/triphasic mixture over a set of hex8 cells: unknown scaling, history (element
+// volumes and ion moles), initial Donnan states, and per-cell output.
+#pragma once
+
+#include "trifem/dofs/dof_map.hpp"
+#include "trifem/dofs/load_curve.hpp"
+#include "trifem/mesh/mesh.hpp"
+#include "trifem/physics/mixture_kernel.hpp"
+
+#include <memory>
+#include <optional>
+
+namespace trifem::physics {
+
+/// The fields of a mixture model. Ion fields are invalid in biphasic-only models.
+/// Stored unknowns are scaled for conditioning (FORMULATION 9.2): the ion flux DOFs hold
+/// j / c_ref [mm/s] and the potential DOF holds c_ref eta [MPa].
+struct MixtureFields {
+  dofs::FieldId u, w, j_plus, j_minus, p, eta;
+};
+
+/// How the initial state is set (FORMULATION 5.3).
+enum class InitialState {
+  Donnan,            ///< IC-1: Donnan equilibrium with the bath at the reference configuration
+  DonnanPrestressed, ///< IC-3a: as IC-1 plus a constant Cauchy prestress Pi0 (zero net stress)
+};
+
+/// Mixture term. Rows are scaled to be energy-conjugate to the stored unknowns
+/// (w, p rows by -dt; ion rows by -dt c_ref; eta row by -dt / c_ref).
+class MixtureTerm final : public Term {
+public:
+  /// `props[i]` is the mixture of `cells[i]`; `fixed_charge_curve` scales every cell's fixed
+  /// charge in time (free-swelling ramp); empty = constant.
+  MixtureTerm(const mesh::Mesh& mesh, const dofs::DofMap& dofs, MixtureFields fields,
+              std::vector<Index> cells,
+              std::vector<std::shared_ptr<const material::MixtureProperties>> props,
+              const material::Electrochemistry& chem,
+              std::optional<dofs::LoadCurve> fixed_charge_curve = std::nullopt);
+
+  std::string name() const override { return "mixture"; }
+  Index num_elements() const override { return static_cast<Index>(cells_.size()); }
+  void element_dofs(Index e, std::vector<Index>& dofs) const override;
+  bool evaluate(Index e, const EvalState& state, LocalVector& r, LocalMatrix* K) const override;
+  void commit(const EvalState& state) override;
+
+  /// Sets p, eta (and the ion moles) of every element to the Donnan equilibrium with the
+  /// reference bath at the configuration in x, at time `time` (fixed charge from the curve).
+  void initialize(InitialState kind, Real time, Vector& x);
+
+  /// Element chemistry, fluxes and stresses at a committed state x (physical units).
+  MixtureCellOutput output(Index e, const Vector& x) const;
+  /// Total ion moles [mmol] and water volume [mm^3] of the committed state.
+  Real total_moles(bool cation) const;
+  Real total_water_volume() const;
+
+  Index cell(Index e) const { return cells_[e]; }
+  bool has_ions() const { return fields_.j_plus.valid(); }
+  const MixtureFields& fields() const { return fields_; }
+  const MixtureHistory& history(Index e) const { return history_[e]; }
+  /// Overrides the committed history of an element (non-equilibrium initial states).
+  void set_history(Index e, const MixtureHistory& h) { history_[e] = h; }
+
+private:
+  MixtureUnknowns unknowns(Index e, const Vector& x) const;
+  MixtureHistory history_at(Index e, Real time) const;
+  MixtureStep step(Index e, Real dt) const;
+  bool ions(Index e) const { return has_ions() && props_[e]->charged; }
+  void scale(Index e, Real dt, LocalVector& r, LocalMatrix* K) const;
+
+  const mesh::Mesh& mesh_;
+  const dofs::DofMap& dofs_;
+  MixtureFields fields_;
+  std::vector<Index> cells_;
+  std::vector<std::shared_ptr<const material::MixtureProperties>> props_;
+  material::Electrochemistry chem_;
+  std::optional<dofs::LoadCurve> fixed_charge_curve_;
+  std::vector<fe::HexGeometry> geometry_;
+  std::vector<MixtureHistory> history_;
+  std::vector<Real> prestress_;
+};
+
+} // namespace trifem::physics

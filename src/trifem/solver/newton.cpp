@@ -54,14 +54,6 @@ Real NewtonSolver::scaled_residual(const NonlinearProblem& problem, const Vector
   return std::sqrt(sum);
 }
 
-Real NewtonSolver::growth(const NonlinearProblem& problem, const std::vector<Real>& norms) const {
-  (void)problem;
-  Real g = 0.0;
-  for (std::size_t f = 0; f < norms.size(); ++f)
-    g = std::max(g, norms[f] / initial_reference_[f]);
-  return g;
-}
-
 bool NewtonSolver::residual_converged(const NonlinearProblem& problem, const Vector& r) const {
   const std::vector<Real> norms = field_norms(problem, r, false);
   const auto& scales = problem.field_scales();
@@ -158,7 +150,6 @@ NewtonReport NewtonSolver::solve(NonlinearProblem& problem) {
   for (std::size_t f = 0; f < scales.size(); ++f)
     reference_[f] = std::max({r0[f], c0[f], settings_.absolute_floor * scales[f].residual});
 
-  initial_reference_ = reference_;
   Vector dx = Vector::Zero(problem.num_equations());
   Real step = 1.0;
   for (int k = 0;; ++k) {
@@ -179,12 +170,6 @@ NewtonReport NewtonSolver::solve(NonlinearProblem& problem) {
     if (problem.constraints_satisfied() && residual_converged(problem, lin.residual) &&
         increment_ok) {
       report.status = SolveStatus::Converged;
-      return report;
-    }
-    if (growth(problem, norms) > settings_.divergence_factor) {
-      report.status = SolveStatus::Diverged;
-      report.failure_reason =
-          fmt::format("residual grew to {:.3e} x its start value", growth(problem, norms));
       return report;
     }
     if (k == settings_.max_iterations) {

@@ -20,7 +20,6 @@ struct NewtonSettings {
   bool line_search = true;
   Real line_search_tolerance = 0.9; ///< accept s when |dx.R(s)| <= tol |dx.R(0)|
   int max_backtracks = 8;
-  Real divergence_factor = 1e6; ///< residual growth over the first that counts as divergence
 };
 
 /// Wall-clock time spent per phase [s].
@@ -61,11 +60,7 @@ private:
   NewtonSettings settings_;
   std::unique_ptr<linalg::LinearSolver> linear_;
   int analyzed_pattern_ = -1;
-  /// Largest residual over the start value per field (divergence test).
-  Real growth(const NonlinearProblem& problem, const std::vector<Real>& norms) const;
-
   std::vector<Real> reference_;         ///< per-field reference residual (running maximum)
-  std::vector<Real> initial_reference_; ///< per-field reference at the start of the solve
   PhaseTimes times_;
 };
 

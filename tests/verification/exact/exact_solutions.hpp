@@ -111,7 +111,7 @@ struct ChargedMedium {
   double gamma_plus_bath = 1.0; ///< bath cation activity coefficient γ⁺*
 };
 
-/// The paper's tissue/bath (ideal: γ = Φ = 1), optionally with another bath concentration.
+/// The paper's tissue and bath (ideal: γ = Φ = 1); pass a modified PaperParameters for other data.
 inline ChargedMedium paper_medium(const PaperParameters& p = paper_parameters) {
   return {p.cF0, p.phi_s0, p.c_bath, p.RT(), p.faraday};
 }

@@ -1,138 +1,155 @@
 // SPDX-License-Identifier: MIT
 #include "model.hpp"
 
+#include "model_conditions.hpp"
 #include "trifem/core/error.hpp"
 #include "trifem/material/registry.hpp"
 #include "trifem/mesh/gmsh_reader.hpp"
-#include "trifem/physics/surface_load_term.hpp"
+
+#include <set>
 
 namespace trifem::app {
 namespace {
 
-/// Runs f, prefixing any InputError with the case key it concerns.
-template <class F>
-auto with_context(const std::string& key, F&& f) {
-  try {
-    return f();
-  } catch (const InputError& e) {
-    throw InputError(fmt::format("{}: {}", key, e.what()));
+std::vector<CellMaterial> cell_materials(const io::CaseSpec& spec, const mesh::Mesh& mesh,
+                                         const std::map<std::string, std::string>& blocks) {
+  std::map<std::string, CellMaterial> by_name;
+  for (const auto& [name, m] : spec.materials) {
+    const std::string ctx = "materials." + name;
+    CellMaterial cm;
+    if (!m.is_mixture()) {
+      cm.solid = material::create_law(m.type, m.parameters, ctx);
+    } else {
+      std::shared_ptr<const material::ElasticLaw> solid =
+          material::create_law(m.solid->type, m.solid->parameters, ctx + ".solid");
+      cm.mixture = std::make_shared<material::MixtureProperties>(material::make_mixture(
+          m.type == "triphasic", std::move(solid), m.parameters, ctx));
+    }
+    by_name[name] = cm;
   }
-}
-
-dofs::LoadCurve make_curve(const io::CaseSpec& spec, const std::string& name) {
-  if (name.empty())
-    return dofs::LoadCurve::constant(1.0);
-  const io::CurveSpec& c = spec.curves.at(name); // existence checked by the reader
-  return dofs::LoadCurve(c.points, c.interpolation, "curves." + name);
-}
-
-/// Law of every cell, from the block -> material map.
-std::vector<std::shared_ptr<const material::ElasticLaw>>
-cell_laws(const io::CaseSpec& spec, const mesh::Mesh& mesh,
-          const std::map<std::string, std::string>& block_materials) {
-  std::map<std::string, std::shared_ptr<const material::ElasticLaw>> laws;
-  for (const auto& [name, m] : spec.materials)
-    laws[name] = material::create_law(m.type, m.parameters, "materials." + name);
-  std::vector<std::shared_ptr<const material::ElasticLaw>> per_cell(mesh.num_cells());
-  for (const auto& [block, material] : block_materials) {
-    const auto& cells = with_context("mesh", [&] { return mesh.cell_block(block); });
-    for (Index c : cells)
-      per_cell[c] = laws.at(material);
-  }
+  std::vector<CellMaterial> per_cell(mesh.num_cells());
+  for (const auto& [block, material] : blocks)
+    for (Index c : with_context("mesh", [&] { return mesh.cell_block(block); }))
+      per_cell[c] = by_name.at(material);
   for (Index c = 0; c < mesh.num_cells(); ++c)
-    TRIFEM_CHECK(per_cell[c] != nullptr,
+    TRIFEM_CHECK(per_cell[c].solid || per_cell[c].mixture,
                  "mesh: cell {} has no material (assign one to its cell block)", c);
   return per_cell;
 }
 
-std::vector<dofs::DirichletCondition> conditions(const io::CaseSpec& spec, const Model& model) {
-  std::vector<dofs::DirichletCondition> out;
-  for (std::size_t i = 0; i < spec.fixed.size(); ++i) {
-    const auto& f = spec.fixed[i];
-    const auto& nodes = with_context(fmt::format("boundary.fixed[{}].set", i + 1),
-                                     [&] { return model.mesh.node_set(f.set); });
-    dofs::DirichletCondition c;
-    for (Index n : nodes)
-      for (int k : f.components)
-        c.dofs.push_back(model.dofs.dof(model.displacement, n, k));
-    out.push_back(std::move(c));
+void add_fields(const std::vector<CellMaterial>& materials, Model& model) {
+  bool mixture = false, ions = false;
+  for (const auto& m : materials) {
+    mixture = mixture || m.mixture;
+    ions = ions || (m.mixture && m.mixture->charged);
   }
-  for (std::size_t i = 0; i < spec.prescribed.size(); ++i) {
-    const auto& p = spec.prescribed[i];
-    const auto& nodes = with_context(fmt::format("boundary.prescribed[{}].set", i + 1),
-                                     [&] { return model.mesh.node_set(p.set); });
-    dofs::DirichletCondition c{{}, p.value, make_curve(spec, p.curve)};
-    for (Index n : nodes)
-      c.dofs.push_back(model.dofs.dof(model.displacement, n, p.component));
-    out.push_back(std::move(c));
+  const Index nodes = model.mesh.num_nodes(), cells = model.mesh.num_cells();
+  physics::MixtureFields& f = model.fields;
+  f.u = model.dofs.add_field("displacement", nodes, 3);
+  if (mixture)
+    f.w = model.dofs.add_field("fluid_flux", nodes, 3);
+  if (ions) {
+    f.j_plus = model.dofs.add_field("cation_flux", nodes, 3);
+    f.j_minus = model.dofs.add_field("anion_flux", nodes, 3);
   }
-  return out;
+  if (mixture)
+    f.p = model.dofs.add_field("pressure", cells, 1);
+  if (ions)
+    f.eta = model.dofs.add_field("electric_potential", cells, 1);
 }
 
-/// Nodes that belong to no cell get all their DOFs fixed (they would make K singular).
-dofs::DirichletCondition orphan_nodes(const Model& model) {
-  std::vector<char> used(model.mesh.num_nodes(), 0);
-  for (const auto& cell : model.mesh.cells())
-    for (Index n : cell)
-      used[n] = 1;
-  dofs::DirichletCondition c;
-  for (Index n = 0; n < model.mesh.num_nodes(); ++n)
-    if (!used[n])
-      for (int k = 0; k < 3; ++k)
-        c.dofs.push_back(model.dofs.dof(model.displacement, n, k));
-  return c;
-}
-
+/// Bulk terms: a solid term for pure-solid cells, a mixture term for mixture cells.
 std::vector<std::unique_ptr<physics::Term>>
-load_terms(const io::CaseSpec& spec, const Model& model) {
-  std::vector<std::unique_ptr<physics::Term>> terms;
-  for (std::size_t i = 0; i < spec.pressures.size(); ++i) {
-    const auto& p = spec.pressures[i];
-    const auto& surface = with_context(fmt::format("loads.pressure[{}].surface", i + 1),
-                                       [&] { return model.mesh.surface(p.surface); });
-    terms.push_back(std::make_unique<physics::PressureTerm>(
-        model.mesh, model.dofs, model.displacement, surface.facets, p.value,
-        make_curve(spec, p.curve)));
+bulk_terms(const io::CaseSpec& spec, const std::vector<CellMaterial>& materials, Model& model) {
+  std::vector<Index> solid_cells, mixture_cells;
+  std::vector<std::shared_ptr<const material::ElasticLaw>> laws;
+  std::vector<std::shared_ptr<const material::MixtureProperties>> mixtures;
+  for (Index c = 0; c < model.mesh.num_cells(); ++c) {
+    if (materials[c].mixture) {
+      mixture_cells.push_back(c);
+      mixtures.push_back(materials[c].mixture);
+    } else {
+      solid_cells.push_back(c);
+      laws.push_back(materials[c].solid);
+    }
   }
-  for (std::size_t i = 0; i < spec.tractions.size(); ++i) {
-    const auto& t = spec.tractions[i];
-    const auto& surface = with_context(fmt::format("loads.traction[{}].surface", i + 1),
-                                       [&] { return model.mesh.surface(t.surface); });
-    terms.push_back(std::make_unique<physics::TractionTerm>(
-        model.mesh, model.dofs, model.displacement, surface.facets, t.value,
-        make_curve(spec, t.curve)));
+  std::vector<std::unique_ptr<physics::Term>> terms;
+  if (!solid_cells.empty()) {
+    auto t = std::make_unique<physics::SolidTerm>(model.mesh, model.dofs, model.fields.u,
+                                                  solid_cells, laws);
+    model.solid = t.get();
+    terms.push_back(std::move(t));
+  }
+  if (!mixture_cells.empty()) {
+    std::optional<dofs::LoadCurve> ramp;
+    if (!spec.analysis.fixed_charge_curve.empty())
+      ramp = make_curve(spec, spec.analysis.fixed_charge_curve);
+    auto t = std::make_unique<physics::MixtureTerm>(model.mesh, model.dofs, model.fields,
+                                                    mixture_cells, mixtures, model.chem, ramp);
+    model.mixture = t.get();
+    terms.push_back(std::move(t));
   }
   return terms;
 }
 
-void add_outputs(const io::CaseSpec& spec, Model& model) {
-  for (std::size_t i = 0; i < spec.output.reactions.size(); ++i) {
-    const auto& r = spec.output.reactions[i];
-    const auto& nodes = with_context(fmt::format("output.reaction[{}].set", i + 1),
-                                     [&] { return model.mesh.node_set(r.set); });
-    ReactionSet set{r.set, {}};
-    for (Index n : nodes)
-      for (int k = 0; k < 3; ++k)
-        set.dofs[k].push_back(model.dofs.dof(model.displacement, n, k));
-    model.reactions.push_back(std::move(set));
-  }
-  for (const auto& p : spec.output.probes) {
-    Index best = 0;
-    for (Index n = 1; n < model.mesh.num_nodes(); ++n)
-      if ((model.mesh.node(n) - p.point).squaredNorm() <
-          (model.mesh.node(best) - p.point).squaredNorm())
-        best = n;
-    model.probes.push_back({p.name, p.quantity, best});
-  }
+/// DOFs that no term touches (nodes outside every cell, ion DOFs of biphasic regions, ...)
+/// are fixed at zero: they would make the Jacobian singular.
+dofs::DirichletCondition unused_dofs(const Model& model,
+                                     const std::vector<std::unique_ptr<physics::Term>>& terms) {
+  std::vector<char> used(model.dofs.num_dofs(), 0);
+  std::vector<Index> dofs;
+  for (const auto& t : terms)
+    for (Index e = 0; e < t->num_elements(); ++e) {
+      t->element_dofs(e, dofs);
+      for (Index d : dofs)
+        used[d] = 1;
+    }
+  dofs::DirichletCondition c;
+  for (Index d = 0; d < model.dofs.num_dofs(); ++d)
+    if (!used[d])
+      c.dofs.push_back(d);
+  return c;
 }
 
-Real bounding_box_diagonal(const mesh::Mesh& mesh) {
-  Vec3 lo = mesh.node(0), hi = mesh.node(0);
-  for (const Vec3& x : mesh.nodes()) {
+void set_scales(const std::vector<CellMaterial>& materials, Model& model) {
+  Vec3 lo = model.mesh.node(0), hi = model.mesh.node(0);
+  for (const Vec3& x : model.mesh.nodes()) {
     lo = lo.cwiseMin(x);
     hi = hi.cwiseMax(x);
   }
-  return (hi - lo).norm();
+  model.length_scale = (hi - lo).norm();
+  model.modulus_scale = 0.0;
+  for (const auto& m : materials) {
+    const auto& solid = m.mixture ? m.mixture->solid : m.solid;
+    model.modulus_scale = std::max(model.modulus_scale, solid->p_wave_modulus());
+    if (m.mixture)
+      model.permeability_scale = std::max(model.permeability_scale, m.mixture->permeability);
+  }
+}
+
+/// Characteristic sizes per field: length L, modulus M, flux M kappa / L; residual scales are
+/// the energy M L^3 over the size (rows are energy-conjugate to their unknowns).
+std::vector<solver::FieldScale> field_scales(const Model& model) {
+  const Real L = model.length_scale, M = model.modulus_scale;
+  const Real flux = M * model.permeability_scale / L, energy = M * L * L * L;
+  std::vector<solver::FieldScale> s(model.dofs.num_fields());
+  const physics::MixtureFields& f = model.fields;
+  for (auto [id, size] : {std::pair{f.u, L}, {f.w, flux}, {f.j_plus, flux}, {f.j_minus, flux},
+                          {f.p, M}, {f.eta, M}})
+    if (id.valid())
+      s[id.index] = {model.dofs.field(id).name, energy / size, size};
+  return s;
+}
+
+material::Electrochemistry electrochemistry(const io::ElectrochemistrySpec& e) {
+  material::Electrochemistry c;
+  c.R = e.R;
+  c.T = e.T;
+  c.faraday = e.faraday;
+  c.c_ref = e.bath_concentration;
+  c.gamma_bath = e.bath_activity;
+  c.osmotic_bath = e.bath_osmotic;
+  return c;
 }
 
 } // namespace
@@ -166,33 +183,29 @@ std::unique_ptr<Model> build_model(const io::CaseSpec& spec) {
   auto model = std::make_unique<Model>();
   std::map<std::string, std::string> block_materials;
   model->mesh = build_mesh(spec, block_materials);
-  const auto laws = cell_laws(spec, model->mesh, block_materials);
-  model->displacement = model->dofs.add_field("displacement", model->mesh.num_nodes(), 3);
-  auto bcs = conditions(spec, *model);
-  bcs.push_back(orphan_nodes(*model));
+  const std::vector<CellMaterial> materials = cell_materials(spec, model->mesh, block_materials);
+  model->chem = electrochemistry(spec.electrochemistry);
+  add_fields(materials, *model);
+  set_scales(materials, *model);
+
+  auto terms = bulk_terms(spec, materials, *model);
+  for (auto& t : load_terms(spec, *model))
+    terms.push_back(std::move(t));
+  auto bcs = boundary_conditions(spec, *model);
+  bcs.push_back(unused_dofs(*model, terms));
   dofs::constrain_all(bcs, model->dofs);
   model->dofs.finalize();
 
-  std::vector<Index> cells(model->mesh.num_cells());
-  for (Index c = 0; c < model->mesh.num_cells(); ++c)
-    cells[c] = c;
-  std::vector<std::unique_ptr<physics::Term>> terms;
-  auto solid = std::make_unique<physics::SolidTerm>(model->mesh, model->dofs,
-                                                    model->displacement, cells, laws);
-  model->solid = solid.get();
-  terms.push_back(std::move(solid));
-  for (auto& t : load_terms(spec, *model))
-    terms.push_back(std::move(t));
-
-  model->length_scale = bounding_box_diagonal(model->mesh);
-  model->modulus_scale = 0.0;
-  for (const auto& law : laws)
-    model->modulus_scale = std::max(model->modulus_scale, law->p_wave_modulus());
-  const Real L = model->length_scale;
-  std::vector<solver::FieldScale> scales = {
-      {"displacement", model->modulus_scale * L * L, L}};
   model->problem = std::make_unique<assembly::FeProblem>(model->dofs, std::move(bcs),
-                                                         std::move(terms), std::move(scales));
+                                                         std::move(terms), field_scales(*model));
+  if (model->mixture) {
+    Vector x = model->problem->state();
+    const auto kind = spec.analysis.initial_state == io::InitialStateKind::DonnanPrestressed
+                          ? physics::InitialState::DonnanPrestressed
+                          : physics::InitialState::Donnan;
+    model->mixture->initialize(kind, 0.0, x);
+    model->problem->set_state(x);
+  }
   add_outputs(spec, *model);
   return model;
 }

@@ -4,15 +4,16 @@
 
 #include "trifem/assembly/fe_problem.hpp"
 #include "trifem/io/case_spec.hpp"
-#include "trifem/material/elastic_law.hpp"
+#include "trifem/material/mixture.hpp"
 #include "trifem/mesh/mesh.hpp"
+#include "trifem/physics/mixture_term.hpp"
 #include "trifem/physics/solid_term.hpp"
 
 #include <memory>
 
 namespace trifem::app {
 
-/// A reaction output: DOFs of a node set per component.
+/// A reaction output: displacement DOFs of a node set per component.
 struct ReactionSet {
   std::string name;
   std::array<std::vector<Index>, 3> dofs;
@@ -25,23 +26,34 @@ struct Probe {
   Index node = -1;
 };
 
+/// The law of one cell: a solid law, or a mixture (which has its own solid).
+struct CellMaterial {
+  std::shared_ptr<const material::ElasticLaw> solid;
+  std::shared_ptr<const material::MixtureProperties> mixture;
+};
+
 /// Everything a run needs. Owns the mesh and DOF map the problem refers to.
 struct Model {
   mesh::Mesh mesh;
   dofs::DofMap dofs;
-  dofs::FieldId displacement;
-  const physics::SolidTerm* solid = nullptr; ///< owned by problem
+  physics::MixtureFields fields; ///< u always; w, p with mixtures; j+-, eta with ions
+  material::Electrochemistry chem;
+  const physics::SolidTerm* solid = nullptr;   ///< pure-solid cells (owned by problem)
+  physics::MixtureTerm* mixture = nullptr;     ///< mixture cells (owned by problem)
   std::unique_ptr<assembly::FeProblem> problem;
   std::vector<ReactionSet> reactions;
   std::vector<Probe> probes;
   Real length_scale = 1.0;  ///< bounding-box diagonal [mm]
   Real modulus_scale = 1.0; ///< largest P-wave modulus [MPa]
+  Real permeability_scale = 0.0; ///< largest permeability [mm^4/(N s)] (0: no mixture)
+
+  dofs::FieldId displacement() const { return fields.u; }
 };
 
 /// Builds the mesh of a case (boxes and Gmsh files) with their cell-block -> material map.
 mesh::Mesh build_mesh(const io::CaseSpec& spec, std::map<std::string, std::string>& materials);
 
-/// Builds the whole model. InputErrors name the case key of the problem.
+/// Builds the whole model, including its initial state. InputErrors name the case key.
 std::unique_ptr<Model> build_model(const io::CaseSpec& spec);
 
 } // namespace trifem::app

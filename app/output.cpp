@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "output.hpp"
 
+#include "output_fields.hpp"
+
 #include "trifem/core/error.hpp"
 #include "trifem/core/log.hpp"
 #include "trifem/io/vtu_writer.hpp"
@@ -66,7 +68,7 @@ std::vector<double> OutputWriter::history_row(Real time, int step, Real dt, int 
     }
   for (const auto& p : model_.probes)
     for (int k = 0; k < 3; ++k) {
-      const Real u = x[model_.dofs.dof(model_.displacement, p.node, k)];
+      const Real u = x[model_.dofs.dof(model_.fields.u, p.node, k)];
       row.push_back(p.quantity == "position" ? model_.mesh.node(p.node)[k] + u : u);
     }
   return row;
@@ -74,29 +76,8 @@ std::vector<double> OutputWriter::history_row(Real time, int step, Real dt, int 
 
 void OutputWriter::write_vtu(Real time) {
   io::UnstructuredGrid grid = volume_grid(model_);
-  const Vector& x = model_.problem->state();
-  const Vector& R = model_.problem->full_residual();
-  const Index n = model_.mesh.num_nodes();
-  io::DataArray u{"displacement [mm]", 3, std::vector<double>(3 * n)};
-  io::DataArray reaction{"reaction_forces [N]", 3, std::vector<double>(3 * n, 0.0)};
-  for (Index a = 0; a < n; ++a)
-    for (int k = 0; k < 3; ++k) {
-      const Index d = model_.dofs.dof(model_.displacement, a, k);
-      u.values[3 * a + k] = x[d];
-      if (model_.dofs.is_constrained(d))
-        reaction.values[3 * a + k] = R[d];
-    }
-  const Index cells = model_.solid->num_elements();
-  io::DataArray stress{"stress [MPa]", 6, std::vector<double>(6 * cells)};
-  io::DataArray volume{"relative_volume", 1, std::vector<double>(cells)};
-  for (Index e = 0; e < cells; ++e) {
-    const physics::CellStress s = model_.solid->stress(e, x);
-    const Vec6 v = voigt::stress(s.cauchy);
-    std::copy(v.data(), v.data() + 6, stress.values.begin() + 6 * e);
-    volume.values[e] = s.J;
-  }
-  grid.point_data = {std::move(u), std::move(reaction)};
-  grid.cell_data = {std::move(stress), std::move(volume)};
+  grid.point_data = point_fields(model_);
+  grid.cell_data = cell_fields(model_);
   const auto file = directory_ / fmt::format("volume_{:04d}.vtu", vtu_count_++);
   if (const auto bad = io::write_vtu(file, grid); bad > 0)
     log::warn("  {} non-finite values written to {}", bad, file.string());

@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: MIT
 // Case reader, part 1: file and text checks, TOML syntax errors, the "<file>: " message prefix.
-// The sections themselves are read in case_reader_sections.cpp.
+// The sections themselves are read in case_reader_sections.cpp and case_reader_physics.cpp.
 #include "trifem/io/case_reader.hpp"
 
 #include "trifem/core/error.hpp"
+#include "trifem/io/toml_table.hpp"
 
 #include <algorithm>
 #include <cerrno>
@@ -13,12 +14,6 @@
 #include <string>
 #include <system_error>
 #include <toml++/toml.h>
-
-namespace trifem::io::detail {
-/// Reads every section of `root` into `spec` (defined in case_reader_sections.cpp). Errors are
-/// InputErrors naming the key path, without the file name.
-void read_sections(const toml::table& root, CaseSpec& spec);
-} // namespace trifem::io::detail
 
 namespace trifem::io {
 namespace {

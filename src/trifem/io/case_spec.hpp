@@ -29,10 +29,20 @@ struct GmshMeshSpec {
   std::map<std::string, std::string> materials;
 };
 
-/// [materials.<name>]: a solid law and its parameters.
+/// A solid law and its parameters ([materials.<name>] or [materials.<name>.solid]).
+struct SolidSpec {
+  std::string type;
+  material::ParameterValues parameters;
+};
+
+/// [materials.<name>]: a solid law, or a "biphasic"/"triphasic" mixture whose solid matrix is
+/// the sub-table [materials.<name>.solid]. For mixtures, `parameters` holds the mixture keys of
+/// material::mixture_schema() (fixed_charge_basis "water"/"tissue" is stored as 0/1).
 struct MaterialSpec {
   std::string type;
   material::ParameterValues parameters;
+  std::optional<SolidSpec> solid; ///< set exactly for mixtures
+  bool is_mixture() const { return type == "biphasic" || type == "triphasic"; }
 };
 
 /// [curves.<name>]
@@ -41,21 +51,34 @@ struct CurveSpec {
   std::vector<std::pair<Real, Real>> points;
 };
 
-/// Displacement component selector: 0 = x, 1 = y, 2 = z.
+/// Vector component selector: 0 = x, 1 = y, 2 = z.
 using Component = int;
 
-/// [[boundary.fixed]]: zero displacement components on a node set.
+/// Nodal vector fields a boundary condition can act on.
+enum class FieldKind {
+  Displacement, ///< u [mm]
+  FluidFlux,    ///< w [mm/s]
+  CationFlux,   ///< j+ [mmol/(mm^2 s)]
+  AnionFlux,    ///< j- [mmol/(mm^2 s)]
+};
+
+/// [[boundary.fixed]]: zero components of one or more fields on a node set. Case keys:
+/// field = "displacement" (default) | "fluid_flux" | "cation_flux" | "anion_flux" |
+/// "fluxes" (fluid + both ions). [[boundary.impermeable]] (set, normal) is stored as fixed
+/// fluxes on the normal component; [[boundary.bonded]] (set) as fixed displacement and fluxes.
 struct FixedSpec {
   std::string set;
   std::vector<Component> components;
+  std::vector<FieldKind> fields = {FieldKind::Displacement};
 };
 
-/// [[boundary.prescribed]]: u_component = value * curve(t) on a node set.
+/// [[boundary.prescribed]]: field_component = value * curve(t) on a node set.
 struct PrescribedSpec {
   std::string set;
   Component component = 0;
   Real value = 0.0;
   std::string curve; ///< empty: constant 1
+  FieldKind field = FieldKind::Displacement;
 };
 
 /// [[loads.pressure]]: follower pressure on a surface (positive pushes into the body) [MPa].
@@ -70,6 +93,28 @@ struct TractionSpec {
   std::string surface;
   Vec3 value = Vec3::Zero();
   std::string curve;
+};
+
+/// Initial state of mixture models ([analysis] initial_state).
+enum class InitialStateKind {
+  Donnan,            ///< "donnan": Donnan equilibrium with the bath, stress-free solid (IC-1)
+  DonnanPrestressed, ///< "donnan-prestressed": as IC-1 with a Cauchy prestress Pi0 (IC-3a)
+};
+
+/// [analysis]: options of mixture models.
+struct AnalysisSpec {
+  InitialStateKind initial_state = InitialStateKind::Donnan;
+  std::string fixed_charge_curve; ///< curve scaling every fixed charge in time (free swelling)
+};
+
+/// [electrochemistry]: constants and the reference bath (mm-N-s-mmol-K units).
+struct ElectrochemistrySpec {
+  Real R = 8.314;                    ///< gas constant [mJ/(mmol K)], > 0
+  Real T = 298.0;                    ///< temperature [K], > 0
+  Real faraday = 96.485;             ///< Faraday constant [C/mmol], > 0
+  Real bath_concentration = 1.5e-4;  ///< NaCl bath c* [mmol/mm^3], > 0
+  Real bath_activity = 1.0;          ///< bath activity coefficient gamma*, > 0
+  Real bath_osmotic = 1.0;           ///< bath osmotic coefficient Phi*, > 0
 };
 
 /// [time]
@@ -125,6 +170,8 @@ struct CaseSpec {
   std::vector<PrescribedSpec> prescribed;
   std::vector<PressureSpec> pressures;
   std::vector<TractionSpec> tractions;
+  AnalysisSpec analysis;
+  ElectrochemistrySpec electrochemistry;
   TimeSpec time;
   SolverSpec solver;
   OutputSpec output;

@@ -16,6 +16,9 @@ using trifem::InputError;
 using trifem::Real;
 using trifem::dofs::Interpolation;
 using trifem::io::CaseSpec;
+using trifem::io::FieldKind;
+using trifem::io::InitialStateKind;
+using trifem::io::MaterialSpec;
 using trifem::io::parse_case;
 using trifem::io::read_case;
 
@@ -45,14 +48,45 @@ end_time = 1.0
 dt = 0.1
 )";
 
-/// kBase with the first occurrence of `from` replaced by `to` (which must exist).
-std::string replaced(const std::string& from, const std::string& to) {
-  std::string text = kBase;
+/// A triphasic material (appended to kBase by the mixture tests).
+const std::string kCartilage = R"(
+[materials.cart]
+type = "triphasic"
+phi_s0 = 0.2
+permeability = 1e-3
+fixed_charge = 2e-4
+d_plus = 5e-4
+d_minus = 8e-4
+
+[materials.cart.solid]
+type = "neo-hookean"
+E = 1.0
+)";
+
+/// A biphasic material (appended to kBase by the mixture tests).
+const std::string kGel = R"(
+[materials.gel]
+type = "biphasic"
+phi_s0 = 0.2
+permeability = 1e-3
+
+[materials.gel.solid]
+type = "neo-hookean"
+E = 1.0
+)";
+
+/// `text` with the first occurrence of `from` replaced by `to` (which must exist).
+std::string replaced_in(std::string text, const std::string& from, const std::string& to) {
   const auto at = text.find(from);
-  EXPECT_NE(at, std::string::npos) << "'" << from << "' is not in the base case";
+  EXPECT_NE(at, std::string::npos) << "'" << from << "' is not in the case";
   if (at != std::string::npos)
     text.replace(at, from.size(), to);
   return text;
+}
+
+/// kBase with the first occurrence of `from` replaced by `to` (which must exist).
+std::string replaced(const std::string& from, const std::string& to) {
+  return replaced_in(kBase, from, to);
 }
 
 /// The message of the InputError that reading `text` throws ("" if none).
@@ -182,6 +216,128 @@ TEST(CaseReader, WindowsLineEndingsAndByteOrderMarkAreAccepted) {
   for (char ch : kBase)
     text += ch == '\n' ? std::string("\r\n") : std::string(1, ch);
   EXPECT_EQ(parse_case(text, kMemoryFile).boxes.size(), 1u);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Valid mixture input
+
+TEST(CaseReader, TriphasicCaseMaterialsAndOptions) {
+  const CaseSpec c = read_case(kData / "triphasic.toml");
+  ASSERT_EQ(c.materials.size(), 2u);
+  const MaterialSpec& cart = c.materials.at("cartilage");
+  EXPECT_EQ(cart.type, "triphasic");
+  EXPECT_TRUE(cart.is_mixture());
+  ASSERT_TRUE(cart.solid.has_value());
+  EXPECT_EQ(cart.solid->type, "saint-venant-kirchhoff");
+  EXPECT_DOUBLE_EQ(cart.solid->parameters.at("E"), 0.3);
+  EXPECT_DOUBLE_EQ(cart.solid->parameters.at("nu"), 0.0);
+  EXPECT_EQ(cart.parameters.size(), 9u); // every key of the triphasic schema, defaults filled in
+  EXPECT_DOUBLE_EQ(cart.parameters.at("phi_s0"), 0.25);
+  EXPECT_DOUBLE_EQ(cart.parameters.at("permeability"), 1.07e-3);
+  EXPECT_DOUBLE_EQ(cart.parameters.at("fixed_charge"), 2.0e-4);
+  EXPECT_DOUBLE_EQ(cart.parameters.at("fixed_charge_basis"), 1.0); // "tissue"
+  EXPECT_DOUBLE_EQ(cart.parameters.at("d_plus"), 5.0e-4);
+  EXPECT_DOUBLE_EQ(cart.parameters.at("d_minus"), 8.0e-4);
+  EXPECT_DOUBLE_EQ(cart.parameters.at("gamma_plus"), 0.9);
+  EXPECT_DOUBLE_EQ(cart.parameters.at("gamma_minus"), 1.0); // default
+  EXPECT_DOUBLE_EQ(cart.parameters.at("osmotic"), 0.95);
+
+  const MaterialSpec& gel = c.materials.at("gel");
+  EXPECT_EQ(gel.type, "biphasic");
+  EXPECT_EQ(gel.parameters.size(), 2u); // phi_s0, permeability
+  EXPECT_DOUBLE_EQ(gel.parameters.at("permeability"), 1e-2);
+  ASSERT_TRUE(gel.solid.has_value());
+  EXPECT_EQ(gel.solid->type, "neo-hookean");
+  EXPECT_DOUBLE_EQ(gel.solid->parameters.at("nu"), 0.2);
+
+  EXPECT_EQ(c.analysis.initial_state, InitialStateKind::DonnanPrestressed);
+  EXPECT_EQ(c.analysis.fixed_charge_curve, "ramp");
+  EXPECT_DOUBLE_EQ(c.electrochemistry.R, 8.3145);
+  EXPECT_DOUBLE_EQ(c.electrochemistry.T, 310.0); // integer accepted
+  EXPECT_DOUBLE_EQ(c.electrochemistry.faraday, 96.4853);
+  EXPECT_DOUBLE_EQ(c.electrochemistry.bath_concentration, 1.0e-4);
+  EXPECT_DOUBLE_EQ(c.electrochemistry.bath_activity, 0.8);
+  EXPECT_DOUBLE_EQ(c.electrochemistry.bath_osmotic, 0.93);
+}
+
+TEST(CaseReader, TriphasicCaseBoundaryConditions) {
+  const CaseSpec c = read_case(kData / "triphasic.toml");
+  const std::vector<FieldKind> fluxes = {FieldKind::FluidFlux, FieldKind::CationFlux,
+                                         FieldKind::AnionFlux};
+  ASSERT_EQ(c.fixed.size(), 5u); // [[fixed]] x3, then [[impermeable]], then [[bonded]]
+  EXPECT_EQ(c.fixed[0].fields, std::vector<FieldKind>{FieldKind::Displacement}); // default
+  EXPECT_EQ(c.fixed[0].components, (std::vector<int>{0}));
+  EXPECT_EQ(c.fixed[1].fields, fluxes); // "fluxes"
+  EXPECT_EQ(c.fixed[1].components, (std::vector<int>{1}));
+  EXPECT_EQ(c.fixed[2].fields, std::vector<FieldKind>{FieldKind::CationFlux});
+  EXPECT_EQ(c.fixed[2].components, (std::vector<int>{0, 1, 2}));
+  EXPECT_EQ(c.fixed[3].set, "block.xmin"); // impermeable, normal = "x"
+  EXPECT_EQ(c.fixed[3].components, (std::vector<int>{0}));
+  EXPECT_EQ(c.fixed[3].fields, fluxes);
+  EXPECT_EQ(c.fixed[4].set, "block.zmin"); // bonded
+  EXPECT_EQ(c.fixed[4].components, (std::vector<int>{0, 1, 2}));
+  EXPECT_EQ(c.fixed[4].fields,
+            (std::vector<FieldKind>{FieldKind::Displacement, FieldKind::FluidFlux,
+                                    FieldKind::CationFlux, FieldKind::AnionFlux}));
+
+  ASSERT_EQ(c.prescribed.size(), 3u);
+  EXPECT_EQ(c.prescribed[0].field, FieldKind::Displacement); // default
+  EXPECT_EQ(c.prescribed[0].curve, "ramp");
+  EXPECT_EQ(c.prescribed[1].field, FieldKind::FluidFlux); // same set and component: no conflict
+  EXPECT_EQ(c.prescribed[1].set, c.prescribed[0].set);
+  EXPECT_EQ(c.prescribed[1].component, 2);
+  EXPECT_DOUBLE_EQ(c.prescribed[1].value, 1e-4);
+  EXPECT_EQ(c.prescribed[2].field, FieldKind::AnionFlux);
+  EXPECT_EQ(c.prescribed[2].component, 1);
+  EXPECT_DOUBLE_EQ(c.prescribed[2].value, -2e-6);
+}
+
+TEST(CaseReader, MixtureDefaults) {
+  const CaseSpec c = parse_case(kBase + kCartilage, kMemoryFile);
+  const MaterialSpec& cart = c.materials.at("cart");
+  EXPECT_DOUBLE_EQ(cart.parameters.at("fixed_charge_basis"), 0.0); // "water"
+  EXPECT_DOUBLE_EQ(cart.parameters.at("osmotic"), 1.0);
+  EXPECT_FALSE(c.materials.at("soft").solid.has_value());
+  EXPECT_FALSE(c.materials.at("soft").is_mixture());
+  EXPECT_EQ(c.analysis.initial_state, InitialStateKind::Donnan);
+  EXPECT_EQ(c.analysis.fixed_charge_curve, "");
+  EXPECT_DOUBLE_EQ(c.electrochemistry.R, 8.314);
+  EXPECT_DOUBLE_EQ(c.electrochemistry.T, 298.0);
+  EXPECT_DOUBLE_EQ(c.electrochemistry.faraday, 96.485);
+  EXPECT_DOUBLE_EQ(c.electrochemistry.bath_concentration, 1.5e-4);
+  EXPECT_DOUBLE_EQ(c.electrochemistry.bath_activity, 1.0);
+  EXPECT_DOUBLE_EQ(c.electrochemistry.bath_osmotic, 1.0);
+}
+
+TEST(CaseReader, WaterBasisAndEmptyOptionTables) {
+  const std::string text = replaced_in(kBase + kCartilage, "phi_s0 = 0.2",
+                                       "phi_s0 = 0.2\nfixed_charge_basis = \"water\"") +
+                           "[analysis]\n[electrochemistry]\n";
+  const CaseSpec c = parse_case(text, kMemoryFile);
+  EXPECT_DOUBLE_EQ(c.materials.at("cart").parameters.at("fixed_charge_basis"), 0.0);
+  EXPECT_EQ(c.analysis.initial_state, InitialStateKind::Donnan);
+  EXPECT_DOUBLE_EQ(c.electrochemistry.T, 298.0);
+}
+
+TEST(CaseReader, FluxesOnABiphasicModelAndBondedOnASolidModel) {
+  const CaseSpec bi = parse_case(
+      kBase + kGel + "[[boundary.fixed]]\nset = \"block.zmin\"\nfield = \"fluxes\"\n", kMemoryFile);
+  ASSERT_EQ(bi.fixed.size(), 1u);
+  EXPECT_EQ(bi.fixed[0].fields.front(), FieldKind::FluidFlux); // ion fields: skipped by the model
+  const CaseSpec solid =
+      parse_case(kBase + "[[boundary.bonded]]\nset = \"block.zmin\"\n", kMemoryFile);
+  ASSERT_EQ(solid.fixed.size(), 1u);
+  EXPECT_EQ(solid.fixed[0].components, (std::vector<int>{0, 1, 2}));
+}
+
+TEST(CaseReader, PrescribedFluxOnAFixedDisplacementSetIsNoConflict) {
+  const CaseSpec c = parse_case(kBase + kCartilage +
+                                    "[[boundary.fixed]]\nset = \"block.zmax\"\n"
+                                    "[[boundary.prescribed]]\nset = \"block.zmax\"\n"
+                                    "field = \"fluid_flux\"\ncomponent = \"z\"\nvalue = 1e-3\n",
+                                kMemoryFile);
+  ASSERT_EQ(c.prescribed.size(), 1u);
+  EXPECT_EQ(c.prescribed[0].field, FieldKind::FluidFlux);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -437,6 +593,179 @@ const std::vector<BadCase> kBadCases = {
 };
 
 INSTANTIATE_TEST_SUITE_P(CaseReader, BadInput, testing::ValuesIn(kBadCases),
+                         [](const testing::TestParamInfo<BadCase>& info) {
+                           return info.param.name;
+                         });
+
+/// kBase + kCartilage with `from` replaced by `to`.
+std::string cartilage_with(const std::string& from, const std::string& to) {
+  return replaced_in(kBase + kCartilage, from, to);
+}
+
+/// kBase + kGel with `from` replaced by `to`.
+std::string gel_with(const std::string& from, const std::string& to) {
+  return replaced_in(kBase + kGel, from, to);
+}
+
+const std::string kSolidTable = "\n[materials.cart.solid]\ntype = \"neo-hookean\"\nE = 1.0\n";
+
+const std::vector<BadCase> kMixtureBadCases = {
+    {"mixture_without_solid",
+     cartilage_with(kSolidTable, ""),
+     {"materials.cart.solid: missing required table [materials.cart.solid]",
+      "solid matrix of a triphasic material", "(line 19)"}},
+    {"solid_table_on_solid_law",
+     kBase + "[materials.soft.solid]\ntype = \"neo-hookean\"\nE = 1\n",
+     {"materials.soft.solid: only biphasic and triphasic materials have a [solid] sub-table",
+      "materials.soft.type = 'neo-hookean' is a solid law", "(line 18)"}},
+    {"solid_table_not_a_table",
+     cartilage_with(kSolidTable, "solid = \"neo-hookean\"\n"),
+     {"materials.cart.solid: expected a table [materials.cart.solid], got a string (line 26)"}},
+    {"unknown_mixture_key",
+     cartilage_with("phi_s0 = 0.2", "phi_s0 = 0.2\nporosity = 0.8"),
+     {"materials.cart.porosity: unknown key (expected one of: type, solid, phi_s0, permeability, "
+      "fixed_charge, fixed_charge_basis, d_plus, d_minus, gamma_plus, gamma_minus, osmotic) "
+      "(line 22)"}},
+    {"misspelt_mixture_key",
+     cartilage_with("permeability", "permeabilty"),
+     {"materials.cart.permeabilty: unknown key", "did you mean 'permeability'?"}},
+    {"triphasic_key_on_biphasic",
+     gel_with("phi_s0 = 0.2", "phi_s0 = 0.2\nd_plus = 5e-4"),
+     {"materials.gel.d_plus: only applies to triphasic materials (materials.gel.type = "
+      "'biphasic' has no fixed charge and no ions) (line 22)"}},
+    {"unknown_fixed_charge_basis",
+     cartilage_with("phi_s0 = 0.2", "phi_s0 = 0.2\nfixed_charge_basis = \"tisue\""),
+     {"materials.cart.fixed_charge_basis = 'tisue': unknown basis (expected one of: water, "
+      "tissue); did you mean 'tissue'? (line 22)"}},
+    {"numeric_fixed_charge_basis",
+     cartilage_with("phi_s0 = 0.2", "phi_s0 = 0.2\nfixed_charge_basis = 1"),
+     {"materials.cart.fixed_charge_basis: expected a string, got an integer"}},
+    {"volume_fraction_out_of_range",
+     cartilage_with("phi_s0 = 0.2", "phi_s0 = 1.2"),
+     {"materials.cart.phi_s0 = 1.2: out of range, expected a value in (0, 1) (line 21)"}},
+    {"negative_fixed_charge",
+     cartilage_with("fixed_charge = 2e-4", "fixed_charge = -2e-4"),
+     {"materials.cart.fixed_charge = -0.0002: out of range, expected a value in [0, inf) "
+      "mEq/mm^3"}},
+    {"missing_mixture_parameter",
+     cartilage_with("d_plus = 5e-4\n", ""),
+     {"materials.cart.d_plus: missing required parameter (cation (Na+) diffusivity, mm^2/s)"}},
+    {"mixture_as_solid_law",
+     cartilage_with(kSolidTable, replaced_in(kSolidTable, "neo-hookean", "biphasic")),
+     {"materials.cart.solid.type = 'biphasic': unknown solid law (expected one of:", "(line 28)"}},
+    {"unknown_solid_parameter",
+     cartilage_with(kSolidTable, kSolidTable + "mu = 0.3\n"),
+     {"materials.cart.solid.mu: unknown key (expected one of: type, E, nu)"}},
+    {"missing_solid_parameter",
+     cartilage_with(kSolidTable, replaced_in(kSolidTable, "E = 1.0", "nu = 0.3")),
+     {"materials.cart.solid.E: missing required parameter"}},
+    {"ion_field_without_triphasic",
+     kBase + kGel +
+         "[[boundary.fixed]]\nset = \"a\"\n[[boundary.fixed]]\nset = \"b\"\n"
+         "field = \"cation_flux\"\n",
+     {"boundary.fixed[2].field = 'cation_flux': the model has no ion fields (no triphasic "
+      "material) (line 31)"}},
+    {"fluid_flux_without_mixture",
+     kBase + "[[boundary.fixed]]\nset = \"b\"\nfield = \"fluid_flux\"\n",
+     {"boundary.fixed[1].field = 'fluid_flux': the model has no flux fields (no biphasic or "
+      "triphasic material) (line 20)"}},
+    {"fluxes_without_mixture",
+     kBase + "[[boundary.fixed]]\nset = \"b\"\nfield = \"fluxes\"\n",
+     {"boundary.fixed[1].field = 'fluxes': the model has no flux fields"}},
+    {"prescribed_ion_flux_without_triphasic",
+     kBase + kGel +
+         "[[boundary.prescribed]]\nset = \"b\"\nfield = \"anion_flux\"\n"
+         "component = \"x\"\nvalue = 1\n",
+     {"boundary.prescribed[1].field = 'anion_flux': the model has no ion fields"}},
+    {"fluxes_cannot_be_prescribed",
+     kBase + kCartilage +
+         "[[boundary.prescribed]]\nset = \"b\"\nfield = \"fluxes\"\n"
+         "component = \"x\"\nvalue = 1\n",
+     {"boundary.prescribed[1].field = 'fluxes': unknown field (expected one of: displacement, "
+      "fluid_flux, cation_flux, anion_flux)"}},
+    {"unknown_field",
+     kBase + kCartilage + "[[boundary.fixed]]\nset = \"b\"\nfield = \"fluid-flux\"\n",
+     {"boundary.fixed[1].field = 'fluid-flux': unknown field (expected one of: displacement, "
+      "fluid_flux, cation_flux, anion_flux, fluxes); did you mean 'fluid_flux'?"}},
+    {"impermeable_without_mixture",
+     kBase + "[[boundary.impermeable]]\nset = \"block.zmin\"\nnormal = \"z\"\n",
+     {"boundary.impermeable[1]: the model has no flux fields (no biphasic or triphasic material) "
+      "(line 18)"}},
+    {"impermeable_without_normal",
+     kBase + kCartilage + "[[boundary.impermeable]]\nset = \"block.zmin\"\n",
+     {"boundary.impermeable[1].normal: missing required key (expected one of: x, y, z)"}},
+    {"impermeable_bad_normal",
+     kBase + kCartilage + "[[boundary.impermeable]]\nset = \"block.zmin\"\nnormal = \"n\"\n",
+     {"boundary.impermeable[1].normal = 'n': unknown axis (expected one of: x, y, z)"}},
+    {"impermeable_with_components",
+     kBase + kCartilage +
+         "[[boundary.impermeable]]\nset = \"s\"\nnormal = \"z\"\n"
+         "components = [\"z\"]\n",
+     {"boundary.impermeable[1].components: unknown key (expected one of: set, normal)"}},
+    {"bonded_with_field",
+     kBase + kCartilage + "[[boundary.bonded]]\nset = \"s\"\nfield = \"fluxes\"\n",
+     {"boundary.bonded[1].field: unknown key (expected one of: set)"}},
+    {"prescribed_flux_on_bonded_set",
+     kBase + kCartilage +
+         "[[boundary.bonded]]\nset = \"s\"\n[[boundary.prescribed]]\n"
+         "set = \"s\"\nfield = \"anion_flux\"\ncomponent = \"y\"\nvalue = 1\n",
+     {"boundary.prescribed[1]: anion_flux component y of node set 's' is already constrained by "
+      "boundary.bonded[1]"}},
+    {"prescribed_flux_on_impermeable_face",
+     kBase + kCartilage +
+         "[[boundary.fixed]]\nset = \"a\"\n[[boundary.impermeable]]\n"
+         "set = \"s\"\nnormal = \"y\"\n[[boundary.prescribed]]\nset = \"s\"\n"
+         "field = \"fluid_flux\"\ncomponent = \"y\"\nvalue = 1\n",
+     {"boundary.prescribed[1]: fluid_flux component y of node set 's' is already constrained by "
+      "boundary.impermeable[1]"}},
+    {"prescribed_flux_on_fixed_fluxes",
+     kBase + kCartilage +
+         "[[boundary.fixed]]\nset = \"s\"\nfield = \"fluxes\"\n"
+         "[[boundary.prescribed]]\nset = \"s\"\nfield = \"cation_flux\"\n"
+         "component = \"x\"\nvalue = 1\n",
+     {"boundary.prescribed[1]: cation_flux component x of node set 's' is already constrained by "
+      "boundary.fixed[1]"}},
+    {"flux_prescribed_twice",
+     kBase + kCartilage +
+         "[[boundary.prescribed]]\nset = \"s\"\nfield = \"fluid_flux\"\n"
+         "component = \"x\"\nvalue = 1\n[[boundary.prescribed]]\nset = \"s\"\n"
+         "field = \"fluid_flux\"\ncomponent = \"x\"\nvalue = 2\n",
+     {"boundary.prescribed[2]: fluid_flux component x of node set 's' is already constrained by "
+      "boundary.prescribed[1]"}},
+    {"analysis_without_mixture",
+     kBase + "[analysis]\ninitial_state = \"donnan\"\n",
+     {"analysis: only applies to biphasic/triphasic materials", "(line 18)"}},
+    {"electrochemistry_without_mixture",
+     kBase + "[electrochemistry]\nT = 300\n",
+     {"electrochemistry: only applies to biphasic/triphasic materials", "(line 18)"}},
+    {"unknown_initial_state",
+     kBase + kCartilage + "[analysis]\ninitial_state = \"donan\"\n",
+     {"analysis.initial_state = 'donan': unknown initial state (expected one of: donnan, "
+      "donnan-prestressed); did you mean 'donnan'? (line 31)"}},
+    {"undefined_fixed_charge_curve",
+     kBase + kCartilage + "[analysis]\nfixed_charge_curve = \"rmp\"\n",
+     {"analysis.fixed_charge_curve = 'rmp': undefined curve (defined: ramp); did you mean "
+      "'ramp'?"}},
+    {"fixed_charge_curve_without_triphasic",
+     kBase + kGel + "[analysis]\nfixed_charge_curve = \"ramp\"\n",
+     {"analysis.fixed_charge_curve = 'ramp': only applies to triphasic materials"}},
+    {"unknown_analysis_key",
+     kBase + kCartilage + "[analysis]\ninitial = \"donnan\"\n",
+     {"analysis.initial: unknown key (expected one of: initial_state, fixed_charge_curve)"}},
+    {"non_positive_temperature",
+     kBase + kCartilage + "[electrochemistry]\nT = -1\n",
+     {"electrochemistry.T = -1: out of range, expected a value in (0, inf) K (line 31)"}},
+    {"zero_bath_concentration",
+     kBase + kCartilage + "[electrochemistry]\nbath_concentration = 0\n",
+     {"electrochemistry.bath_concentration = 0: out of range, expected a value in (0, inf) "
+      "mmol/mm^3"}},
+    {"unknown_electrochemistry_key",
+     kBase + kCartilage + "[electrochemistry]\ntemperature = 300\n",
+     {"electrochemistry.temperature: unknown key (expected one of: R, T, faraday, "
+      "bath_concentration, bath_activity, bath_osmotic)"}},
+};
+
+INSTANTIATE_TEST_SUITE_P(Mixture, BadInput, testing::ValuesIn(kMixtureBadCases),
                          [](const testing::TestParamInfo<BadCase>& info) {
                            return info.param.name;
                          });

@@ -1,0 +1,113 @@
+// SPDX-License-Identifier: MIT
+#include "model_conditions.hpp"
+
+#include "trifem/core/error.hpp"
+#include "trifem/physics/surface_load_term.hpp"
+
+namespace trifem::app {
+namespace {
+
+dofs::FieldId field_id(const Model& model, io::FieldKind kind) {
+  switch (kind) {
+  case io::FieldKind::Displacement: return model.fields.u;
+  case io::FieldKind::FluidFlux: return model.fields.w;
+  case io::FieldKind::CationFlux: return model.fields.j_plus;
+  case io::FieldKind::AnionFlux: return model.fields.j_minus;
+  }
+  return {};
+}
+
+/// Stored value of a prescribed flux: ion flux DOFs hold j / c_ref (see MixtureFields).
+Real stored_value(const Model& model, io::FieldKind kind, Real value) {
+  const bool ion = kind == io::FieldKind::CationFlux || kind == io::FieldKind::AnionFlux;
+  return ion ? value / model.chem.c_ref : value;
+}
+
+const std::vector<Index>& node_set(const Model& model, const std::string& key,
+                                   const std::string& name) {
+  return with_context(key, [&]() -> const std::vector<Index>& { return model.mesh.node_set(name); });
+}
+
+} // namespace
+
+dofs::LoadCurve make_curve(const io::CaseSpec& spec, const std::string& name) {
+  if (name.empty())
+    return dofs::LoadCurve::constant(1.0);
+  const io::CurveSpec& c = spec.curves.at(name); // existence checked by the reader
+  return dofs::LoadCurve(c.points, c.interpolation, "curves." + name);
+}
+
+std::vector<dofs::DirichletCondition> boundary_conditions(const io::CaseSpec& spec,
+                                                          const Model& model) {
+  std::vector<dofs::DirichletCondition> out;
+  for (std::size_t i = 0; i < spec.fixed.size(); ++i) {
+    const auto& f = spec.fixed[i];
+    const auto& nodes = node_set(model, fmt::format("boundary.fixed[{}].set", i + 1), f.set);
+    dofs::DirichletCondition c;
+    for (io::FieldKind kind : f.fields) {
+      const dofs::FieldId id = field_id(model, kind);
+      if (!id.valid())
+        continue; // "fluxes" on a model without ions acts on the fields that exist
+      for (Index n : nodes)
+        for (int k : f.components)
+          c.dofs.push_back(model.dofs.dof(id, n, k));
+    }
+    out.push_back(std::move(c));
+  }
+  for (std::size_t i = 0; i < spec.prescribed.size(); ++i) {
+    const auto& p = spec.prescribed[i];
+    const std::string key = fmt::format("boundary.prescribed[{}]", i + 1);
+    const auto& nodes = node_set(model, key + ".set", p.set);
+    const dofs::FieldId id = field_id(model, p.field);
+    TRIFEM_CHECK(id.valid(), "{}.field: the model has no such field", key);
+    dofs::DirichletCondition c{{}, stored_value(model, p.field, p.value), make_curve(spec, p.curve)};
+    for (Index n : nodes)
+      c.dofs.push_back(model.dofs.dof(id, n, p.component));
+    out.push_back(std::move(c));
+  }
+  return out;
+}
+
+std::vector<std::unique_ptr<physics::Term>> load_terms(const io::CaseSpec& spec,
+                                                       const Model& model) {
+  std::vector<std::unique_ptr<physics::Term>> terms;
+  for (std::size_t i = 0; i < spec.pressures.size(); ++i) {
+    const auto& p = spec.pressures[i];
+    const auto& surface = with_context(fmt::format("loads.pressure[{}].surface", i + 1),
+                                       [&] { return model.mesh.surface(p.surface); });
+    terms.push_back(std::make_unique<physics::PressureTerm>(model.mesh, model.dofs,
+                                                            model.fields.u, surface.facets,
+                                                            p.value, make_curve(spec, p.curve)));
+  }
+  for (std::size_t i = 0; i < spec.tractions.size(); ++i) {
+    const auto& t = spec.tractions[i];
+    const auto& surface = with_context(fmt::format("loads.traction[{}].surface", i + 1),
+                                       [&] { return model.mesh.surface(t.surface); });
+    terms.push_back(std::make_unique<physics::TractionTerm>(model.mesh, model.dofs,
+                                                            model.fields.u, surface.facets,
+                                                            t.value, make_curve(spec, t.curve)));
+  }
+  return terms;
+}
+
+void add_outputs(const io::CaseSpec& spec, Model& model) {
+  for (std::size_t i = 0; i < spec.output.reactions.size(); ++i) {
+    const auto& r = spec.output.reactions[i];
+    const auto& nodes = node_set(model, fmt::format("output.reaction[{}].set", i + 1), r.set);
+    ReactionSet set{r.set, {}};
+    for (Index n : nodes)
+      for (int k = 0; k < 3; ++k)
+        set.dofs[k].push_back(model.dofs.dof(model.fields.u, n, k));
+    model.reactions.push_back(std::move(set));
+  }
+  for (const auto& p : spec.output.probes) {
+    Index best = 0;
+    for (Index n = 1; n < model.mesh.num_nodes(); ++n)
+      if ((model.mesh.node(n) - p.point).squaredNorm() <
+          (model.mesh.node(best) - p.point).squaredNorm())
+        best = n;
+    model.probes.push_back({p.name, p.quantity, best});
+  }
+}
+
+} // namespace trifem::app

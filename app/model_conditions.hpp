@@ -1,0 +1,34 @@
+// SPDX-License-Identifier: MIT
+// Case -> boundary conditions, surface loads and outputs of a model (helpers of build_model).
+#pragma once
+
+#include "model.hpp"
+#include "trifem/core/error.hpp"
+
+namespace trifem::app {
+
+/// Runs f, prefixing any InputError with the case key it concerns.
+template <class F>
+decltype(auto) with_context(const std::string& key, F&& f) {
+  try {
+    return f();
+  } catch (const InputError& e) {
+    throw InputError(fmt::format("{}: {}", key, e.what()));
+  }
+}
+
+/// The load curve `name` of the case (constant 1 if empty).
+dofs::LoadCurve make_curve(const io::CaseSpec& spec, const std::string& name);
+
+/// Fixed and prescribed conditions of the case (field DOFs on node sets).
+std::vector<dofs::DirichletCondition> boundary_conditions(const io::CaseSpec& spec,
+                                                          const Model& model);
+
+/// Pressure and traction terms of the case.
+std::vector<std::unique_ptr<physics::Term>> load_terms(const io::CaseSpec& spec,
+                                                       const Model& model);
+
+/// Reaction sets and probes of the case.
+void add_outputs(const io::CaseSpec& spec, Model& model);
+
+} // namespace trifem::app

@@ -1,0 +1,279 @@
+// SPDX-License-Identifier: MIT
+// Case reader, part 3: [[boundary.*]], [[loads.*]], [analysis] and [electrochemistry]. The
+// fields a condition may act on depend on the materials (read before these sections).
+#include "trifem/core/error.hpp"
+#include "trifem/io/toml_table.hpp"
+
+#include <algorithm>
+
+namespace trifem::io::detail {
+namespace {
+
+/// Which fields the materials of the case create.
+struct ModelFields {
+  bool fluxes = false; ///< w (some material is biphasic or triphasic)
+  bool ions = false;   ///< j+, j- (some material is triphasic)
+};
+
+ModelFields model_fields(const CaseSpec& spec) {
+  ModelFields m;
+  for (const auto& [name, material] : spec.materials) {
+    m.fluxes = m.fluxes || material.is_mixture();
+    m.ions = m.ions || material.type == "triphasic";
+  }
+  return m;
+}
+
+constexpr std::string_view kNoFluxFields =
+    "the model has no flux fields (no biphasic or triphasic material)";
+constexpr std::string_view kNoIonFields = "the model has no ion fields (no triphasic material)";
+
+const std::vector<FieldKind> kAllFluxes = {FieldKind::FluidFlux, FieldKind::CationFlux,
+                                           FieldKind::AnionFlux};
+
+std::string_view field_name(FieldKind kind) {
+  switch (kind) {
+  case FieldKind::Displacement:
+    return "displacement";
+  case FieldKind::FluidFlux:
+    return "fluid_flux";
+  case FieldKind::CationFlux:
+    return "cation_flux";
+  case FieldKind::AnionFlux:
+    return "anion_flux";
+  }
+  return "?";
+}
+
+/// The unit of a prescribed value of `kind`.
+std::string_view field_unit(FieldKind kind) {
+  switch (kind) {
+  case FieldKind::Displacement:
+    return "mm";
+  case FieldKind::FluidFlux:
+    return "mm/s";
+  case FieldKind::CationFlux:
+  case FieldKind::AnionFlux:
+    return "mmol/(mm^2 s)";
+  }
+  return "";
+}
+
+/// A value of a `field` key: the fields it stands for and what the model must have for it.
+struct FieldChoice {
+  std::vector<FieldKind> fields;
+  bool needs_fluxes = false;
+  bool needs_ions = false;
+};
+
+/// The choices of `field`; "fluxes" (every flux field of the model) only if `groups`.
+Options<FieldChoice> field_options(bool groups) {
+  Options<FieldChoice> options = {
+      {"displacement", {{FieldKind::Displacement}}},
+      {"fluid_flux", {{FieldKind::FluidFlux}, true}},
+      {"cation_flux", {{FieldKind::CationFlux}, true, true}},
+      {"anion_flux", {{FieldKind::AnionFlux}, true, true}},
+  };
+  if (groups)
+    options.push_back({"fluxes", {kAllFluxes, true}});
+  return options;
+}
+
+/// The optional `field` key of `t` (default "displacement"), checked against the model.
+std::vector<FieldKind> read_field(const Table& t, const ModelFields& model, bool groups) {
+  static const FieldChoice displacement{{FieldKind::Displacement}};
+  const FieldChoice f =
+      t.choice("field", field_options(groups), std::optional(displacement), "field");
+  const bool missing_fluxes = f.needs_fluxes && !model.fluxes;
+  if (missing_fluxes || (f.needs_ions && !model.ions))
+    fail(t.find("field"),
+         fmt::format("{} = '{}'", t.path("field"), t.required<std::string>("field")),
+         missing_fluxes ? kNoFluxFields : kNoIonFields);
+  return f.fields;
+}
+
+// ---------------------------------------------------------------------------------------------
+// [[boundary.fixed]], [[boundary.impermeable]], [[boundary.bonded]], [[boundary.prescribed]]
+
+/// The optional `components` key of `t` (default: all three).
+std::vector<Component> read_components(const Table& t) {
+  const toml::node* n = t.find("components");
+  if (!n)
+    return {0, 1, 2};
+  const toml::array& a = array_of(*n, t.path("components"), "an array of components");
+  if (a.empty())
+    fail(n, t.path("components"), "expected at least one of \"x\", \"y\", \"z\", got []");
+  std::vector<Component> components;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    const std::string path = element_path(t.path("components"), i);
+    const Component c = component_of(a[i], path);
+    if (std::find(components.begin(), components.end(), c) != components.end())
+      fail(&a[i], fmt::format("{} = '{}'", path, kAxis[c]), "duplicate component");
+    components.push_back(c);
+  }
+  return components;
+}
+
+FixedSpec read_fixed(const Table& t, const ModelFields& model) {
+  t.allow({"set", "field", "components"});
+  FixedSpec f;
+  f.set = t.name("set");
+  f.fields = read_field(t, model, true);
+  f.components = read_components(t);
+  return f;
+}
+
+FixedSpec read_impermeable(const Table& t, const ModelFields& model) {
+  if (!model.fluxes)
+    fail(t.where(), t.path(), kNoFluxFields);
+  t.allow({"set", "normal"});
+  FixedSpec f;
+  f.set = t.name("set");
+  f.components = {t.choice("normal", component_options(), std::optional<Component>(), "axis")};
+  f.fields = kAllFluxes;
+  return f;
+}
+
+FixedSpec read_bonded(const Table& t) {
+  t.allow({"set"});
+  FixedSpec f;
+  f.set = t.name("set");
+  f.components = {0, 1, 2};
+  f.fields = {FieldKind::Displacement};
+  f.fields.insert(f.fields.end(), kAllFluxes.begin(), kAllFluxes.end());
+  return f;
+}
+
+/// Rejects a second constraint on the same (node set, field, component). `fixed_keys[i]` is the
+/// table that produced spec.fixed[i].
+void check_unconstrained(const Table& t, const PrescribedSpec& p, const CaseSpec& spec,
+                         const std::vector<std::string>& fixed_keys) {
+  const auto conflict = [&](std::string_view by) {
+    const std::string field =
+        p.field == FieldKind::Displacement ? "" : fmt::format("{} ", field_name(p.field));
+    fail(t.where(), t.path(),
+         fmt::format("{}component {} of node set '{}' is already constrained by {}", field,
+                     kAxis[p.component], p.set, by));
+  };
+  for (std::size_t i = 0; i < spec.fixed.size(); ++i) {
+    const FixedSpec& f = spec.fixed[i];
+    const bool field = std::find(f.fields.begin(), f.fields.end(), p.field) != f.fields.end();
+    const auto& c = f.components;
+    if (f.set == p.set && field && std::find(c.begin(), c.end(), p.component) != c.end())
+      conflict(fixed_keys[i]);
+  }
+  for (std::size_t i = 0; i < spec.prescribed.size(); ++i) {
+    const PrescribedSpec& q = spec.prescribed[i];
+    if (q.set == p.set && q.field == p.field && q.component == p.component)
+      conflict(element_path("boundary.prescribed", i));
+  }
+}
+
+PrescribedSpec read_prescribed(const Table& t, const CaseSpec& spec,
+                               const std::vector<std::string>& fixed_keys) {
+  t.allow({"set", "field", "component", "value", "curve"});
+  PrescribedSpec p;
+  p.set = t.name("set");
+  p.field = read_field(t, model_fields(spec), false).front();
+  p.component = t.choice("component", component_options(), std::optional<Component>(), "component");
+  p.value = t.number("value", {.unit = field_unit(p.field)});
+  p.curve = read_curve_reference(t, spec);
+  check_unconstrained(t, p, spec, fixed_keys);
+  return p;
+}
+
+/// Throws unless some material is a mixture (`t` only applies to those).
+void require_mixture(const Table& t, const CaseSpec& spec) {
+  if (!model_fields(spec).fluxes)
+    fail(t.where(), t.path(),
+         "only applies to biphasic/triphasic materials (no [materials.<name>] has type = "
+         "'biphasic' or 'triphasic')");
+}
+
+} // namespace
+
+void read_boundary(const Table& root, CaseSpec& spec) {
+  const auto boundary = root.table("boundary");
+  if (!boundary)
+    return;
+  boundary->allow({"fixed", "impermeable", "bonded", "prescribed"});
+  const ModelFields model = model_fields(spec);
+  std::vector<std::string> fixed_keys; // where each entry of spec.fixed comes from
+  const auto add = [&](const Table& t, FixedSpec f) {
+    spec.fixed.push_back(std::move(f));
+    fixed_keys.push_back(t.path());
+  };
+  for (const Table& t : boundary->tables("fixed"))
+    add(t, read_fixed(t, model));
+  for (const Table& t : boundary->tables("impermeable"))
+    add(t, read_impermeable(t, model));
+  for (const Table& t : boundary->tables("bonded"))
+    add(t, read_bonded(t));
+  for (const Table& t : boundary->tables("prescribed"))
+    spec.prescribed.push_back(read_prescribed(t, spec, fixed_keys));
+}
+
+// ---------------------------------------------------------------------------------------------
+// [[loads.pressure]], [[loads.traction]]
+
+void read_loads(const Table& root, CaseSpec& spec) {
+  const auto loads = root.table("loads");
+  if (!loads)
+    return;
+  loads->allow({"pressure", "traction"});
+  for (const Table& t : loads->tables("pressure")) {
+    t.allow({"surface", "value", "curve"});
+    spec.pressures.push_back(
+        {t.name("surface"), t.number("value", {.unit = "MPa"}), read_curve_reference(t, spec)});
+  }
+  for (const Table& t : loads->tables("traction")) {
+    t.allow({"surface", "value", "curve"});
+    spec.tractions.push_back({t.name("surface"), t.vec3("value", {.unit = "MPa"}, std::nullopt),
+                              read_curve_reference(t, spec)});
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// [analysis], [electrochemistry]
+
+void read_analysis(const Table& root, CaseSpec& spec) {
+  const auto t = root.table("analysis");
+  if (!t)
+    return;
+  require_mixture(*t, spec);
+  t->allow({"initial_state", "fixed_charge_curve"});
+  static const Options<InitialStateKind> states = {
+      {"donnan", InitialStateKind::Donnan},
+      {"donnan-prestressed", InitialStateKind::DonnanPrestressed}};
+  AnalysisSpec& a = spec.analysis;
+  a.initial_state =
+      t->choice("initial_state", states, std::optional(a.initial_state), "initial state");
+  a.fixed_charge_curve = t->name("fixed_charge_curve", false);
+  if (a.fixed_charge_curve.empty())
+    return;
+  check_reference(*t, "fixed_charge_curve", a.fixed_charge_curve, spec.curves, "curve", "curves");
+  if (!model_fields(spec).ions)
+    fail(t->find("fixed_charge_curve"),
+         fmt::format("{} = '{}'", t->path("fixed_charge_curve"), a.fixed_charge_curve),
+         "only applies to triphasic materials (no material has a fixed charge)");
+}
+
+void read_electrochemistry(const Table& root, CaseSpec& spec) {
+  const auto t = root.table("electrochemistry");
+  if (!t)
+    return;
+  require_mixture(*t, spec);
+  t->allow({"R", "T", "faraday", "bath_concentration", "bath_activity", "bath_osmotic"});
+  ElectrochemistrySpec& e = spec.electrochemistry; // holds the defaults until overwritten
+  const auto positive = [&](std::string_view key, Real fallback, std::string_view unit) {
+    return t->number(key, {.range = Range::positive(), .fallback = fallback, .unit = unit});
+  };
+  e.R = positive("R", e.R, "mJ/(mmol K)");
+  e.T = positive("T", e.T, "K");
+  e.faraday = positive("faraday", e.faraday, "C/mmol");
+  e.bath_concentration = positive("bath_concentration", e.bath_concentration, "mmol/mm^3");
+  e.bath_activity = positive("bath_activity", e.bath_activity, "");
+  e.bath_osmotic = positive("bath_osmotic", e.bath_osmotic, "");
+}
+
+} // namespace trifem::io::detail

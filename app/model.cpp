@@ -183,7 +183,8 @@ std::unique_ptr<Model> build_model(const io::CaseSpec& spec) {
   auto model = std::make_unique<Model>();
   std::map<std::string, std::string> block_materials;
   model->mesh = build_mesh(spec, block_materials);
-  const std::vector<CellMaterial> materials = cell_materials(spec, model->mesh, block_materials);
+  model->materials = cell_materials(spec, model->mesh, block_materials);
+  const std::vector<CellMaterial>& materials = model->materials;
   model->chem = electrochemistry(spec.electrochemistry);
   add_fields(materials, *model);
   set_scales(materials, *model);

@@ -36,6 +36,7 @@ struct CellMaterial {
 struct Model {
   mesh::Mesh mesh;
   dofs::DofMap dofs;
+  std::vector<CellMaterial> materials; ///< per cell
   physics::MixtureFields fields; ///< u always; w, p with mixtures; j+-, eta with ions
   material::Electrochemistry chem;
   const physics::SolidTerm* solid = nullptr;   ///< pure-solid cells (owned by problem)

@@ -42,7 +42,7 @@ std::vector<dofs::DirichletCondition> boundary_conditions(const io::CaseSpec& sp
   std::vector<dofs::DirichletCondition> out;
   for (std::size_t i = 0; i < spec.fixed.size(); ++i) {
     const auto& f = spec.fixed[i];
-    const auto& nodes = node_set(model, fmt::format("boundary.fixed[{}].set", i + 1), f.set);
+    const auto& nodes = node_set(model, f.key + ".set", f.set);
     dofs::DirichletCondition c;
     for (io::FieldKind kind : f.fields) {
       const dofs::FieldId id = field_id(model, kind);

@@ -21,6 +21,14 @@ std::vector<std::string> history_columns(const Model& model) {
   for (const auto& p : model.probes)
     for (const char* c : {"x", "y", "z"})
       cols.push_back(fmt::format("{}.{}{} [mm]", p.name, p.quantity == "position" ? "" : "u", c));
+  if (model.mixture) {
+    cols.push_back("water_outflow [mm^3/s]");
+    cols.push_back("water_volume [mm^3]");
+  }
+  if (model.fields.j_plus.valid())
+    for (const char* c : {"cation_outflow [mmol/s]", "anion_outflow [mmol/s]", "cation_moles [mmol]",
+                          "anion_moles [mmol]"})
+      cols.push_back(c);
   return cols;
 }
 
@@ -43,6 +51,8 @@ OutputWriter::OutputWriter(const Model& model, const io::OutputSpec& spec,
                ec.message());
   pvd_ = std::make_unique<io::PvdWriter>(directory_ / "results.pvd");
   history_ = std::make_unique<io::CsvWriter>(history_file(), history_columns(model));
+  if (model.mixture)
+    balance_ = std::make_unique<MassBalance>(model);
 }
 
 bool OutputWriter::is_output_time(Real time) const {
@@ -71,6 +81,14 @@ std::vector<double> OutputWriter::history_row(Real time, int step, Real dt, int 
       const Real u = x[model_.dofs.dof(model_.fields.u, p.node, k)];
       row.push_back(p.quantity == "position" ? model_.mesh.node(p.node)[k] + u : u);
     }
+  if (balance_) {
+    const Balance b = balance_->measure();
+    row.push_back(b.outflow[0]);
+    row.push_back(b.total[0]);
+    if (balance_->has_ions())
+      for (double v : {b.outflow[1], b.outflow[2], b.total[1], b.total[2]})
+        row.push_back(v);
+  }
   return row;
 }
 

@@ -2,6 +2,7 @@
 // Result files of a run: VTU series + .pvd, history.csv, summary.json.
 #pragma once
 
+#include "mass_balance.hpp"
 #include "model.hpp"
 #include "trifem/io/csv_writer.hpp"
 #include "trifem/io/pvd_writer.hpp"
@@ -18,6 +19,8 @@ public:
   /// Creates `directory` (InputError if impossible) and the history file.
   OutputWriter(const Model& model, const io::OutputSpec& spec, std::filesystem::path directory);
 
+  /// Water and ion balances (mixture models; null otherwise).
+  MassBalance* balance() { return balance_.get(); }
   /// Writes the state at `time`: a history row always, a VTU file if `volume` is set.
   void write(Real time, int step, Real dt, int iterations, bool volume);
   /// True if `time` is an output time (interval multiple or listed time).
@@ -38,6 +41,7 @@ private:
   std::filesystem::path directory_;
   std::unique_ptr<io::PvdWriter> pvd_;
   std::unique_ptr<io::CsvWriter> history_;
+  std::unique_ptr<MassBalance> balance_;
   int vtu_count_ = 0;
   double seconds_ = 0.0;
 };

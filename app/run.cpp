@@ -8,6 +8,8 @@
 #include "trifem/linalg/linear_solver.hpp"
 
 #include <chrono>
+#include <cmath>
+#include <set>
 #include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -48,6 +50,32 @@ solver::NewtonSettings newton_settings(const io::SolverSpec& s) {
   return n;
 }
 
+/// Derived scales of mixture models: osmotic pressure scale, Donnan state, consolidation time.
+void log_mixture_scales(const Model& model) {
+  const material::Electrochemistry& c = model.chem;
+  const Real L = model.length_scale;
+  log::info("  consolidation time L^2/(H kappa) = {:.4g} s (L = model size)",
+            L * L / (model.modulus_scale * model.permeability_scale));
+  if (!model.fields.j_plus.valid())
+    return;
+  log::info("  RT = {:.6g} mJ/mmol, RT c* = {:.6g} MPa (bath c* = {:.4g} mmol/mm^3)", c.RT(),
+            c.RT() * c.c_ref, c.c_ref);
+  std::set<const material::MixtureProperties*> seen;
+  for (const CellMaterial& m : model.materials) {
+    if (!m.mixture || !m.mixture->charged || !seen.insert(m.mixture.get()).second)
+      continue;
+    const Real cF = m.mixture->fixed_charge;
+    const Real K = c.gamma_bath * c.gamma_bath / (m.mixture->gamma_plus * m.mixture->gamma_minus);
+    const Real cp = 0.5 * (cF + std::sqrt(cF * cF + 4 * K * c.c_ref * c.c_ref));
+    const Real Pi = c.RT() * (m.mixture->osmotic * (2 * cp - cF) - 2 * c.osmotic_bath * c.c_ref);
+    const Real psi = -c.RT() * std::log(m.mixture->gamma_plus * cp / (c.gamma_bath * c.c_ref)) /
+                     c.faraday;
+    log::info("  Donnan state at the reference (cF0 = {:.4g} mEq/mm^3): Pi0 = {:.6g} MPa, "
+              "psi0 = {:.4g} mV, c+ = {:.6g}, c- = {:.6g} mmol/mm^3",
+              cF, Pi, psi, cp, cp - cF);
+  }
+}
+
 void log_model(const io::CaseSpec& spec, const Model& model) {
   log::info("trifem {}  case {}", TRIFEM_VERSION, spec.file.string());
   if (!spec.title.empty())
@@ -57,11 +85,14 @@ void log_model(const io::CaseSpec& spec, const Model& model) {
             model.dofs.num_constrained(), omp_get_max_threads());
   log::info("  scales: length {:.4g} mm, modulus {:.4g} MPa", model.length_scale,
             model.modulus_scale);
+  if (model.mixture)
+    log_mixture_scales(model);
 }
 
 void write_summary(const std::filesystem::path& file, const io::CaseSpec& spec,
                    const Model& model, const solver::RunReport& run,
-                   const solver::PhaseTimes& phases, double output_s, double wall_s) {
+                   const solver::PhaseTimes& phases, double output_s, double wall_s,
+                   const MassBalance* balance) {
   nlohmann::json j;
   j["trifem_version"] = TRIFEM_VERSION;
   j["case"] = spec.file.string();
@@ -81,6 +112,14 @@ void write_summary(const std::filesystem::path& file, const io::CaseSpec& spec,
                       {"factorization", phases.factorization},
                       {"solve", phases.solve},
                       {"output", output_s}};
+  if (balance) {
+    // largest over the steps of |change of the total + dt x boundary outflow| / total
+    j["mass_balance_max_relative_error"] = {{"water", balance->worst()[0]}};
+    if (balance->has_ions()) {
+      j["mass_balance_max_relative_error"]["cation"] = balance->worst()[1];
+      j["mass_balance_max_relative_error"]["anion"] = balance->worst()[2];
+    }
+  }
   std::ofstream out(file);
   out << j.dump(2) << '\n';
 }
@@ -116,6 +155,8 @@ int run_case(const io::CaseSpec& spec, const std::filesystem::path& output_dir) 
   output.write(0.0, 0, 0.0, 0, true); // the initial state, with its reactions
 
   auto observer = [&](const solver::StepInfo& info) {
+    if (output.balance())
+      output.balance()->record_step(info.dt);
     log::info("step {:4d}  t = {:<10.5g} dt = {:<9.3g} iterations {:2d}  residual {:.2e}",
               info.step, info.time, info.dt, info.newton->iterations,
               info.newton->final_residual);
@@ -126,7 +167,7 @@ int run_case(const io::CaseSpec& spec, const std::filesystem::path& output_dir) 
       solver::run_time_loop(*model->problem, newton, controller, observer);
   const double wall = std::chrono::duration<double>(Clock::now() - start).count();
   write_summary(output_dir / "summary.json", spec, *model, run, newton.times(), output.seconds(),
-                wall);
+                wall, output.balance());
   log::info("{}: {} steps, {} Newton iterations, {} cutbacks, {:.2f} s (assembly {:.2f}, "
             "factorization {:.2f}, solve {:.2f}, output {:.2f})",
             run.success ? "completed" : "FAILED", run.steps, run.iterations, run.cutbacks, wall,

@@ -8,6 +8,9 @@
 namespace trifem::assembly {
 namespace {
 
+/// Colours with fewer elements are assembled by one thread (a parallel region costs more).
+constexpr Index kMinParallelElements = 32;
+
 /// Adds value at (row, col) of a compressed column-major matrix whose pattern contains it.
 inline void add_entry(SparseMatrix& A, Index row, Index col, Real value) {
   const Index* begin = A.innerIndexPtr() + A.outerIndexPtr()[col];
@@ -71,7 +74,7 @@ bool Assembler::assemble_term(std::size_t t, const physics::EvalState& state,
   bool admissible = true;
   for (const auto& colour : colours_[t]) {
     const Index count = static_cast<Index>(colour.size());
-#pragma omp parallel reduction(&& : admissible)
+#pragma omp parallel reduction(&& : admissible) if (count >= kMinParallelElements)
     {
       Scratch s;
 #pragma omp for schedule(static)

@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Case reader, part 3: [[boundary.*]], [[loads.*]], [analysis] and [electrochemistry]. The
 // fields a condition may act on depend on the materials (read before these sections).
-#include "trifem/core/error.hpp"
 #include "trifem/io/toml_table.hpp"
 
 #include <algorithm>
@@ -200,6 +199,7 @@ void read_boundary(const Table& root, CaseSpec& spec) {
   const ModelFields model = model_fields(spec);
   std::vector<std::string> fixed_keys; // where each entry of spec.fixed comes from
   const auto add = [&](const Table& t, FixedSpec f) {
+    f.key = t.path();
     spec.fixed.push_back(std::move(f));
     fixed_keys.push_back(t.path());
   };

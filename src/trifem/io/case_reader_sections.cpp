@@ -2,7 +2,6 @@
 // Case reader, part 2: [[mesh.*]], [materials.*], [curves.*], [time], [solver], [output], and the
 // order in which all sections are read. The typed access layer is in toml_table.hpp; boundary
 // conditions, loads and the mixture options are read in case_reader_physics.cpp.
-#include "trifem/core/error.hpp"
 #include "trifem/io/toml_table.hpp"
 #include "trifem/material/mixture.hpp"
 #include "trifem/material/registry.hpp"
@@ -30,7 +29,7 @@ std::string read_type(const Table& t, bool mixtures, std::string_view noun) {
   return std::string(t.choice("type", types, std::optional<std::string_view>(), noun));
 }
 
-/// The parameters of the solid law `type` in `t` (which holds nothing else but `type`).
+/// The solid law `type` read from `t`, which holds `type` and the law's parameters only.
 SolidSpec read_solid_law(const Table& t, const std::string& type) {
   const material::LawEntry& law = material::find_law(type, t.path());
   std::vector<std::string_view> keys = {"type"};
@@ -61,7 +60,8 @@ void reject_triphasic_keys(const Table& t) {
                      t.path("type")));
 }
 
-/// The mixture keys of `t` (fixed_charge_basis "water"/"tissue" as 0/1), unchecked defaults.
+/// The mixture keys given in `t`, range-checked (fixed_charge_basis "water"/"tissue" as 0/1);
+/// defaults are not filled in.
 material::ParameterValues read_mixture_values(const Table& t, bool charged) {
   static const Options<Real> bases = {{"water", 0.0}, {"tissue", 1.0}};
   material::ParameterValues values;

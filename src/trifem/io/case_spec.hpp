@@ -67,6 +67,7 @@ enum class FieldKind {
 /// "fluxes" (fluid + both ions). [[boundary.impermeable]] (set, normal) is stored as fixed
 /// fluxes on the normal component; [[boundary.bonded]] (set) as fixed displacement and fluxes.
 struct FixedSpec {
+  std::string key; ///< case key it came from, e.g. "boundary.impermeable[1]" (for messages)
   std::string set;
   std::vector<Component> components;
   std::vector<FieldKind> fields = {FieldKind::Displacement};

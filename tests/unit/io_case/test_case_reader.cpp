@@ -25,6 +25,7 @@ using trifem::io::read_case;
 namespace {
 
 const fs::path kData = TRIFEM_TEST_DATA_DIR;
+const fs::path kInputDoc = fs::path(TRIFEM_SOURCE_DIR) / "docs" / "input.md";
 /// Name under which in-memory cases are parsed.
 const fs::path kMemoryFile = "memory/case.toml";
 
@@ -787,22 +788,39 @@ TEST(CaseReader, GmshPathIsResolvedAgainstTheCaseDirectory) {
   EXPECT_EQ(c.gmsh[0].materials.at("v"), "soft");
 }
 
-TEST(CaseReader, DocumentedExampleParses) {
-  const fs::path doc = fs::path(TRIFEM_SOURCE_DIR) / "docs" / "input.md";
-  std::ifstream in(doc);
-  ASSERT_TRUE(in) << doc;
+/// The TOML block that follows the heading `## <heading>` in docs/input.md ("" if none).
+std::string documented_example(const std::string& heading) {
+  std::ifstream in(kInputDoc);
+  EXPECT_TRUE(in) << kInputDoc;
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const std::string fence = "## Complete annotated example\n\n```toml\n";
+  const std::string fence = "## " + heading + "\n\n";
   const auto begin = text.find(fence);
-  ASSERT_NE(begin, std::string::npos);
-  const auto body = begin + fence.size();
-  const auto end = text.find("```", body);
-  ASSERT_NE(end, std::string::npos);
-  const CaseSpec c = parse_case(text.substr(body, end - body), doc);
+  const auto body = text.find("```toml\n", begin);
+  EXPECT_NE(begin, std::string::npos) << heading;
+  if (begin == std::string::npos || body == std::string::npos)
+    return "";
+  const auto end = text.find("```", body + 8);
+  EXPECT_NE(end, std::string::npos);
+  return text.substr(body + 8, end - body - 8);
+}
+
+TEST(CaseReader, DocumentedExampleParses) {
+  const CaseSpec c = parse_case(documented_example("Complete annotated example"), kInputDoc);
   EXPECT_EQ(c.boxes.size(), 1u);
   EXPECT_EQ(c.materials.size(), 2u);
   EXPECT_EQ(c.fixed.size(), 2u);
   EXPECT_EQ(c.prescribed.size(), 1u);
   EXPECT_EQ(c.output.probes.size(), 1u);
   EXPECT_DOUBLE_EQ(c.time.dt_min, 1e-7);
+}
+
+TEST(CaseReader, DocumentedTriphasicExampleParses) {
+  const CaseSpec c = parse_case(documented_example("Complete triphasic example"), kInputDoc);
+  ASSERT_EQ(c.materials.size(), 1u);
+  EXPECT_EQ(c.materials.at("cartilage").type, "triphasic");
+  EXPECT_EQ(c.materials.at("cartilage").solid->type, "saint-venant-kirchhoff");
+  EXPECT_EQ(c.analysis.fixed_charge_curve, "charge");
+  EXPECT_DOUBLE_EQ(c.electrochemistry.bath_concentration, 1.5e-4);
+  EXPECT_EQ(c.fixed.size(), 9u); // 6 fixed + 2 impermeable + 1 bonded
+  EXPECT_EQ(c.prescribed.size(), 1u);
 }

@@ -4,7 +4,7 @@
 #   make test  - same set-up, then the whole test suite through ctest
 BUILD_DIR ?= build
 JOBS ?= $(shell nproc)
-EXAMPLE ?= cantilever
+EXAMPLE ?= confined_column
 
 .PHONY: all deps configure build run test clean format
 

@@ -11,7 +11,7 @@ out="$root/results/$name"
 "$root/$build/bin/trifem" run "$dir/$name.toml" -o "$out"
 if [ -f "$dir/plot.gp" ]; then
   if command -v gnuplot >/dev/null 2>&1; then
-    (cd "$out" && gnuplot "$dir/plot.gp")
+    (cd "$out" && gnuplot -c "$dir/plot.gp")
     echo "plots:   $(ls "$out"/*.png | tr '\n' ' ')"
   else
     echo "gnuplot not found: skipped the plots (scripts/install-deps.sh installs it)"

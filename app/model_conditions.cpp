@@ -2,6 +2,7 @@
 #include "model_conditions.hpp"
 
 #include "trifem/core/error.hpp"
+#include "trifem/physics/bath_term.hpp"
 #include "trifem/physics/surface_load_term.hpp"
 
 namespace trifem::app {
@@ -86,6 +87,14 @@ std::vector<std::unique_ptr<physics::Term>> load_terms(const io::CaseSpec& spec,
     terms.push_back(std::make_unique<physics::TractionTerm>(model.mesh, model.dofs,
                                                             model.fields.u, surface.facets,
                                                             t.value, make_curve(spec, t.curve)));
+  }
+  for (std::size_t i = 0; i < spec.baths.size(); ++i) {
+    const auto& b = spec.baths[i];
+    const auto& surface = with_context(fmt::format("boundary.bath[{}].surface", i + 1),
+                                       [&] { return model.mesh.surface(b.surface); });
+    terms.push_back(std::make_unique<physics::BathTerm>(model.mesh, model.dofs, model.fields,
+                                                        surface.facets, model.chem,
+                                                        b.concentration, make_curve(spec, b.curve)));
   }
   return terms;
 }

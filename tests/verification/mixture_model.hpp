@@ -39,6 +39,7 @@ struct MixtureModel {
   std::vector<std::unique_ptr<physics::Term>> loads;
   physics::MixtureTerm* mixture = nullptr;
   std::unique_ptr<assembly::FeProblem> problem;
+  std::optional<dofs::LoadCurve> fixed_charge_curve; ///< free swelling from an uncharged state
 
   MixtureModel(mesh::Mesh m, material::MixtureProperties p) : mesh(std::move(m)) {
     props = std::make_shared<material::MixtureProperties>(std::move(p));
@@ -78,7 +79,7 @@ struct MixtureModel {
     auto term = std::make_unique<physics::MixtureTerm>(
         mesh, dofs, f, cells,
         std::vector<std::shared_ptr<const material::MixtureProperties>>(cells.size(), props),
-        chem);
+        chem, fixed_charge_curve);
     mixture = term.get();
     std::vector<std::unique_ptr<physics::Term>> terms;
     terms.push_back(std::move(term));

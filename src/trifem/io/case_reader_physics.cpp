@@ -195,7 +195,7 @@ void read_boundary(const Table& root, CaseSpec& spec) {
   const auto boundary = root.table("boundary");
   if (!boundary)
     return;
-  boundary->allow({"fixed", "impermeable", "bonded", "prescribed"});
+  boundary->allow({"fixed", "impermeable", "bonded", "prescribed", "bath"});
   const ModelFields model = model_fields(spec);
   std::vector<std::string> fixed_keys; // where each entry of spec.fixed comes from
   const auto add = [&](const Table& t, FixedSpec f) {
@@ -211,6 +211,15 @@ void read_boundary(const Table& root, CaseSpec& spec) {
     add(t, read_bonded(t));
   for (const Table& t : boundary->tables("prescribed"))
     spec.prescribed.push_back(read_prescribed(t, spec, fixed_keys));
+  for (const Table& t : boundary->tables("bath")) {
+    t.allow({"surface", "concentration", "curve"});
+    if (!model.ions)
+      fail(t.where(), t.path(), "a bath needs a triphasic material");
+    spec.baths.push_back({t.name("surface"),
+                          t.number("concentration",
+                                   {.range = material::Range::positive(), .unit = "mmol/mm^3"}),
+                          read_curve_reference(t, spec)});
+  }
 }
 
 // ---------------------------------------------------------------------------------------------

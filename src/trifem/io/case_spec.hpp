@@ -89,6 +89,15 @@ struct PressureSpec {
   std::string curve;
 };
 
+/// [[boundary.bath]]: a surface in a NaCl bath whose concentration moves from the reference
+/// (electrochemistry.bath_concentration) to `concentration` following `curve` (0 -> 1).
+/// Surfaces without conditions are free-draining to the reference bath.
+struct BathSpec {
+  std::string surface;
+  Real concentration = 0.0; ///< [mmol/mm^3], > 0
+  std::string curve;        ///< empty: the new bath applies from t = 0
+};
+
 /// [[loads.traction]]: dead traction per reference area on a surface [MPa].
 struct TractionSpec {
   std::string surface;
@@ -171,6 +180,7 @@ struct CaseSpec {
   std::vector<PrescribedSpec> prescribed;
   std::vector<PressureSpec> pressures;
   std::vector<TractionSpec> tractions;
+  std::vector<BathSpec> baths;
   AnalysisSpec analysis;
   ElectrochemistrySpec electrochemistry;
   TimeSpec time;

@@ -2,15 +2,10 @@
 #include "trifem/physics/surface_load_term.hpp"
 
 #include "trifem/fe/hex8.hpp"
+#include "trifem/physics/facet_area.hpp"
 
 namespace trifem::physics {
 namespace {
-
-Mat3 skew(const Vec3& v) {
-  Mat3 S;
-  S << 0, -v[2], v[1], v[2], 0, -v[0], -v[1], v[0], 0;
-  return S;
-}
 
 void facet_dofs(const mesh::Facet& f, const dofs::DofMap& map, dofs::FieldId u,
                 std::vector<Index>& dofs) {
@@ -40,23 +35,11 @@ bool PressureTerm::evaluate(Index e, const EvalState& state, LocalVector& r,
     for (int k = 0; k < 3; ++k)
       x(a, k) = mesh_.node(f.nodes[a])[k] + state.x[dofs_.dof(u_, f.nodes[a], k)];
   const Real p = magnitude_ * curve_(state.time);
-  r.setZero(12);
+  // R = f_int - f_ext with f_ext = -p n da
+  FacetMatrix da;
+  r = p * facet_area_vectors(x, K ? &da : nullptr);
   if (K)
-    K->setZero(12, 12);
-  for (const auto& qp : fe::quad_gauss_2x2()) {
-    const fe::QuadShape N = fe::quad4_shape(qp.xi);
-    const fe::QuadShapeGrad dN = fe::quad4_shape_grad(qp.xi);
-    const Vec3 t1 = x.transpose() * dN.col(0), t2 = x.transpose() * dN.col(1);
-    const Vec3 area = t1.cross(t2) * qp.weight; // n da
-    for (int a = 0; a < 4; ++a) {
-      r.segment<3>(3 * a) += p * N[a] * area; // R = f_int - f_ext, f_ext = -p n da
-      if (!K)
-        continue;
-      for (int b = 0; b < 4; ++b)
-        K->block<3, 3>(3 * a, 3 * b) +=
-            p * N[a] * qp.weight * (dN(b, 1) * skew(t1) - dN(b, 0) * skew(t2));
-    }
-  }
+    *K = p * da;
   return true;
 }
 

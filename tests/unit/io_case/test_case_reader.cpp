@@ -293,6 +293,16 @@ TEST(CaseReader, TriphasicCaseBoundaryConditions) {
   EXPECT_DOUBLE_EQ(c.prescribed[2].value, -2e-6);
 }
 
+TEST(CaseReader, BathSurfaceIsRead) {
+  const CaseSpec c = parse_case(
+      kBase + kCartilage + "\n[[boundary.bath]]\nsurface = \"block.xmax\"\nconcentration = 1.5e-5\ncurve = \"ramp\"\n",
+      kMemoryFile);
+  ASSERT_EQ(c.baths.size(), 1u);
+  EXPECT_EQ(c.baths[0].surface, "block.xmax");
+  EXPECT_DOUBLE_EQ(c.baths[0].concentration, 1.5e-5);
+  EXPECT_EQ(c.baths[0].curve, "ramp");
+}
+
 TEST(CaseReader, MixtureDefaults) {
   const CaseSpec c = parse_case(kBase + kCartilage, kMemoryFile);
   const MaterialSpec& cart = c.materials.at("cart");
@@ -611,6 +621,12 @@ std::string gel_with(const std::string& from, const std::string& to) {
 const std::string kSolidTable = "\n[materials.cart.solid]\ntype = \"neo-hookean\"\nE = 1.0\n";
 
 const std::vector<BadCase> kMixtureBadCases = {
+    {"bath_without_ions",
+     kBase + kGel + "\n[[boundary.bath]]\nsurface = \"block.xmax\"\nconcentration = 1e-5\n",
+     {"boundary.bath[1]", "a bath needs a triphasic material"}},
+    {"bath_zero_concentration",
+     kBase + kCartilage + "\n[[boundary.bath]]\nsurface = \"block.xmax\"\nconcentration = 0.0\n",
+     {"boundary.bath[1].concentration = 0", "out of range"}},
     {"mixture_without_solid",
      cartilage_with(kSolidTable, ""),
      {"materials.cart.solid: missing required table [materials.cart.solid]",

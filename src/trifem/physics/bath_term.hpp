@@ -1,0 +1,43 @@
+// SPDX-License-Identifier: MIT
+// A bath of NaCl concentration c*(t) different from the reference bath, on a surface of a
+// mixture: the natural boundary terms -int N_a mu*_bar n da of the water and ion rows
+// (FORMULATION 5.1). Surfaces without any condition are in the reference bath (no term).
+#pragma once
+
+#include "trifem/dofs/load_curve.hpp"
+#include "trifem/material/mixture.hpp"
+#include "trifem/mesh/mesh.hpp"
+#include "trifem/physics/mixture_term.hpp"
+
+namespace trifem::physics {
+
+/// Bath boundary: c*(t) = c_ref + (concentration - c_ref) curve(t), gauge pressure 0,
+/// potential 0. Bath-normalised potentials mu_w* = -2 RT Phi* (c* - c_ref),
+/// mu_+-* = RT ln(c* / c_ref). Rows scaled like the mixture term's.
+class BathTerm final : public Term {
+public:
+  BathTerm(const mesh::Mesh& mesh, const dofs::DofMap& dofs, MixtureFields fields,
+           std::vector<mesh::Facet> facets, const material::Electrochemistry& chem,
+           Real concentration, dofs::LoadCurve curve);
+
+  std::string name() const override { return "bath"; }
+  Index num_elements() const override { return static_cast<Index>(facets_.size()); }
+  void element_dofs(Index e, std::vector<Index>& dofs) const override;
+  bool evaluate(Index e, const EvalState& state, LocalVector& r, LocalMatrix* K) const override;
+
+  /// Bath concentration at time t [mmol/mm^3].
+  Real concentration(Real t) const;
+
+private:
+  bool ions() const { return fields_.j_plus.valid(); }
+
+  const mesh::Mesh& mesh_;
+  const dofs::DofMap& dofs_;
+  MixtureFields fields_;
+  std::vector<mesh::Facet> facets_;
+  material::Electrochemistry chem_;
+  Real concentration_;
+  dofs::LoadCurve curve_;
+};
+
+} // namespace trifem::physics

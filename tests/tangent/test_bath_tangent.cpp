@@ -1,0 +1,47 @@
+// SPDX-License-Identifier: MIT
+// Finite-difference check of the bath boundary term (follower area vectors in the water and ion
+// rows) on a deformed facet.
+#include "trifem/mesh/box.hpp"
+#include "trifem/physics/bath_term.hpp"
+
+#include <gtest/gtest.h>
+
+using namespace trifem;
+
+TEST(BathTerm, TangentMatchesFiniteDifferences) {
+  mesh::BoxSpec spec;
+  const mesh::Mesh mesh = mesh::make_box(spec);
+  dofs::DofMap map;
+  physics::MixtureFields f;
+  f.u = map.add_field("u", mesh.num_nodes(), 3);
+  f.w = map.add_field("w", mesh.num_nodes(), 3);
+  f.j_plus = map.add_field("j+", mesh.num_nodes(), 3);
+  f.j_minus = map.add_field("j-", mesh.num_nodes(), 3);
+  f.p = map.add_field("p", 1, 1);
+  f.eta = map.add_field("eta", 1, 1);
+  map.finalize();
+  material::Electrochemistry chem;
+  const physics::BathTerm term(mesh, map, f, mesh.surface("box.xmax").facets, chem, 4e-5,
+                               dofs::LoadCurve::constant());
+  std::srand(9);
+  Vector x = 0.1 * Vector::Random(map.num_dofs());
+  const Vector x_old = x;
+  std::vector<Index> dofs;
+  term.element_dofs(0, dofs);
+  ASSERT_EQ(dofs.size(), 48u);
+  physics::LocalVector r;
+  physics::LocalMatrix K;
+  ASSERT_TRUE(term.evaluate(0, {x, x_old, 1.0, 0.5}, r, &K));
+  EXPECT_GT(r.norm(), 0.0);
+  Eigen::MatrixXd K_fd(48, 48);
+  for (int j = 0; j < 48; ++j) {
+    Vector xp = x, xm = x;
+    xp[dofs[j]] += 1e-6;
+    xm[dofs[j]] -= 1e-6;
+    physics::LocalVector rp, rm;
+    term.evaluate(0, {xp, x_old, 1.0, 0.5}, rp, nullptr);
+    term.evaluate(0, {xm, x_old, 1.0, 0.5}, rm, nullptr);
+    K_fd.col(j) = (rp - rm) / 2e-6;
+  }
+  EXPECT_LE((K - K_fd).norm() / K.norm(), 1e-7);
+}

@@ -1,0 +1,130 @@
+// SPDX-License-Identifier: MIT
+#include "trifem/explicit/cell_kernel.hpp"
+
+#include <cmath>
+#include <limits>
+
+namespace trifem::explicit_dynamics {
+namespace {
+
+/// Parallel loops below this size run serially (thread start-up would dominate).
+constexpr Index kMinParallel = 256;
+
+using RowMajor83 = Eigen::Matrix<Real, 8, 3, Eigen::RowMajor>;
+
+/// Quantity codes of a failed cell (index into kQuantities).
+enum Quantity : int { kOk = 0, kDetF, kDisplacement, kInternal, kGradient, kPsi, kEnergy };
+constexpr const char* kQuantities[] = {"",         "det F",       "displacement",
+                                       "internal force Q_V", "constraint gradient H",
+                                       "constraint integral Psi", "strain energy"};
+
+/// One cell; returns a Quantity code (kOk on success).
+int evaluate_cell(const fe::HexGeometry& geo, const fe::HexCoords& u,
+                  const material::ElasticLaw& law, Constraint constraint,
+                  const CellRequest& req, CellVector& q, CellVector& h, Real& psi, Real& W,
+                  Real& dev) {
+  if (!u.allFinite())
+    return kDisplacement;
+  Eigen::Map<RowMajor83> qm(q.data()), hm(h.data());
+  qm.setZero();
+  hm.setZero();
+  psi = W = dev = 0.0;
+  for (int q_point = 0; q_point < 8; ++q_point) {
+    const fe::HexShapeGrad& g = geo.dN_dX[q_point];
+    const Real dV = geo.dV[q_point];
+    const Mat3 F = Mat3::Identity() + u.transpose() * g;
+    const Real J = F.determinant();
+    if (!(J > 0.0))
+      return std::isfinite(J) ? kDetF : kDisplacement;
+    dev = std::max(dev, std::abs(J - 1.0));
+    const Mat3 C = F.transpose() * F;
+    if (req.internal)
+      qm.noalias() += g * (F * law.stress(C)).transpose() * dV;
+    if (req.constraint) {
+      const Mat3 Finv_t = F.inverse().transpose();
+      const bool jm1 = constraint == Constraint::JMinusOne;
+      hm.noalias() += g * ((jm1 ? J : 1.0) * Finv_t).transpose() * dV;
+      psi += (jm1 ? J - 1.0 : std::log(J)) * dV;
+    }
+    if (req.energy)
+      W += law.energy(C) * dV;
+  }
+  if (req.internal && !q.allFinite())
+    return kInternal;
+  if (req.constraint && !(h.allFinite() && std::isfinite(psi)))
+    return std::isfinite(psi) ? kGradient : kPsi;
+  if (req.energy && !std::isfinite(W))
+    return kEnergy;
+  return kOk;
+}
+
+} // namespace
+
+void CellFields::resize(Index n) {
+  internal.resize(n);
+  gradient.resize(n);
+  psi.resize(n);
+  energy.resize(n);
+  volume_change.resize(n);
+}
+
+CellStatus evaluate_cells(const ExplicitModel& model, Constraint constraint, const Vector& U,
+                          const CellRequest& request, CellFields& out) {
+  const Index n = model.num_cells();
+  if (static_cast<Index>(out.internal.size()) != n)
+    out.resize(n);
+  const material::ElasticLaw& law = model.law();
+  Index first_bad = std::numeric_limits<Index>::max();
+#pragma omp parallel for schedule(static) reduction(min : first_bad) if (n >= kMinParallel)
+  for (Index c = 0; c < n; ++c) {
+    Real W = 0.0;
+    const int code =
+        evaluate_cell(model.geometry()[c], model.cell_values(c, U), law, constraint, request,
+                      out.internal[c], out.gradient[c], out.psi[c], W, out.volume_change[c]);
+    if (request.energy)
+      out.energy[c] = W;
+    if (code != kOk)
+      first_bad = std::min(first_bad, c);
+  }
+  if (first_bad == std::numeric_limits<Index>::max())
+    return {};
+  // Re-evaluate the first failing cell serially to name the quantity (deterministic).
+  CellVector q, h;
+  Real psi = 0.0, W = 0.0, dev = 0.0;
+  const int code = evaluate_cell(model.geometry()[first_bad], model.cell_values(first_bad, U),
+                                 law, constraint, request, q, h, psi, W, dev);
+  const CellFailure failure = code == kDetF ? CellFailure::NegativeJacobian : CellFailure::NonFinite;
+  return {failure, first_bad, kQuantities[code]};
+}
+
+void gather(const ExplicitModel& model, const std::vector<CellVector>& v, const Vector* weights,
+            Vector& y) {
+  const NodeIncidence& inc = model.incidence();
+  const Index nn = model.mesh().num_nodes();
+  y.resize(3 * nn);
+#pragma omp parallel for schedule(static) if (nn >= kMinParallel)
+  for (Index a = 0; a < nn; ++a) {
+    Vec3 sum = Vec3::Zero();
+    for (Index i = inc.offsets[a]; i < inc.offsets[a + 1]; ++i) {
+      const auto [c, l] = inc.entries[i];
+      sum += (weights ? (*weights)[c] : 1.0) * v[c].segment<3>(3 * l);
+    }
+    y.segment<3>(3 * a) = sum;
+  }
+}
+
+void cell_dot(const ExplicitModel& model, const std::vector<CellVector>& v, const Vector& x,
+              Vector& z) {
+  const Index n = model.num_cells();
+  z.resize(n);
+#pragma omp parallel for schedule(static) if (n >= kMinParallel)
+  for (Index c = 0; c < n; ++c) {
+    const mesh::Hex8& nodes = model.mesh().cell(c);
+    Real s = 0.0;
+    for (int a = 0; a < 8; ++a)
+      s += v[c].segment<3>(3 * a).dot(x.segment<3>(3 * nodes[a]));
+    z[c] = s;
+  }
+}
+
+} // namespace trifem::explicit_dynamics

@@ -1,0 +1,121 @@
+// SPDX-License-Identifier: MIT
+#include "trifem/explicit/explicit_model.hpp"
+
+#include "trifem/core/error.hpp"
+#include "trifem/fe/quadrature.hpp"
+#include "trifem/mesh/hex_faces.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace trifem::explicit_dynamics {
+
+ExplicitModel::ExplicitModel(mesh::Mesh mesh, ModelSpec spec)
+    : mesh_(std::move(mesh)), spec_(std::move(spec)) {
+  TRIFEM_CHECK(spec_.law != nullptr, "explicit model: no material law given");
+  TRIFEM_CHECK(std::isfinite(spec_.density) && spec_.density > 0.0,
+               "explicit model: density = {} t/mm^3, must be > 0", spec_.density);
+  TRIFEM_CHECK(mesh_.num_cells() > 0, "explicit model: the mesh has no cells");
+  build_geometry();
+  build_mass_and_fixities();
+  build_incidence();
+  resolve_loads();
+}
+
+fe::HexCoords ExplicitModel::cell_values(Index c, const Vector& U) const {
+  const mesh::Hex8& nodes = mesh_.cell(c);
+  fe::HexCoords u;
+  for (int a = 0; a < 8; ++a)
+    u.row(a) = U.segment<3>(3 * nodes[a]).transpose();
+  return u;
+}
+
+void ExplicitModel::build_geometry() {
+  const Index n = mesh_.num_cells();
+  geometry_.resize(n);
+  volumes_.resize(n);
+  lengths_.resize(n);
+  for (Index c = 0; c < n; ++c) {
+    fe::HexCoords X;
+    for (int a = 0; a < 8; ++a)
+      X.row(a) = mesh_.node(mesh_.cell(c)[a]).transpose();
+    auto geo = fe::hex8_geometry(X);
+    TRIFEM_CHECK(geo.has_value(), "explicit model: cell {} is inverted or degenerate", c);
+    geometry_[c] = *geo;
+    Real volume = 0.0;
+    for (Real dV : geo->dV)
+      volume += dV;
+    Real max_area = 0.0;
+    for (const auto& face : mesh::kHexFaces) {
+      const Vec3 d1 = X.row(face[2]) - X.row(face[0]), d2 = X.row(face[3]) - X.row(face[1]);
+      max_area = std::max(max_area, 0.5 * d1.cross(d2).norm());
+    }
+    volumes_[c] = volume;
+    lengths_[c] = volume / max_area;
+  }
+}
+
+void ExplicitModel::build_mass_and_fixities() {
+  const auto& rule = fe::hex_gauss_2x2x2();
+  Vector nodal = Vector::Zero(mesh_.num_nodes());
+  for (Index c = 0; c < mesh_.num_cells(); ++c)
+    for (int q = 0; q < 8; ++q) {
+      const fe::HexShape N = fe::hex8_shape(rule[q].xi);
+      for (int a = 0; a < 8; ++a)
+        nodal[mesh_.cell(c)[a]] += spec_.density * N[a] * geometry_[c].dV[q];
+    }
+  mass_.resize(num_dofs());
+  for (Index a = 0; a < mesh_.num_nodes(); ++a)
+    mass_.segment<3>(3 * a).setConstant(nodal[a]);
+  fixed_.assign(num_dofs(), 0);
+  for (const Fixity& f : spec_.fixities) {
+    TRIFEM_CHECK(f.component >= 0 && f.component < 3,
+                 "explicit model: fixity on '{}' has component {} (expected 0, 1 or 2)",
+                 f.node_set, f.component);
+    for (Index a : mesh_.node_set(f.node_set))
+      fixed_[3 * a + f.component] = 1;
+  }
+  inverse_mass_.resize(num_dofs());
+  for (Index i = 0; i < num_dofs(); ++i) {
+    TRIFEM_CHECK(fixed_[i] || mass_[i] > 0.0, "explicit model: node {} belongs to no cell",
+                 i / 3);
+    inverse_mass_[i] = fixed_[i] ? 0.0 : 1.0 / mass_[i];
+  }
+}
+
+void ExplicitModel::build_incidence() {
+  const Index nn = mesh_.num_nodes();
+  incidence_.offsets.assign(nn + 1, 0);
+  for (const mesh::Hex8& cell : mesh_.cells())
+    for (Index a : cell)
+      ++incidence_.offsets[a + 1];
+  for (Index a = 0; a < nn; ++a)
+    incidence_.offsets[a + 1] += incidence_.offsets[a];
+  incidence_.entries.resize(incidence_.offsets[nn]);
+  std::vector<Index> next(incidence_.offsets.begin(), incidence_.offsets.end() - 1);
+  for (Index c = 0; c < mesh_.num_cells(); ++c) // increasing c: entries sorted by cell
+    for (int l = 0; l < 8; ++l)
+      incidence_.entries[next[mesh_.cell(c)[l]]++] = {c, l};
+}
+
+void ExplicitModel::resolve_loads() {
+  const auto& rule = fe::quad_gauss_2x2();
+  for (const SurfaceLoad& load : spec_.loads) {
+    ResolvedLoad r{load, mesh_.surface(load.surface).facets, {}};
+    for (const mesh::Facet& f : r.facets) {
+      fe::QuadCoords X;
+      for (int a = 0; a < 4; ++a)
+        X.row(a) = mesh_.node(f.nodes[a]).transpose();
+      Eigen::Matrix<Real, 4, 1> w = Eigen::Matrix<Real, 4, 1>::Zero();
+      for (const auto& qp : rule) {
+        const fe::QuadShapeGrad dN = fe::quad4_shape_grad(qp.xi);
+        const Vec3 T1 = X.transpose() * dN.col(0), T2 = X.transpose() * dN.col(1);
+        w += fe::quad4_shape(qp.xi) * T1.cross(T2).norm() * qp.weight;
+      }
+      r.nodal_area.push_back(w);
+    }
+    loads_.push_back(std::move(r));
+  }
+}
+
+} // namespace trifem::explicit_dynamics

@@ -194,11 +194,12 @@ std::unique_ptr<Model> build_model(const io::CaseSpec& spec) {
     terms.push_back(std::move(t));
   auto bcs = boundary_conditions(spec, *model);
   bcs.push_back(unused_dofs(*model, terms));
+  dofs::NodalFrames frames = impermeable_surfaces(spec, *model, bcs);
   dofs::constrain_all(bcs, model->dofs);
   model->dofs.finalize();
 
-  model->problem = std::make_unique<assembly::FeProblem>(model->dofs, std::move(bcs),
-                                                         std::move(terms), field_scales(*model));
+  model->problem = std::make_unique<assembly::FeProblem>(
+      model->dofs, std::move(bcs), std::move(terms), field_scales(*model), std::move(frames));
   if (model->mixture) {
     Vector x = model->problem->state();
     const auto kind = spec.analysis.initial_state == io::InitialStateKind::DonnanPrestressed

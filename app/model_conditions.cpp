@@ -2,6 +2,7 @@
 #include "model_conditions.hpp"
 
 #include "trifem/core/error.hpp"
+#include "trifem/dofs/nodal_frames.hpp"
 #include "trifem/physics/bath_term.hpp"
 #include "trifem/physics/surface_load_term.hpp"
 
@@ -67,6 +68,31 @@ std::vector<dofs::DirichletCondition> boundary_conditions(const io::CaseSpec& sp
     out.push_back(std::move(c));
   }
   return out;
+}
+
+dofs::NodalFrames impermeable_surfaces(const io::CaseSpec& spec, const Model& model,
+                                       std::vector<dofs::DirichletCondition>& conditions) {
+  if (spec.impermeable_surfaces.empty())
+    return {};
+  std::vector<std::vector<mesh::Facet>> faces;
+  for (const auto& s : spec.impermeable_surfaces)
+    faces.push_back(with_context(s.key + ".surface",
+                                 [&] { return model.mesh.surface(s.surface).facets; }));
+  std::vector<dofs::FieldId> fields;
+  for (dofs::FieldId f : {model.fields.w, model.fields.j_plus, model.fields.j_minus})
+    if (f.valid())
+      fields.push_back(f);
+  std::vector<Index> constrained;
+  dofs::NodalFrames frames(dofs::normal_frames(model.mesh, model.dofs, fields, faces, constrained),
+                           model.dofs.num_dofs());
+  for (const auto& c : conditions)
+    for (Index d : c.dofs)
+      TRIFEM_CHECK(frames.frame_of(d) < 0,
+                   "{}: a node of this surface also has an axis-aligned flux condition; use "
+                   "'surface' (any orientation) for all impermeable faces that meet there",
+                   spec.impermeable_surfaces.front().key);
+  conditions.push_back({constrained, 0.0, dofs::LoadCurve::constant()});
+  return frames;
 }
 
 std::vector<std::unique_ptr<physics::Term>> load_terms(const io::CaseSpec& spec,

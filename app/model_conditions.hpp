@@ -24,6 +24,12 @@ dofs::LoadCurve make_curve(const io::CaseSpec& spec, const std::string& name);
 std::vector<dofs::DirichletCondition> boundary_conditions(const io::CaseSpec& spec,
                                                           const Model& model);
 
+/// Rotated frames for [[boundary.impermeable]] surfaces of any orientation; appends the
+/// condition fixing their normal flux components to `conditions`. InputError if a rotated DOF
+/// is also used by an axis-aligned condition.
+dofs::NodalFrames impermeable_surfaces(const io::CaseSpec& spec, const Model& model,
+                                       std::vector<dofs::DirichletCondition>& conditions);
+
 /// Pressure and traction terms of the case.
 std::vector<std::unique_ptr<physics::Term>> load_terms(const io::CaseSpec& spec,
                                                        const Model& model);

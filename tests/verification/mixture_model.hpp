@@ -40,6 +40,7 @@ struct MixtureModel {
   physics::MixtureTerm* mixture = nullptr;
   std::unique_ptr<assembly::FeProblem> problem;
   std::optional<dofs::LoadCurve> fixed_charge_curve; ///< free swelling from an uncharged state
+  dofs::NodalFrames frames;                           ///< rotated nodal DOFs (optional)
 
   MixtureModel(mesh::Mesh m, material::MixtureProperties p) : mesh(std::move(m)) {
     props = std::make_shared<material::MixtureProperties>(std::move(p));
@@ -86,7 +87,7 @@ struct MixtureModel {
     for (auto& l : loads)
       terms.push_back(std::move(l));
     problem = std::make_unique<assembly::FeProblem>(dofs, conditions, std::move(terms),
-                                                    scales());
+                                                    scales(), frames);
     Vector x = problem->state();
     mixture->initialize(initial, 0.0, x);
     problem->set_state(x);

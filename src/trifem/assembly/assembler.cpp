@@ -27,6 +27,39 @@ struct Scratch {
   std::vector<Index> rows;
 };
 
+/// Rotates an element contribution to the local frames of its rotated nodal DOFs:
+/// r_i <- Q^T r_i for every rotated triple i, K <- T^T K T (T block-diagonal with the Q).
+void rotate(const dofs::NodalFrames& frames, std::span<const Index> dofs, Scratch& s,
+            bool with_jacobian) {
+  const Index n = static_cast<Index>(dofs.size());
+  for (Index i = 0; i < n; ++i) {
+    const int f = frames.frame_of(dofs[i]);
+    if (f < 0)
+      continue;
+    const dofs::NodalFrame& frame = frames.frames()[f];
+    if (dofs[i] != frame.dofs[0])
+      continue; // handle each triple once, from its first DOF
+    std::array<Index, 3> at{};
+    for (int k = 0; k < 3; ++k) {
+      const auto it = std::find(dofs.begin(), dofs.end(), frame.dofs[k]);
+      TRIFEM_VERIFY(it != dofs.end(), "an element holds part of a rotated triple");
+      at[k] = static_cast<Index>(it - dofs.begin());
+    }
+    const Mat3 Qt = frame.Q.transpose();
+    const Vec3 r(s.r[at[0]], s.r[at[1]], s.r[at[2]]);
+    const Vec3 rl = Qt * r;
+    for (int k = 0; k < 3; ++k)
+      s.r[at[k]] = rl[k];
+    if (!with_jacobian)
+      continue;
+    const Eigen::Map<const Eigen::Array<Index, 3, 1>> idx(at.data());
+    Eigen::MatrixXd rows = s.K(idx, Eigen::all);
+    s.K(idx, Eigen::all) = Qt * rows;
+    Eigen::MatrixXd cols = s.K(Eigen::all, idx);
+    s.K(Eigen::all, idx) = cols * frame.Q;
+  }
+}
+
 void scatter(const dofs::DofMap& map, std::span<const Index> dofs, Scratch& s,
              AssembledSystem& out, bool with_jacobian) {
   const Index n = static_cast<Index>(dofs.size());
@@ -49,8 +82,9 @@ void scatter(const dofs::DofMap& map, std::span<const Index> dofs, Scratch& s,
 
 } // namespace
 
-Assembler::Assembler(const dofs::DofMap& map, std::vector<const physics::Term*> terms)
-    : map_(map), terms_(std::move(terms)) {
+Assembler::Assembler(const dofs::DofMap& map, std::vector<const physics::Term*> terms,
+                     const dofs::NodalFrames* frames)
+    : map_(map), terms_(std::move(terms)), frames_(frames) {
   TRIFEM_VERIFY(map.finalized(), "the DOF map must be finalized before assembly");
   stencils_.reserve(terms_.size());
   for (const physics::Term* t : terms_) {
@@ -84,6 +118,8 @@ bool Assembler::assemble_term(std::size_t t, const physics::EvalState& state,
           admissible = false;
           continue;
         }
+        if (frames_ && !frames_->empty())
+          rotate(*frames_, stencils.of(e), s, with_jacobian);
         scatter(map_, stencils.of(e), s, out, with_jacobian);
       }
     }

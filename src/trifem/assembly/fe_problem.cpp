@@ -7,9 +7,9 @@ namespace trifem::assembly {
 
 FeProblem::FeProblem(const dofs::DofMap& map, std::vector<dofs::DirichletCondition> conditions,
                      std::vector<std::unique_ptr<physics::Term>> terms,
-                     std::vector<solver::FieldScale> scales)
+                     std::vector<solver::FieldScale> scales, dofs::NodalFrames frames)
     : map_(map), conditions_(std::move(conditions)), terms_(std::move(terms)),
-      scales_(std::move(scales)) {
+      scales_(std::move(scales)), frames_(std::move(frames)) {
   TRIFEM_VERIFY(static_cast<int>(scales_.size()) == map.num_fields(), "one scale per field");
   equation_fields_.resize(map.num_equations());
   for (Index eq = 0; eq < map.num_equations(); ++eq)
@@ -17,16 +17,27 @@ FeProblem::FeProblem(const dofs::DofMap& map, std::vector<dofs::DirichletConditi
   std::vector<const physics::Term*> views;
   for (const auto& t : terms_)
     views.push_back(t.get());
-  assembler_ = std::make_unique<Assembler>(map, std::move(views));
+  assembler_ = std::make_unique<Assembler>(map, std::move(views), &frames_);
   system_ = assembler_->make_system();
   x_ = x_old_ = saved_ = target_ = Vector::Zero(map.num_dofs());
   dofs::prescribed_values(conditions_, time_, x_);
   x_old_ = target_ = x_;
+  sync();
+  x_old_global_ = x_global_;
+}
+
+void FeProblem::sync() {
+  x_global_ = x_;
+  frames_.to_global(x_global_);
 }
 
 void FeProblem::set_state(const Vector& x) {
   TRIFEM_VERIFY(x.size() == map_.num_dofs(), "state size mismatch");
-  x_ = x_old_ = target_ = x;
+  x_ = x;
+  frames_.to_local(x_);
+  x_old_ = target_ = x_;
+  sync();
+  x_old_global_ = x_global_;
 }
 
 solver::SolveStatus FeProblem::linearize(solver::Linearization& lin, bool with_jacobian) {
@@ -55,6 +66,7 @@ solver::SolveStatus FeProblem::update(const Vector& dx, Real step) {
     const Index d = map_.dof_of_constrained(c);
     x_[d] += step * (target_[d] - x_[d]);
   }
+  sync();
   return solver::SolveStatus::Converged;
 }
 
@@ -77,11 +89,13 @@ void FeProblem::commit_step() {
   for (auto& t : terms_)
     t->commit(eval_state());
   x_old_ = x_;
+  x_old_global_ = x_global_;
   time_old_ = time_;
 }
 
 void FeProblem::reject_step() {
   x_ = x_old_;
+  sync();
   time_ = time_old_;
   dofs::prescribed_values(conditions_, time_, target_);
 }

@@ -5,6 +5,7 @@
 
 #include "trifem/assembly/system_pattern.hpp"
 #include "trifem/dofs/dirichlet.hpp"
+#include "trifem/dofs/nodal_frames.hpp"
 #include "trifem/solver/nonlinear_problem.hpp"
 
 #include <memory>
@@ -22,7 +23,10 @@ struct AssembledSystem {
 /// Loops over terms (colour by colour, elements of a colour in parallel) and scatters.
 class Assembler {
 public:
-  Assembler(const dofs::DofMap& map, std::vector<const physics::Term*> terms);
+  /// `frames` (optional, outlives the assembler): rotated nodal DOFs; element contributions
+  /// are rotated to the local frames before scattering.
+  Assembler(const dofs::DofMap& map, std::vector<const physics::Term*> terms,
+            const dofs::NodalFrames* frames = nullptr);
   /// Assembles residual and (if with_jacobian) both Jacobian blocks. False if some element
   /// reported an inadmissible state.
   bool assemble(const physics::EvalState& state, AssembledSystem& out, bool with_jacobian) const;
@@ -35,6 +39,7 @@ private:
 
   const dofs::DofMap& map_;
   std::vector<const physics::Term*> terms_;
+  const dofs::NodalFrames* frames_;
   std::vector<Stencils> stencils_;
   std::vector<std::vector<std::vector<Index>>> colours_;
   SystemPattern pattern_;
@@ -45,9 +50,10 @@ class FeProblem final : public solver::TransientProblem {
 public:
   /// `map` must be finalized with the constrained DOFs of `conditions`. `scales` gives one
   /// FieldScale per field of `map`.
+  /// `frames`: rotated nodal DOFs (their values and prescribed values are local components).
   FeProblem(const dofs::DofMap& map, std::vector<dofs::DirichletCondition> conditions,
             std::vector<std::unique_ptr<physics::Term>> terms,
-            std::vector<solver::FieldScale> scales);
+            std::vector<solver::FieldScale> scales, dofs::NodalFrames frames = {});
 
   // NonlinearProblem
   Index num_equations() const override { return map_.num_equations(); }
@@ -58,17 +64,22 @@ public:
   solver::SolveStatus update(const Vector& dx, Real step) override;
   bool constraints_satisfied() const override;
   void save_iterate() override { saved_ = x_; }
-  void restore_iterate() override { x_ = saved_; }
+  void restore_iterate() override {
+    x_ = saved_;
+    sync();
+  }
 
   // TransientProblem
   void begin_step(Real time, Real dt) override;
   void commit_step() override;
   void reject_step() override;
 
-  /// Current state (all DOFs) and time.
-  const Vector& state() const { return x_; }
+  /// Current state (all DOFs, global components) and time.
+  const Vector& state() const { return x_global_; }
+  /// Current state with rotated DOFs in their local frames (the solver's unknowns).
+  const Vector& local_state() const { return x_; }
   Real time() const { return time_; }
-  /// Sets the state (e.g. initial conditions) at the current time.
+  /// Sets the state (global components; e.g. initial conditions) at the current time.
   void set_state(const Vector& x);
   /// Residual at every DOF of the last evaluation: reactions at constrained DOFs.
   const Vector& full_residual() const { return system_.residual; }
@@ -76,7 +87,9 @@ public:
   const std::vector<std::unique_ptr<physics::Term>>& terms() const { return terms_; }
 
 private:
-  physics::EvalState eval_state() const { return {x_, x_old_, time_, dt_}; }
+  physics::EvalState eval_state() const { return {x_global_, x_old_global_, time_, dt_}; }
+  /// Refreshes the global-component copy of the state after x_ changed.
+  void sync();
 
   const dofs::DofMap& map_;
   std::vector<dofs::DirichletCondition> conditions_;
@@ -85,7 +98,9 @@ private:
   std::vector<int> equation_fields_;
   std::unique_ptr<Assembler> assembler_;
   AssembledSystem system_;
+  dofs::NodalFrames frames_;
   Vector x_, x_old_, saved_, target_;
+  Vector x_global_, x_old_global_;
   Real time_ = 0.0, time_old_ = 0.0, dt_ = 0.0;
 };
 

@@ -22,13 +22,18 @@ constexpr const char* kQuantities[] = {"",         "det F",       "displacement"
 int evaluate_cell(const fe::HexGeometry& geo, const fe::HexCoords& u,
                   const material::ElasticLaw& law, Constraint constraint,
                   const CellRequest& req, CellVector& q, CellVector& h, Real& psi, Real& W,
-                  Real& dev) {
+                  Real& dJ, Real& dev) {
   if (!u.allFinite())
     return kDisplacement;
   Eigen::Map<RowMajor83> qm(q.data()), hm(h.data());
-  qm.setZero();
-  hm.setZero();
-  psi = W = dev = 0.0;
+  if (req.internal)
+    qm.setZero();
+  if (req.gradient)
+    hm.setZero();
+  if (req.psi)
+    psi = 0.0;
+  W = dJ = dev = 0.0;
+  Real volume = 0.0;
   for (int q_point = 0; q_point < 8; ++q_point) {
     const fe::HexShapeGrad& g = geo.dN_dX[q_point];
     const Real dV = geo.dV[q_point];
@@ -37,22 +42,28 @@ int evaluate_cell(const fe::HexGeometry& geo, const fe::HexCoords& u,
     if (!(J > 0.0))
       return std::isfinite(J) ? kDetF : kDisplacement;
     dev = std::max(dev, std::abs(J - 1.0));
-    const Mat3 C = F.transpose() * F;
-    if (req.internal)
-      qm.noalias() += g * (F * law.stress(C)).transpose() * dV;
-    if (req.constraint) {
-      const Mat3 Finv_t = F.inverse().transpose();
-      const bool jm1 = constraint == Constraint::JMinusOne;
-      hm.noalias() += g * ((jm1 ? J : 1.0) * Finv_t).transpose() * dV;
-      psi += (jm1 ? J - 1.0 : std::log(J)) * dV;
+    dJ += (J - 1.0) * dV;
+    volume += dV;
+    const bool jm1 = constraint == Constraint::JMinusOne;
+    if (req.internal || req.energy) {
+      const Mat3 C = F.transpose() * F;
+      if (req.internal)
+        qm.noalias() += g * (F * law.stress(C)).transpose() * dV;
+      if (req.energy)
+        W += law.energy(C) * dV;
     }
-    if (req.energy)
-      W += law.energy(C) * dV;
+    if (req.gradient)
+      hm.noalias() += g * ((jm1 ? J : 1.0) * F.inverse().transpose()).transpose() * dV;
+    if (req.psi)
+      psi += (jm1 ? J - 1.0 : std::log(J)) * dV;
   }
+  dJ /= volume;
   if (req.internal && !q.allFinite())
     return kInternal;
-  if (req.constraint && !(h.allFinite() && std::isfinite(psi)))
-    return std::isfinite(psi) ? kGradient : kPsi;
+  if (req.gradient && !h.allFinite())
+    return kGradient;
+  if (req.psi && !std::isfinite(psi))
+    return kPsi;
   if (req.energy && !std::isfinite(W))
     return kEnergy;
   return kOk;
@@ -66,6 +77,7 @@ void CellFields::resize(Index n) {
   psi.resize(n);
   energy.resize(n);
   volume_change.resize(n);
+  gauss_volume_change.resize(n);
 }
 
 CellStatus evaluate_cells(const ExplicitModel& model, Constraint constraint, const Vector& U,
@@ -80,7 +92,8 @@ CellStatus evaluate_cells(const ExplicitModel& model, Constraint constraint, con
     Real W = 0.0;
     const int code =
         evaluate_cell(model.geometry()[c], model.cell_values(c, U), law, constraint, request,
-                      out.internal[c], out.gradient[c], out.psi[c], W, out.volume_change[c]);
+                      out.internal[c], out.gradient[c], out.psi[c], W, out.volume_change[c],
+                      out.gauss_volume_change[c]);
     if (request.energy)
       out.energy[c] = W;
     if (code != kOk)
@@ -90,9 +103,9 @@ CellStatus evaluate_cells(const ExplicitModel& model, Constraint constraint, con
     return {};
   // Re-evaluate the first failing cell serially to name the quantity (deterministic).
   CellVector q, h;
-  Real psi = 0.0, W = 0.0, dev = 0.0;
+  Real psi = 0.0, W = 0.0, dJ = 0.0, dev = 0.0;
   const int code = evaluate_cell(model.geometry()[first_bad], model.cell_values(first_bad, U),
-                                 law, constraint, request, q, h, psi, W, dev);
+                                 law, constraint, request, q, h, psi, W, dJ, dev);
   const CellFailure failure = code == kDetF ? CellFailure::NegativeJacobian : CellFailure::NonFinite;
   return {failure, first_bad, kQuantities[code]};
 }

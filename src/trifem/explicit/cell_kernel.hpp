@@ -16,9 +16,10 @@ using CellVector = Eigen::Matrix<Real, 24, 1>;
 
 /// Which quantities evaluate_cells computes.
 struct CellRequest {
-  bool internal = true;   ///< q_e
-  bool constraint = true; ///< h_e and Ψ_e
-  bool energy = false;    ///< ∫ W dV
+  bool internal = true; ///< q_e
+  bool gradient = true; ///< h_e
+  bool psi = true;      ///< Ψ_e
+  bool energy = false;  ///< ∫ W dV
 };
 
 /// Per-cell results (struct of arrays, indexed by cell).
@@ -27,7 +28,8 @@ struct CellFields {
   std::vector<CellVector> gradient; ///< h_e,a = ∫ F D_C ∇N_a dV = ∫ ∂Ψ/∂F ∇N_a dV [mm²]
   Vector psi;                       ///< Ψ_e = ∫ Ψ(C) dV [mm³]
   Vector energy;                    ///< ∫ W(C) dV [mJ]
-  Vector volume_change;             ///< max over the Gauss points of |J − 1| [-]
+  Vector volume_change;             ///< cell mean J̄ − 1 = ∫ (J − 1) dV / V_e [-]
+  Vector gauss_volume_change;       ///< max over the Gauss points of |J − 1| [-]
 
   void resize(Index num_cells);
 };

@@ -205,8 +205,16 @@ void read_boundary(const Table& root, CaseSpec& spec) {
   };
   for (const Table& t : boundary->tables("fixed"))
     add(t, read_fixed(t, model));
-  for (const Table& t : boundary->tables("impermeable"))
+  for (const Table& t : boundary->tables("impermeable")) {
+    if (t.find("surface")) { // any orientation: rotated frames on the surface's normals
+      if (!model.fluxes)
+        fail(t.where(), t.path(), kNoFluxFields);
+      t.allow({"surface"});
+      spec.impermeable_surfaces.push_back({t.path(), t.name("surface")});
+      continue;
+    }
     add(t, read_impermeable(t, model));
+  }
   for (const Table& t : boundary->tables("bonded"))
     add(t, read_bonded(t));
   for (const Table& t : boundary->tables("prescribed"))

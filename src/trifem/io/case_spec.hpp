@@ -73,6 +73,14 @@ struct FixedSpec {
   std::vector<FieldKind> fields = {FieldKind::Displacement};
 };
 
+/// [[boundary.impermeable]] with `surface` (and no `normal`): no normal flux through a face
+/// of any orientation. The flux DOFs of its nodes are rotated to the (reference) nodal normal
+/// and the normal components are fixed.
+struct ImpermeableSurfaceSpec {
+  std::string key; ///< e.g. "boundary.impermeable[2]"
+  std::string surface;
+};
+
 /// [[boundary.prescribed]]: field_component = value * curve(t) on a node set.
 struct PrescribedSpec {
   std::string set;
@@ -178,6 +186,7 @@ struct CaseSpec {
   std::map<std::string, CurveSpec> curves;
   std::vector<FixedSpec> fixed;
   std::vector<PrescribedSpec> prescribed;
+  std::vector<ImpermeableSurfaceSpec> impermeable_surfaces;
   std::vector<PressureSpec> pressures;
   std::vector<TractionSpec> tractions;
   std::vector<BathSpec> baths;

@@ -104,6 +104,11 @@ const std::vector<Index>& Mesh::cell_block(const std::string& name) const {
   return find_named(cell_blocks_, "cell block", name);
 }
 
+void Mesh::transform(const Mat3& A, const Vec3& b) {
+  for (Vec3& x : nodes_)
+    x = A * x + b;
+}
+
 void Mesh::append(const Mesh& other) {
   const Index node_offset = num_nodes();
   const Index cell_offset = num_cells();

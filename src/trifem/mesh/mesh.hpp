@@ -64,6 +64,9 @@ public:
   const std::map<std::string, Surface>& surfaces() const { return surfaces_; }
   const std::map<std::string, std::vector<Index>>& cell_blocks() const { return cell_blocks_; }
 
+  /// Moves every node: x <- A x + b (e.g. to rotate or translate a part).
+  void transform(const Mat3& A, const Vec3& b = Vec3::Zero());
+
   /// Appends another mesh (nodes and cells renumbered; names kept, clashes are errors).
   /// Nodes are not merged: separate bodies stay separate (contact later joins them).
   void append(const Mesh& other);

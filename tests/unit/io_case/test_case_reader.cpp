@@ -303,6 +303,14 @@ TEST(CaseReader, BathSurfaceIsRead) {
   EXPECT_EQ(c.baths[0].curve, "ramp");
 }
 
+TEST(CaseReader, ImpermeableSurfaceOfAnyOrientation) {
+  const CaseSpec c = parse_case(
+      kBase + kCartilage + "\n[[boundary.impermeable]]\nsurface = \"block.xmax\"\n", kMemoryFile);
+  ASSERT_EQ(c.impermeable_surfaces.size(), 1u);
+  EXPECT_EQ(c.impermeable_surfaces[0].surface, "block.xmax");
+  EXPECT_EQ(c.impermeable_surfaces[0].key, "boundary.impermeable[1]");
+}
+
 TEST(CaseReader, MixtureDefaults) {
   const CaseSpec c = parse_case(kBase + kCartilage, kMemoryFile);
   const MaterialSpec& cart = c.materials.at("cart");

@@ -1,0 +1,79 @@
+// SPDX-License-Identifier: MIT
+// A contact surface: the facets of a named mesh surface, its unique nodes and the node -> facet
+// and facet -> facet (across edges) adjacency, evaluated in a current configuration.
+#pragma once
+
+#include "trifem/contact/facet_geometry.hpp"
+#include "trifem/mesh/mesh.hpp"
+
+#include <functional>
+#include <span>
+#include <vector>
+
+namespace trifem::contact {
+
+/// Current nodal positions x_i (length unit of the mesh), indexed by *mesh* node: either a view
+/// of an array (not owned; it must outlive this object) or a callable `Vec3(Index)`.
+class NodePositions {
+public:
+  /// View of x[i] for mesh node i.
+  NodePositions(const std::vector<Vec3>& x) : array_(&x) {}
+  /// Positions from a callable, e.g. X_i + u_i read from a solution vector.
+  NodePositions(std::function<Vec3(Index)> fn) : fn_(std::move(fn)) {}
+
+  /// Current position of mesh node i.
+  Vec3 operator()(Index i) const { return array_ ? (*array_)[i] : fn_(i); }
+
+private:
+  const std::vector<Vec3>* array_ = nullptr;
+  std::function<Vec3(Index)> fn_;
+};
+
+/// Facets of one contact surface with topology. Built once (topology is fixed); geometry is
+/// always evaluated from a NodePositions, so one object serves every Newton iteration.
+/// Facet edge e (e = 0..3) joins facet nodes e and (e+1) mod 4: e = 0 is η = -1, 1 is ξ = +1,
+/// 2 is η = +1 and 3 is ξ = -1.
+class ContactSurface {
+public:
+  /// Takes the facets of `surface` (copied). Facet node indices are mesh node indices.
+  explicit ContactSurface(const mesh::Surface& surface);
+  /// The surface `name` of `mesh`; throws InputError if it does not exist.
+  ContactSurface(const mesh::Mesh& mesh, const std::string& name);
+
+  Index num_facets() const { return static_cast<Index>(facets_.size()); }
+  const mesh::Facet& facet(Index f) const { return facets_[f]; }
+  const std::vector<mesh::Facet>& facets() const { return facets_; }
+
+  /// Sorted unique mesh node indices of the surface.
+  const std::vector<Index>& nodes() const { return nodes_; }
+  Index num_nodes() const { return static_cast<Index>(nodes_.size()); }
+  /// Position of mesh node `mesh_node` in nodes(), or -1 if it is not on this surface.
+  Index local_node(Index mesh_node) const;
+  /// Facets incident to surface node k (k indexes nodes()), ascending.
+  std::span<const Index> node_facets(Index k) const;
+
+  /// The facet sharing edge e of facet f, or -1 on the free boundary of the surface (or if more
+  /// than two facets share the edge).
+  Index edge_neighbour(Index f, int e) const { return edge_neighbours_[4 * f + e]; }
+  /// True if the point ξ_c of facet f lies on a free boundary edge: an edge with no neighbour
+  /// (fixed[α] tells which ξ components sit on ±1; a corner is free if either edge is).
+  bool on_free_boundary(Index f, const Vec2& xi_c, const std::array<bool, 2>& fixed) const;
+
+  /// Current nodal coordinates of facet f (row a = x of facet node a).
+  fe::QuadCoords coords(Index f, const NodePositions& x) const;
+  /// Geometry of facet f at ξ in the configuration x.
+  FacetPoint evaluate(Index f, const Vec2& xi, const NodePositions& x) const {
+    return evaluate_facet(coords(f, x), xi);
+  }
+
+private:
+  void build_adjacency();
+
+  std::vector<mesh::Facet> facets_;
+  std::vector<Index> nodes_;
+  std::vector<Index> node_facet_offsets_; ///< CSR offsets into node_facet_list_
+  std::vector<Index> node_facet_list_;
+  std::vector<Index> edge_neighbours_; ///< 4 per facet
+};
+
+} // namespace trifem::contact

@@ -1,0 +1,73 @@
+// SPDX-License-Identifier: MIT
+// Closest-point projection of a point onto the bilinear facets of a contact surface
+// (FORMULATION.md §6.1, §6.7): local Newton per candidate facet, then selection.
+#pragma once
+
+#include "trifem/contact/bucket_search.hpp"
+
+#include <limits>
+#include <optional>
+
+namespace trifem::contact {
+
+/// Closest-point projection of a point p onto a contact surface.
+///
+/// Interior projection (on_boundary = false): ξ is a stationary point of ½|p - x(ξ)|² inside
+/// [-1-tol, 1+tol]², so p - x(ξ) = g n(ξ) and
+///   gap = (p - x(ξ)) · n(ξ),   normal = n(ξ) = t_1 × t_2 / |t_1 × t_2|.
+/// Boundary projection (on_boundary = true; no facet contains the projection, e.g. p lies
+/// beyond a convex kink or beyond the edge of the surface): ξ is the nearest point on the
+/// edges/corners of the facet, ξ components on ±1 are flagged in `fixed`, and
+///   gap = s |p - x(ξ)|,   normal = (p - x(ξ)) / gap,   s = sign((p - x(ξ)) · n(ξ)),
+/// so gap and normal are continuous where the projection leaves the facet (there p - x ∥ n).
+/// If |p - x(ξ)| vanishes (p on an edge) the facet normal n(ξ) is used instead.
+struct Projection {
+  Index facet = -1;                 ///< facet index in the ContactSurface
+  Vec2 xi = Vec2::Zero();           ///< reference coordinates on the facet
+  Real gap = 0;                     ///< signed gap, > 0 outside (separation), < 0 penetration
+  Vec3 normal = Vec3::Zero();       ///< unit normal (see above)
+  Vec3 point = Vec3::Zero();        ///< x(ξ): the closest point on the surface
+  bool on_boundary = false;         ///< clamped to a facet edge or corner
+  std::array<bool, 2> fixed{};      ///< which ξ components are clamped to ±1 (on_boundary only)
+  bool on_free_boundary = false;    ///< clamped to an edge with no neighbour facet: p lies
+                                    ///< outside the surface's coverage (candidate for inactive)
+};
+
+/// Tolerances of the projection.
+struct ProjectionOptions {
+  /// Accept an interior projection for ξ ∈ [-1-xi_tolerance, 1+xi_tolerance]².
+  Real xi_tolerance = 1e-6;
+  /// Points whose distance |p - x(ξ)| to the surface exceeds this get no projection.
+  Real search_distance = std::numeric_limits<Real>::infinity();
+  /// Newton iterations per start (facet centre, then nearest corner).
+  int max_iterations = 30;
+};
+
+/// Projection of p onto one facet with current nodal coordinates X (`facet` is left at -1 and
+/// `on_free_boundary` false: the facet knows no neighbours). Never empty unless X is degenerate.
+std::optional<Projection> project_onto_facet(const Vec3& p, const fe::QuadCoords& X,
+                                             const ProjectionOptions& options = {});
+
+/// Closest-point projection of p onto `surface` in configuration x, testing every facet
+/// (brute force, O(n_facets); for tests and small surfaces). Selection: the smallest |gap|
+/// (= distance); on ties (|Δ|gap|| ≤ 1e-10 × facet size) an interior projection beats a
+/// boundary one, then the lower facet index wins. Empty if the distance > search_distance.
+std::optional<Projection> project(const Vec3& p, const ContactSurface& surface,
+                                  const NodePositions& x, const ProjectionOptions& options = {});
+
+/// As above, but testing only the candidates of `search` (built for `surface` in the same x).
+/// Exact (same result as brute force) if search_distance ≤ search.radius().
+std::optional<Projection> project(const Vec3& p, const ContactSurface& surface,
+                                  const NodePositions& x, const BucketSearch& search,
+                                  const ProjectionOptions& options = {});
+
+/// Projects the points x(node) of the given mesh nodes onto `surface` (e.g. all slave nodes
+/// onto the master surface, or all master nodes onto the slave surface, once per Newton
+/// iteration). Result i belongs to nodes[i].
+std::vector<std::optional<Projection>> project_nodes(const std::vector<Index>& nodes,
+                                                     const ContactSurface& surface,
+                                                     const NodePositions& x,
+                                                     const BucketSearch& search,
+                                                     const ProjectionOptions& options = {});
+
+} // namespace trifem::contact

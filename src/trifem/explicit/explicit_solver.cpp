@@ -1,0 +1,180 @@
+// SPDX-License-Identifier: MIT
+// Construction, step-size choice and control (halving, recovery), run loop and energies.
+// The per-step iteration itself is in step_iteration.cpp.
+#include "trifem/explicit/explicit_solver.hpp"
+
+#include "trifem/core/error.hpp"
+#include "trifem/core/log.hpp"
+#include "trifem/explicit/lambda_system.hpp"
+#include "trifem/explicit/stable_step.hpp"
+#include "trifem/explicit/surface_loads.hpp"
+
+#include <cmath>
+#include <limits>
+
+namespace trifem::explicit_dynamics {
+
+const char* to_string(StepStatus status) {
+  switch (status) {
+  case StepStatus::Converged:
+    return "converged";
+  case StepStatus::NotConverged:
+    return "not converged";
+  case StepStatus::NegativeJacobian:
+    return "negative Jacobian";
+  case StepStatus::FactorizationFailed:
+    return "factorization failed";
+  case StepStatus::NonFinite:
+    return "non-finite value";
+  case StepStatus::TooManyHalvings:
+    return "too many step halvings";
+  }
+  return "?";
+}
+
+ExplicitSolver::ExplicitSolver(const ExplicitModel& model, ExplicitSettings settings)
+    : model_(model), settings_(std::move(settings)) {
+  settings_.validate();
+  if (settings_.multiplier)
+    system_ = std::make_unique<LambdaSystem>(model_);
+  initialize();
+  choose_time_step();
+}
+
+ExplicitSolver::~ExplicitSolver() = default;
+
+Real ExplicitSolver::inverse_penalty() const {
+  return std::isinf(settings_.penalty) ? 0.0 : 1.0 / settings_.penalty;
+}
+
+void ExplicitSolver::initialize() {
+  const Index n = model_.num_dofs();
+  U_ = Vector::Zero(n);
+  V_ = Vector::Zero(n);
+  lambda_ = Vector::Zero(model_.num_cells());
+  follower_ = has_follower_loads(model_);
+  const CellStatus status =
+      evaluate_cells(model_, settings_.constraint, U_, {true, true, true, false}, fields_);
+  TRIFEM_VERIFY(status.ok(), "initial state: {} in cell {}", status.quantity, status.cell);
+  update_end_forces();
+}
+
+void ExplicitSolver::update_end_forces() {
+  gather(model_, fields_.internal, nullptr, f_int_);
+  external_force(model_, U_, time_, f_ext_);
+}
+
+void ExplicitSolver::choose_time_step() {
+  TimeStepInfo& info = dt_info_;
+  info.requested = settings_.time_step;
+  if (settings_.stable_step != StableStepMethod::None) {
+    const FrequencyEstimate est =
+        settings_.stable_step == StableStepMethod::PowerIteration
+            ? power_iteration_omega(model_, settings_.constraint, U_, settings_.multiplier,
+                                    settings_.power_iterations, settings_.power_tolerance)
+            : element_bound_omega(model_, U_);
+    info.omega = est.omega;
+    info.critical = (settings_.reading == Reading::B ? 2.0 : 1.0) / est.omega;
+    info.stable = settings_.safety() * info.critical;
+    log::info("explicit: omega_iso = {:.6g} 1/s ({} iterations{}), critical dt = {:.6g} s, "
+              "stable dt = {:.6g} s",
+              est.omega, est.iterations, est.converged ? "" : ", not converged", info.critical,
+              info.stable);
+  }
+  info.used = info.requested > 0.0 ? info.requested : info.stable;
+  if (info.stable > 0.0 && info.requested > info.stable) {
+    info.used = info.stable;
+    info.reduced = true;
+    log::warn("explicit: requested dt = {:.6g} s exceeds the stability estimate {:.6g} s "
+              "(reading {}, safety {}); reduced to {:.6g} s",
+              info.requested, info.stable, settings_.reading == Reading::B ? "B" : "A",
+              settings_.safety(), info.used);
+  }
+  TRIFEM_CHECK(std::isfinite(info.used) && info.used > 0.0,
+               "explicit: no usable time step (estimate {} s)", info.used);
+  dt_current_ = info.used;
+}
+
+StepReport ExplicitSolver::fatal(StepStatus status, const std::string& what) const {
+  StepReport r;
+  r.status = status;
+  r.message = fmt::format("step {} (t = {:.9g} s): {}", step_count_ + 1, time_, what);
+  return r;
+}
+
+StepReport ExplicitSolver::step(Real t_end) {
+  int halvings = 0;
+  for (;;) {
+    const Real dt = std::min(dt_current_, t_end - time_);
+    StepReport r = try_step(dt);
+    r.halvings = halvings;
+    if (r.ok()) {
+      if (dt_current_ < dt_info_.used && ++successes_since_halving_ >= settings_.recovery_steps) {
+        dt_current_ = std::min(2.0 * dt_current_, dt_info_.used);
+        successes_since_halving_ = 0;
+      }
+      return r;
+    }
+    const bool retry =
+        r.status == StepStatus::NotConverged || r.status == StepStatus::NegativeJacobian;
+    if (!retry)
+      return r;
+    if (++halvings > settings_.max_halvings)
+      return fatal(StepStatus::TooManyHalvings,
+                   fmt::format("{} halvings of the step did not help; last: {}",
+                               settings_.max_halvings, r.message));
+    log::warn("explicit: {}; repeating with dt = {:.6g} s", r.message, 0.5 * dt_current_);
+    dt_current_ *= 0.5;
+    successes_since_halving_ = 0;
+  }
+}
+
+StepReport ExplicitSolver::run(
+    Real t_end, const std::function<void(const ExplicitSolver&, const StepReport&)>& observer) {
+  StepReport last;
+  const Real eps = 1e-12 * std::max(std::abs(t_end), dt_info_.used);
+  while (time_ < t_end - eps) {
+    last = step(t_end);
+    if (!last.ok()) {
+      log::error("explicit: run stopped: {}", last.message);
+      return last;
+    }
+    if (observer)
+      observer(*this, last);
+  }
+  return last;
+}
+
+Real ExplicitSolver::max_volume_change() const {
+  return fields_.volume_change.lpNorm<Eigen::Infinity>();
+}
+
+Real ExplicitSolver::max_gauss_volume_change() const {
+  return fields_.gauss_volume_change.lpNorm<Eigen::Infinity>();
+}
+
+Energies ExplicitSolver::energies() const {
+  Energies e;
+  e.external_work = external_work_;
+  e.damping_work = damping_work_;
+  // v^n = (v^{n-1/2} + Δt/2 a^n) / (1 + c Δt/2), a^n = M⁻¹(F^n − Q^n − H^n Λ^n).
+  Vector force = f_ext_ - f_int_;
+  if (settings_.multiplier) {
+    Vector pressure;
+    gather(model_, fields_.gradient, &lambda_, pressure);
+    force -= pressure;
+  }
+  const Real half = 0.5 * dt_prev_;
+  const Vector v = (V_ + half * model_.inverse_mass().cwiseProduct(force)) /
+                   (1.0 + half * settings_.damping);
+  e.kinetic = 0.5 * v.cwiseAbs2().dot(model_.mass());
+  CellFields w;
+  const CellStatus s =
+      evaluate_cells(model_, settings_.constraint, U_, {false, false, false, true}, w);
+  e.strain = s.ok() ? w.energy.sum() : std::numeric_limits<Real>::quiet_NaN();
+  if (settings_.multiplier)
+    e.strain += 0.5 * lambda_.dot(fields_.psi);
+  return e;
+}
+
+} // namespace trifem::explicit_dynamics

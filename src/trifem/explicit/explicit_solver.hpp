@@ -1,0 +1,142 @@
+// SPDX-License-Identifier: MIT
+// The `dynamic-explicit` time integrator: central differences with a lumped mass and a P0
+// Lagrange-multiplier pressure, iterated per step as A2.16 → A2.21 → A2.17 (FORMULATION §7.2).
+#pragma once
+
+#include "trifem/explicit/cell_kernel.hpp"
+#include "trifem/explicit/settings.hpp"
+
+#include <functional>
+#include <memory>
+#include <string>
+
+namespace trifem::explicit_dynamics {
+
+class LambdaSystem;
+
+/// Outcome of one step.
+enum class StepStatus {
+  Converged,
+  NotConverged,        ///< iteration cap reached or diverging (the step is retried at Δt/2)
+  NegativeJacobian,    ///< det F ≤ 0 in a cell (retried at Δt/2)
+  FactorizationFailed, ///< A2.21 matrix not positive definite (fatal; use a finite α)
+  NonFinite,           ///< NaN/Inf in a result (fatal; message names step, cell/node, quantity)
+  TooManyHalvings      ///< max_halvings consecutive halvings did not help (fatal)
+};
+
+/// What one (possibly retried) step did.
+struct StepReport {
+  StepStatus status = StepStatus::Converged;
+  int iterations = 0;            ///< multiplier solves of the accepted attempt
+  int halvings = 0;              ///< retries of this step
+  Real dt = 0.0;                 ///< accepted step [s]
+  Real constraint_residual = 0.0; ///< max_e |Ψ_e − Γ_e Λ_e/α| / Γ_e at the accepted state
+  Real increment_ratio = 0.0;    ///< ‖ΔU^(k)‖∞ / ‖U^(k) − U^n‖∞ at acceptance
+  std::string message;           ///< set when status is not Converged
+  bool ok() const { return status == StepStatus::Converged; }
+};
+
+/// Energy bookkeeping [mJ]. Balance: kinetic + strain − external + damping ≈ const (= 0 from rest).
+struct Energies {
+  Real kinetic = 0.0;       ///< ½ vᵀ M v, v at t_n (half-step velocity plus half a kick)
+  Real strain = 0.0;        ///< Σ ∫ W dV + Σ ½ Λ_e Ψ_e (the penalty part λ²/(2α) at convergence)
+  Real external_work = 0.0; ///< Σ ½ (F^n + F^{n+1})·ΔU (trapezoidal)
+  Real damping_work = 0.0;  ///< dissipated by C = c M
+  Real total() const { return kinetic + strain - external_work + damping_work; }
+};
+
+/// How the step size was chosen.
+struct TimeStepInfo {
+  Real omega = 0.0;     ///< estimated ω_iso [1/s] (0 if not estimated)
+  Real critical = 0.0;  ///< 2/ω (B) or 1/ω (A) [s]
+  Real stable = 0.0;    ///< safety × critical [s]
+  Real requested = 0.0; ///< settings.time_step [s]
+  Real used = 0.0;      ///< the step taken [s]
+  bool reduced = false; ///< the request exceeded the estimate and was reduced
+};
+
+/// Wall-clock seconds spent in the two parts of a step.
+struct SolverTimings {
+  double forces = 0.0;  ///< cell loops (Q_V, H, Ψ), gathers and surface loads
+  double lambda = 0.0;  ///< multiplier system: assembly, factorization, solve
+  double assemble = 0.0, factorize = 0.0, solve = 0.0; ///< parts of `lambda`
+};
+
+/// Explicit dynamics of one ExplicitModel. The model must outlive the solver.
+class ExplicitSolver {
+public:
+  /// Validates the settings, evaluates the initial state (U = 0, at rest, t = 0) and chooses Δt.
+  ExplicitSolver(const ExplicitModel& model, ExplicitSettings settings);
+  ~ExplicitSolver();
+
+  /// Advances one step (truncated at t_end), halving Δt on NotConverged/NegativeJacobian.
+  StepReport step(Real t_end);
+  /// Steps until t_end; calls observer after every accepted step; stops at the first fatal
+  /// report and returns it (the observer has seen every accepted step before).
+  StepReport run(Real t_end, const std::function<void(const ExplicitSolver&,
+                                                      const StepReport&)>& observer = {});
+
+  Real time() const { return time_; }
+  long step_count() const { return step_count_; }
+  /// Current target step (after halvings) [s].
+  Real time_step() const { return dt_current_; }
+  const TimeStepInfo& time_step_info() const { return dt_info_; }
+  const ExplicitModel& model() const { return model_; }
+  const ExplicitSettings& settings() const { return settings_; }
+
+  const Vector& displacement() const { return U_; } ///< U^n [mm]
+  const Vector& half_step_velocity() const { return V_; } ///< (U^n − U^{n−1})/Δt [mm/s]
+  const Vector& multiplier() const { return lambda_; } ///< Λ^n per cell [MPa]
+  const CellFields& fields() const { return fields_; } ///< cell results at U^n
+  /// max over cells of |J̄_e − 1|, J̄_e = cell-mean J, at U^n: the volume change the P0
+  /// multiplier controls (|J̄ − 1| = |Λ|/α at convergence for Ψ = J − 1).
+  Real max_volume_change() const;
+  /// max over cells and Gauss points of |J − 1| at U^n (Q1–P0 lets J vary inside a cell).
+  Real max_gauss_volume_change() const;
+  /// Energies at t_n (evaluates the strain energy: one cell loop).
+  Energies energies() const;
+  const SolverTimings& timings() const { return timings_; }
+  /// Total multiplier solves so far.
+  long total_iterations() const { return total_iterations_; }
+
+private:
+  void initialize();
+  void choose_time_step();
+  StepReport try_step(Real dt);
+  StepReport iterate_forces(Real h2, const Vector& U_pred, Real t_new, Vector& U,
+                            Vector& lambda, CellFields& fields);
+  StepReport iterate_multiplier(Real h2, const Vector& U_pred, Vector& U, Vector& lambda,
+                                CellFields& fields);
+  bool converged(int k, const Vector& U, const Vector& U_prev, const Vector& lambda,
+                 const CellFields& f, StepReport& r, Real& du_prev, int& growing) const;
+  Real constraint_residual(const CellFields& f, const Vector& lambda) const;
+  StepReport cell_failure(const CellStatus& s) const;
+  StepReport factorization_failure() const;
+  StepReport check_finite(const Vector& U, const Vector& lambda) const;
+  void commit(Real dt, Real dt_avg, Vector& U, Vector& lambda, CellFields& fields);
+  void update_end_forces();
+  Vector explicit_force(const CellFields& f, const Vector& U, Real time) const;
+  Real inverse_penalty() const;
+  StepReport fatal(StepStatus status, const std::string& what) const;
+
+  const ExplicitModel& model_;
+  ExplicitSettings settings_;
+  std::unique_ptr<LambdaSystem> system_;
+  Vector U_, V_, lambda_;
+  Vector f_ext_;   ///< F_S(t_n, U^n)
+  Vector f_int_;   ///< Q_V(U^n) gathered
+  CellFields fields_;
+  CellFields work_; ///< scratch of the iteration, swapped with fields_ on acceptance
+  Real time_ = 0.0, dt_prev_ = 0.0, dt_current_ = 0.0;
+  long step_count_ = 0, total_iterations_ = 0;
+  int successes_since_halving_ = 0;
+  Real external_work_ = 0.0, damping_work_ = 0.0;
+  bool follower_ = false;
+  TimeStepInfo dt_info_;
+  SolverTimings timings_;
+};
+
+/// Human-readable name of a status.
+const char* to_string(StepStatus status);
+
+} // namespace trifem::explicit_dynamics

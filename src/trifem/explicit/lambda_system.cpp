@@ -1,0 +1,124 @@
+// SPDX-License-Identifier: MIT
+#include "trifem/explicit/lambda_system.hpp"
+
+#include "trifem/core/error.hpp"
+
+#include <Eigen/CholmodSupport>
+
+#include <algorithm>
+#include <chrono>
+
+namespace trifem::explicit_dynamics {
+namespace {
+
+constexpr Index kMinParallel = 256;
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+} // namespace
+
+/// CHOLMOD LLᵀ; CHOLMOD chooses simplicial (small, very sparse) or supernodal (BLAS) itself.
+struct LambdaSystem::Backend {
+  Eigen::CholmodDecomposition<SparseMatrix, Eigen::Lower> llt;
+  Backend() { llt.setMode(Eigen::CholmodAuto); }
+};
+
+LambdaSystem::LambdaSystem(const ExplicitModel& model)
+    : model_(model), backend_(std::make_unique<Backend>()) {
+  build_pattern();
+  backend_->llt.analyzePattern(A_);
+  TRIFEM_VERIFY(backend_->llt.info() == Eigen::Success,
+                "CHOLMOD symbolic analysis of the multiplier system failed");
+}
+
+LambdaSystem::~LambdaSystem() = default;
+
+Index LambdaSystem::size() const { return static_cast<Index>(A_.rows()); }
+Index LambdaSystem::nonzeros() const { return static_cast<Index>(A_.nonZeros()); }
+
+void LambdaSystem::build_pattern() {
+  const Index n = model_.num_cells();
+  const NodeIncidence& inc = model_.incidence();
+  std::vector<Index> col_ptr(n + 1, 0), rows;
+  std::vector<Index> column;
+  for (Index f = 0; f < n; ++f) { // rows e >= f of column f, sorted: (f, f) comes first
+    column.clear();
+    for (Index a : model_.mesh().cell(f))
+      for (Index i = inc.offsets[a]; i < inc.offsets[a + 1]; ++i)
+        if (inc.entries[i].first >= f)
+          column.push_back(inc.entries[i].first);
+    std::sort(column.begin(), column.end());
+    column.erase(std::unique(column.begin(), column.end()), column.end());
+    rows.insert(rows.end(), column.begin(), column.end());
+    col_ptr[f + 1] = static_cast<Index>(rows.size());
+  }
+  A_ = SparseMatrix(n, n);
+  A_.resizeNonZeros(static_cast<Index>(rows.size()));
+  std::copy(col_ptr.begin(), col_ptr.end(), A_.outerIndexPtr());
+  std::copy(rows.begin(), rows.end(), A_.innerIndexPtr());
+  std::fill(A_.valuePtr(), A_.valuePtr() + rows.size(), 0.0);
+  // Traversal slots, in the order assemble() visits (column, local node, incident cell).
+  slot_offsets_.assign(n + 1, 0);
+  slots_.clear();
+  for (Index f = 0; f < n; ++f) {
+    const Index* begin = A_.innerIndexPtr() + col_ptr[f];
+    const Index* end = A_.innerIndexPtr() + col_ptr[f + 1];
+    for (Index a : model_.mesh().cell(f))
+      for (Index i = inc.offsets[a]; i < inc.offsets[a + 1]; ++i)
+        if (inc.entries[i].first >= f)
+          slots_.push_back(static_cast<Index>(std::lower_bound(begin, end, inc.entries[i].first) -
+                                              A_.innerIndexPtr()));
+    slot_offsets_[f + 1] = static_cast<Index>(slots_.size());
+  }
+}
+
+void LambdaSystem::assemble(const std::vector<CellVector>& h, const Vector& inverse_mass,
+                            Real h2, const Vector& diagonal) {
+  const Index n = model_.num_cells();
+  const NodeIncidence& inc = model_.incidence();
+  Real* values = A_.valuePtr();
+#pragma omp parallel for schedule(static) if (n >= kMinParallel)
+  for (Index f = 0; f < n; ++f) {
+    for (Index k = A_.outerIndexPtr()[f]; k < A_.outerIndexPtr()[f + 1]; ++k)
+      values[k] = 0.0;
+    values[A_.outerIndexPtr()[f]] = diagonal[f];
+    Index s = slot_offsets_[f];
+    const mesh::Hex8& nodes = model_.mesh().cell(f);
+    for (int lf = 0; lf < 8; ++lf) {
+      const Index a = nodes[lf];
+      const Vec3 w = h2 * inverse_mass.segment<3>(3 * a).cwiseProduct(h[f].segment<3>(3 * lf));
+      for (Index i = inc.offsets[a]; i < inc.offsets[a + 1]; ++i) {
+        const auto [e, le] = inc.entries[i];
+        if (e >= f)
+          values[slots_[s++]] += w.dot(h[e].segment<3>(3 * le));
+      }
+    }
+  }
+}
+
+bool LambdaSystem::factorize(const std::vector<CellVector>& h, const Vector& inverse_mass,
+                             Real h2, const Vector& diagonal) {
+  auto start = std::chrono::steady_clock::now();
+  assemble(h, inverse_mass, h2, diagonal);
+  timings_.assemble += seconds_since(start);
+  start = std::chrono::steady_clock::now();
+  backend_->llt.factorize(A_);
+  timings_.factorize += seconds_since(start);
+  ++timings_.factorizations;
+  return backend_->llt.info() == Eigen::Success;
+}
+
+void LambdaSystem::solve(const Vector& b, Vector& x) {
+  const auto start = std::chrono::steady_clock::now();
+  x = backend_->llt.solve(b);
+  timings_.solve += seconds_since(start);
+  ++timings_.solves;
+}
+
+void LambdaSystem::multiply(const Vector& x, Vector& y) const {
+  y = A_.selfadjointView<Eigen::Lower>() * x;
+}
+
+} // namespace trifem::explicit_dynamics

@@ -1,0 +1,143 @@
+// SPDX-License-Identifier: MIT
+#include "trifem/explicit/stable_step.hpp"
+
+#include "trifem/explicit/lambda_system.hpp"
+#include "trifem/fe/quadrature.hpp"
+#include "trifem/physics/solid_kernel.hpp"
+
+#include <Eigen/Eigenvalues>
+
+#include <cmath>
+
+namespace trifem::explicit_dynamics {
+namespace {
+
+constexpr Index kMinParallel = 256;
+
+/// y = K(U) v, element by element (K_e of W from physics::solid_hex8, never assembled).
+void apply_stiffness(const ExplicitModel& model, const Vector& U, const Vector& v,
+                     std::vector<CellVector>& scratch, Vector& y) {
+  const Index n = model.num_cells();
+  scratch.resize(n);
+#pragma omp parallel for schedule(static) if (n >= kMinParallel)
+  for (Index c = 0; c < n; ++c) {
+    physics::HexVector f;
+    physics::HexMatrix K;
+    physics::solid_hex8(model.geometry()[c], model.cell_values(c, U), model.law(), f, &K);
+    const fe::HexCoords vc = model.cell_values(c, v);
+    CellVector ve;
+    for (int a = 0; a < 8; ++a)
+      ve.segment<3>(3 * a) = vc.row(a).transpose();
+    scratch[c] = K * ve;
+  }
+  gather(model, scratch, nullptr, y);
+}
+
+/// The M-orthogonal projection on ker Hᵀ: w ← w − M⁻¹H (HᵀM⁻¹H + δ)⁻¹ Hᵀ w.
+class Projector {
+public:
+  Projector(const ExplicitModel& model, Constraint constraint, const Vector& U)
+      : model_(model), system_(model) {
+    CellFields fields;
+    evaluate_cells(model, constraint, U, {false, true, false}, fields);
+    h_ = std::move(fields.gradient);
+    Vector diagonal(model.num_cells());
+    for (Index c = 0; c < model.num_cells(); ++c) {
+      Real d = 0.0;
+      for (int a = 0; a < 8; ++a) {
+        const Index node = model.mesh().cell(c)[a];
+        d += h_[c].segment<3>(3 * a).cwiseAbs2().dot(model.inverse_mass().segment<3>(3 * node));
+      }
+      diagonal[c] = 1e-10 * d;
+    }
+    ok_ = system_.factorize(h_, model.inverse_mass(), 1.0, diagonal);
+  }
+  bool ok() const { return ok_; }
+  void apply(Vector& w) {
+    Vector rhs, mu, Hmu;
+    cell_dot(model_, h_, w, rhs);
+    system_.solve(rhs, mu);
+    gather(model_, h_, &mu, Hmu);
+    w -= model_.inverse_mass().cwiseProduct(Hmu);
+  }
+
+private:
+  const ExplicitModel& model_;
+  LambdaSystem system_;
+  std::vector<CellVector> h_;
+  bool ok_ = false;
+};
+
+/// A deterministic, non-smooth start vector (zero on fixed DOFs): it has components along the
+/// high-frequency modes that the power iteration must find.
+Vector start_vector(const ExplicitModel& model) {
+  Vector v(model.num_dofs());
+  for (Index i = 0; i < model.num_dofs(); ++i)
+    v[i] = model.fixed()[i] ? 0.0 : std::sin(12.9898 * i + 78.233 * (i % 7)) + 0.1;
+  return v;
+}
+
+Real mass_norm(const ExplicitModel& model, const Vector& v) {
+  return std::sqrt(v.cwiseAbs2().dot(model.mass()));
+}
+
+} // namespace
+
+FrequencyEstimate power_iteration_omega(const ExplicitModel& model, Constraint constraint,
+                                        const Vector& U, bool project, int max_iterations,
+                                        Real tolerance) {
+  std::unique_ptr<Projector> projector;
+  if (project) {
+    projector = std::make_unique<Projector>(model, constraint, U);
+    if (!projector->ok())
+      projector.reset(); // H numerically singular even with δ: estimate without projection
+  }
+  Vector v = start_vector(model), y;
+  if (projector)
+    projector->apply(v);
+  v /= mass_norm(model, v);
+  std::vector<CellVector> scratch;
+  FrequencyEstimate est;
+  Real previous = 0.0;
+  for (int it = 1; it <= max_iterations; ++it) {
+    apply_stiffness(model, U, v, scratch, y);
+    const Real omega2 = v.dot(y); // vᵀ K v with vᵀ M v = 1
+    est = {std::sqrt(std::max(omega2, 0.0)), it, false};
+    if (it > 1 && std::abs(omega2 - previous) <= tolerance * std::abs(omega2)) {
+      est.converged = true;
+      break;
+    }
+    previous = omega2;
+    v = model.inverse_mass().cwiseProduct(y);
+    if (projector)
+      projector->apply(v);
+    v /= mass_norm(model, v);
+  }
+  return est;
+}
+
+FrequencyEstimate element_bound_omega(const ExplicitModel& model, const Vector& U) {
+  const Index n = model.num_cells();
+  const auto& rule = fe::hex_gauss_2x2x2();
+  Real max_omega2 = 0.0;
+#pragma omp parallel for schedule(static) reduction(max : max_omega2) if (n >= kMinParallel)
+  for (Index c = 0; c < n; ++c) {
+    const fe::HexGeometry& geo = model.geometry()[c];
+    physics::HexVector f;
+    physics::HexMatrix K;
+    physics::solid_hex8(geo, model.cell_values(c, U), model.law(), f, &K);
+    CellVector m = CellVector::Zero();
+    for (int q = 0; q < 8; ++q) {
+      const fe::HexShape N = fe::hex8_shape(rule[q].xi);
+      for (int a = 0; a < 8; ++a)
+        m.segment<3>(3 * a).array() += model.density() * N[a] * geo.dV[q];
+    }
+    const CellVector s = m.cwiseSqrt().cwiseInverse();
+    const physics::HexMatrix A = s.asDiagonal() * K * s.asDiagonal();
+    Eigen::SelfAdjointEigenSolver<physics::HexMatrix> eig(A, Eigen::EigenvaluesOnly);
+    max_omega2 = std::max(max_omega2, eig.eigenvalues().maxCoeff());
+  }
+  return {std::sqrt(max_omega2), 0, true};
+}
+
+} // namespace trifem::explicit_dynamics

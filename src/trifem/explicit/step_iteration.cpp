@@ -1,0 +1,255 @@
+// SPDX-License-Identifier: MIT
+// One step of the explicit scheme: the iteration A2.16 → A2.21 → A2.17 of FORMULATION §7.2.
+//
+// Variable-step central differences with mass-proportional damping c (velocities at half
+// steps, Δt̄ = (Δt_{n-1/2} + Δt)/2, β = 1 + c Δt̄/2):
+//   U_pred = U^n + Δt (1 − c Δt̄/2)/β v^{n-1/2},   h² = Δt Δt̄ / β   (= Δt² for c = 0, uniform Δt)
+// Reading A (all forces iterated, literal A2.15–A2.21, H_k = H(U^(k))):
+//   (A2.16) U_m      = U_pred + h² M⁻¹ (F_S(U^(k), t+Δt) − Q_V(U^(k)))
+//   (A2.21) [Γ/α + h² H_kᵀ M⁻¹ H_k] Λ^(k+1) = Ψ(U^(k)) − H_kᵀ (U^(k) − U_m)
+//   (A2.17) U^(k+1)  = U_m − h² M⁻¹ H_k Λ^(k+1)
+// A2.21 is a Newton step on the constraint Ψ(U) = Γ Λ/α along U(Λ) = U_m − h² M⁻¹ H_k Λ.
+// Reading B (internal force, loads and the pressure direction H_n at t_n; only Λ iterated):
+//   U_m = U_pred + h² M⁻¹ (F_S^n − Q_V^n),  A_n = Γ/α + h² H_nᵀ M⁻¹ H_n (factorized once per step)
+//   Λ^(k+1) = Λ^(k) + A_n⁻¹ [Ψ(U^(k)) − Γ Λ^(k)/α],   U^(k+1) = U_m − h² M⁻¹ H_n Λ^(k+1)
+// i.e. central differences with the constraint force H_n Λ^{n+1} chosen so that the constraint
+// holds at t_{n+1} (SHAKE): second order, time-reversible, no energy drift. A_n is the exact
+// Jacobian at U^n, so the iteration contracts by O(‖H(U^(k)) − H_n‖) = O(Δt) per iteration.
+// Both readings start from the explicit predictor with the forces and pressure of t_n.
+#include "trifem/explicit/explicit_solver.hpp"
+
+#include "trifem/core/error.hpp"
+#include "trifem/explicit/lambda_system.hpp"
+#include "trifem/explicit/surface_loads.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+namespace trifem::explicit_dynamics {
+namespace {
+
+/// Adds the wall-clock time of its scope to an accumulator.
+class ScopedTimer {
+public:
+  explicit ScopedTimer(double& sink) : sink_(sink), start_(std::chrono::steady_clock::now()) {}
+  ~ScopedTimer() {
+    sink_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  }
+  ScopedTimer(const ScopedTimer&) = delete;
+  ScopedTimer& operator=(const ScopedTimer&) = delete;
+
+private:
+  double& sink_;
+  std::chrono::steady_clock::time_point start_;
+};
+
+/// Index of the first non-finite entry, or -1.
+Index first_non_finite(const Vector& v) {
+  for (Index i = 0; i < v.size(); ++i)
+    if (!std::isfinite(v[i]))
+      return i;
+  return -1;
+}
+
+constexpr const char* kAxis[3] = {"x", "y", "z"};
+
+} // namespace
+
+Vector ExplicitSolver::explicit_force(const CellFields& f, const Vector& U, Real time) const {
+  Vector q, fs;
+  gather(model_, f.internal, nullptr, q);
+  if (follower_ || time != time_)
+    external_force(model_, U, time, fs);
+  else
+    fs = f_ext_;
+  return fs - q;
+}
+
+StepReport ExplicitSolver::try_step(Real dt) {
+  const Real dt_avg = 0.5 * (dt_prev_ + dt);
+  const Real beta = 1.0 + 0.5 * settings_.damping * dt_avg;
+  const Real gamma = (1.0 - 0.5 * settings_.damping * dt_avg) / beta;
+  const Real h2 = dt * dt_avg / beta;
+  const Vector U_pred = U_ + (dt * gamma) * V_;
+  if (const Index i = first_non_finite(f_ext_); i >= 0)
+    return fatal(StepStatus::NonFinite,
+                 fmt::format("non-finite external force F_{} at node {}", kAxis[i % 3], i / 3));
+  Vector force = f_ext_ - f_int_;
+  if (settings_.multiplier) {
+    Vector pressure;
+    gather(model_, fields_.gradient, &lambda_, pressure);
+    force -= pressure;
+  }
+  Vector U = U_pred + h2 * model_.inverse_mass().cwiseProduct(force);
+  Vector lambda = lambda_;
+  StepReport r = settings_.reading == Reading::A
+                     ? iterate_forces(h2, U_pred, time_ + dt, U, lambda, work_)
+                     : iterate_multiplier(h2, U_pred, U, lambda, work_);
+  r.dt = dt;
+  if (r.ok()) {
+    commit(dt, dt_avg, U, lambda, work_);
+    total_iterations_ += r.iterations;
+  }
+  const LambdaTimings lt = system_ ? system_->timings() : LambdaTimings{};
+  timings_.assemble = lt.assemble;
+  timings_.factorize = lt.factorize;
+  timings_.solve = lt.solve;
+  timings_.lambda = lt.assemble + lt.factorize + lt.solve;
+  return r;
+}
+
+Real ExplicitSolver::constraint_residual(const CellFields& f, const Vector& lambda) const {
+  const Vector& V = model_.volumes();
+  return ((f.psi - inverse_penalty() * V.cwiseProduct(lambda)).cwiseQuotient(V))
+      .lpNorm<Eigen::Infinity>();
+}
+
+bool ExplicitSolver::converged(int k, const Vector& U, const Vector& U_prev,
+                               const Vector& lambda, const CellFields& f, StepReport& r,
+                               Real& du_prev, int& growing) const {
+  r.iterations = k;
+  const Real du = (U - U_prev).lpNorm<Eigen::Infinity>();
+  const Real scale = (U - U_).lpNorm<Eigen::Infinity>();
+  const Real floor = 64.0 * std::numeric_limits<Real>::epsilon() *
+                     (model_.lengths().maxCoeff() + U.lpNorm<Eigen::Infinity>());
+  r.increment_ratio = scale > 0.0 ? du / scale : 0.0;
+  r.constraint_residual = settings_.multiplier ? constraint_residual(f, lambda) : 0.0;
+  if (du <= settings_.displacement_tolerance * scale + floor &&
+      r.constraint_residual <= settings_.constraint_tolerance)
+    return true;
+  growing = du > du_prev ? growing + 1 : 0;
+  du_prev = du;
+  if (k >= settings_.max_iterations || growing >= 3)
+    r = fatal(StepStatus::NotConverged,
+              fmt::format("iteration {} after {} iterations (|dU|/|U-U^n| = {:.3g}, "
+                          "constraint residual {:.3g})",
+                          growing >= 3 ? "diverging" : "not converged", k, r.increment_ratio,
+                          r.constraint_residual));
+  return false;
+}
+
+StepReport ExplicitSolver::iterate_forces(Real h2, const Vector& U_pred, Real t_new, Vector& U,
+                                          Vector& lambda, CellFields& fields) {
+  const CellRequest request{true, settings_.multiplier, settings_.multiplier, false};
+  const Vector& minv = model_.inverse_mass();
+  Vector U_m, U_prev;
+  Real du_prev = std::numeric_limits<Real>::infinity();
+  int growing = 0;
+  for (int k = 0;; ++k) {
+    {
+      ScopedTimer timer(timings_.forces);
+      const CellStatus s = evaluate_cells(model_, settings_.constraint, U, request, fields);
+      if (!s.ok())
+        return cell_failure(s);
+    }
+    StepReport r;
+    if (k > 0 && (converged(k, U, U_prev, lambda, fields, r, du_prev, growing) || !r.ok()))
+      return r;
+    {
+      ScopedTimer timer(timings_.forces);
+      U_m = U_pred + h2 * minv.cwiseProduct(explicit_force(fields, U, t_new)); // A2.16
+    }
+    U_prev = U;
+    if (settings_.multiplier) {
+      const Vector diagonal = inverse_penalty() * model_.volumes();
+      if (!system_->factorize(fields.gradient, minv, h2, diagonal))
+        return factorization_failure();
+      Vector HtdU;
+      cell_dot(model_, fields.gradient, U - U_m, HtdU);
+      system_->solve(fields.psi - HtdU, lambda); // A2.21
+      if (const StepReport bad = check_finite(U_m, lambda); !bad.ok())
+        return bad;
+      Vector pressure;
+      gather(model_, fields.gradient, &lambda, pressure);
+      U = U_m - h2 * minv.cwiseProduct(pressure); // A2.17
+    } else {
+      U = U_m;
+    }
+    if (const StepReport bad = check_finite(U, lambda); !bad.ok())
+      return bad;
+  }
+}
+
+StepReport ExplicitSolver::iterate_multiplier(Real h2, const Vector& U_pred, Vector& U,
+                                              Vector& lambda, CellFields& fields) {
+  const Vector& minv = model_.inverse_mass();
+  const Vector U_m = U_pred + h2 * minv.cwiseProduct(f_ext_ - f_int_); // A2.16 at t_n
+  if (!settings_.multiplier) {
+    U = U_m;
+    return check_finite(U, lambda);
+  }
+  const Vector diagonal = inverse_penalty() * model_.volumes();
+  if (!system_->factorize(fields_.gradient, minv, h2, diagonal)) // A_n, once per step
+    return factorization_failure();
+  Vector U_prev, delta, pressure;
+  Real du_prev = std::numeric_limits<Real>::infinity();
+  int growing = 0;
+  for (int k = 0;; ++k) {
+    {
+      ScopedTimer timer(timings_.forces);
+      const CellStatus s =
+          evaluate_cells(model_, settings_.constraint, U, {false, false, true, false}, fields);
+      if (!s.ok())
+        return cell_failure(s);
+    }
+    StepReport r;
+    if (k > 0 && (converged(k, U, U_prev, lambda, fields, r, du_prev, growing) || !r.ok()))
+      return r;
+    system_->solve(fields.psi - diagonal.cwiseProduct(lambda), delta); // Newton on Ψ = ΓΛ/α
+    lambda += delta;
+    U_prev = U;
+    gather(model_, fields_.gradient, &delta, pressure);
+    U -= h2 * minv.cwiseProduct(pressure); // A2.17 with H_n
+    if (const StepReport bad = check_finite(U, lambda); !bad.ok())
+      return bad;
+  }
+}
+
+StepReport ExplicitSolver::cell_failure(const CellStatus& s) const {
+  return fatal(s.failure == CellFailure::NegativeJacobian ? StepStatus::NegativeJacobian
+                                                          : StepStatus::NonFinite,
+               fmt::format("{} in cell {}", s.quantity, s.cell));
+}
+
+StepReport ExplicitSolver::factorization_failure() const {
+  return fatal(StepStatus::FactorizationFailed,
+               "the multiplier matrix Gamma/alpha + dt^2 H^T M^-1 H is not positive definite "
+               "(H rank deficient with alpha = inf? use a finite penalty, e.g. 1e4 mu)");
+}
+
+StepReport ExplicitSolver::check_finite(const Vector& U, const Vector& lambda) const {
+  if (const Index e = first_non_finite(lambda); e >= 0)
+    return fatal(StepStatus::NonFinite, fmt::format("non-finite multiplier Lambda in cell {}", e));
+  if (const Index i = first_non_finite(U); i >= 0)
+    return fatal(StepStatus::NonFinite,
+                 fmt::format("non-finite displacement u_{} at node {}", kAxis[i % 3], i / 3));
+  return {};
+}
+
+void ExplicitSolver::commit(Real dt, Real dt_avg, Vector& U, Vector& lambda, CellFields& fields) {
+  {
+    ScopedTimer timer(timings_.forces);
+    if (settings_.reading == Reading::B) // Q_V, H, Ψ at U^{n+1} for the next step
+      evaluate_cells(model_, settings_.constraint, U, {true, true, true, false}, fields);
+  }
+  Vector V_new = (U - U_) / dt;
+  const Vector v_mid = 0.5 * (V_ + V_new);
+  damping_work_ += settings_.damping * dt_avg * v_mid.cwiseAbs2().dot(model_.mass());
+  Vector f_ext_old = f_ext_;
+  const Vector dU = U - U_;
+  U_.swap(U);
+  V_.swap(V_new);
+  lambda_.swap(lambda);
+  std::swap(fields_, fields);
+  time_ += dt;
+  dt_prev_ = dt;
+  ++step_count_;
+  {
+    ScopedTimer timer(timings_.forces);
+    update_end_forces();
+  }
+  external_work_ += 0.5 * (f_ext_old + f_ext_).dot(dU);
+}
+
+} // namespace trifem::explicit_dynamics

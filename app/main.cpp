@@ -70,9 +70,9 @@ int main(int argc, char** argv) {
     const io::CaseSpec spec = io::read_case(case_file);
     if (check->parsed())
       return app::check_case(spec);
-    const std::filesystem::path out =
-        output_dir.empty() ? std::filesystem::path("results") / spec.file.stem()
-                           : std::filesystem::path(output_dir);
+    const std::filesystem::path out = output_dir.empty()
+                                          ? std::filesystem::path("results") / spec.file.stem()
+                                          : std::filesystem::path(output_dir);
     return app::run_case(spec, out);
   });
 }

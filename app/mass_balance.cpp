@@ -12,7 +12,9 @@ MassBalance::MassBalance(const Model& model)
   last_ = measure();
 }
 
-bool MassBalance::has_ions() const { return model_.fields.j_plus.valid(); }
+bool MassBalance::has_ions() const {
+  return model_.fields.j_plus.valid();
+}
 
 Balance MassBalance::measure() const {
   Balance b;

@@ -22,8 +22,8 @@ std::vector<CellMaterial> cell_materials(const io::CaseSpec& spec, const mesh::M
     } else {
       std::shared_ptr<const material::ElasticLaw> solid =
           material::create_law(m.solid->type, m.solid->parameters, ctx + ".solid");
-      cm.mixture = std::make_shared<material::MixtureProperties>(material::make_mixture(
-          m.type == "triphasic", std::move(solid), m.parameters, ctx));
+      cm.mixture = std::make_shared<material::MixtureProperties>(
+          material::make_mixture(m.type == "triphasic", std::move(solid), m.parameters, ctx));
     }
     by_name[name] = cm;
   }
@@ -134,8 +134,8 @@ std::vector<solver::FieldScale> field_scales(const Model& model) {
   const Real flux = M * model.permeability_scale / L, energy = M * L * L * L;
   std::vector<solver::FieldScale> s(model.dofs.num_fields());
   const physics::MixtureFields& f = model.fields;
-  for (auto [id, size] : {std::pair{f.u, L}, {f.w, flux}, {f.j_plus, flux}, {f.j_minus, flux},
-                          {f.p, M}, {f.eta, M}})
+  for (auto [id, size] :
+       {std::pair{f.u, L}, {f.w, flux}, {f.j_plus, flux}, {f.j_minus, flux}, {f.p, M}, {f.eta, M}})
     if (id.valid())
       s[id.index] = {model.dofs.field(id).name, energy / size, size};
   return s;

@@ -37,15 +37,15 @@ struct Model {
   mesh::Mesh mesh;
   dofs::DofMap dofs;
   std::vector<CellMaterial> materials; ///< per cell
-  physics::MixtureFields fields; ///< u always; w, p with mixtures; j+-, eta with ions
+  physics::MixtureFields fields;       ///< u always; w, p with mixtures; j+-, eta with ions
   material::Electrochemistry chem;
-  const physics::SolidTerm* solid = nullptr;   ///< pure-solid cells (owned by problem)
-  physics::MixtureTerm* mixture = nullptr;     ///< mixture cells (owned by problem)
+  const physics::SolidTerm* solid = nullptr; ///< pure-solid cells (owned by problem)
+  physics::MixtureTerm* mixture = nullptr;   ///< mixture cells (owned by problem)
   std::unique_ptr<assembly::FeProblem> problem;
   std::vector<ReactionSet> reactions;
   std::vector<Probe> probes;
-  Real length_scale = 1.0;  ///< bounding-box diagonal [mm]
-  Real modulus_scale = 1.0; ///< largest P-wave modulus [MPa]
+  Real length_scale = 1.0;       ///< bounding-box diagonal [mm]
+  Real modulus_scale = 1.0;      ///< largest P-wave modulus [MPa]
   Real permeability_scale = 0.0; ///< largest permeability [mm^4/(N s)] (0: no mixture)
 
   dofs::FieldId displacement() const { return fields.u; }

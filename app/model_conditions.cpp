@@ -11,10 +11,14 @@ namespace {
 
 dofs::FieldId field_id(const Model& model, io::FieldKind kind) {
   switch (kind) {
-  case io::FieldKind::Displacement: return model.fields.u;
-  case io::FieldKind::FluidFlux: return model.fields.w;
-  case io::FieldKind::CationFlux: return model.fields.j_plus;
-  case io::FieldKind::AnionFlux: return model.fields.j_minus;
+  case io::FieldKind::Displacement:
+    return model.fields.u;
+  case io::FieldKind::FluidFlux:
+    return model.fields.w;
+  case io::FieldKind::CationFlux:
+    return model.fields.j_plus;
+  case io::FieldKind::AnionFlux:
+    return model.fields.j_minus;
   }
   return {};
 }
@@ -27,7 +31,8 @@ Real stored_value(const Model& model, io::FieldKind kind, Real value) {
 
 const std::vector<Index>& node_set(const Model& model, const std::string& key,
                                    const std::string& name) {
-  return with_context(key, [&]() -> const std::vector<Index>& { return model.mesh.node_set(name); });
+  return with_context(key,
+                      [&]() -> const std::vector<Index>& { return model.mesh.node_set(name); });
 }
 
 } // namespace
@@ -62,7 +67,8 @@ std::vector<dofs::DirichletCondition> boundary_conditions(const io::CaseSpec& sp
     const auto& nodes = node_set(model, key + ".set", p.set);
     const dofs::FieldId id = field_id(model, p.field);
     TRIFEM_CHECK(id.valid(), "{}.field: the model has no such field", key);
-    dofs::DirichletCondition c{{}, stored_value(model, p.field, p.value), make_curve(spec, p.curve)};
+    dofs::DirichletCondition c{
+        {}, stored_value(model, p.field, p.value), make_curve(spec, p.curve)};
     for (Index n : nodes)
       c.dofs.push_back(model.dofs.dof(id, n, p.component));
     out.push_back(std::move(c));
@@ -76,8 +82,8 @@ dofs::NodalFrames impermeable_surfaces(const io::CaseSpec& spec, const Model& mo
     return {};
   std::vector<std::vector<mesh::Facet>> faces;
   for (const auto& s : spec.impermeable_surfaces)
-    faces.push_back(with_context(s.key + ".surface",
-                                 [&] { return model.mesh.surface(s.surface).facets; }));
+    faces.push_back(
+        with_context(s.key + ".surface", [&] { return model.mesh.surface(s.surface).facets; }));
   std::vector<dofs::FieldId> fields;
   for (dofs::FieldId f : {model.fields.w, model.fields.j_plus, model.fields.j_minus})
     if (f.valid())
@@ -102,25 +108,25 @@ std::vector<std::unique_ptr<physics::Term>> load_terms(const io::CaseSpec& spec,
     const auto& p = spec.pressures[i];
     const auto& surface = with_context(fmt::format("loads.pressure[{}].surface", i + 1),
                                        [&] { return model.mesh.surface(p.surface); });
-    terms.push_back(std::make_unique<physics::PressureTerm>(model.mesh, model.dofs,
-                                                            model.fields.u, surface.facets,
-                                                            p.value, make_curve(spec, p.curve)));
+    terms.push_back(std::make_unique<physics::PressureTerm>(model.mesh, model.dofs, model.fields.u,
+                                                            surface.facets, p.value,
+                                                            make_curve(spec, p.curve)));
   }
   for (std::size_t i = 0; i < spec.tractions.size(); ++i) {
     const auto& t = spec.tractions[i];
     const auto& surface = with_context(fmt::format("loads.traction[{}].surface", i + 1),
                                        [&] { return model.mesh.surface(t.surface); });
-    terms.push_back(std::make_unique<physics::TractionTerm>(model.mesh, model.dofs,
-                                                            model.fields.u, surface.facets,
-                                                            t.value, make_curve(spec, t.curve)));
+    terms.push_back(std::make_unique<physics::TractionTerm>(model.mesh, model.dofs, model.fields.u,
+                                                            surface.facets, t.value,
+                                                            make_curve(spec, t.curve)));
   }
   for (std::size_t i = 0; i < spec.baths.size(); ++i) {
     const auto& b = spec.baths[i];
     const auto& surface = with_context(fmt::format("boundary.bath[{}].surface", i + 1),
                                        [&] { return model.mesh.surface(b.surface); });
     terms.push_back(std::make_unique<physics::BathTerm>(model.mesh, model.dofs, model.fields,
-                                                        surface.facets, model.chem,
-                                                        b.concentration, make_curve(spec, b.curve)));
+                                                        surface.facets, model.chem, b.concentration,
+                                                        make_curve(spec, b.curve)));
   }
   return terms;
 }

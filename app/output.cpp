@@ -26,8 +26,8 @@ std::vector<std::string> history_columns(const Model& model) {
     cols.push_back("water_volume [mm^3]");
   }
   if (model.fields.j_plus.valid())
-    for (const char* c : {"cation_outflow [mmol/s]", "anion_outflow [mmol/s]", "cation_moles [mmol]",
-                          "anion_moles [mmol]"})
+    for (const char* c : {"cation_outflow [mmol/s]", "anion_outflow [mmol/s]",
+                          "cation_moles [mmol]", "anion_moles [mmol]"})
       cols.push_back(c);
   return cols;
 }
@@ -47,8 +47,7 @@ OutputWriter::OutputWriter(const Model& model, const io::OutputSpec& spec,
     : model_(model), spec_(spec), directory_(std::move(directory)) {
   std::error_code ec;
   std::filesystem::create_directories(directory_, ec);
-  TRIFEM_CHECK(!ec, "cannot create the output directory {}: {}", directory_.string(),
-               ec.message());
+  TRIFEM_CHECK(!ec, "cannot create the output directory {}: {}", directory_.string(), ec.message());
   pvd_ = std::make_unique<io::PvdWriter>(directory_ / "results.pvd");
   history_ = std::make_unique<io::CsvWriter>(history_file(), history_columns(model));
   if (model.mixture)

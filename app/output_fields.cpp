@@ -70,8 +70,8 @@ void add_mixture_cells(const Model& model, std::vector<io::DataArray>& out) {
     p.values[c] = x[model.dofs.dof(model.fields.p, c, 0)];
     mu_w.values[c] = o.chem.mu_w;
     if (mix.has_ions()) {
-      psi.values[c] = x[model.dofs.dof(model.fields.eta, c, 0)] / model.chem.c_ref /
-                      model.chem.faraday;
+      psi.values[c] =
+          x[model.dofs.dof(model.fields.eta, c, 0)] / model.chem.c_ref / model.chem.faraday;
       cp.values[c] = o.chem.c_plus * kPerLitre;
       cm.values[c] = o.chem.c_minus * kPerLitre;
       cf.values[c] = o.chem.c_fixed * kPerLitre;
@@ -109,10 +109,10 @@ std::vector<io::DataArray> point_fields(const Model& model) {
     return out;
   out.push_back(nodal_vector(model, model.fields.w, "fluid_flux [mm/s]", 1.0));
   if (model.fields.j_plus.valid()) {
-    out.push_back(nodal_vector(model, model.fields.j_plus, "cation_flux [mmol/(mm^2 s)]",
-                               model.chem.c_ref));
-    out.push_back(nodal_vector(model, model.fields.j_minus, "anion_flux [mmol/(mm^2 s)]",
-                               model.chem.c_ref));
+    out.push_back(
+        nodal_vector(model, model.fields.j_plus, "cation_flux [mmol/(mm^2 s)]", model.chem.c_ref));
+    out.push_back(
+        nodal_vector(model, model.fields.j_minus, "anion_flux [mmol/(mm^2 s)]", model.chem.c_ref));
   }
   // nodal averages of the element-constant pressure and potential (for smooth contours)
   io::DataArray p = array("p", 1, model.mesh.num_cells()), psi = p;

@@ -9,11 +9,11 @@
 
 #include <chrono>
 #include <cmath>
-#include <set>
 #include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <omp.h>
+#include <set>
 
 namespace trifem::app {
 namespace {
@@ -68,8 +68,8 @@ void log_mixture_scales(const Model& model) {
     const Real K = c.gamma_bath * c.gamma_bath / (m.mixture->gamma_plus * m.mixture->gamma_minus);
     const Real cp = 0.5 * (cF + std::sqrt(cF * cF + 4 * K * c.c_ref * c.c_ref));
     const Real Pi = c.RT() * (m.mixture->osmotic * (2 * cp - cF) - 2 * c.osmotic_bath * c.c_ref);
-    const Real psi = -c.RT() * std::log(m.mixture->gamma_plus * cp / (c.gamma_bath * c.c_ref)) /
-                     c.faraday;
+    const Real psi =
+        -c.RT() * std::log(m.mixture->gamma_plus * cp / (c.gamma_bath * c.c_ref)) / c.faraday;
     log::info("  Donnan state at the reference (cF0 = {:.4g} mEq/mm^3): Pi0 = {:.6g} MPa, "
               "psi0 = {:.4g} mV, c+ = {:.6g}, c- = {:.6g} mmol/mm^3",
               cF, Pi, psi, cp, cp - cF);
@@ -89,10 +89,9 @@ void log_model(const io::CaseSpec& spec, const Model& model) {
     log_mixture_scales(model);
 }
 
-void write_summary(const std::filesystem::path& file, const io::CaseSpec& spec,
-                   const Model& model, const solver::RunReport& run,
-                   const solver::PhaseTimes& phases, double output_s, double wall_s,
-                   const MassBalance* balance) {
+void write_summary(const std::filesystem::path& file, const io::CaseSpec& spec, const Model& model,
+                   const solver::RunReport& run, const solver::PhaseTimes& phases, double output_s,
+                   double wall_s, const MassBalance* balance) {
   nlohmann::json j;
   j["trifem_version"] = TRIFEM_VERSION;
   j["case"] = spec.file.string();
@@ -158,8 +157,7 @@ int run_case(const io::CaseSpec& spec, const std::filesystem::path& output_dir) 
     if (output.balance())
       output.balance()->record_step(info.dt);
     log::info("step {:4d}  t = {:<10.5g} dt = {:<9.3g} iterations {:2d}  residual {:.2e}",
-              info.step, info.time, info.dt, info.newton->iterations,
-              info.newton->final_residual);
+              info.step, info.time, info.dt, info.newton->iterations, info.newton->final_residual);
     output.write(info.time, info.step, info.dt, info.newton->iterations,
                  output.is_output_time(info.time) || controller.finished());
   };

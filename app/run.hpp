@@ -10,11 +10,11 @@ namespace trifem::app {
 
 /// Process exit codes (documented in docs/cli.md).
 enum ExitCode : int {
-  kSuccess = 0,       ///< the analysis completed
-  kUsage = 1,         ///< bad command line
-  kInvalidInput = 2,  ///< the case file, mesh or parameters are invalid; nothing was run
+  kSuccess = 0,        ///< the analysis completed
+  kUsage = 1,          ///< bad command line
+  kInvalidInput = 2,   ///< the case file, mesh or parameters are invalid; nothing was run
   kAnalysisFailed = 3, ///< the analysis stopped early (results written so far are kept)
-  kInternalError = 4, ///< a bug in trifem
+  kInternalError = 4,  ///< a bug in trifem
 };
 
 /// Runs a case; results go to `output_dir`. Returns an ExitCode.

@@ -354,7 +354,9 @@ TEST_F(Cli, VerboseRunPrintsNewtonIterations) {
 
 /// A constant prescribed value (no load curve) that inverts the mesh at t = 0 is reported as
 /// such before any step, and no result with a NaN is written.
-std::string summary_of(const fs::path& dir) { return read_text(dir / "summary.json"); }
+std::string summary_of(const fs::path& dir) {
+  return read_text(dir / "summary.json");
+}
 
 TEST_F(Cli, InitialStateThatInvertsIsReported) {
   const Result r =

@@ -44,9 +44,12 @@ Setup make_setup(bool ions, const std::string& solid) {
   s.x.eta = -1500.0;
   s.mat = material::make_mixture(
       ions, material::create_law(solid, {{"E", 0.3}, {"nu", 0.2}}, "solid"),
-      ions ? material::ParameterValues{{"phi_s0", 0.25}, {"permeability", 1.07e-3},
-                                       {"fixed_charge", 2e-4}, {"d_plus", 5e-4},
-                                       {"d_minus", 8e-4}, {"osmotic", 0.93}}
+      ions ? material::ParameterValues{{"phi_s0", 0.25},
+                                       {"permeability", 1.07e-3},
+                                       {"fixed_charge", 2e-4},
+                                       {"d_plus", 5e-4},
+                                       {"d_minus", 8e-4},
+                                       {"osmotic", 0.93}}
            : material::ParameterValues{{"phi_s0", 0.25}, {"permeability", 1.07e-3}},
       "m");
   Real V0 = 0.0;
@@ -135,8 +138,8 @@ void check_tangent(bool ions, const std::string& solid) {
         continue;
       // relative to the block, or to the row-field's largest entry for tiny blocks
       const Real rel = std::sqrt(num) / std::max(std::sqrt(den), 1e-8 * scale * typical(L, 0));
-      EXPECT_LE(rel, 1e-6) << "rel " << rel << " " << (ions ? "triphasic " : "biphasic ") << solid << " block d"
-                           << names[fr] << "/d" << names[fc];
+      EXPECT_LE(rel, 1e-6) << "rel " << rel << " " << (ions ? "triphasic " : "biphasic ") << solid
+                           << " block d" << names[fr] << "/d" << names[fc];
     }
   }
 }

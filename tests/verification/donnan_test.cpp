@@ -55,7 +55,8 @@ TEST(Donnan, SingleElementInBathMatchesClosedFormAtSeveralJ) {
     ASSERT_EQ(m.problem->linearize(lin, false), solver::SolveStatus::Converged);
     // every free equation (w, j+-, p, eta) is satisfied; the u rows hold the reaction to the
     // osmotic pressure (the solid is stress-free, total stress -Pi I)
-    EXPECT_LE(lin.residual.lpNorm<Eigen::Infinity>(), 1e-14 * 0.15) << "J = " << J; // round-off of Pi
+    EXPECT_LE(lin.residual.lpNorm<Eigen::Infinity>(), 1e-14 * 0.15)
+        << "J = " << J; // round-off of Pi
     const solver::RunReport run = m.run(10.0, 10.0, 10.0);
     ASSERT_TRUE(run.success) << run.failure;
     EXPECT_EQ(run.iterations, 0) << "J = " << J;
@@ -105,8 +106,8 @@ TEST(Donnan, RelaxationFromElectroneutralStateConvergesToClosedForm) {
     const Vector& x = m.problem->state();
     for (Index e = 0; e < m.mixture->num_elements(); ++e) {
       const auto out = m.mixture->output(e, x);
-      worst_neutrality = std::max(
-          worst_neutrality, std::abs(out.chem.c_plus - out.chem.c_minus - out.chem.c_fixed));
+      worst_neutrality = std::max(worst_neutrality,
+                                  std::abs(out.chem.c_plus - out.chem.c_minus - out.chem.c_fixed));
     }
     // boundary outflow through the bath face = sum over its nodes of (area vector . j)
     Real outflow = 0.0;
@@ -115,8 +116,8 @@ TEST(Donnan, RelaxationFromElectroneutralStateConvergesToClosedForm) {
         for (dofs::FieldId fl : {m.f.j_plus, m.f.j_minus})
           outflow += 0.25 * m.chem.c_ref * x[m.dofs.dof(fl, facet.nodes[a], 2)];
     const Real moles = m.mixture->total_moles(true) + m.mixture->total_moles(false);
-    worst_balance = std::max(worst_balance,
-                             std::abs(moles - (moles_before - info.dt * outflow)) / moles);
+    worst_balance =
+        std::max(worst_balance, std::abs(moles - (moles_before - info.dt * outflow)) / moles);
     moles_before = moles;
   };
   const solver::RunReport run = m.run(4e4, 1.0, 4000.0, {}, observer);

@@ -40,7 +40,7 @@ struct MixtureModel {
   physics::MixtureTerm* mixture = nullptr;
   std::unique_ptr<assembly::FeProblem> problem;
   std::optional<dofs::LoadCurve> fixed_charge_curve; ///< free swelling from an uncharged state
-  dofs::NodalFrames frames;                           ///< rotated nodal DOFs (optional)
+  dofs::NodalFrames frames;                          ///< rotated nodal DOFs (optional)
 
   MixtureModel(mesh::Mesh m, material::MixtureProperties p) : mesh(std::move(m)) {
     props = std::make_shared<material::MixtureProperties>(std::move(p));
@@ -79,15 +79,15 @@ struct MixtureModel {
       cells[c] = c;
     auto term = std::make_unique<physics::MixtureTerm>(
         mesh, dofs, f, cells,
-        std::vector<std::shared_ptr<const material::MixtureProperties>>(cells.size(), props),
-        chem, fixed_charge_curve);
+        std::vector<std::shared_ptr<const material::MixtureProperties>>(cells.size(), props), chem,
+        fixed_charge_curve);
     mixture = term.get();
     std::vector<std::unique_ptr<physics::Term>> terms;
     terms.push_back(std::move(term));
     for (auto& l : loads)
       terms.push_back(std::move(l));
-    problem = std::make_unique<assembly::FeProblem>(dofs, conditions, std::move(terms),
-                                                    scales(), frames);
+    problem =
+        std::make_unique<assembly::FeProblem>(dofs, conditions, std::move(terms), scales(), frames);
     Vector x = problem->state();
     mixture->initialize(initial, 0.0, x);
     problem->set_state(x);
@@ -124,8 +124,8 @@ struct MixtureModel {
     s.must_points = std::move(must_points);
     solver::StepController controller(s);
     solver::NewtonSolver newton({}, linalg::make_linear_solver("umfpack"));
-    return solver::run_time_loop(*problem, newton, controller,
-                                 observer ? observer : [](const solver::StepInfo&) {});
+    return solver::run_time_loop(
+        *problem, newton, controller, observer ? observer : [](const solver::StepInfo&) {});
   }
 
   Real value(dofs::FieldId field, Index entity, int k = 0) const {

@@ -37,7 +37,8 @@ TEST(NewtonConvergence, QuadraticOnCantileverBendingWithFollowerPressure) {
   for (std::size_t k = 0; k < r.size(); ++k)
     log += fmt::format("  iteration {}: scaled residual {:.3e}\n", k, r[k]);
   std::cout << "Newton residuals of the last step (tip deflection "
-            << m.displacement(m.mesh.num_nodes() - 1).z() << " mm):\n" << log;
+            << m.displacement(m.mesh.num_nodes() - 1).z() << " mm):\n"
+            << log;
   // Observed order p_k = log(r_{k+1}/r_k) / log(r_k/r_{k-1}) where all three residuals are in
   // the asymptotic range (below 5 % of the step's load scale) and above round-off.
   const Real round_off = *std::min_element(r.begin(), r.end());

@@ -64,10 +64,14 @@ void check_bath_change(Real c_bath) {
 } // namespace
 
 /// FORMULATION V4: isotropic stretch 1.38074 in a 0.015 M bath.
-TEST(OsmoticLoading, FreeCubeInDiluteBath) { check_bath_change(1.5e-5); }
+TEST(OsmoticLoading, FreeCubeInDiluteBath) {
+  check_bath_change(1.5e-5);
+}
 
 /// FORMULATION V4: isotropic stretch 1.04095 in a 1.5 M bath.
-TEST(OsmoticLoading, FreeCubeInConcentratedBath) { check_bath_change(1.5e-3); }
+TEST(OsmoticLoading, FreeCubeInConcentratedBath) {
+  check_bath_change(1.5e-3);
+}
 
 /// IC-2: the fixed charge is ramped from 0 over 100 s (an uncharged, stress-free reference in
 /// the bath); the column ends at the same 1-D equilibrium stretch 1.225066.
@@ -89,8 +93,8 @@ TEST(OsmoticLoading, FixedChargeRampReachesTheSwellingEquilibrium) {
   EXPECT_NEAR(m.value(m.f.p, 0), 0.0, 1e-15);
   ASSERT_TRUE(m.run(2e5, 1.0, 1e4).success);
   const exact::SwellingState eq =
-      exact::swelling_equilibrium(exact::SolidLaw::StVenantKirchhoff,
-                                  exact::Deformation::Confined, 0.3, 0.0, exact::paper_medium());
+      exact::swelling_equilibrium(exact::SolidLaw::StVenantKirchhoff, exact::Deformation::Confined,
+                                  0.3, 0.0, exact::paper_medium());
   for (Index n : m.mesh.node_set("box.zmax"))
     EXPECT_NEAR(1.0 + m.value(m.f.u, n, 2), eq.stretch, 1e-6 * eq.stretch);
   for (Index e = 0; e < m.mixture->num_elements(); ++e) {

@@ -40,11 +40,12 @@ test::MixtureModel column(const Mat3& Q, bool frames) {
       return out;
     };
     std::vector<Index> constrained;
-    auto f = dofs::normal_frames(m.mesh, m.dofs, {m.f.u}, faces({"box.xmin", "box.xmax", "box.ymin", "box.ymax"}),
-                                 constrained);
-    auto fw = dofs::normal_frames(m.mesh, m.dofs, {m.f.w},
-                                  faces({"box.xmin", "box.xmax", "box.ymin", "box.ymax", "box.zmin"}),
-                                  constrained);
+    auto f =
+        dofs::normal_frames(m.mesh, m.dofs, {m.f.u},
+                            faces({"box.xmin", "box.xmax", "box.ymin", "box.ymax"}), constrained);
+    auto fw = dofs::normal_frames(
+        m.mesh, m.dofs, {m.f.w},
+        faces({"box.xmin", "box.xmax", "box.ymin", "box.ymax", "box.zmin"}), constrained);
     f.insert(f.end(), fw.begin(), fw.end());
     m.frames = dofs::NodalFrames(std::move(f), m.dofs.num_dofs());
     m.conditions.push_back({constrained, 0.0, dofs::LoadCurve::constant()});

@@ -41,7 +41,8 @@ void run_patch_test(const std::string& law_type) {
   for (Index n : boundary) {
     const Vec3 u = (F - Mat3::Identity()) * m.mesh.node(n);
     for (int k = 0; k < 3; ++k) {
-      dofs::DirichletCondition c{{m.dofs.dof(m.u, n, k)}, u[k],
+      dofs::DirichletCondition c{{m.dofs.dof(m.u, n, k)},
+                                 u[k],
                                  dofs::LoadCurve({{0, 0}, {1, 1}}, dofs::Interpolation::Linear)};
       m.conditions.push_back(std::move(c));
     }
@@ -66,7 +67,9 @@ void run_patch_test(const std::string& law_type) {
 
 } // namespace
 
-TEST(PatchTest, NeoHookeanDistortedBlockIsExact) { run_patch_test("neo-hookean"); }
+TEST(PatchTest, NeoHookeanDistortedBlockIsExact) {
+  run_patch_test("neo-hookean");
+}
 TEST(PatchTest, SaintVenantKirchhoffDistortedBlockIsExact) {
   run_patch_test("saint-venant-kirchhoff");
 }

@@ -60,8 +60,12 @@ void run_uniaxial(const std::string& law, Real stretch, Uniaxial exact) {
 
 } // namespace
 
-TEST(Uniaxial, NeoHookeanStretch1p5) { run_uniaxial("neo-hookean", 1.5, neo_hookean_uniaxial(1.5)); }
-TEST(Uniaxial, NeoHookeanStretch0p8) { run_uniaxial("neo-hookean", 0.8, neo_hookean_uniaxial(0.8)); }
+TEST(Uniaxial, NeoHookeanStretch1p5) {
+  run_uniaxial("neo-hookean", 1.5, neo_hookean_uniaxial(1.5));
+}
+TEST(Uniaxial, NeoHookeanStretch0p8) {
+  run_uniaxial("neo-hookean", 0.8, neo_hookean_uniaxial(0.8));
+}
 TEST(Uniaxial, SaintVenantKirchhoffStretch1p5) {
   run_uniaxial("saint-venant-kirchhoff", 1.5, svk_uniaxial(1.5));
 }

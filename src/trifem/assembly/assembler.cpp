@@ -60,8 +60,8 @@ void rotate(const dofs::NodalFrames& frames, std::span<const Index> dofs, Scratc
   }
 }
 
-void scatter(const dofs::DofMap& map, std::span<const Index> dofs, Scratch& s,
-             AssembledSystem& out, bool with_jacobian) {
+void scatter(const dofs::DofMap& map, std::span<const Index> dofs, Scratch& s, AssembledSystem& out,
+             bool with_jacobian) {
   const Index n = static_cast<Index>(dofs.size());
   for (Index i = 0; i < n; ++i)
     out.residual[dofs[i]] += s.r[i];
@@ -101,8 +101,8 @@ AssembledSystem Assembler::make_system() const {
   return {Vector::Zero(map_.num_dofs()), pattern_.Kff, pattern_.Kfc};
 }
 
-bool Assembler::assemble_term(std::size_t t, const physics::EvalState& state,
-                              AssembledSystem& out, bool with_jacobian) const {
+bool Assembler::assemble_term(std::size_t t, const physics::EvalState& state, AssembledSystem& out,
+                              bool with_jacobian) const {
   const physics::Term& term = *terms_[t];
   const Stencils& stencils = stencils_[t];
   bool admissible = true;

@@ -10,9 +10,15 @@ void configure(Level level) {
   auto logger = spdlog::stdout_color_mt("trifem");
   logger->set_pattern("%v");
   switch (level) {
-  case Level::Quiet: logger->set_level(spdlog::level::warn); break;
-  case Level::Normal: logger->set_level(spdlog::level::info); break;
-  case Level::Verbose: logger->set_level(spdlog::level::debug); break;
+  case Level::Quiet:
+    logger->set_level(spdlog::level::warn);
+    break;
+  case Level::Normal:
+    logger->set_level(spdlog::level::info);
+    break;
+  case Level::Verbose:
+    logger->set_level(spdlog::level::debug);
+    break;
   }
   spdlog::set_default_logger(logger);
 }

@@ -35,9 +35,12 @@ Real LoadCurve::operator()(Real t) const {
   const auto lo = hi - 1;
   const Real s = (t - lo->first) / (hi->first - lo->first);
   switch (interpolation_) {
-  case Interpolation::Step: return lo->second;
-  case Interpolation::Linear: return lo->second + s * (hi->second - lo->second);
-  case Interpolation::Smooth: break;
+  case Interpolation::Step:
+    return lo->second;
+  case Interpolation::Linear:
+    return lo->second + s * (hi->second - lo->second);
+  case Interpolation::Smooth:
+    break;
   }
   const Real h = s * s * (3.0 - 2.0 * s);
   return lo->second + h * (hi->second - lo->second);

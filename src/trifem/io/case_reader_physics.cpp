@@ -223,10 +223,10 @@ void read_boundary(const Table& root, CaseSpec& spec) {
     t.allow({"surface", "concentration", "curve"});
     if (!model.ions)
       fail(t.where(), t.path(), "a bath needs a triphasic material");
-    spec.baths.push_back({t.name("surface"),
-                          t.number("concentration",
-                                   {.range = material::Range::positive(), .unit = "mmol/mm^3"}),
-                          read_curve_reference(t, spec)});
+    spec.baths.push_back(
+        {t.name("surface"),
+         t.number("concentration", {.range = material::Range::positive(), .unit = "mmol/mm^3"}),
+         read_curve_reference(t, spec)});
   }
 }
 

@@ -127,23 +127,23 @@ struct AnalysisSpec {
 
 /// [electrochemistry]: constants and the reference bath (mm-N-s-mmol-K units).
 struct ElectrochemistrySpec {
-  Real R = 8.314;                    ///< gas constant [mJ/(mmol K)], > 0
-  Real T = 298.0;                    ///< temperature [K], > 0
-  Real faraday = 96.485;             ///< Faraday constant [C/mmol], > 0
-  Real bath_concentration = 1.5e-4;  ///< NaCl bath c* [mmol/mm^3], > 0
-  Real bath_activity = 1.0;          ///< bath activity coefficient gamma*, > 0
-  Real bath_osmotic = 1.0;           ///< bath osmotic coefficient Phi*, > 0
+  Real R = 8.314;                   ///< gas constant [mJ/(mmol K)], > 0
+  Real T = 298.0;                   ///< temperature [K], > 0
+  Real faraday = 96.485;            ///< Faraday constant [C/mmol], > 0
+  Real bath_concentration = 1.5e-4; ///< NaCl bath c* [mmol/mm^3], > 0
+  Real bath_activity = 1.0;         ///< bath activity coefficient gamma*, > 0
+  Real bath_osmotic = 1.0;          ///< bath osmotic coefficient Phi*, > 0
 };
 
 /// [time]
 struct TimeSpec {
-  Real end_time = 1.0;  ///< end of the analysis [s]
-  Real dt = 0.1;        ///< initial step [s]
-  Real dt_min = 0.0;    ///< smallest step before the run fails [s]; 0 means dt * 1e-6
-  Real dt_max = 0.0;    ///< largest step [s]; 0 means dt
+  Real end_time = 1.0;       ///< end of the analysis [s]
+  Real dt = 0.1;             ///< initial step [s]
+  Real dt_min = 0.0;         ///< smallest step before the run fails [s]; 0 means dt * 1e-6
+  Real dt_max = 0.0;         ///< largest step [s]; 0 means dt
   int target_iterations = 6; ///< steps that converge in at most this many iterations grow dt
-  Real growth = 1.5;    ///< step growth factor (>= 1)
-  Real cutback = 0.5;   ///< step cutback factor in (0, 1)
+  Real growth = 1.5;         ///< step growth factor (>= 1)
+  Real cutback = 0.5;        ///< step cutback factor in (0, 1)
 };
 
 /// [solver]
@@ -169,8 +169,8 @@ struct ProbeSpec {
 
 /// [output]
 struct OutputSpec {
-  Real interval = 0.0;       ///< VTU output every `interval` s (0: every step)
-  std::vector<Real> times;   ///< extra output times (must points)
+  Real interval = 0.0;     ///< VTU output every `interval` s (0: every step)
+  std::vector<Real> times; ///< extra output times (must points)
   bool vtu = true;
   std::vector<ReactionSpec> reactions;
   std::vector<ProbeSpec> probes;

@@ -7,7 +7,9 @@
 
 namespace trifem::linalg {
 
-std::vector<std::string> available_linear_solvers() { return {"umfpack", "sparselu"}; }
+std::vector<std::string> available_linear_solvers() {
+  return {"umfpack", "sparselu"};
+}
 
 std::unique_ptr<LinearSolver> make_linear_solver(const std::string& name) {
   if (name == "umfpack")

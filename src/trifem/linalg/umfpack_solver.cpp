@@ -30,6 +30,8 @@ private:
 
 } // namespace
 
-std::unique_ptr<LinearSolver> make_umfpack_solver() { return std::make_unique<UmfpackSolver>(); }
+std::unique_ptr<LinearSolver> make_umfpack_solver() {
+  return std::make_unique<UmfpackSolver>();
+}
 
 } // namespace trifem::linalg

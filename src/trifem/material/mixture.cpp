@@ -39,8 +39,8 @@ MixtureProperties make_mixture(bool charged, std::shared_ptr<const ElasticLaw> s
   if (!charged)
     return m;
   const Real basis = v.at("fixed_charge_basis");
-  TRIFEM_CHECK(basis == 0.0 || basis == 1.0, "{}.fixed_charge_basis = {}: expected 0 or 1",
-               context, basis);
+  TRIFEM_CHECK(basis == 0.0 || basis == 1.0, "{}.fixed_charge_basis = {}: expected 0 or 1", context,
+               basis);
   m.fixed_charge = basis == 0.0 ? v.at("fixed_charge") : v.at("fixed_charge") / m.phi_w0();
   m.d_plus = v.at("d_plus");
   m.d_minus = v.at("d_minus");

@@ -20,15 +20,15 @@ enum class FixedChargeBasis {
 /// Validated mixture coefficients (mm-N-s-mmol units).
 struct MixtureProperties {
   std::shared_ptr<const ElasticLaw> solid;
-  bool charged = false;      ///< triphasic (true) or biphasic (false)
-  Real phi_s0 = 0.25;        ///< solid volume fraction in the reference state, (0, 1)
-  Real permeability = 1e-3;  ///< kappa [mm^4/(N s)], > 0
-  Real fixed_charge = 0.0;   ///< cF0 per reference water volume [mEq/mm^3 = mmol/mm^3], >= 0
-  Real d_plus = 5e-4;        ///< cation diffusivity [mm^2/s], > 0
-  Real d_minus = 8e-4;       ///< anion diffusivity [mm^2/s], > 0
-  Real gamma_plus = 1.0;     ///< cation activity coefficient, > 0
-  Real gamma_minus = 1.0;    ///< anion activity coefficient, > 0
-  Real osmotic = 1.0;        ///< osmotic coefficient Phi, > 0
+  bool charged = false;     ///< triphasic (true) or biphasic (false)
+  Real phi_s0 = 0.25;       ///< solid volume fraction in the reference state, (0, 1)
+  Real permeability = 1e-3; ///< kappa [mm^4/(N s)], > 0
+  Real fixed_charge = 0.0;  ///< cF0 per reference water volume [mEq/mm^3 = mmol/mm^3], >= 0
+  Real d_plus = 5e-4;       ///< cation diffusivity [mm^2/s], > 0
+  Real d_minus = 8e-4;      ///< anion diffusivity [mm^2/s], > 0
+  Real gamma_plus = 1.0;    ///< cation activity coefficient, > 0
+  Real gamma_minus = 1.0;   ///< anion activity coefficient, > 0
+  Real osmotic = 1.0;       ///< osmotic coefficient Phi, > 0
 
   Real phi_w0() const { return 1.0 - phi_s0; }
 };

@@ -13,8 +13,7 @@ const std::vector<ParameterSchema>& NeoHookean::schema() {
   return s;
 }
 
-NeoHookean::NeoHookean(const ParameterValues& p)
-    : lame_(lame_from_young(p.at("E"), p.at("nu"))) {}
+NeoHookean::NeoHookean(const ParameterValues& p) : lame_(lame_from_young(p.at("E"), p.at("nu"))) {}
 
 Real NeoHookean::energy(const Mat3& C) const {
   const Real lnJ = 0.5 * std::log(C.determinant());

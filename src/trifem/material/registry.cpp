@@ -33,9 +33,8 @@ const LawEntry& find_law(const std::string& type, const std::string& context) {
       return law;
     known += (known.empty() ? "" : ", ") + law.type;
   }
-  throw InputError(
-      fmt::format("{}.type = '{}': unknown material type (expected one of: {})", context, type,
-                  known));
+  throw InputError(fmt::format("{}.type = '{}': unknown material type (expected one of: {})",
+                               context, type, known));
 }
 
 std::unique_ptr<ElasticLaw> create_law(const std::string& type, const ParameterValues& values,

@@ -14,9 +14,9 @@ namespace trifem::material {
 
 /// One registered law.
 struct LawEntry {
-  std::string type;                                 ///< name used in case files
-  std::string doc;                                  ///< one-line description
-  const std::vector<ParameterSchema>* parameters;   ///< parameter schema
+  std::string type;                               ///< name used in case files
+  std::string doc;                                ///< one-line description
+  const std::vector<ParameterSchema>* parameters; ///< parameter schema
   std::function<std::unique_ptr<ElasticLaw>(const ParameterValues&)> make;
 };
 

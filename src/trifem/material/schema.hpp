@@ -20,9 +20,9 @@ struct Range {
 
   static Range open(Real lo, Real hi) { return {lo, hi, true, true}; }
   static Range closed(Real lo, Real hi) { return {lo, hi, false, false}; }
-  static Range half_open(Real lo, Real hi) { return {lo, hi, false, true}; }  ///< [lo, hi)
-  static Range positive() { return {0.0, 1e300, true, false}; }               ///< (0, inf)
-  static Range non_negative() { return {0.0, 1e300, false, false}; }          ///< [0, inf)
+  static Range half_open(Real lo, Real hi) { return {lo, hi, false, true}; } ///< [lo, hi)
+  static Range positive() { return {0.0, 1e300, true, false}; }              ///< (0, inf)
+  static Range non_negative() { return {0.0, 1e300, false, false}; }         ///< [0, inf)
 
   /// True if v is finite and inside the interval.
   bool contains(Real v) const;

@@ -13,8 +13,8 @@ void validate(const BoxSpec& spec) {
   for (int d = 0; d < 3; ++d) {
     TRIFEM_CHECK(spec.size[d] > 0.0 && std::isfinite(spec.size[d]),
                  "box '{}': size[{}] = {} must be a positive length", spec.name, d, spec.size[d]);
-    TRIFEM_CHECK(spec.divisions[d] >= 1, "box '{}': divisions[{}] = {} must be >= 1", spec.name,
-                 d, spec.divisions[d]);
+    TRIFEM_CHECK(spec.divisions[d] >= 1, "box '{}': divisions[{}] = {} must be >= 1", spec.name, d,
+                 spec.divisions[d]);
     TRIFEM_CHECK(spec.grading[d] > 0.0 && std::isfinite(spec.grading[d]),
                  "box '{}': grading[{}] = {} must be > 0", spec.name, d, spec.grading[d]);
   }

@@ -11,11 +11,12 @@ namespace trifem::mesh {
 
 /// Parameters of a structured box of hex8 cells.
 struct BoxSpec {
-  std::string name = "box";        ///< block name; surfaces are "<name>.xmin" ... "<name>.zmax"
-  Vec3 origin = Vec3::Zero();      ///< corner with the smallest coordinates [length]
-  Vec3 size = Vec3::Ones();        ///< edge lengths [length], all > 0
+  std::string name = "box";   ///< block name; surfaces are "<name>.xmin" ... "<name>.zmax"
+  Vec3 origin = Vec3::Zero(); ///< corner with the smallest coordinates [length]
+  Vec3 size = Vec3::Ones();   ///< edge lengths [length], all > 0
   std::array<int, 3> divisions{1, 1, 1}; ///< cells per direction, all >= 1
-  /// Geometric grading per direction: ratio of the last to the first cell length (> 0; 1 = uniform).
+  /// Geometric grading per direction: ratio of the last to the first cell length (> 0; 1 =
+  /// uniform).
   Vec3 grading = Vec3::Ones();
 };
 

@@ -89,8 +89,8 @@ void Mesh::add_surface(const std::string& name, Surface surface) {
 
 void Mesh::add_cell_block(const std::string& name, std::vector<Index> cells) {
   for (Index c : cells)
-    TRIFEM_CHECK(c >= 0 && c < num_cells(), "cell block '{}' refers to cell {} outside 0..{}",
-                 name, c, num_cells() - 1);
+    TRIFEM_CHECK(c >= 0 && c < num_cells(), "cell block '{}' refers to cell {} outside 0..{}", name,
+                 c, num_cells() - 1);
   insert_unique(cell_blocks_, "cell block", name, std::move(cells));
 }
 

@@ -14,17 +14,17 @@ using Node3 = Eigen::Matrix<Real, 8, 3>;
 /// Current-configuration values at one Gauss point.
 struct PointData {
   fe::HexShape N;
-  Node3 b;   ///< spatial gradients b_a = F^-T Grad N_a
-  Real dv;   ///< J dV
-  Vec3 w, jp, jm;     ///< interpolated fluxes
-  Mat3 Gw, Gp, Gm;    ///< flux gradients sum_a x_a (x) b_a
+  Node3 b;         ///< spatial gradients b_a = F^-T Grad N_a
+  Real dv;         ///< J dV
+  Vec3 w, jp, jm;  ///< interpolated fluxes
+  Mat3 Gw, Gp, Gm; ///< flux gradients sum_a x_a (x) b_a
 };
 
 /// Element integrals in the current configuration (FORMULATION 2.2, 4.2).
 struct Integrals {
   std::array<PointData, 8> qp;
   Real V = 0.0;
-  Node3 g = Node3::Zero();                               ///< g_a = int b_a dv
+  Node3 g = Node3::Zero();                                         ///< g_a = int b_a dv
   Eigen::Matrix<Real, 8, 8> m = Eigen::Matrix<Real, 8, 8>::Zero(); ///< int N_a N_b dv
 };
 
@@ -64,7 +64,9 @@ bool integrate(const fe::HexGeometry& geo, const MixtureUnknowns& x, bool ions, 
 }
 
 /// Flux of a nodal field out of the element: sum_a g_a . j_a.
-Real outflow(const Node3& g, const fe::HexCoords& j) { return (g.array() * j.array()).sum(); }
+Real outflow(const Node3& g, const fe::HexCoords& j) {
+  return (g.array() * j.array()).sum();
+}
 
 MixtureChemistry chemistry(const Integrals& I, const MixtureUnknowns& x, const MixtureHistory& h,
                            const material::MixtureProperties& mat, const MixtureStep& step,
@@ -100,7 +102,9 @@ MixtureChemistry chemistry(const Integrals& I, const MixtureUnknowns& x, const M
 }
 
 /// Mass-matrix products W_a = sum_b m_ab x_b (rows = nodes).
-Node3 mass_product(const Integrals& I, const fe::HexCoords& x) { return I.m * x; }
+Node3 mass_product(const Integrals& I, const fe::HexCoords& x) {
+  return I.m * x;
+}
 
 void residual(const Integrals& I, const MixtureChemistry& c, const MixtureUnknowns& x,
               const MixtureHistory& h, const MixtureStep& step, const MixtureLayout& L,
@@ -109,7 +113,8 @@ void residual(const Integrals& I, const MixtureChemistry& c, const MixtureUnknow
   const Node3 W = mass_product(I, x.w);
   Node3 Rw = c.mu_w * I.g - c.A_ww * W;
   for (int a = 0; a < 8; ++a)
-    r.segment<3>(L.u(a, 0)) = f_int.segment<3>(3 * a) - (x.p - step.prestress) * I.g.row(a).transpose();
+    r.segment<3>(L.u(a, 0)) =
+        f_int.segment<3>(3 * a) - (x.p - step.prestress) * I.g.row(a).transpose();
   r[L.p()] = (I.V - h.V_old) / step.dt + outflow(I.g, x.w);
   if (L.ions) {
     const Node3 P = mass_product(I, x.jp), M = mass_product(I, x.jm);
@@ -120,8 +125,8 @@ void residual(const Integrals& I, const MixtureChemistry& c, const MixtureUnknow
       r.segment<3>(L.jp(a, 0)) = Rp.row(a).transpose();
       r.segment<3>(L.jm(a, 0)) = Rm.row(a).transpose();
     }
-    r[L.eta()] = outflow(I.g, x.jp) - outflow(I.g, x.jm) -
-                 (h.N_plus - h.N_minus - h.N_fixed) / step.dt;
+    r[L.eta()] =
+        outflow(I.g, x.jp) - outflow(I.g, x.jm) - (h.N_plus - h.N_minus - h.N_fixed) / step.dt;
   }
   for (int a = 0; a < 8; ++a)
     r.segment<3>(L.w(a, 0)) = Rw.row(a).transpose();
@@ -188,7 +193,8 @@ void add_area_derivative(const Integrals& I, const std::array<Real, 4>& s,
       for (int b = 0; b < 8; ++b) {
         if (a == b)
           continue;
-        const Mat3 H = (d.b.row(a).transpose() * d.b.row(b) - d.b.row(b).transpose() * d.b.row(a)) * d.dv;
+        const Mat3 H =
+            (d.b.row(a).transpose() * d.b.row(b) - d.b.row(b).transpose() * d.b.row(a)) * d.dv;
         for (int f = 0; f < rows; ++f)
           K.block<3, 3>(row_offset[f] + 3 * a, MixtureLayout::u(b, 0)) += s[f] * H;
       }
@@ -212,17 +218,17 @@ void tangent(const Integrals& I, const MixtureChemistry& c, const MixtureUnknown
     K.block<1, 3>(L.p(), L.w(a, 0)) = ga.transpose();
     K.block<1, 3>(L.p(), L.u(a, 0)) = ga.transpose() / step.dt + qw.row(a);
     // rank-one terms of the element-constant chemistry
-    K.block(L.w(a, 0), 0, 3, n) += (ga * d.mu_w.head(n).transpose()) -
-                                    (W.row(a).transpose() * d.A_ww.head(n).transpose());
+    K.block(L.w(a, 0), 0, 3, n) +=
+        (ga * d.mu_w.head(n).transpose()) - (W.row(a).transpose() * d.A_ww.head(n).transpose());
     if (L.ions) {
       K.block(L.w(a, 0), 0, 3, n) += P.row(a).transpose() * d.A_wp.head(n).transpose() +
-                                      M.row(a).transpose() * d.A_wm.head(n).transpose();
+                                     M.row(a).transpose() * d.A_wm.head(n).transpose();
       K.block(L.jp(a, 0), 0, 3, n) += ga * d.mu_plus.head(n).transpose() +
-                                       W.row(a).transpose() * d.A_wp.head(n).transpose() -
-                                       P.row(a).transpose() * d.A_pp.head(n).transpose();
+                                      W.row(a).transpose() * d.A_wp.head(n).transpose() -
+                                      P.row(a).transpose() * d.A_pp.head(n).transpose();
       K.block(L.jm(a, 0), 0, 3, n) += ga * d.mu_minus.head(n).transpose() +
-                                       W.row(a).transpose() * d.A_wm.head(n).transpose() -
-                                       M.row(a).transpose() * d.A_mm.head(n).transpose();
+                                      W.row(a).transpose() * d.A_wm.head(n).transpose() -
+                                      M.row(a).transpose() * d.A_mm.head(n).transpose();
     }
     // friction blocks (element-constant coefficients times the current mass matrix)
     for (int b = 0; b < 8; ++b) {
@@ -256,8 +262,8 @@ void tangent(const Integrals& I, const MixtureChemistry& c, const MixtureUnknown
         }
       }
   }
-  add_area_derivative(I, {-(x.p - step.prestress), c.mu_w, c.mu_plus, c.mu_minus},
-                      {0, 24, 48, 72}, L.ions ? 4 : 2, K);
+  add_area_derivative(I, {-(x.p - step.prestress), c.mu_w, c.mu_plus, c.mu_minus}, {0, 24, 48, 72},
+                      L.ions ? 4 : 2, K);
   if (L.ions)
     K.row(L.eta()) = (d.Qp - d.Qm).head(n).transpose();
 }

@@ -30,29 +30,29 @@ struct MixtureUnknowns {
 
 /// Element history and invariant data.
 struct MixtureHistory {
-  Real V0 = 0.0;       ///< reference volume [mm^3]
-  Real V_old = 0.0;    ///< volume at the last converged step [mm^3]
-  Real N_plus = 0.0;   ///< cation moles at the last converged step [mmol]
-  Real N_minus = 0.0;  ///< anion moles at the last converged step [mmol]
-  Real N_fixed = 0.0;  ///< fixed-charge moles at the end of the step [mEq]
+  Real V0 = 0.0;          ///< reference volume [mm^3]
+  Real V_old = 0.0;       ///< volume at the last converged step [mm^3]
+  Real N_plus = 0.0;      ///< cation moles at the last converged step [mmol]
+  Real N_minus = 0.0;     ///< anion moles at the last converged step [mmol]
+  Real N_fixed = 0.0;     ///< fixed-charge moles at the end of the step [mEq]
   Real N_fixed_old = 0.0; ///< fixed-charge moles at the last converged step [mEq]
 };
 
 /// Step data shared by all elements.
 struct MixtureStep {
-  Real dt = 1.0;          ///< step size [s]
-  Real prestress = 0.0;   ///< constant Cauchy prestress Pi0: momentum uses p - Pi0 (IC-3a)
+  Real dt = 1.0;        ///< step size [s]
+  Real prestress = 0.0; ///< constant Cauchy prestress Pi0: momentum uses p - Pi0 (IC-3a)
   const material::Electrochemistry* chem = nullptr;
 };
 
 /// Element-constant chemistry derived from the unknowns (also used for output).
 struct MixtureChemistry {
-  Real V = 0, Vw = 0, phi_w = 0;         ///< volume, water volume [mm^3], porosity
+  Real V = 0, Vw = 0, phi_w = 0;             ///< volume, water volume [mm^3], porosity
   Real c_plus = 0, c_minus = 0, c_fixed = 0; ///< concentrations per water volume [mmol/mm^3]
-  Real mu_w = 0;                         ///< bath-normalised water potential [MPa]
-  Real mu_plus = 0, mu_minus = 0;        ///< bath-normalised ion potentials [mJ/mmol]
+  Real mu_w = 0;                             ///< bath-normalised water potential [MPa]
+  Real mu_plus = 0, mu_minus = 0;            ///< bath-normalised ion potentials [mJ/mmol]
   Real A_ww = 0, A_wp = 0, A_wm = 0, A_pp = 0, A_mm = 0; ///< resistance coefficients
-  bool admissible = false;               ///< Vw > 0, N+- > 0, J > 0 everywhere
+  bool admissible = false;                               ///< Vw > 0, N+- > 0, J > 0 everywhere
 };
 
 /// Residual (natural rows, physical units: R^u [N], R^w [N], R^+- [mJ mm^2/mmol... see docs],

@@ -20,8 +20,7 @@ Donnan donnan(Real c_fixed, const material::MixtureProperties& m,
   Donnan d;
   d.c_plus = 0.5 * (c_fixed + std::sqrt(c_fixed * c_fixed + 4.0 * K * c_bath * c_bath));
   d.c_minus = d.c_plus - c_fixed;
-  d.pressure =
-      chem.RT() * (m.osmotic * (d.c_plus + d.c_minus) - 2.0 * chem.osmotic_bath * c_bath);
+  d.pressure = chem.RT() * (m.osmotic * (d.c_plus + d.c_minus) - 2.0 * chem.osmotic_bath * c_bath);
   d.eta = -chem.RT() * std::log(m.gamma_plus * d.c_plus / (chem.gamma_bath * c_bath));
   return d;
 }
@@ -40,8 +39,8 @@ MixtureTerm::MixtureTerm(const mesh::Mesh& mesh, const dofs::DofMap& dofs, Mixtu
                          std::vector<std::shared_ptr<const material::MixtureProperties>> props,
                          const material::Electrochemistry& chem,
                          std::optional<dofs::LoadCurve> fixed_charge_curve)
-    : mesh_(mesh), dofs_(dofs), fields_(fields), cells_(std::move(cells)),
-      props_(std::move(props)), chem_(chem), fixed_charge_curve_(std::move(fixed_charge_curve)) {
+    : mesh_(mesh), dofs_(dofs), fields_(fields), cells_(std::move(cells)), props_(std::move(props)),
+      chem_(chem), fixed_charge_curve_(std::move(fixed_charge_curve)) {
   TRIFEM_VERIFY(cells_.size() == props_.size(), "one mixture per cell expected");
   geometry_.reserve(cells_.size());
   history_.resize(cells_.size());
@@ -129,8 +128,7 @@ void MixtureTerm::scale(Index e, Real dt, LocalVector& r, LocalMatrix* K) const 
     *K = row.asDiagonal() * (*K) * col.asDiagonal();
 }
 
-bool MixtureTerm::evaluate(Index e, const EvalState& state, LocalVector& r,
-                           LocalMatrix* K) const {
+bool MixtureTerm::evaluate(Index e, const EvalState& state, LocalVector& r, LocalMatrix* K) const {
   const MixtureStep s = step(e, state.dt);
   if (!mixture_hex8(geometry_[e], unknowns(e, state.x), history_at(e, state.time), *props_[e], s,
                     MixtureLayout{ions(e)}, r, K))

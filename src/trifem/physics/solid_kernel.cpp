@@ -25,8 +25,8 @@ void fill_b(const Mat3& F, const fe::HexShapeGrad& g, BMatrix& B) {
 
 } // namespace
 
-bool solid_hex8(const fe::HexGeometry& geo, const fe::HexCoords& u,
-                const material::ElasticLaw& law, HexVector& f, HexMatrix* K) {
+bool solid_hex8(const fe::HexGeometry& geo, const fe::HexCoords& u, const material::ElasticLaw& law,
+                HexVector& f, HexMatrix* K) {
   f.setZero();
   if (K)
     K->setZero();

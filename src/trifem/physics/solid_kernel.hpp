@@ -19,8 +19,8 @@ inline Mat3 deformation_gradient(const fe::HexShapeGrad& dN_dX, const fe::HexCoo
 /// K_ab = int [ (dN_a . S dN_b) I + B_a^T D B_b ] dV (Bonet & Wood eqs 9.13, 9.44).
 /// DOF order: node-major (u_0x, u_0y, u_0z, u_1x, ...). Returns false if J <= 0 at a Gauss
 /// point.
-bool solid_hex8(const fe::HexGeometry& geo, const fe::HexCoords& u,
-                const material::ElasticLaw& law, HexVector& f, HexMatrix* K);
+bool solid_hex8(const fe::HexGeometry& geo, const fe::HexCoords& u, const material::ElasticLaw& law,
+                HexVector& f, HexMatrix* K);
 
 /// Volume-averaged Cauchy stress and J of a hex8 (for output).
 struct CellStress {

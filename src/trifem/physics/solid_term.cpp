@@ -8,8 +8,7 @@ namespace trifem::physics {
 SolidTerm::SolidTerm(const mesh::Mesh& mesh, const dofs::DofMap& dofs, dofs::FieldId displacement,
                      std::vector<Index> cells,
                      std::vector<std::shared_ptr<const material::ElasticLaw>> laws)
-    : mesh_(mesh), dofs_(dofs), u_(displacement), cells_(std::move(cells)),
-      laws_(std::move(laws)) {
+    : mesh_(mesh), dofs_(dofs), u_(displacement), cells_(std::move(cells)), laws_(std::move(laws)) {
   TRIFEM_VERIFY(cells_.size() == laws_.size(), "one law per cell expected");
   geometry_.reserve(cells_.size());
   for (Index c : cells_) {
@@ -45,8 +44,8 @@ fe::HexCoords SolidTerm::displacements(Index e, const Vector& x) const {
 bool SolidTerm::evaluate(Index e, const EvalState& state, LocalVector& r, LocalMatrix* K) const {
   HexVector f;
   HexMatrix Ke;
-  const bool ok = solid_hex8(geometry_[e], displacements(e, state.x), *laws_[e], f,
-                             K ? &Ke : nullptr);
+  const bool ok =
+      solid_hex8(geometry_[e], displacements(e, state.x), *laws_[e], f, K ? &Ke : nullptr);
   if (!ok)
     return false;
   r = f;

@@ -19,7 +19,8 @@ public:
   /// `cells[i]` uses `laws[i]`; reference geometry is computed once here. Throws InputError
   /// naming the cell if a cell is inverted or degenerate in the reference configuration.
   SolidTerm(const mesh::Mesh& mesh, const dofs::DofMap& dofs, dofs::FieldId displacement,
-            std::vector<Index> cells, std::vector<std::shared_ptr<const material::ElasticLaw>> laws);
+            std::vector<Index> cells,
+            std::vector<std::shared_ptr<const material::ElasticLaw>> laws);
 
   std::string name() const override { return "solid"; }
   Index num_elements() const override { return static_cast<Index>(cells_.size()); }

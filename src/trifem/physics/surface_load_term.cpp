@@ -20,15 +20,14 @@ void facet_dofs(const mesh::Facet& f, const dofs::DofMap& map, dofs::FieldId u,
 PressureTerm::PressureTerm(const mesh::Mesh& mesh, const dofs::DofMap& dofs,
                            dofs::FieldId displacement, std::vector<mesh::Facet> facets,
                            Real magnitude, dofs::LoadCurve curve)
-    : mesh_(mesh), dofs_(dofs), u_(displacement), facets_(std::move(facets)),
-      magnitude_(magnitude), curve_(std::move(curve)) {}
+    : mesh_(mesh), dofs_(dofs), u_(displacement), facets_(std::move(facets)), magnitude_(magnitude),
+      curve_(std::move(curve)) {}
 
 void PressureTerm::element_dofs(Index e, std::vector<Index>& dofs) const {
   facet_dofs(facets_[e], dofs_, u_, dofs);
 }
 
-bool PressureTerm::evaluate(Index e, const EvalState& state, LocalVector& r,
-                            LocalMatrix* K) const {
+bool PressureTerm::evaluate(Index e, const EvalState& state, LocalVector& r, LocalMatrix* K) const {
   const mesh::Facet& f = facets_[e];
   fe::QuadCoords x;
   for (int a = 0; a < 4; ++a)
@@ -46,8 +45,8 @@ bool PressureTerm::evaluate(Index e, const EvalState& state, LocalVector& r,
 TractionTerm::TractionTerm(const mesh::Mesh& mesh, const dofs::DofMap& dofs,
                            dofs::FieldId displacement, std::vector<mesh::Facet> facets,
                            Vec3 traction, dofs::LoadCurve curve)
-    : mesh_(mesh), dofs_(dofs), u_(displacement), facets_(std::move(facets)),
-      traction_(traction), curve_(std::move(curve)) {
+    : mesh_(mesh), dofs_(dofs), u_(displacement), facets_(std::move(facets)), traction_(traction),
+      curve_(std::move(curve)) {
   nodal_area_.reserve(facets_.size());
   for (const auto& f : facets_) {
     fe::QuadCoords X;
@@ -67,8 +66,7 @@ void TractionTerm::element_dofs(Index e, std::vector<Index>& dofs) const {
   facet_dofs(facets_[e], dofs_, u_, dofs);
 }
 
-bool TractionTerm::evaluate(Index e, const EvalState& state, LocalVector& r,
-                            LocalMatrix* K) const {
+bool TractionTerm::evaluate(Index e, const EvalState& state, LocalVector& r, LocalMatrix* K) const {
   const Vec3 t = traction_ * curve_(state.time);
   r.resize(12);
   for (int a = 0; a < 4; ++a)

@@ -19,11 +19,16 @@ double seconds_since(Clock::time_point start) {
 
 const char* to_string(SolveStatus status) {
   switch (status) {
-  case SolveStatus::Converged: return "converged";
-  case SolveStatus::Inadmissible: return "inadmissible state (e.g. J <= 0)";
-  case SolveStatus::Diverged: return "diverged";
-  case SolveStatus::MaxIterations: return "maximum Newton iterations reached";
-  case SolveStatus::FactorizationFailed: return "linear solver failed (singular matrix?)";
+  case SolveStatus::Converged:
+    return "converged";
+  case SolveStatus::Inadmissible:
+    return "inadmissible state (e.g. J <= 0)";
+  case SolveStatus::Diverged:
+    return "diverged";
+  case SolveStatus::MaxIterations:
+    return "maximum Newton iterations reached";
+  case SolveStatus::FactorizationFailed:
+    return "linear solver failed (singular matrix?)";
   }
   return "unknown";
 }
@@ -94,8 +99,8 @@ SolveStatus NewtonSolver::factor_and_solve(NonlinearProblem& problem, Linearizat
   return solved ? SolveStatus::Converged : SolveStatus::FactorizationFailed;
 }
 
-SolveStatus NewtonSolver::line_search(NonlinearProblem& problem, const Vector& dx,
-                                      const Vector& r0, Real& step, Linearization& lin) {
+SolveStatus NewtonSolver::line_search(NonlinearProblem& problem, const Vector& dx, const Vector& r0,
+                                      Real& step, Linearization& lin) {
   // Energy line search (Bathe, FE Procedures, sec. 8.4.2): find s with g(s) = dx . R(x + s dx)
   // small compared with g(0); secant updates of s, halving after inadmissible trials.
   const Real g0 = dx.dot(r0);
@@ -174,8 +179,8 @@ NewtonReport NewtonSolver::solve(NonlinearProblem& problem) {
     }
     if (k == settings_.max_iterations) {
       report.status = SolveStatus::MaxIterations;
-      report.failure_reason = fmt::format("no convergence in {} iterations (residual {:.3e})", k,
-                                          merit);
+      report.failure_reason =
+          fmt::format("no convergence in {} iterations (residual {:.3e})", k, merit);
       return report;
     }
     const SolveStatus solved = factor_and_solve(problem, lin, dx);
@@ -188,8 +193,7 @@ NewtonReport NewtonSolver::solve(NonlinearProblem& problem) {
     const SolveStatus searched = line_search(problem, dx, r0, step, lin);
     if (searched != SolveStatus::Converged) {
       report.status = searched;
-      report.failure_reason =
-          "every trial step of the line search inverts an element (J <= 0)";
+      report.failure_reason = "every trial step of the line search inverts an element (J <= 0)";
       return report;
     }
     log::debug("    iteration {:2d}: residual {:.3e}, step {:.3g}", k + 1,

@@ -54,13 +54,13 @@ private:
   bool residual_converged(const NonlinearProblem& problem, const Vector& r) const;
   bool increment_converged(const NonlinearProblem& problem, const Vector& dx, Real step) const;
   SolveStatus factor_and_solve(NonlinearProblem& problem, Linearization& lin, Vector& dx);
-  SolveStatus line_search(NonlinearProblem& problem, const Vector& dx, const Vector& r0,
-                          Real& step, Linearization& lin);
+  SolveStatus line_search(NonlinearProblem& problem, const Vector& dx, const Vector& r0, Real& step,
+                          Linearization& lin);
 
   NewtonSettings settings_;
   std::unique_ptr<linalg::LinearSolver> linear_;
   int analyzed_pattern_ = -1;
-  std::vector<Real> reference_;         ///< per-field reference residual (running maximum)
+  std::vector<Real> reference_; ///< per-field reference residual (running maximum)
   PhaseTimes times_;
 };
 

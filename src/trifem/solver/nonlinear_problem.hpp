@@ -30,9 +30,9 @@ struct FieldScale {
 
 /// The linearisation of the problem at its current state.
 struct Linearization {
-  Vector residual;        ///< R at free equations
-  Vector constraint_rhs;  ///< K_fc * (pending increment of constrained DOFs)
-  SparseMatrix jacobian;  ///< dR/dx at free equations (pattern fixed while pattern_id is)
+  Vector residual;       ///< R at free equations
+  Vector constraint_rhs; ///< K_fc * (pending increment of constrained DOFs)
+  SparseMatrix jacobian; ///< dR/dx at free equations (pattern fixed while pattern_id is)
 };
 
 /// A nonlinear system R(x) = 0 over free equations, with prescribed DOFs that may still have

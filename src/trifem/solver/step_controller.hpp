@@ -15,9 +15,9 @@ struct StepSettings {
   Real dt = 0.1;
   Real dt_min = 1e-7;
   Real dt_max = 0.1;
-  Real growth = 1.5;         ///< factor after an easy step
-  Real cutback = 0.5;        ///< factor after a failed step
-  int target_iterations = 6; ///< a step is easy if it converged in at most this many iterations
+  Real growth = 1.5;             ///< factor after an easy step
+  Real cutback = 0.5;            ///< factor after a failed step
+  int target_iterations = 6;     ///< a step is easy if it converged in at most this many iterations
   std::vector<Real> must_points; ///< times every step sequence must hit exactly
 };
 

@@ -5,8 +5,8 @@
 
 namespace trifem::solver {
 
-RunReport run_time_loop(TransientProblem& problem, NewtonSolver& newton,
-                        StepController& controller, const StepObserver& observer) {
+RunReport run_time_loop(TransientProblem& problem, NewtonSolver& newton, StepController& controller,
+                        const StepObserver& observer) {
   RunReport run;
   while (!controller.finished()) {
     const Real dt = controller.next_step();

@@ -12,8 +12,8 @@ namespace trifem::solver {
 
 /// Information about one accepted step, passed to the observer.
 struct StepInfo {
-  int step = 0;     ///< 1-based count of accepted steps
-  Real time = 0.0;  ///< end time of the step
+  int step = 0;    ///< 1-based count of accepted steps
+  Real time = 0.0; ///< end time of the step
   Real dt = 0.0;
   const NewtonReport* newton = nullptr;
 };
@@ -33,7 +33,7 @@ struct RunReport {
 using StepObserver = std::function<void(const StepInfo&)>;
 
 /// Advances `problem` from the controller's start to its end time.
-RunReport run_time_loop(TransientProblem& problem, NewtonSolver& newton,
-                        StepController& controller, const StepObserver& observer);
+RunReport run_time_loop(TransientProblem& problem, NewtonSolver& newton, StepController& controller,
+                        const StepObserver& observer);
 
 } // namespace trifem::solver

@@ -12,7 +12,9 @@ inline Mat3 green_lagrange(const Mat3& F) {
 }
 
 /// Right Cauchy-Green tensor C = F^T F.
-inline Mat3 right_cauchy_green(const Mat3& F) { return F.transpose() * F; }
+inline Mat3 right_cauchy_green(const Mat3& F) {
+  return F.transpose() * F;
+}
 
 /// Cofactor J F^{-T}, the Nanson map n da = Cof(F) N dA (Holzapfel eq. 2.55).
 Mat3 cofactor(const Mat3& F);
@@ -23,6 +25,8 @@ inline Mat3 cauchy_from_pk2(const Mat3& F, const Mat3& S) {
 }
 
 /// First Piola-Kirchhoff stress P = F S.
-inline Mat3 pk1_from_pk2(const Mat3& F, const Mat3& S) { return F * S; }
+inline Mat3 pk1_from_pk2(const Mat3& F, const Mat3& S) {
+  return F * S;
+}
 
 } // namespace trifem::kinematics

@@ -29,8 +29,8 @@ TEST(DofMap, NumbersFieldsContiguouslyAndSplitsFreeAndConstrained) {
 }
 
 TEST(Dirichlet, PrescribedValuesFollowTheCurve) {
-  dofs::DirichletCondition c{{1, 3}, 2.0,
-                             dofs::LoadCurve({{0, 0}, {2, 1}}, dofs::Interpolation::Linear)};
+  dofs::DirichletCondition c{
+      {1, 3}, 2.0, dofs::LoadCurve({{0, 0}, {2, 1}}, dofs::Interpolation::Linear)};
   Vector x = Vector::Zero(4);
   dofs::prescribed_values({c}, 1.0, x);
   EXPECT_DOUBLE_EQ(x[1], 1.0);

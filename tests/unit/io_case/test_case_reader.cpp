@@ -294,9 +294,10 @@ TEST(CaseReader, TriphasicCaseBoundaryConditions) {
 }
 
 TEST(CaseReader, BathSurfaceIsRead) {
-  const CaseSpec c = parse_case(
-      kBase + kCartilage + "\n[[boundary.bath]]\nsurface = \"block.xmax\"\nconcentration = 1.5e-5\ncurve = \"ramp\"\n",
-      kMemoryFile);
+  const CaseSpec c = parse_case(kBase + kCartilage +
+                                    "\n[[boundary.bath]]\nsurface = \"block.xmax\"\nconcentration "
+                                    "= 1.5e-5\ncurve = \"ramp\"\n",
+                                kMemoryFile);
   ASSERT_EQ(c.baths.size(), 1u);
   EXPECT_EQ(c.baths[0].surface, "block.xmax");
   EXPECT_DOUBLE_EQ(c.baths[0].concentration, 1.5e-5);

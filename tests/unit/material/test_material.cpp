@@ -23,7 +23,9 @@ Mat3 random_deformation(unsigned seed) {
   return F;
 }
 
-material::ParameterValues params(Real E, Real nu) { return {{"E", E}, {"nu", nu}}; }
+material::ParameterValues params(Real E, Real nu) {
+  return {{"E", E}, {"nu", nu}};
+}
 
 } // namespace
 
@@ -71,7 +73,8 @@ TEST(MaterialRegistry, EveryLawIsObjectiveAndHasMajorSymmetry) {
     const Mat3 F = random_deformation(7);
     const Mat3 Q = rotation(0.7, Vec3(1, 2, 3));
     const Mat3 sigma = kinematics::cauchy_from_pk2(F, m->stress(F.transpose() * F));
-    const Mat3 sigma_rot = kinematics::cauchy_from_pk2(Q * F, m->stress((Q * F).transpose() * Q * F));
+    const Mat3 sigma_rot =
+        kinematics::cauchy_from_pk2(Q * F, m->stress((Q * F).transpose() * Q * F));
     EXPECT_LE((Q * sigma * Q.transpose() - sigma_rot).norm(), 1e-12 * sigma.norm()) << law.type;
     const Mat6 D = m->stress_tangent(F.transpose() * F).D;
     EXPECT_LE((D - D.transpose()).norm(), 1e-12 * D.norm()) << law.type;

@@ -26,23 +26,33 @@ std::span<const Index> ContactSurface::node_facets(Index k) const {
 }
 
 void ContactSurface::build_adjacency() {
-  // Node -> facets (CSR, facets ascending because they are visited in order).
+  build_node_facets();
+  build_edge_neighbours();
+}
+
+void ContactSurface::build_node_facets() {
+  // CSR; facets are ascending because they are visited in order. A degenerate facet may repeat
+  // a node: only its first occurrence counts.
+  const auto first = [](const mesh::Facet& facet, int a) {
+    return std::find(facet.nodes.begin(), facet.nodes.begin() + a, facet.nodes[a]) ==
+           facet.nodes.begin() + a;
+  };
   node_facet_offsets_.assign(nodes_.size() + 1, 0);
   for (const mesh::Facet& facet : facets_)
-    for (Index n : facet.nodes)
-      ++node_facet_offsets_[local_node(n) + 1];
+    for (int a = 0; a < 4; ++a)
+      node_facet_offsets_[local_node(facet.nodes[a]) + 1] += first(facet, a) ? 1 : 0;
   for (std::size_t k = 0; k < nodes_.size(); ++k)
     node_facet_offsets_[k + 1] += node_facet_offsets_[k];
   node_facet_list_.resize(node_facet_offsets_.back());
   std::vector<Index> fill(node_facet_offsets_.begin(), node_facet_offsets_.end() - 1);
   for (Index f = 0; f < num_facets(); ++f)
-    for (Index n : facets_[f].nodes) {
-      const Index k = local_node(n);
-      // A degenerate facet may repeat a node; list the facet once.
-      if (fill[k] == node_facet_offsets_[k] || node_facet_list_[fill[k] - 1] != f)
-        node_facet_list_[fill[k]++] = f;
-    }
-  // Edges: sort (min node, max node, facet edge) and pair equal keys.
+    for (int a = 0; a < 4; ++a)
+      if (first(facets_[f], a))
+        node_facet_list_[fill[local_node(facets_[f].nodes[a])]++] = f;
+}
+
+void ContactSurface::build_edge_neighbours() {
+  // Sort (min node, max node, 4 facet + edge) and pair equal node pairs.
   std::vector<std::tuple<Index, Index, Index>> edges;
   edges.reserve(4 * facets_.size());
   for (Index f = 0; f < num_facets(); ++f)

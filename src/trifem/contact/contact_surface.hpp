@@ -68,6 +68,8 @@ public:
 
 private:
   void build_adjacency();
+  void build_node_facets();
+  void build_edge_neighbours();
 
   std::vector<mesh::Facet> facets_;
   std::vector<Index> nodes_;

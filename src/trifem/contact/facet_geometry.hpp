@@ -12,13 +12,13 @@ namespace trifem::contact {
 /// Geometry of the bilinear facet x(ξ) = Σ_a N_a(ξ) x_a at one point ξ = (ξ^1, ξ^2) of the
 /// reference square [-1,1]² (nodes counter-clockwise from (-1,-1), right-hand rule = outward).
 struct FacetPoint {
-  fe::QuadShape N;             ///< N_a(ξ)
-  fe::QuadShapeGrad dN;        ///< N_{a,α}(ξ) (row a, column α)
-  Vec3 x;                      ///< x(ξ)
-  std::array<Vec3, 2> t;       ///< covariant tangents t_α = ∂x/∂ξ^α
-  Vec3 x12;                    ///< twist x_{,12} = Σ_a x_a ξ_a η_a / 4; x_{,11} = x_{,22} = 0
-  Vec3 normal;                 ///< n = t_1 × t_2 / |t_1 × t_2| (zero if the facet is degenerate)
-  Real jacobian = 0;           ///< |t_1 × t_2| (area scale: da = jacobian dξ^1 dξ^2)
+  fe::QuadShape N;       ///< N_a(ξ)
+  fe::QuadShapeGrad dN;  ///< N_{a,α}(ξ) (row a, column α)
+  Vec3 x;                ///< x(ξ)
+  std::array<Vec3, 2> t; ///< covariant tangents t_α = ∂x/∂ξ^α
+  Vec3 x12;              ///< twist x_{,12} = Σ_a x_a ξ_a η_a / 4; x_{,11} = x_{,22} = 0
+  Vec3 normal;           ///< n = t_1 × t_2 / |t_1 × t_2| (zero if the facet is degenerate)
+  Real jacobian = 0;     ///< |t_1 × t_2| (area scale: da = jacobian dξ^1 dξ^2)
 
   /// Metric a_αβ = t_α · t_β.
   Mat2 metric() const;

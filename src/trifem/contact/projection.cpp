@@ -26,7 +26,9 @@ Mat2 distance_hessian(const FacetPoint& fp, const Vec3& d) {
   return H;
 }
 
-bool positive_definite(const Mat2& H) { return H(0, 0) > 0 && H.determinant() > 0; }
+bool positive_definite(const Mat2& H) {
+  return H(0, 0) > 0 && H.determinant() > 0;
+}
 
 /// Newton direction for r_α(ξ) = (p - x(ξ))·t_α = 0: H Δξ = r with the full Hessian when it is
 /// positive definite, else with the metric a_αβ (Gauss-Newton; always a descent direction).
@@ -167,8 +169,7 @@ std::optional<Projection> project_onto_facet(const Vec3& p, const fe::QuadCoords
   };
   NewtonResult res = newton_closest_point(p, X, Vec2::Zero(), h, options.max_iterations);
   if (res.status == NewtonStatus::Failed)
-    res = newton_closest_point(p, X, facet_corner(nearest_corner(p, X)), h,
-                               options.max_iterations);
+    res = newton_closest_point(p, X, facet_corner(nearest_corner(p, X)), h, options.max_iterations);
   consider(res);
   // Safeguard for strongly twisted facets (several stationary points): Newton again from the
   // nearest coarse sample unless it lies in the basin of the interior point already found.
@@ -227,6 +228,12 @@ std::optional<Projection> select(const Vec3& p, const ContactSurface& surface,
   return best;
 }
 
+/// The search only sees facets within its radius: never accept farther projections.
+ProjectionOptions within_radius(ProjectionOptions options, const BucketSearch& search) {
+  options.search_distance = std::min(options.search_distance, search.radius());
+  return options;
+}
+
 } // namespace
 
 std::optional<Projection> project(const Vec3& p, const ContactSurface& surface,
@@ -242,7 +249,7 @@ std::optional<Projection> project(const Vec3& p, const ContactSurface& surface,
                                   const ProjectionOptions& options) {
   std::vector<Index> candidates;
   search.candidates(p, candidates);
-  return select(p, surface, x, candidates, options);
+  return select(p, surface, x, candidates, within_radius(options, search));
 }
 
 std::vector<std::optional<Projection>> project_nodes(const std::vector<Index>& nodes,
@@ -256,7 +263,7 @@ std::vector<std::optional<Projection>> project_nodes(const std::vector<Index>& n
   for (Index node : nodes) {
     const Vec3 p = x(node);
     search.candidates(p, candidates);
-    out.push_back(select(p, surface, x, candidates, options));
+    out.push_back(select(p, surface, x, candidates, within_radius(options, search)));
   }
   return out;
 }

@@ -22,15 +22,15 @@ namespace trifem::contact {
 /// so gap and normal are continuous where the projection leaves the facet (there p - x ∥ n).
 /// If |p - x(ξ)| vanishes (p on an edge) the facet normal n(ξ) is used instead.
 struct Projection {
-  Index facet = -1;                 ///< facet index in the ContactSurface
-  Vec2 xi = Vec2::Zero();           ///< reference coordinates on the facet
-  Real gap = 0;                     ///< signed gap, > 0 outside (separation), < 0 penetration
-  Vec3 normal = Vec3::Zero();       ///< unit normal (see above)
-  Vec3 point = Vec3::Zero();        ///< x(ξ): the closest point on the surface
-  bool on_boundary = false;         ///< clamped to a facet edge or corner
-  std::array<bool, 2> fixed{};      ///< which ξ components are clamped to ±1 (on_boundary only)
-  bool on_free_boundary = false;    ///< clamped to an edge with no neighbour facet: p lies
-                                    ///< outside the surface's coverage (candidate for inactive)
+  Index facet = -1;              ///< facet index in the ContactSurface
+  Vec2 xi = Vec2::Zero();        ///< reference coordinates on the facet
+  Real gap = 0;                  ///< signed gap, > 0 outside (separation), < 0 penetration
+  Vec3 normal = Vec3::Zero();    ///< unit normal (see above)
+  Vec3 point = Vec3::Zero();     ///< x(ξ): the closest point on the surface
+  bool on_boundary = false;      ///< clamped to a facet edge or corner
+  std::array<bool, 2> fixed{};   ///< which ξ components are clamped to ±1 (on_boundary only)
+  bool on_free_boundary = false; ///< clamped to an edge with no neighbour facet: p lies
+                                 ///< outside the surface's coverage (candidate for inactive)
 };
 
 /// Tolerances of the projection.
@@ -39,12 +39,19 @@ struct ProjectionOptions {
   Real xi_tolerance = 1e-6;
   /// Points whose distance |p - x(ξ)| to the surface exceeds this get no projection.
   Real search_distance = std::numeric_limits<Real>::infinity();
-  /// Newton iterations per start (facet centre, then nearest corner).
+  /// Newton iterations per start (facet centre, nearest corner, nearest coarse sample).
   int max_iterations = 30;
 };
 
 /// Projection of p onto one facet with current nodal coordinates X (`facet` is left at -1 and
-/// `on_free_boundary` false: the facet knows no neighbours). Never empty unless X is degenerate.
+/// `on_free_boundary` false: the facet knows no neighbours). Newton on r_α(ξ) = (p - x(ξ))·t_α
+/// = 0 with the full Hessian a_αβ - (p - x)·x_{,αβ} (Gauss-Newton while it is indefinite,
+/// steps ≤ 0.5, backtracking on |p - x|²) from the facet centre, then from the nearest corner
+/// if that fails; a second Newton from the nearest of 5 x 5 samples guards strongly twisted
+/// facets with several stationary points. The nearest of the accepted interior point(s) and the
+/// nearest edge/corner point is returned (interior on ties within 1e-10 h). Converges to
+/// round-off (|Δξ| ≤ 1e-12). Empty only for a degenerate X (all nodes coincident) or a
+/// non-finite p.
 std::optional<Projection> project_onto_facet(const Vec3& p, const fe::QuadCoords& X,
                                              const ProjectionOptions& options = {});
 
@@ -56,7 +63,8 @@ std::optional<Projection> project(const Vec3& p, const ContactSurface& surface,
                                   const NodePositions& x, const ProjectionOptions& options = {});
 
 /// As above, but testing only the candidates of `search` (built for `surface` in the same x).
-/// Exact (same result as brute force) if search_distance ≤ search.radius().
+/// The effective search distance is min(search_distance, search.radius()); with it the
+/// result equals the brute-force one.
 std::optional<Projection> project(const Vec3& p, const ContactSurface& surface,
                                   const NodePositions& x, const BucketSearch& search,
                                   const ProjectionOptions& options = {});

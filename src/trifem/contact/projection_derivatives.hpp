@@ -39,6 +39,20 @@ struct ProjectionDerivatives {
 /// differentiable: dnormal is returned as zero and dgap as above.
 ProjectionDerivatives projection_derivatives(const Projection& pr, const fe::QuadCoords& X);
 
+/// Same, with the facet coordinates taken from `surface` (facet pr.facet) in configuration x.
+inline ProjectionDerivatives projection_derivatives(const Projection& pr,
+                                                    const ContactSurface& surface,
+                                                    const NodePositions& x) {
+  return projection_derivatives(pr, surface.coords(pr.facet, x));
+}
+
+/// Mesh nodes of the stencil in column order: (point_node, nodes of facet `facet`).
+inline std::array<Index, 5> stencil_nodes(Index point_node, const ContactSurface& surface,
+                                          Index facet) {
+  const auto& n = surface.facet(facet).nodes;
+  return {point_node, n[0], n[1], n[2], n[3]};
+}
+
 /// Interpolated nodal field on the facet, f(ξ) = Σ_a N_a(ξ) f_a (row a of `f` = f_a).
 template <int K>
 Eigen::Matrix<Real, K, 1> interpolate(const Eigen::Matrix<Real, 4, K>& f, const Vec2& xi) {

@@ -89,12 +89,18 @@ inline Real sampled_distance(const Vec3& p, const fe::QuadCoords& X) {
   return best_d;
 }
 
-/// Sampled distance of p to every facet of s.
+/// Sampled distance of p to every facet of s whose node box lies within `cutoff` of p; the
+/// other facets are provably farther than `cutoff` (the patch lies in the box of its nodes)
+/// and get +infinity.
 inline std::vector<Real> sampled_distances(const Vec3& p, const ContactSurface& s,
-                                           const NodePositions& x) {
-  std::vector<Real> d(s.num_facets());
-  for (Index f = 0; f < s.num_facets(); ++f)
-    d[f] = sampled_distance(p, s.coords(f, x));
+                                           const NodePositions& x, Real cutoff) {
+  std::vector<Real> d(s.num_facets(), std::numeric_limits<Real>::infinity());
+  for (Index f = 0; f < s.num_facets(); ++f) {
+    const fe::QuadCoords X = s.coords(f, x);
+    const Vec3 lo = X.colwise().minCoeff().transpose(), hi = X.colwise().maxCoeff().transpose();
+    if ((p - p.cwiseMax(lo).cwiseMin(hi)).norm() <= cutoff)
+      d[f] = sampled_distance(p, X);
+  }
   return d;
 }
 

@@ -9,7 +9,8 @@ using namespace trifem;
 using namespace trifem::contact;
 
 TEST(ContactSurface, NodesAndAdjacency) {
-  const auto g = test::grid_surface(3, 2, 1.0, [](Real, Real) { return 0.0; }, 0.0, 1);
+  const auto g = test::grid_surface(
+      3, 2, 1.0, [](Real, Real) { return 0.0; }, 0.0, 1);
   const ContactSurface s(g.surface);
   EXPECT_EQ(s.num_facets(), 6);
   EXPECT_EQ(s.num_nodes(), 12);
@@ -31,7 +32,8 @@ TEST(ContactSurface, NodesAndAdjacency) {
 }
 
 TEST(ContactSurface, PositionsFromArrayOrCallable) {
-  const auto g = test::grid_surface(2, 2, 0.5, [](Real x, Real) { return x * x; }, 0.1, 2);
+  const auto g = test::grid_surface(
+      2, 2, 0.5, [](Real x, Real) { return x * x; }, 0.1, 2);
   const ContactSurface s(g.surface);
   const NodePositions from_array(g.x);
   const NodePositions from_fn([&g](Index i) { return Vec3(g.x[i] + Vec3(1, 2, 3)); });
@@ -137,8 +139,7 @@ TEST(BucketSearch, SameClosestFacetAsBruteForceOn10kFacets) {
   std::printf("[ search ] 10k facets: build %.2f ms, %zu entries, bucket %.3g; per query: "
               "search %.1f us, brute force %.1f us; %d projected (%d on boundary)\n",
               1e3 * std::chrono::duration<Real>(t1 - t0).count(), search.num_entries(),
-              search.bucket_size(), 1e6 * t_search / 400, 1e6 * t_brute / 400, projected,
-              boundary);
+              search.bucket_size(), 1e6 * t_search / 400, 1e6 * t_brute / 400, projected, boundary);
   EXPECT_LT(search.num_entries(), 20u * 10000u); // O(n) storage
 }
 
@@ -147,7 +148,8 @@ TEST(BucketSearch, EmptySurfaceAndFarPoints) {
   const std::vector<Vec3> none;
   const BucketSearch search(empty, none, 1.0);
   EXPECT_TRUE(search.candidates(Vec3::Zero()).empty());
-  const auto g = test::grid_surface(4, 4, 1.0, [](Real, Real) { return 0.0; }, 0.0, 8);
+  const auto g = test::grid_surface(
+      4, 4, 1.0, [](Real, Real) { return 0.0; }, 0.0, 8);
   const ContactSurface s(g.surface);
   const BucketSearch s2(s, g.x, 0.5);
   EXPECT_TRUE(s2.candidates(Vec3(2, 2, 0.6)).empty());

@@ -178,7 +178,8 @@ TEST(Projection, ConvexCornerOfABoxGivesTheCornerNode) {
 }
 
 TEST(Projection, SearchDistanceAndProjectNodes) {
-  const auto g = test::grid_surface(4, 4, 1.0, [](Real, Real) { return 0.0; }, 0.1, 13);
+  const auto g = test::grid_surface(
+      4, 4, 1.0, [](Real, Real) { return 0.0; }, 0.1, 13);
   const ContactSurface s(g.surface);
   ProjectionOptions opt;
   opt.search_distance = 0.3;
@@ -215,7 +216,7 @@ TEST(Projection, SlidingPointAlwaysFindsTheClosestFacet) {
       ASSERT_TRUE(pr) << "k " << k;
       visited.insert(pr->facet);
       EXPECT_EQ(pr->gap > 0, offset > 0);
-      const std::vector<Real> ref = test::sampled_distances(p, s, g.x);
+      const std::vector<Real> ref = test::sampled_distances(p, s, g.x, std::abs(pr->gap) + 1e-9);
       const auto best = std::min_element(ref.begin(), ref.end());
       // Nothing on any facet is closer than the projection, and the chosen facet is the one
       // containing the closest point (up to sampling resolution where two facets tie).

@@ -196,3 +196,35 @@ TEST(ProjectionDerivatives, GapVariationIsExactAtClosestPoint) {
       pr.normal.transpose() * Dd + pr.gap * pr.normal.transpose() * d.dnormal;
   EXPECT_LE((chain - d.dgap).norm(), 1e-13 * d.dgap.norm());
 }
+
+TEST(ProjectionDerivatives, StencilOfASlaveNodeOnAMeshSurface) {
+  // Assembly-style use: project a slave mesh node onto a warped grid surface through the
+  // search, then check the derivatives w.r.t. the mesh coordinates of stencil_nodes().
+  const auto z = [](Real x, Real y) { return 0.2 * std::sin(3 * x) * std::cos(2 * y); };
+  auto g = test::grid_surface(6, 6, 0.2, z, 0.15, 26);
+  const ContactSurface s(g.surface);
+  const Index slave = static_cast<Index>(g.x.size());
+  g.x.emplace_back(0.53, 0.61, z(0.53, 0.61) + 0.03);
+  const auto project_slave = [&](const std::vector<Vec3>& x) {
+    const BucketSearch search(s, x, 0.1);
+    return *project(x[slave], s, x, search);
+  };
+  const Projection pr = project_slave(g.x);
+  ASSERT_FALSE(pr.on_boundary);
+  const ProjectionDerivatives d = projection_derivatives(pr, s, g.x);
+  const std::array<Index, 5> nodes = stencil_nodes(slave, s, pr.facet);
+  Errors e;
+  for (int j = 0; j < kStencil; ++j) {
+    std::vector<Vec3> xp = g.x, xm = g.x;
+    xp[nodes[j / 3]][j % 3] += 1e-6;
+    xm[nodes[j / 3]][j % 3] -= 1e-6;
+    const Projection a = project_slave(xp), b = project_slave(xm);
+    ASSERT_EQ(a.facet, pr.facet);
+    ASSERT_EQ(b.facet, pr.facet);
+    e.xi = std::max(e.xi, (d.dxi.col(j) - (a.xi - b.xi) / 2e-6).norm() / d.dxi.norm());
+    e.gap = std::max(e.gap, std::abs(d.dgap(j) - (a.gap - b.gap) / 2e-6) / d.dgap.norm());
+    e.normal = std::max(e.normal, (d.dnormal.col(j) - (a.normal - b.normal) / 2e-6).norm() /
+                                      d.dnormal.norm());
+  }
+  report("slave node on mesh surface", e);
+}

@@ -86,15 +86,20 @@ Assembler::Assembler(const dofs::DofMap& map, std::vector<const physics::Term*> 
                      const dofs::NodalFrames* frames)
     : map_(map), terms_(std::move(terms)), frames_(frames) {
   TRIFEM_VERIFY(map.finalized(), "the DOF map must be finalized before assembly");
-  stencils_.reserve(terms_.size());
+  rebuild();
+}
+
+void Assembler::rebuild() {
+  stencils_.clear();
+  colours_.clear();
   for (const physics::Term* t : terms_) {
     stencils_.push_back(collect_stencils(*t));
-    colours_.push_back(colour_elements(stencils_.back(), map.num_dofs()));
+    colours_.push_back(colour_elements(stencils_.back(), map_.num_dofs()));
   }
   std::vector<const Stencils*> all;
   for (const auto& s : stencils_)
     all.push_back(&s);
-  pattern_ = build_pattern(map, all);
+  pattern_ = build_pattern(map_, all);
 }
 
 AssembledSystem Assembler::make_system() const {

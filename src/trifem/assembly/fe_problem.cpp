@@ -41,6 +41,14 @@ void FeProblem::set_state(const Vector& x) {
 }
 
 solver::SolveStatus FeProblem::linearize(solver::Linearization& lin, bool with_jacobian) {
+  bool changed = false;
+  for (auto& t : terms_)
+    changed = t->prepare(eval_state()) || changed;
+  if (changed) {
+    assembler_->rebuild();
+    system_ = assembler_->make_system();
+    ++pattern_id_;
+  }
   if (!assembler_->assemble(eval_state(), system_, with_jacobian))
     return solver::SolveStatus::Inadmissible;
   const Index neq = map_.num_equations();

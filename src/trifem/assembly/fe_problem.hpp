@@ -32,6 +32,9 @@ public:
   bool assemble(const physics::EvalState& state, AssembledSystem& out, bool with_jacobian) const;
   /// An AssembledSystem with the right sizes and patterns (values zero).
   AssembledSystem make_system() const;
+  /// Recollects the stencils of every term and rebuilds colours and pattern (after a term's
+  /// element_dofs() changed).
+  void rebuild();
 
 private:
   bool assemble_term(std::size_t t, const physics::EvalState& state, AssembledSystem& out,
@@ -59,7 +62,7 @@ public:
   Index num_equations() const override { return map_.num_equations(); }
   const std::vector<int>& equation_fields() const override { return equation_fields_; }
   const std::vector<solver::FieldScale>& field_scales() const override { return scales_; }
-  int pattern_id() const override { return 0; }
+  int pattern_id() const override { return pattern_id_; }
   solver::SolveStatus linearize(solver::Linearization& lin, bool with_jacobian) override;
   solver::SolveStatus update(const Vector& dx, Real step) override;
   bool constraints_satisfied() const override;
@@ -102,6 +105,7 @@ private:
   Vector x_, x_old_, saved_, target_;
   Vector x_global_, x_old_global_;
   Real time_ = 0.0, time_old_ = 0.0, dt_ = 0.0;
+  int pattern_id_ = 0;
 };
 
 } // namespace trifem::assembly

@@ -36,6 +36,9 @@ public:
   virtual bool evaluate(Index e, const EvalState& state, LocalVector& r, LocalMatrix* K) const = 0;
   /// Called once per converged step with the converged state: history variables advance.
   virtual void commit(const EvalState& /*state*/) {}
+  /// Called before every evaluation of the whole system (e.g. contact search and projection).
+  /// Returns true if element_dofs() changed: the sparsity pattern is then rebuilt.
+  virtual bool prepare(const EvalState& /*state*/) { return false; }
 };
 
 } // namespace trifem::physics

@@ -72,7 +72,7 @@ solver::SolveStatus FeProblem::update(const Vector& dx, Real step) {
     x_[map_.dof_of_equation(eq)] += step * dx[eq];
   for (Index c = 0; c < map_.num_constrained(); ++c) {
     const Index d = map_.dof_of_constrained(c);
-    x_[d] += step * (target_[d] - x_[d]);
+    x_[d] = step == 1.0 ? target_[d] : x_[d] + step * (target_[d] - x_[d]); // exact at s = 1
   }
   sync();
   return solver::SolveStatus::Converged;

@@ -1,14 +1,14 @@
 // SPDX-License-Identifier: MIT
 #include "trifem/explicit/cell_kernel.hpp"
 
+#include "trifem/explicit/parallel.hpp"
+
 #include <cmath>
 #include <limits>
 
 namespace trifem::explicit_dynamics {
 namespace {
 
-/// Parallel loops below this size run serially (thread start-up would dominate).
-constexpr Index kMinParallel = 256;
 
 using RowMajor83 = Eigen::Matrix<Real, 8, 3, Eigen::RowMajor>;
 
@@ -87,7 +87,7 @@ CellStatus evaluate_cells(const ExplicitModel& model, Constraint constraint, con
     out.resize(n);
   const material::ElasticLaw& law = model.law();
   Index first_bad = std::numeric_limits<Index>::max();
-#pragma omp parallel for schedule(static) reduction(min : first_bad) if (n >= kMinParallel)
+#pragma omp parallel for schedule(static) reduction(min : first_bad) if (n >= kMinParallelLoop)
   for (Index c = 0; c < n; ++c) {
     Real W = 0.0;
     const int code =
@@ -115,7 +115,7 @@ void gather(const ExplicitModel& model, const std::vector<CellVector>& v, const 
   const NodeIncidence& inc = model.incidence();
   const Index nn = model.mesh().num_nodes();
   y.resize(3 * nn);
-#pragma omp parallel for schedule(static) if (nn >= kMinParallel)
+#pragma omp parallel for schedule(static) if (nn >= kMinParallelLoop)
   for (Index a = 0; a < nn; ++a) {
     Vec3 sum = Vec3::Zero();
     for (Index i = inc.offsets[a]; i < inc.offsets[a + 1]; ++i) {
@@ -130,7 +130,7 @@ void cell_dot(const ExplicitModel& model, const std::vector<CellVector>& v, cons
               Vector& z) {
   const Index n = model.num_cells();
   z.resize(n);
-#pragma omp parallel for schedule(static) if (n >= kMinParallel)
+#pragma omp parallel for schedule(static) if (n >= kMinParallelLoop)
   for (Index c = 0; c < n; ++c) {
     const mesh::Hex8& nodes = model.mesh().cell(c);
     Real s = 0.0;

@@ -101,6 +101,8 @@ void ExplicitModel::build_incidence() {
 void ExplicitModel::resolve_loads() {
   const auto& rule = fe::quad_gauss_2x2();
   for (const SurfaceLoad& load : spec_.loads) {
+    TRIFEM_CHECK(std::isfinite(load.pressure) && load.traction.allFinite(),
+                 "explicit model: load on '{}' is not finite", load.surface);
     ResolvedLoad r{load, mesh_.surface(load.surface).facets, {}};
     for (const mesh::Facet& f : r.facets) {
       fe::QuadCoords X;

@@ -36,7 +36,7 @@ ExplicitSolver::ExplicitSolver(const ExplicitModel& model, ExplicitSettings sett
     : model_(model), settings_(std::move(settings)) {
   settings_.validate();
   if (settings_.multiplier)
-    system_ = std::make_unique<LambdaSystem>(model_);
+    system_ = std::make_unique<LambdaSystem>(model_, settings_.cholesky);
   initialize();
   choose_time_step();
 }
@@ -119,10 +119,11 @@ StepReport ExplicitSolver::step(Real t_end) {
         r.status == StepStatus::NotConverged || r.status == StepStatus::NegativeJacobian;
     if (!retry)
       return r;
-    if (++halvings > settings_.max_halvings)
-      return fatal(StepStatus::TooManyHalvings,
-                   fmt::format("{} halvings of the step did not help; last: {}",
-                               settings_.max_halvings, r.message));
+    if (++halvings > settings_.max_halvings) {
+      r.status = StepStatus::TooManyHalvings;
+      r.message += fmt::format(" (given up after {} halvings of the step)", settings_.max_halvings);
+      return r;
+    }
     log::warn("explicit: {}; repeating with dt = {:.6g} s", r.message, 0.5 * dt_current_);
     dt_current_ *= 0.5;
     successes_since_halving_ = 0;

@@ -60,6 +60,7 @@ struct SolverTimings {
   double forces = 0.0;  ///< cell loops (Q_V, H, Ψ), gathers and surface loads
   double lambda = 0.0;  ///< multiplier system: assembly, factorization, solve
   double assemble = 0.0, factorize = 0.0, solve = 0.0; ///< parts of `lambda`
+  long factorizations = 0; ///< numeric factorizations of the multiplier matrix
 };
 
 /// Explicit dynamics of one ExplicitModel. The model must outlive the solver.
@@ -107,6 +108,10 @@ private:
                             Vector& lambda, CellFields& fields);
   StepReport iterate_multiplier(Real h2, const Vector& U_pred, Vector& U, Vector& lambda,
                                 CellFields& fields);
+  StepReport multiplier_loop(Real h2, const Vector& U_m, Vector& U, Vector& lambda,
+                             CellFields& fields);
+  bool needs_factorization(Real h2) const;
+  bool factorize_multiplier_matrix(Real h2);
   bool converged(int k, const Vector& U, const Vector& U_prev, const Vector& lambda,
                  const CellFields& f, StepReport& r, Real& du_prev, int& growing) const;
   Real constraint_residual(const CellFields& f, const Vector& lambda) const;
@@ -134,6 +139,16 @@ private:
   bool follower_ = false;
   TimeStepInfo dt_info_;
   SolverTimings timings_;
+
+  /// Reading B: which A_n the current CHOLMOD factor holds and how well it still serves.
+  struct FactorizationState {
+    Real h2 = 0.0;            ///< h² it was built with
+    int age = -1;             ///< steps served (−1: none)
+    int fresh_iterations = -1; ///< iterations of the first step it served
+    int last_iterations = 0;  ///< iterations of the last step it served
+    void record(int iterations);
+  };
+  FactorizationState factorization_;
 };
 
 /// Human-readable name of a status.

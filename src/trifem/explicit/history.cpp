@@ -7,7 +7,7 @@ namespace {
 std::vector<std::string> columns(const std::vector<Probe>& probes) {
   std::vector<std::string> c = {"step",          "time [s]",        "dt [s]",
                                 "iterations",    "halvings",        "constraint_residual",
-                                "max|J-1|",      "kinetic [mJ]",    "strain [mJ]",
+                                "max|Jbar-1|",   "max_gauss|J-1|",  "kinetic [mJ]",    "strain [mJ]",
                                 "external_work [mJ]", "damping_work [mJ]", "total_energy [mJ]"};
   for (const Probe& p : probes)
     c.push_back(p.name);
@@ -28,6 +28,7 @@ void HistoryWriter::record(const ExplicitSolver& solver, const StepReport& repor
                              static_cast<double>(report.halvings),
                              report.constraint_residual,
                              solver.max_volume_change(),
+                             solver.max_gauss_volume_change(),
                              e.kinetic,
                              e.strain,
                              e.external_work,

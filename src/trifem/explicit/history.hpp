@@ -19,8 +19,9 @@ struct Probe {
 };
 
 /// Writes one row per recorded step (flushed, so a stopped run keeps its history):
-/// step, time [s], dt [s], iterations, halvings, constraint_residual, max|J-1|,
-/// kinetic/strain/external_work/damping_work/total_energy [mJ], then the probes.
+/// step, time [s], dt [s], iterations, halvings, constraint_residual, max|Jbar-1| (cell
+/// means), max_gauss|J-1|, kinetic/strain/external_work/damping_work/total_energy [mJ], then
+/// the probes.
 class HistoryWriter {
 public:
   HistoryWriter(std::filesystem::path file, std::vector<Probe> probes);

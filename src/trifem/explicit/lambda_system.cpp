@@ -2,6 +2,7 @@
 #include "trifem/explicit/lambda_system.hpp"
 
 #include "trifem/core/error.hpp"
+#include "trifem/explicit/parallel.hpp"
 
 #include <Eigen/CholmodSupport>
 
@@ -11,7 +12,6 @@
 namespace trifem::explicit_dynamics {
 namespace {
 
-constexpr Index kMinParallel = 256;
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -22,11 +22,15 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 /// CHOLMOD LLᵀ; CHOLMOD chooses simplicial (small, very sparse) or supernodal (BLAS) itself.
 struct LambdaSystem::Backend {
   Eigen::CholmodDecomposition<SparseMatrix, Eigen::Lower> llt;
-  Backend() { llt.setMode(Eigen::CholmodAuto); }
+  explicit Backend(CholeskyMode mode) {
+    llt.setMode(mode == CholeskyMode::Simplicial   ? Eigen::CholmodSimplicialLLt
+                : mode == CholeskyMode::Supernodal ? Eigen::CholmodSupernodalLLt
+                                                   : Eigen::CholmodAuto);
+  }
 };
 
-LambdaSystem::LambdaSystem(const ExplicitModel& model)
-    : model_(model), backend_(std::make_unique<Backend>()) {
+LambdaSystem::LambdaSystem(const ExplicitModel& model, CholeskyMode mode)
+    : model_(model), backend_(std::make_unique<Backend>(mode)) {
   build_pattern();
   backend_->llt.analyzePattern(A_);
   TRIFEM_VERIFY(backend_->llt.info() == Eigen::Success,
@@ -79,7 +83,7 @@ void LambdaSystem::assemble(const std::vector<CellVector>& h, const Vector& inve
   const Index n = model_.num_cells();
   const NodeIncidence& inc = model_.incidence();
   Real* values = A_.valuePtr();
-#pragma omp parallel for schedule(static) if (n >= kMinParallel)
+#pragma omp parallel for schedule(static) if (n >= kMinParallelLoop)
   for (Index f = 0; f < n; ++f) {
     for (Index k = A_.outerIndexPtr()[f]; k < A_.outerIndexPtr()[f + 1]; ++k)
       values[k] = 0.0;

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "trifem/explicit/cell_kernel.hpp"
+#include "trifem/explicit/settings.hpp"
 
 #include <memory>
 
@@ -26,7 +27,7 @@ class LambdaSystem {
 public:
   /// Builds the pattern from the model's incidence and runs the symbolic analysis (AMD/METIS
   /// ordering as CHOLMOD chooses).
-  explicit LambdaSystem(const ExplicitModel& model);
+  explicit LambdaSystem(const ExplicitModel& model, CholeskyMode mode = CholeskyMode::Auto);
   ~LambdaSystem();
   LambdaSystem(const LambdaSystem&) = delete;
   LambdaSystem& operator=(const LambdaSystem&) = delete;

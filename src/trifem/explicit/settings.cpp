@@ -26,6 +26,8 @@ void ExplicitSettings::validate() const {
   TRIFEM_CHECK(power_tolerance > 0.0, "explicit.power_tolerance must be > 0");
   TRIFEM_CHECK(displacement_tolerance > 0.0 && constraint_tolerance > 0.0,
                "explicit tolerances must be > 0");
+  TRIFEM_CHECK(max_factorization_age >= 1,
+               "explicit.max_factorization_age = {}: must be >= 1", max_factorization_age);
   TRIFEM_CHECK(max_iterations >= 1, "explicit.max_iterations = {}: must be >= 1", max_iterations);
   TRIFEM_CHECK(max_halvings >= 0, "explicit.max_halvings = {}: must be >= 0", max_halvings);
   TRIFEM_CHECK(recovery_steps >= 1, "explicit.recovery_steps = {}: must be >= 1", recovery_steps);

@@ -35,6 +35,13 @@ enum class StableStepMethod {
   None            ///< trust the requested step (benchmarks)
 };
 
+/// Factorization of the multiplier system (CHOLMOD).
+enum class CholeskyMode {
+  Auto,       ///< CHOLMOD decides from the flop count of the symbolic factor
+  Simplicial, ///< up-looking, no BLAS: fastest for small or thin meshes
+  Supernodal  ///< dense BLAS blocks: fastest for large 3-D meshes
+};
+
 /// All numerical options of one explicit run. Units: s, MPa, mm.
 struct ExplicitSettings {
   Reading reading = Reading::B;
@@ -49,6 +56,12 @@ struct ExplicitSettings {
   Real time_step = 0.0;
   /// Fraction of the critical step used; default 0.8 (reading B, of 2/ω), 0.5 (A, of 1/ω).
   std::optional<Real> safety_factor;
+  CholeskyMode cholesky = CholeskyMode::Auto;
+  /// Reading B: steps one numeric factorization of A_n = Γ/α + h² H_nᵀM⁻¹H_n may serve
+  /// (1 = refactorize every step). Reuse turns the Λ iteration into a modified Newton
+  /// iteration with the same fixed point; worthwhile on large meshes where the factorization
+  /// costs more than a cell loop. Refreshed early when h² changes or iterations grow by > 3.
+  int max_factorization_age = 1;
   StableStepMethod stable_step = StableStepMethod::PowerIteration;
   int power_iterations = 60;         ///< cap of the power iteration
   Real power_tolerance = 1e-3;       ///< relative change of ω² that stops it

@@ -2,6 +2,7 @@
 #include "trifem/explicit/stable_step.hpp"
 
 #include "trifem/explicit/lambda_system.hpp"
+#include "trifem/explicit/parallel.hpp"
 #include "trifem/fe/quadrature.hpp"
 #include "trifem/physics/solid_kernel.hpp"
 
@@ -12,14 +13,13 @@
 namespace trifem::explicit_dynamics {
 namespace {
 
-constexpr Index kMinParallel = 256;
 
 /// y = K(U) v, element by element (K_e of W from physics::solid_hex8, never assembled).
 void apply_stiffness(const ExplicitModel& model, const Vector& U, const Vector& v,
                      std::vector<CellVector>& scratch, Vector& y) {
   const Index n = model.num_cells();
   scratch.resize(n);
-#pragma omp parallel for schedule(static) if (n >= kMinParallel)
+#pragma omp parallel for schedule(static) if (n >= kMinParallelLoop)
   for (Index c = 0; c < n; ++c) {
     physics::HexVector f;
     physics::HexMatrix K;
@@ -120,7 +120,7 @@ FrequencyEstimate element_bound_omega(const ExplicitModel& model, const Vector& 
   const Index n = model.num_cells();
   const auto& rule = fe::hex_gauss_2x2x2();
   Real max_omega2 = 0.0;
-#pragma omp parallel for schedule(static) reduction(max : max_omega2) if (n >= kMinParallel)
+#pragma omp parallel for schedule(static) reduction(max : max_omega2) if (n >= kMinParallelLoop)
   for (Index c = 0; c < n; ++c) {
     const fe::HexGeometry& geo = model.geometry()[c];
     physics::HexVector f;

@@ -15,6 +15,9 @@
 // i.e. central differences with the constraint force H_n Λ^{n+1} chosen so that the constraint
 // holds at t_{n+1} (SHAKE): second order, time-reversible, no energy drift. A_n is the exact
 // Jacobian at U^n, so the iteration contracts by O(‖H(U^(k)) − H_n‖) = O(Δt) per iteration.
+// Its factorization may be reused for up to max_factorization_age steps (a modified Newton
+// iteration: same fixed point, slightly slower contraction); it is refreshed when h² changes,
+// when the iteration count grows by more than 3, or when a step fails with a reused one.
 // Both readings start from the explicit predictor with the forces and pressure of t_n.
 #include "trifem/explicit/explicit_solver.hpp"
 
@@ -77,6 +80,7 @@ StepReport ExplicitSolver::try_step(Real dt) {
                  fmt::format("non-finite external force F_{} at node {}", kAxis[i % 3], i / 3));
   Vector force = f_ext_ - f_int_;
   if (settings_.multiplier) {
+    ScopedTimer timer(timings_.forces);
     Vector pressure;
     gather(model_, fields_.gradient, &lambda_, pressure);
     force -= pressure;
@@ -87,6 +91,12 @@ StepReport ExplicitSolver::try_step(Real dt) {
                      ? iterate_forces(h2, U_pred, time_ + dt, U, lambda, work_)
                      : iterate_multiplier(h2, U_pred, U, lambda, work_);
   r.dt = dt;
+  if (r.ok() && settings_.reading == Reading::B) { // Q_V, H, Ψ at U^{n+1} for the next step
+    ScopedTimer timer(timings_.forces);
+    const CellStatus s = evaluate_cells(model_, settings_.constraint, U, {}, work_);
+    if (!s.ok())
+      r = cell_failure(s);
+  }
   if (r.ok()) {
     commit(dt, dt_avg, U, lambda, work_);
     total_iterations_ += r.iterations;
@@ -96,6 +106,7 @@ StepReport ExplicitSolver::try_step(Real dt) {
   timings_.factorize = lt.factorize;
   timings_.solve = lt.solve;
   timings_.lambda = lt.assemble + lt.factorize + lt.solve;
+  timings_.factorizations = lt.factorizations;
   return r;
 }
 
@@ -179,9 +190,50 @@ StepReport ExplicitSolver::iterate_multiplier(Real h2, const Vector& U_pred, Vec
     U = U_m;
     return check_finite(U, lambda);
   }
-  const Vector diagonal = inverse_penalty() * model_.volumes();
-  if (!system_->factorize(fields_.gradient, minv, h2, diagonal)) // A_n, once per step
+  const Vector U_0 = U, lambda_0 = lambda;
+  const bool stale = factorization_.age > 0;
+  if (needs_factorization(h2) && !factorize_multiplier_matrix(h2))
     return factorization_failure();
+  StepReport r = multiplier_loop(h2, U_m, U, lambda, fields);
+  if (r.status == StepStatus::NotConverged && stale && factorization_.age > 0) {
+    // A reused factorization may be too far from A_n: retry once with a fresh one.
+    U = U_0;
+    lambda = lambda_0;
+    if (!factorize_multiplier_matrix(h2))
+      return factorization_failure();
+    r = multiplier_loop(h2, U_m, U, lambda, fields);
+  }
+  if (r.ok())
+    factorization_.record(r.iterations);
+  return r;
+}
+
+bool ExplicitSolver::needs_factorization(Real h2) const {
+  const FactorizationState& f = factorization_;
+  return f.age < 0 || h2 != f.h2 || f.age >= settings_.max_factorization_age ||
+         f.last_iterations > f.fresh_iterations + 3;
+}
+
+bool ExplicitSolver::factorize_multiplier_matrix(Real h2) {
+  const Vector diagonal = inverse_penalty() * model_.volumes();
+  factorization_ = {h2, 0, -1, 0};
+  if (system_->factorize(fields_.gradient, model_.inverse_mass(), h2, diagonal)) // A_n
+    return true;
+  factorization_.age = -1;
+  return false;
+}
+
+void ExplicitSolver::FactorizationState::record(int iterations) {
+  if (age == 0)
+    fresh_iterations = iterations;
+  last_iterations = iterations;
+  ++age;
+}
+
+StepReport ExplicitSolver::multiplier_loop(Real h2, const Vector& U_m, Vector& U,
+                                           Vector& lambda, CellFields& fields) {
+  const Vector& minv = model_.inverse_mass();
+  const Vector diagonal = inverse_penalty() * model_.volumes();
   Vector U_prev, delta, pressure;
   Real du_prev = std::numeric_limits<Real>::infinity();
   int growing = 0;
@@ -199,7 +251,10 @@ StepReport ExplicitSolver::iterate_multiplier(Real h2, const Vector& U_pred, Vec
     system_->solve(fields.psi - diagonal.cwiseProduct(lambda), delta); // Newton on Ψ = ΓΛ/α
     lambda += delta;
     U_prev = U;
-    gather(model_, fields_.gradient, &delta, pressure);
+    {
+      ScopedTimer timer(timings_.forces);
+      gather(model_, fields_.gradient, &delta, pressure);
+    }
     U -= h2 * minv.cwiseProduct(pressure); // A2.17 with H_n
     if (const StepReport bad = check_finite(U, lambda); !bad.ok())
       return bad;
@@ -207,9 +262,9 @@ StepReport ExplicitSolver::iterate_multiplier(Real h2, const Vector& U_pred, Vec
 }
 
 StepReport ExplicitSolver::cell_failure(const CellStatus& s) const {
-  return fatal(s.failure == CellFailure::NegativeJacobian ? StepStatus::NegativeJacobian
-                                                          : StepStatus::NonFinite,
-               fmt::format("{} in cell {}", s.quantity, s.cell));
+  if (s.failure == CellFailure::NegativeJacobian)
+    return fatal(StepStatus::NegativeJacobian, fmt::format("{} <= 0 in cell {}", s.quantity, s.cell));
+  return fatal(StepStatus::NonFinite, fmt::format("non-finite {} in cell {}", s.quantity, s.cell));
 }
 
 StepReport ExplicitSolver::factorization_failure() const {
@@ -228,11 +283,6 @@ StepReport ExplicitSolver::check_finite(const Vector& U, const Vector& lambda) c
 }
 
 void ExplicitSolver::commit(Real dt, Real dt_avg, Vector& U, Vector& lambda, CellFields& fields) {
-  {
-    ScopedTimer timer(timings_.forces);
-    if (settings_.reading == Reading::B) // Q_V, H, Ψ at U^{n+1} for the next step
-      evaluate_cells(model_, settings_.constraint, U, {true, true, true, false}, fields);
-  }
   Vector V_new = (U - U_) / dt;
   const Vector v_mid = 0.5 * (V_ + V_new);
   damping_work_ += settings_.damping * dt_avg * v_mid.cwiseAbs2().dot(model_.mass());

@@ -9,20 +9,22 @@
 namespace trifem::explicit_dynamics {
 namespace {
 
-
 using RowMajor83 = Eigen::Matrix<Real, 8, 3, Eigen::RowMajor>;
 
 /// Quantity codes of a failed cell (index into kQuantities).
 enum Quantity : int { kOk = 0, kDetF, kDisplacement, kInternal, kGradient, kPsi, kEnergy };
-constexpr const char* kQuantities[] = {"",         "det F",       "displacement",
-                                       "internal force Q_V", "constraint gradient H",
-                                       "constraint integral Psi", "strain energy"};
+constexpr const char* kQuantities[] = {"",
+                                       "det F",
+                                       "displacement",
+                                       "internal force Q_V",
+                                       "constraint gradient H",
+                                       "constraint integral Psi",
+                                       "strain energy"};
 
 /// One cell; returns a Quantity code (kOk on success).
 int evaluate_cell(const fe::HexGeometry& geo, const fe::HexCoords& u,
-                  const material::ElasticLaw& law, Constraint constraint,
-                  const CellRequest& req, CellVector& q, CellVector& h, Real& psi, Real& W,
-                  Real& dJ, Real& dev) {
+                  const material::ElasticLaw& law, Constraint constraint, const CellRequest& req,
+                  CellVector& q, CellVector& h, Real& psi, Real& W, Real& dJ, Real& dev) {
   if (!u.allFinite())
     return kDisplacement;
   Eigen::Map<RowMajor83> qm(q.data()), hm(h.data());
@@ -90,10 +92,9 @@ CellStatus evaluate_cells(const ExplicitModel& model, Constraint constraint, con
 #pragma omp parallel for schedule(static) reduction(min : first_bad) if (n >= kMinParallelLoop)
   for (Index c = 0; c < n; ++c) {
     Real W = 0.0;
-    const int code =
-        evaluate_cell(model.geometry()[c], model.cell_values(c, U), law, constraint, request,
-                      out.internal[c], out.gradient[c], out.psi[c], W, out.volume_change[c],
-                      out.gauss_volume_change[c]);
+    const int code = evaluate_cell(model.geometry()[c], model.cell_values(c, U), law, constraint,
+                                   request, out.internal[c], out.gradient[c], out.psi[c], W,
+                                   out.volume_change[c], out.gauss_volume_change[c]);
     if (request.energy)
       out.energy[c] = W;
     if (code != kOk)
@@ -104,9 +105,10 @@ CellStatus evaluate_cells(const ExplicitModel& model, Constraint constraint, con
   // Re-evaluate the first failing cell serially to name the quantity (deterministic).
   CellVector q, h;
   Real psi = 0.0, W = 0.0, dJ = 0.0, dev = 0.0;
-  const int code = evaluate_cell(model.geometry()[first_bad], model.cell_values(first_bad, U),
-                                 law, constraint, request, q, h, psi, W, dJ, dev);
-  const CellFailure failure = code == kDetF ? CellFailure::NegativeJacobian : CellFailure::NonFinite;
+  const int code = evaluate_cell(model.geometry()[first_bad], model.cell_values(first_bad, U), law,
+                                 constraint, request, q, h, psi, W, dJ, dev);
+  const CellFailure failure =
+      code == kDetF ? CellFailure::NegativeJacobian : CellFailure::NonFinite;
   return {failure, first_bad, kQuantities[code]};
 }
 

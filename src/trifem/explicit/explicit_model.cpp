@@ -70,15 +70,14 @@ void ExplicitModel::build_mass_and_fixities() {
   fixed_.assign(num_dofs(), 0);
   for (const Fixity& f : spec_.fixities) {
     TRIFEM_CHECK(f.component >= 0 && f.component < 3,
-                 "explicit model: fixity on '{}' has component {} (expected 0, 1 or 2)",
-                 f.node_set, f.component);
+                 "explicit model: fixity on '{}' has component {} (expected 0, 1 or 2)", f.node_set,
+                 f.component);
     for (Index a : mesh_.node_set(f.node_set))
       fixed_[3 * a + f.component] = 1;
   }
   inverse_mass_.resize(num_dofs());
   for (Index i = 0; i < num_dofs(); ++i) {
-    TRIFEM_CHECK(fixed_[i] || mass_[i] > 0.0, "explicit model: node {} belongs to no cell",
-                 i / 3);
+    TRIFEM_CHECK(fixed_[i] || mass_[i] > 0.0, "explicit model: node {} belongs to no cell", i / 3);
     inverse_mass_[i] = fixed_[i] ? 0.0 : 1.0 / mass_[i];
   }
 }

@@ -32,8 +32,8 @@ enum class LoadKind {
 struct SurfaceLoad {
   LoadKind kind = LoadKind::FollowerPressure;
   std::string surface;
-  Real pressure = 0.0;           ///< [MPa], FollowerPressure
-  Vec3 traction = Vec3::Zero();  ///< [MPa], DeadTraction
+  Real pressure = 0.0;          ///< [MPa], FollowerPressure
+  Vec3 traction = Vec3::Zero(); ///< [MPa], DeadTraction
   dofs::LoadCurve curve = dofs::LoadCurve::constant();
 };
 

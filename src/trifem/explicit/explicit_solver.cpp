@@ -52,6 +52,7 @@ void ExplicitSolver::initialize() {
   U_ = Vector::Zero(n);
   V_ = Vector::Zero(n);
   lambda_ = Vector::Zero(model_.num_cells());
+  lambda_old_ = lambda_;
   follower_ = has_follower_loads(model_);
   const CellStatus status =
       evaluate_cells(model_, settings_.constraint, U_, {true, true, true, false}, fields_);
@@ -64,24 +65,29 @@ void ExplicitSolver::update_end_forces() {
   external_force(model_, U_, time_, f_ext_);
 }
 
+void ExplicitSolver::estimate_stable_step() {
+  TimeStepInfo& info = dt_info_;
+  const FrequencyEstimate est =
+      settings_.stable_step == StableStepMethod::PowerIteration
+          ? power_iteration_omega(model_, settings_.constraint, U_, settings_.multiplier,
+                                  settings_.power_iterations, settings_.power_tolerance)
+          : element_bound_omega(model_, U_);
+  info.omega = est.omega;
+  info.critical = (settings_.reading == Reading::B ? 2.0 : 1.0) / est.omega;
+  info.stable = settings_.safety() * info.critical;
+  log::info("explicit: t = {:.6g} s: omega_iso = {:.6g} 1/s ({} iterations{}), critical dt = "
+            "{:.6g} s, stable dt = {:.6g} s",
+            time_, est.omega, est.iterations, est.converged ? "" : ", not converged", info.critical,
+            info.stable);
+}
+
 void ExplicitSolver::choose_time_step() {
   TimeStepInfo& info = dt_info_;
   info.requested = settings_.time_step;
-  if (settings_.stable_step != StableStepMethod::None) {
-    const FrequencyEstimate est =
-        settings_.stable_step == StableStepMethod::PowerIteration
-            ? power_iteration_omega(model_, settings_.constraint, U_, settings_.multiplier,
-                                    settings_.power_iterations, settings_.power_tolerance)
-            : element_bound_omega(model_, U_);
-    info.omega = est.omega;
-    info.critical = (settings_.reading == Reading::B ? 2.0 : 1.0) / est.omega;
-    info.stable = settings_.safety() * info.critical;
-    log::info("explicit: omega_iso = {:.6g} 1/s ({} iterations{}), critical dt = {:.6g} s, "
-              "stable dt = {:.6g} s",
-              est.omega, est.iterations, est.converged ? "" : ", not converged", info.critical,
-              info.stable);
-  }
+  if (settings_.stable_step != StableStepMethod::None)
+    estimate_stable_step();
   info.used = info.requested > 0.0 ? info.requested : info.stable;
+  info.reduced = false;
   if (info.stable > 0.0 && info.requested > info.stable) {
     info.used = info.stable;
     info.reduced = true;
@@ -92,7 +98,8 @@ void ExplicitSolver::choose_time_step() {
   }
   TRIFEM_CHECK(std::isfinite(info.used) && info.used > 0.0,
                "explicit: no usable time step (estimate {} s)", info.used);
-  dt_current_ = info.used;
+  // A smaller step takes effect at once; a larger one is reached through the recovery doubling.
+  dt_current_ = dt_current_ > 0.0 ? std::min(dt_current_, info.used) : info.used;
 }
 
 StepReport ExplicitSolver::fatal(StepStatus status, const std::string& what) const {
@@ -103,6 +110,10 @@ StepReport ExplicitSolver::fatal(StepStatus status, const std::string& what) con
 }
 
 StepReport ExplicitSolver::step(Real t_end) {
+  const int interval = settings_.stable_step_interval;
+  if (interval > 0 && step_count_ > 0 && step_count_ % interval == 0 &&
+      settings_.stable_step != StableStepMethod::None)
+    choose_time_step(); // re-estimate on the deformed configuration
   int halvings = 0;
   for (;;) {
     const Real dt = std::min(dt_current_, t_end - time_);
@@ -130,8 +141,9 @@ StepReport ExplicitSolver::step(Real t_end) {
   }
 }
 
-StepReport ExplicitSolver::run(
-    Real t_end, const std::function<void(const ExplicitSolver&, const StepReport&)>& observer) {
+StepReport
+ExplicitSolver::run(Real t_end,
+                    const std::function<void(const ExplicitSolver&, const StepReport&)>& observer) {
   StepReport last;
   const Real eps = 1e-12 * std::max(std::abs(t_end), dt_info_.used);
   while (time_ < t_end - eps) {
@@ -166,8 +178,8 @@ Energies ExplicitSolver::energies() const {
     force -= pressure;
   }
   const Real half = 0.5 * dt_prev_;
-  const Vector v = (V_ + half * model_.inverse_mass().cwiseProduct(force)) /
-                   (1.0 + half * settings_.damping);
+  const Vector v =
+      (V_ + half * model_.inverse_mass().cwiseProduct(force)) / (1.0 + half * settings_.damping);
   e.kinetic = 0.5 * v.cwiseAbs2().dot(model_.mass());
   CellFields w;
   const CellStatus s =

@@ -27,19 +27,19 @@ enum class StepStatus {
 /// What one (possibly retried) step did.
 struct StepReport {
   StepStatus status = StepStatus::Converged;
-  int iterations = 0;            ///< multiplier solves of the accepted attempt
-  int halvings = 0;              ///< retries of this step
-  Real dt = 0.0;                 ///< accepted step [s]
+  int iterations = 0;             ///< multiplier solves of the accepted attempt
+  int halvings = 0;               ///< retries of this step
+  Real dt = 0.0;                  ///< accepted step [s]
   Real constraint_residual = 0.0; ///< max_e |Ψ_e − Γ_e Λ_e/α| / Γ_e at the accepted state
-  Real increment_ratio = 0.0;    ///< ‖ΔU^(k)‖∞ / ‖U^(k) − U^n‖∞ at acceptance
-  std::string message;           ///< set when status is not Converged
+  Real increment_ratio = 0.0;     ///< ‖ΔU^(k)‖∞ / ‖U^(k) − U^n‖∞ at acceptance
+  std::string message;            ///< set when status is not Converged
   bool ok() const { return status == StepStatus::Converged; }
 };
 
 /// Energy bookkeeping [mJ]. Balance: kinetic + strain − external + damping ≈ const (= 0 from rest).
 struct Energies {
-  Real kinetic = 0.0;       ///< ½ vᵀ M v, v at t_n (half-step velocity plus half a kick)
-  Real strain = 0.0;        ///< Σ ∫ W dV + Σ ½ Λ_e Ψ_e (the penalty part λ²/(2α) at convergence)
+  Real kinetic = 0.0; ///< ½ vᵀ M v, v at t_n (half-step velocity plus half a kick)
+  Real strain = 0.0; ///< Σ ∫ W dV + Σ ½ Λ_e Ψ_e (the penalty part λ²/(2α) at convergence)
   Real external_work = 0.0; ///< Σ ½ (F^n + F^{n+1})·ΔU (trapezoidal)
   Real damping_work = 0.0;  ///< dissipated by C = c M
   Real total() const { return kinetic + strain - external_work + damping_work; }
@@ -57,8 +57,8 @@ struct TimeStepInfo {
 
 /// Wall-clock seconds spent in the two parts of a step.
 struct SolverTimings {
-  double forces = 0.0;  ///< cell loops (Q_V, H, Ψ), gathers and surface loads
-  double lambda = 0.0;  ///< multiplier system: assembly, factorization, solve
+  double forces = 0.0; ///< cell loops (Q_V, H, Ψ), gathers and surface loads
+  double lambda = 0.0; ///< multiplier system: assembly, factorization, solve
   double assemble = 0.0, factorize = 0.0, solve = 0.0; ///< parts of `lambda`
   long factorizations = 0; ///< numeric factorizations of the multiplier matrix
 };
@@ -74,8 +74,9 @@ public:
   StepReport step(Real t_end);
   /// Steps until t_end; calls observer after every accepted step; stops at the first fatal
   /// report and returns it (the observer has seen every accepted step before).
-  StepReport run(Real t_end, const std::function<void(const ExplicitSolver&,
-                                                      const StepReport&)>& observer = {});
+  StepReport
+  run(Real t_end,
+      const std::function<void(const ExplicitSolver&, const StepReport&)>& observer = {});
 
   Real time() const { return time_; }
   long step_count() const { return step_count_; }
@@ -85,10 +86,10 @@ public:
   const ExplicitModel& model() const { return model_; }
   const ExplicitSettings& settings() const { return settings_; }
 
-  const Vector& displacement() const { return U_; } ///< U^n [mm]
+  const Vector& displacement() const { return U_; }       ///< U^n [mm]
   const Vector& half_step_velocity() const { return V_; } ///< (U^n − U^{n−1})/Δt [mm/s]
-  const Vector& multiplier() const { return lambda_; } ///< Λ^n per cell [MPa]
-  const CellFields& fields() const { return fields_; } ///< cell results at U^n
+  const Vector& multiplier() const { return lambda_; }    ///< Λ^n per cell [MPa]
+  const CellFields& fields() const { return fields_; }    ///< cell results at U^n
   /// max over cells of |J̄_e − 1|, J̄_e = cell-mean J, at U^n: the volume change the P0
   /// multiplier controls (|J̄ − 1| = |Λ|/α at convergence for Ψ = J − 1).
   Real max_volume_change() const;
@@ -103,13 +104,13 @@ public:
 private:
   void initialize();
   void choose_time_step();
+  void estimate_stable_step();
   StepReport try_step(Real dt);
-  StepReport iterate_forces(Real h2, const Vector& U_pred, Real t_new, Vector& U,
-                            Vector& lambda, CellFields& fields);
+  StepReport iterate_forces(Real h2, const Vector& U_pred, Real t_new, Vector& U, Vector& lambda,
+                            CellFields& fields);
   StepReport iterate_multiplier(Real h2, const Vector& U_pred, Vector& U, Vector& lambda,
                                 CellFields& fields);
-  StepReport multiplier_loop(Real h2, const Vector& U_m, Vector& U, Vector& lambda,
-                             CellFields& fields);
+  StepReport multiplier_loop(Real h2, Vector& U, Vector& lambda, CellFields& fields);
   bool needs_factorization(Real h2) const;
   bool factorize_multiplier_matrix(Real h2);
   bool converged(int k, const Vector& U, const Vector& U_prev, const Vector& lambda,
@@ -120,6 +121,7 @@ private:
   StepReport check_finite(const Vector& U, const Vector& lambda) const;
   void commit(Real dt, Real dt_avg, Vector& U, Vector& lambda, CellFields& fields);
   void update_end_forces();
+  void sync_lambda_timings();
   Vector explicit_force(const CellFields& f, const Vector& U, Real time) const;
   Real inverse_penalty() const;
   StepReport fatal(StepStatus status, const std::string& what) const;
@@ -127,9 +129,9 @@ private:
   const ExplicitModel& model_;
   ExplicitSettings settings_;
   std::unique_ptr<LambdaSystem> system_;
-  Vector U_, V_, lambda_;
-  Vector f_ext_;   ///< F_S(t_n, U^n)
-  Vector f_int_;   ///< Q_V(U^n) gathered
+  Vector U_, V_, lambda_, lambda_old_; ///< U^n, v^{n-1/2}, Λ^n, Λ^{n-1}
+  Vector f_ext_;                       ///< F_S(t_n, U^n)
+  Vector f_int_;                       ///< Q_V(U^n) gathered
   CellFields fields_;
   CellFields work_; ///< scratch of the iteration, swapped with fields_ on acceptance
   Real time_ = 0.0, dt_prev_ = 0.0, dt_current_ = 0.0;
@@ -142,10 +144,10 @@ private:
 
   /// Reading B: which A_n the current CHOLMOD factor holds and how well it still serves.
   struct FactorizationState {
-    Real h2 = 0.0;            ///< h² it was built with
-    int age = -1;             ///< steps served (−1: none)
+    Real h2 = 0.0;             ///< h² it was built with
+    int age = -1;              ///< steps served (−1: none)
     int fresh_iterations = -1; ///< iterations of the first step it served
-    int last_iterations = 0;  ///< iterations of the last step it served
+    int last_iterations = 0;   ///< iterations of the last step it served
     void record(int iterations);
   };
   FactorizationState factorization_;

@@ -5,10 +5,19 @@ namespace trifem::explicit_dynamics {
 namespace {
 
 std::vector<std::string> columns(const std::vector<Probe>& probes) {
-  std::vector<std::string> c = {"step",          "time [s]",        "dt [s]",
-                                "iterations",    "halvings",        "constraint_residual",
-                                "max|Jbar-1|",   "max_gauss|J-1|",  "kinetic [mJ]",    "strain [mJ]",
-                                "external_work [mJ]", "damping_work [mJ]", "total_energy [mJ]"};
+  std::vector<std::string> c = {"step",
+                                "time [s]",
+                                "dt [s]",
+                                "iterations",
+                                "halvings",
+                                "constraint_residual",
+                                "max|Jbar-1|",
+                                "max_gauss|J-1|",
+                                "kinetic [mJ]",
+                                "strain [mJ]",
+                                "external_work [mJ]",
+                                "damping_work [mJ]",
+                                "total_energy [mJ]"};
   for (const Probe& p : probes)
     c.push_back(p.name);
   return c;
@@ -39,7 +48,9 @@ void HistoryWriter::record(const ExplicitSolver& solver, const StepReport& repor
   csv_.write_row(row);
 }
 
-void HistoryWriter::record_initial(const ExplicitSolver& solver) { record(solver, StepReport{}); }
+void HistoryWriter::record_initial(const ExplicitSolver& solver) {
+  record(solver, StepReport{});
+}
 
 Real mean_radius(const ExplicitSolver& solver, const std::string& node_set) {
   const auto& nodes = solver.model().mesh().node_set(node_set);

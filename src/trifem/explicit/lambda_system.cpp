@@ -12,7 +12,6 @@
 namespace trifem::explicit_dynamics {
 namespace {
 
-
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
@@ -39,8 +38,12 @@ LambdaSystem::LambdaSystem(const ExplicitModel& model, CholeskyMode mode)
 
 LambdaSystem::~LambdaSystem() = default;
 
-Index LambdaSystem::size() const { return static_cast<Index>(A_.rows()); }
-Index LambdaSystem::nonzeros() const { return static_cast<Index>(A_.nonZeros()); }
+Index LambdaSystem::size() const {
+  return static_cast<Index>(A_.rows());
+}
+Index LambdaSystem::nonzeros() const {
+  return static_cast<Index>(A_.nonZeros());
+}
 
 void LambdaSystem::build_pattern() {
   const Index n = model_.num_cells();
@@ -78,8 +81,8 @@ void LambdaSystem::build_pattern() {
   }
 }
 
-void LambdaSystem::assemble(const std::vector<CellVector>& h, const Vector& inverse_mass,
-                            Real h2, const Vector& diagonal) {
+void LambdaSystem::assemble(const std::vector<CellVector>& h, const Vector& inverse_mass, Real h2,
+                            const Vector& diagonal) {
   const Index n = model_.num_cells();
   const NodeIncidence& inc = model_.incidence();
   Real* values = A_.valuePtr();
@@ -102,8 +105,8 @@ void LambdaSystem::assemble(const std::vector<CellVector>& h, const Vector& inve
   }
 }
 
-bool LambdaSystem::factorize(const std::vector<CellVector>& h, const Vector& inverse_mass,
-                             Real h2, const Vector& diagonal) {
+bool LambdaSystem::factorize(const std::vector<CellVector>& h, const Vector& inverse_mass, Real h2,
+                             const Vector& diagonal) {
   auto start = std::chrono::steady_clock::now();
   assemble(h, inverse_mass, h2, diagonal);
   timings_.assemble += seconds_since(start);

@@ -53,9 +53,9 @@ private:
 
   struct Backend;
   const ExplicitModel& model_;
-  SparseMatrix A_;                 ///< lower triangle, compressed
+  SparseMatrix A_;                  ///< lower triangle, compressed
   std::vector<Index> slot_offsets_; ///< per column: start of its traversal slots
-  std::vector<Index> slots_;       ///< value index of each (column, node, incident cell) visit
+  std::vector<Index> slots_;        ///< value index of each (column, node, incident cell) visit
   std::unique_ptr<Backend> backend_;
   LambdaTimings timings_;
 };

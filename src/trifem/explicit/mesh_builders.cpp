@@ -53,12 +53,34 @@ std::vector<std::array<Lattice, 4>> patch_quads(int n) {
 }
 
 std::vector<Real> layer_radii(const ShellOctantSpec& spec) {
-  const std::vector<Real> x = mesh::graded_coordinates(spec.outer - spec.inner, spec.layers,
-                                                       spec.grading);
+  const std::vector<Real> x =
+      mesh::graded_coordinates(spec.outer - spec.inner, spec.layers, spec.grading);
   std::vector<Real> r(x.size());
   for (std::size_t i = 0; i < x.size(); ++i)
     r[i] = spec.inner + x[i];
   return r;
+}
+
+/// Node sets `<name>.x0/.y0/.z0` (lattice coordinate k = 0 on every layer), `<name>.all` and
+/// the cell block `<name>`.
+void add_plane_and_block_sets(const ShellOctantSpec& spec,
+                              const std::map<Lattice, Index>& surface_id, mesh::Mesh& m) {
+  const Index ns = static_cast<Index>(surface_id.size());
+  for (int k = 0; k < 3; ++k) {
+    std::vector<Index> plane;
+    for (const auto& [p, id] : surface_id)
+      if (p[k] == 0)
+        for (int layer = 0; layer <= spec.layers; ++layer)
+          plane.push_back(layer * ns + id);
+    m.add_node_set(spec.name + "." + "xyz"[k] + "0", plane);
+  }
+  std::vector<Index> all(m.num_nodes()), cells(m.num_cells());
+  for (Index i = 0; i < m.num_nodes(); ++i)
+    all[i] = i;
+  for (Index c = 0; c < m.num_cells(); ++c)
+    cells[c] = c;
+  m.add_node_set(spec.name + ".all", all);
+  m.add_cell_block(spec.name, cells);
 }
 
 } // namespace
@@ -99,21 +121,7 @@ mesh::Mesh make_shell_octant(const ShellOctantSpec& spec) {
     }
   m.add_surface(spec.name + ".inner", {m.find_facets(inner)});
   m.add_surface(spec.name + ".outer", {m.find_facets(outer)});
-  for (int k = 0; k < 3; ++k) {
-    std::vector<Index> plane;
-    for (const auto& [p, id] : surface_id)
-      if (p[k] == 0)
-        for (int layer = 0; layer <= spec.layers; ++layer)
-          plane.push_back(layer * ns + id);
-    m.add_node_set(spec.name + "." + "xyz"[k] + "0", plane);
-  }
-  std::vector<Index> all(m.num_nodes()), cells(m.num_cells());
-  for (Index i = 0; i < m.num_nodes(); ++i)
-    all[i] = i;
-  for (Index c = 0; c < m.num_cells(); ++c)
-    cells[c] = c;
-  m.add_node_set(spec.name + ".all", all);
-  m.add_cell_block(spec.name, cells);
+  add_plane_and_block_sets(spec, surface_id, m);
   return m;
 }
 

@@ -35,10 +35,10 @@ mesh::Mesh make_shell_octant(const ShellOctantSpec& spec);
 /// `thickness` in z.
 struct CookSpec {
   std::string name = "cook";
-  int nx = 8;            ///< cells along the length (x)
-  int ny = 8;            ///< cells across the height (y)
-  int nz = 1;            ///< cells through the thickness
-  Real thickness = 1.0;  ///< [mm]
+  int nx = 8;           ///< cells along the length (x)
+  int ny = 8;           ///< cells across the height (y)
+  int nz = 1;           ///< cells through the thickness
+  Real thickness = 1.0; ///< [mm]
 };
 
 /// A box [0,1]² x [0,t] mapped by (ξ, η, z) → (48 ξ, 44 ξ + η (44 − 28 ξ), z); the box's sets

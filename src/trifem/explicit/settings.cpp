@@ -21,13 +21,15 @@ void ExplicitSettings::validate() const {
   if (safety_factor)
     TRIFEM_CHECK(*safety_factor > 0.0 && *safety_factor <= 1.0,
                  "explicit.safety_factor = {}: must be in (0, 1]", *safety_factor);
+  TRIFEM_CHECK(stable_step_interval >= 0, "explicit.stable_step_interval = {}: must be >= 0",
+               stable_step_interval);
   TRIFEM_CHECK(power_iterations >= 2, "explicit.power_iterations = {}: must be >= 2",
                power_iterations);
   TRIFEM_CHECK(power_tolerance > 0.0, "explicit.power_tolerance must be > 0");
   TRIFEM_CHECK(displacement_tolerance > 0.0 && constraint_tolerance > 0.0,
                "explicit tolerances must be > 0");
-  TRIFEM_CHECK(max_factorization_age >= 1,
-               "explicit.max_factorization_age = {}: must be >= 1", max_factorization_age);
+  TRIFEM_CHECK(max_factorization_age >= 1, "explicit.max_factorization_age = {}: must be >= 1",
+               max_factorization_age);
   TRIFEM_CHECK(max_iterations >= 1, "explicit.max_iterations = {}: must be >= 1", max_iterations);
   TRIFEM_CHECK(max_halvings >= 0, "explicit.max_halvings = {}: must be >= 0", max_halvings);
   TRIFEM_CHECK(recovery_steps >= 1, "explicit.recovery_steps = {}: must be >= 1", recovery_steps);

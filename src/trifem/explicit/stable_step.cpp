@@ -13,7 +13,6 @@
 namespace trifem::explicit_dynamics {
 namespace {
 
-
 /// y = K(U) v, element by element (K_e of W from physics::solid_hex8, never assembled).
 void apply_stiffness(const ExplicitModel& model, const Vector& U, const Vector& v,
                      std::vector<CellVector>& scratch, Vector& y) {

@@ -18,7 +18,8 @@
 // Its factorization may be reused for up to max_factorization_age steps (a modified Newton
 // iteration: same fixed point, slightly slower contraction); it is refreshed when h² changes,
 // when the iteration count grows by more than 3, or when a step fails with a reused one.
-// Both readings start from the explicit predictor with the forces and pressure of t_n.
+// Both readings start from the explicit predictor with the forces of t_n and the multiplier
+// Λ^n (B: extrapolated linearly from Λ^{n-1}, Λ^n).
 #include "trifem/explicit/explicit_solver.hpp"
 
 #include "trifem/core/error.hpp"
@@ -78,15 +79,19 @@ StepReport ExplicitSolver::try_step(Real dt) {
   if (const Index i = first_non_finite(f_ext_); i >= 0)
     return fatal(StepStatus::NonFinite,
                  fmt::format("non-finite external force F_{} at node {}", kAxis[i % 3], i / 3));
+  // First iterate: forces of t_n and Λ^n (reading B: Λ linearly extrapolated from the last
+  // two steps, which saves about 0.15 iterations per step; in reading A it costs 0.9).
+  Vector lambda = lambda_;
+  if (settings_.reading == Reading::B && step_count_ >= 2)
+    lambda += (dt / dt_prev_) * (lambda_ - lambda_old_);
   Vector force = f_ext_ - f_int_;
   if (settings_.multiplier) {
     ScopedTimer timer(timings_.forces);
     Vector pressure;
-    gather(model_, fields_.gradient, &lambda_, pressure);
+    gather(model_, fields_.gradient, &lambda, pressure);
     force -= pressure;
   }
   Vector U = U_pred + h2 * model_.inverse_mass().cwiseProduct(force);
-  Vector lambda = lambda_;
   StepReport r = settings_.reading == Reading::A
                      ? iterate_forces(h2, U_pred, time_ + dt, U, lambda, work_)
                      : iterate_multiplier(h2, U_pred, U, lambda, work_);
@@ -101,13 +106,17 @@ StepReport ExplicitSolver::try_step(Real dt) {
     commit(dt, dt_avg, U, lambda, work_);
     total_iterations_ += r.iterations;
   }
+  sync_lambda_timings();
+  return r;
+}
+
+void ExplicitSolver::sync_lambda_timings() {
   const LambdaTimings lt = system_ ? system_->timings() : LambdaTimings{};
   timings_.assemble = lt.assemble;
   timings_.factorize = lt.factorize;
   timings_.solve = lt.solve;
   timings_.lambda = lt.assemble + lt.factorize + lt.solve;
   timings_.factorizations = lt.factorizations;
-  return r;
 }
 
 Real ExplicitSolver::constraint_residual(const CellFields& f, const Vector& lambda) const {
@@ -116,9 +125,9 @@ Real ExplicitSolver::constraint_residual(const CellFields& f, const Vector& lamb
       .lpNorm<Eigen::Infinity>();
 }
 
-bool ExplicitSolver::converged(int k, const Vector& U, const Vector& U_prev,
-                               const Vector& lambda, const CellFields& f, StepReport& r,
-                               Real& du_prev, int& growing) const {
+bool ExplicitSolver::converged(int k, const Vector& U, const Vector& U_prev, const Vector& lambda,
+                               const CellFields& f, StepReport& r, Real& du_prev,
+                               int& growing) const {
   r.iterations = k;
   const Real du = (U - U_prev).lpNorm<Eigen::Infinity>();
   const Real scale = (U - U_).lpNorm<Eigen::Infinity>();
@@ -194,14 +203,14 @@ StepReport ExplicitSolver::iterate_multiplier(Real h2, const Vector& U_pred, Vec
   const bool stale = factorization_.age > 0;
   if (needs_factorization(h2) && !factorize_multiplier_matrix(h2))
     return factorization_failure();
-  StepReport r = multiplier_loop(h2, U_m, U, lambda, fields);
+  StepReport r = multiplier_loop(h2, U, lambda, fields);
   if (r.status == StepStatus::NotConverged && stale && factorization_.age > 0) {
     // A reused factorization may be too far from A_n: retry once with a fresh one.
     U = U_0;
     lambda = lambda_0;
     if (!factorize_multiplier_matrix(h2))
       return factorization_failure();
-    r = multiplier_loop(h2, U_m, U, lambda, fields);
+    r = multiplier_loop(h2, U, lambda, fields);
   }
   if (r.ok())
     factorization_.record(r.iterations);
@@ -230,8 +239,7 @@ void ExplicitSolver::FactorizationState::record(int iterations) {
   ++age;
 }
 
-StepReport ExplicitSolver::multiplier_loop(Real h2, const Vector& U_m, Vector& U,
-                                           Vector& lambda, CellFields& fields) {
+StepReport ExplicitSolver::multiplier_loop(Real h2, Vector& U, Vector& lambda, CellFields& fields) {
   const Vector& minv = model_.inverse_mass();
   const Vector diagonal = inverse_penalty() * model_.volumes();
   Vector U_prev, delta, pressure;
@@ -263,7 +271,8 @@ StepReport ExplicitSolver::multiplier_loop(Real h2, const Vector& U_m, Vector& U
 
 StepReport ExplicitSolver::cell_failure(const CellStatus& s) const {
   if (s.failure == CellFailure::NegativeJacobian)
-    return fatal(StepStatus::NegativeJacobian, fmt::format("{} <= 0 in cell {}", s.quantity, s.cell));
+    return fatal(StepStatus::NegativeJacobian,
+                 fmt::format("{} <= 0 in cell {}", s.quantity, s.cell));
   return fatal(StepStatus::NonFinite, fmt::format("non-finite {} in cell {}", s.quantity, s.cell));
 }
 
@@ -290,6 +299,7 @@ void ExplicitSolver::commit(Real dt, Real dt_avg, Vector& U, Vector& lambda, Cel
   const Vector dU = U - U_;
   U_.swap(U);
   V_.swap(V_new);
+  lambda_old_.swap(lambda_);
   lambda_.swap(lambda);
   std::swap(fields_, fields);
   time_ += dt;

@@ -55,15 +55,16 @@ struct RadialState {
 };
 
 /// RK4 integration from rest (a = A, ȧ = 0) under P(t) with step h; samples every step.
-inline std::vector<RadialState> integrate_radial(const Sphere& s,
-                                                 const std::function<Real(Real)>& P, Real t_end,
-                                                 Real h) {
+inline std::vector<RadialState>
+integrate_radial(const Sphere& s, const std::function<Real(Real)>& P, Real t_end, Real h) {
   std::vector<RadialState> out{{0.0, s.A, 0.0}};
   Real t = 0.0, a = s.A, v = 0.0;
   while (t < t_end - 0.5 * h) {
     const Real k1a = v, k1v = s.acceleration(a, v, P(t));
-    const Real k2a = v + 0.5 * h * k1v, k2v = s.acceleration(a + 0.5 * h * k1a, k2a, P(t + 0.5 * h));
-    const Real k3a = v + 0.5 * h * k2v, k3v = s.acceleration(a + 0.5 * h * k2a, k3a, P(t + 0.5 * h));
+    const Real k2a = v + 0.5 * h * k1v,
+               k2v = s.acceleration(a + 0.5 * h * k1a, k2a, P(t + 0.5 * h));
+    const Real k3a = v + 0.5 * h * k2v,
+               k3v = s.acceleration(a + 0.5 * h * k2a, k3a, P(t + 0.5 * h));
     const Real k4a = v + h * k3v, k4v = s.acceleration(a + h * k3a, k4a, P(t + h));
     a += h / 6.0 * (k1a + 2.0 * k2a + 2.0 * k3a + k4a);
     v += h / 6.0 * (k1v + 2.0 * k2v + 2.0 * k3v + k4v);

@@ -46,8 +46,7 @@ Uniaxial uniaxial_exact(Real P, Real alpha, Constraint constraint) {
     x -= Jac.partialPivLu().solve(r);
   }
   const Real J = x[0] * x[1] * x[1];
-  return {x[0], x[1],
-          alpha * (constraint == Constraint::JMinusOne ? J - 1.0 : std::log(J))};
+  return {x[0], x[1], alpha * (constraint == Constraint::JMinusOne ? J - 1.0 : std::log(J))};
 }
 
 /// Unit cube, 2x2x2 cells, with the centre node and two face-centre nodes moved (in plane).

@@ -48,8 +48,7 @@ std::vector<Real> quasi_static_radii(int n, const std::vector<Real>& levels) {
     pts.push_back({t0 + ramp, levels[i]});
     pts.push_back({t0 + ramp + hold, levels[i]});
   }
-  const ExplicitModel model =
-      sphere_model(n, dofs::LoadCurve(pts, dofs::Interpolation::Smooth));
+  const ExplicitModel model = sphere_model(n, dofs::LoadCurve(pts, dofs::Interpolation::Smooth));
   ExplicitSettings s;
   s.damping = 2.0; // ≈ critical for the breathing mode at λ_a = 1.5 (ω ≈ 0.9; 2.4 at λ_a = 1)
   ExplicitSolver solver(model, s);
@@ -69,7 +68,7 @@ TEST(ExplicitSphere, QuasiStaticInnerRadiusMatchesClosedFormAndConverges) {
   const std::vector<Real> exact = {1.05, 1.25, 1.5};
   for (std::size_t i = 0; i < levels.size(); ++i)
     ASSERT_NEAR(kSphere.static_radius(levels[i]), exact[i], 2e-6);
-  std::vector<Real> worst; // max over the levels of |a − a_exact| / a_exact, per mesh
+  std::vector<Real> worst;       // max over the levels of |a − a_exact| / a_exact, per mesh
   std::vector<Real> below_limit; // the same for λ_a ≤ 1.25 (away from the limit point)
   for (int n : {2, 4, 6}) {
     const std::vector<Real> a = quasi_static_radii(n, levels);
@@ -105,7 +104,8 @@ struct Oscillation {
 };
 
 Oscillation step_pressure_run(int n, Reading reading, Real t_end) {
-  const ExplicitModel model = sphere_model(n, dofs::LoadCurve({{0.0, 0.3}}, dofs::Interpolation::Step));
+  const ExplicitModel model =
+      sphere_model(n, dofs::LoadCurve({{0.0, 0.3}}, dofs::Interpolation::Step));
   ExplicitSettings s;
   s.reading = reading;
   ExplicitSolver solver(model, s);
@@ -118,9 +118,8 @@ Oscillation step_pressure_run(int n, Reading reading, Real t_end) {
     o.work.push_back(e.external_work);
   };
   record(solver);
-  const StepReport r = solver.run(t_end, [&](const ExplicitSolver& sv, const StepReport&) {
-    record(sv);
-  });
+  const StepReport r =
+      solver.run(t_end, [&](const ExplicitSolver& sv, const StepReport&) { record(sv); });
   EXPECT_TRUE(r.ok()) << r.message;
   return o;
 }
@@ -147,8 +146,7 @@ TEST(ExplicitSphere, StepPressureOscillationMatchesRadialOde) {
   }
   std::printf("sphere oscillation: period %.4f, steps %zu, max |a - a_ode|/a_ode = %.3e "
               "(%.3e of the amplitude %.4f)\n",
-              period, o.t.size() - 1, max_err, max_err * (1.0 + amplitude) / amplitude,
-              amplitude);
+              period, o.t.size() - 1, max_err, max_err * (1.0 + amplitude) / amplitude, amplitude);
   EXPECT_LT(max_err, 0.02);
 }
 

@@ -1,0 +1,85 @@
+// SPDX-License-Identifier: MIT
+// Primal-dual active set (semismooth Newton) for the normal contact complementarity
+// g ≥ 0, t ≤ 0, t g = 0 at the slave nodes (FORMULATION.md §6.5).
+#pragma once
+
+#include "trifem/core/types.hpp"
+
+#include <vector>
+
+namespace trifem::contact {
+
+/// Parameters of the active-set strategy.
+struct ActiveSetSettings {
+  Real release_threshold = 0; ///< ε_t ≥ 0 [stress]: an active node is released only if its
+                              ///< indicator t + c_N g exceeds ε_t (hysteresis)
+  Real gap_tolerance = 0;     ///< [length] initial set: active where g ≤ gap_tolerance;
+                              ///< a frozen set has settled when every active |g| ≤ it
+  int max_updates = 5;        ///< free updates per step; then the set is frozen ...
+  int max_resolves = 10;      ///< ... and updated again only once it has settled, at most
+                              ///< this many times per step
+  bool update = true;         ///< false: the set stays as initialised/assigned (tests)
+};
+
+/// What the active set needs to know of one slave node at one evaluation.
+struct NodeStatus {
+  bool admissible = false; ///< projects onto the master surface, not beyond its free boundary
+  Real gap = 0;            ///< g_k [length]
+  Real indicator = 0;      ///< complementarity function, e.g. t_k + c_N g_k [stress]
+};
+
+/// The set of active slave nodes. Rules, applied at every system evaluation (Term::prepare):
+///   * a node that is not admissible is inactive (its row is t_k = 0);
+///   * first evaluation of the run: active ⇔ admissible and g_k ≤ gap_tolerance (geometry);
+///   * then (primal-dual): an inactive node becomes active if t_k + c_N g_k < 0, an active
+///     node is released if t_k + c_N g_k > ε_t;
+///   * after `max_updates` evaluations of a step the set is frozen (only non-admissible nodes
+///     are still released) until it has *settled*: every active node has |g_k| ≤
+///     gap_tolerance, i.e. Newton has converged for the frozen set. Then the rule is applied
+///     once more (a re-solve with the new set that starts from the converged state), at most
+///     `max_resolves` times per step. This keeps the early, far-from-solution iterates of a
+///     step from cycling the set while still ending on a consistent set.
+///   * nodes the rule would flip but the freeze holds are counted in pending(): a converged
+///     step with pending() > 0 solved the wrong set and must be cut back by the caller.
+/// A new step starts at commit() or when the evaluation time changes (a retried step).
+class ActiveSet {
+public:
+  ActiveSet(Index num_nodes, ActiveSetSettings settings)
+      : settings_(settings), active_(num_nodes, 0) {}
+
+  /// Applies the rules above at an evaluation at `time`; returns the number of flips.
+  Index update(Real time, const std::vector<NodeStatus>& nodes);
+  /// The step converged: the next evaluation starts a new step.
+  void commit() { new_step_ = true; }
+  /// Replaces the set (e.g. a restart or a test); marks it initialised.
+  void assign(std::vector<char> active);
+
+  bool active(Index k) const { return active_[k] != 0; }
+  const std::vector<char>& flags() const { return active_; }
+  Index num_active() const;
+  bool initialized() const { return initialized_; }
+  const ActiveSetSettings& settings() const { return settings_; }
+  ActiveSetSettings& settings() { return settings_; }
+
+  /// Evaluations and flips since the step began.
+  int evaluations_in_step() const { return evaluations_; }
+  Index flips_in_step() const { return flips_step_; }
+  /// Nodes the rule would flip at the last evaluation but the freeze held (0: consistent).
+  Index pending() const { return pending_; }
+
+private:
+  bool wanted(Index k, const NodeStatus& s) const;
+  bool settled(const std::vector<NodeStatus>& nodes) const;
+
+  ActiveSetSettings settings_;
+  std::vector<char> active_;
+  bool initialized_ = false;
+  bool new_step_ = true;
+  Real time_ = 0;
+  int evaluations_ = 0;
+  int resolves_ = 0;
+  Index flips_step_ = 0;
+  Index pending_ = 0;
+};
+
+} // namespace trifem::contact

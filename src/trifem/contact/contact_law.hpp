@@ -1,0 +1,83 @@
+// SPDX-License-Identifier: MIT
+// The contact-law seam (STYLE §7, FORMULATION.md §6.2–§6.5): what the slave-node multipliers
+// mean, which rows their interface work acts on, and which constraint each one imposes.
+// Geometry, search, projections, the interface integrals and the DOF bookkeeping stay in
+// ContactTerm; a law only sees one slave node at a time.
+#pragma once
+
+#include "trifem/contact/local_system.hpp"
+#include "trifem/contact/projection_derivatives.hpp"
+#include "trifem/dofs/dof_map.hpp"
+
+#include <string>
+#include <vector>
+
+namespace trifem::contact {
+
+/// One slave node k as seen by a law: its projection onto the master surface and the local
+/// positions of its DOFs in the element (a LocalSystem over the element's stencil). A law that
+/// needs other nodal fields (e.g. fluid fluxes w at the stencil nodes) lists them in
+/// ContactLaw::constraint_fields(); their DOFs at `nodes` are then part of the stencil and can
+/// be read from `state` and located with LocalSystem::at(dofs->dof(field, node, i)).
+struct SlaveNodeRows {
+  Index slave = -1;                                   ///< k: index into the slave surface's nodes
+  std::array<Index, 5> nodes{-1, -1, -1, -1, -1};     ///< mesh nodes (x_s, master facet nodes)
+  const physics::EvalState* state = nullptr;          ///< the evaluated state (all DOFs)
+  const dofs::DofMap* dofs = nullptr;                 ///< DOF numbering of `state`
+  const Projection* projection = nullptr;             ///< onto the master surface (null: none)
+  const ProjectionDerivatives* derivatives = nullptr; ///< of *projection (null: none)
+  Real weight = 0;      ///< A_k = ∫_slave M_k dA (reference tributary area; a fixed row weight)
+  Real scale = 1;       ///< c_N > 0 [stress/length]: the complementarity scaling
+  Real dt = 0;          ///< step size (for rate-type constraints such as flux continuity)
+  Vector multiplier;    ///< λ_k (num_components() values)
+  Index lambda_at = -1; ///< local position of λ_k component 0 (components are contiguous)
+  /// Local position of coordinate component 0 of stencil point j (j = 0: the slave node,
+  /// 1 + a: master facet node a; -1 when there is no projection).
+  std::array<Index, 5> x_at{-1, -1, -1, -1, -1};
+};
+
+/// A contact law: the meaning of the multiplier components and their constraint rows.
+/// Interface work (ContactTerm): component c adds R_{F_c,a} -= ∫ N_a λ_c n da on the rows of
+/// the vector field F_c = paired_field(c) at the facet nodes of both surfaces.
+class ContactLaw {
+public:
+  virtual ~ContactLaw() = default;
+  virtual std::string name() const = 0;
+  /// Multiplier components per slave node (= components of the multiplier field).
+  virtual int num_components() const = 0;
+  /// The nodal vector field (3 components per mesh node) that component c's interface work
+  /// acts on (the displacement field for the contact pressure).
+  virtual dofs::FieldId paired_field(int c) const = 0;
+  /// Further nodal vector fields the constraint rows depend on at the slave node and the
+  /// master facet nodes (positions are always available).
+  virtual std::vector<dofs::FieldId> constraint_fields() const { return {}; }
+  /// Complementarity function of the normal contact, e.g. λ_t + c_N g: the primal-dual active
+  /// set activates a node where it is negative (FORMULATION.md §6.5).
+  virtual Real indicator(const SlaveNodeRows& node) const = 0;
+  /// Constraint rows (on the λ_k DOFs) of an active node, added to `out`.
+  virtual void active_rows(const SlaveNodeRows& node, LocalSystem& out) const = 0;
+  /// Rows of an inactive node (separated, or not projecting onto the master surface).
+  virtual void inactive_rows(const SlaveNodeRows& node, LocalSystem& out) const = 0;
+};
+
+/// Frictionless normal contact of solids, multiplier = contact pressure t (≤ 0 compressive,
+/// the normal component of the total traction; FORMULATION.md §6.4):
+///   active:   G_k = A_k g_k,          ΔG_k = A_k n·(Δx_s - Σ_a N_a(ξ) Δx_a)
+///   inactive: G_k = (A_k / c_N) t_k   (t_k = 0; the weight only makes rows conjugate)
+///   indicator: t_k + c_N g_k.
+/// A fluid/ion extension appends components (μ_w, μ_+, μ_-) paired with w, j+, j-.
+class FrictionlessLaw final : public ContactLaw {
+public:
+  explicit FrictionlessLaw(dofs::FieldId displacement) : u_(displacement) {}
+  std::string name() const override { return "frictionless"; }
+  int num_components() const override { return 1; }
+  dofs::FieldId paired_field(int /*c*/) const override { return u_; }
+  Real indicator(const SlaveNodeRows& node) const override;
+  void active_rows(const SlaveNodeRows& node, LocalSystem& out) const override;
+  void inactive_rows(const SlaveNodeRows& node, LocalSystem& out) const override;
+
+private:
+  dofs::FieldId u_;
+};
+
+} // namespace trifem::contact

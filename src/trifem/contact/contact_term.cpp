@@ -1,0 +1,299 @@
+// SPDX-License-Identifier: MIT
+#include "trifem/contact/contact_term.hpp"
+
+#include <algorithm>
+#include <iterator>
+
+namespace trifem::contact {
+namespace {
+
+/// ∫ N_a dA over facet X (reference), exact by 2x2 Gauss.
+fe::QuadShape nodal_areas(const fe::QuadCoords& X) {
+  fe::QuadShape w = fe::QuadShape::Zero();
+  for (const auto& qp : fe::quad_gauss_2x2()) {
+    const FacetPoint fp = evaluate_facet(X, qp.xi);
+    w += fp.N * fp.jacobian * qp.weight;
+  }
+  return w;
+}
+
+void check_disjoint(const ContactSurface& master, const ContactSurface& slave) {
+  TRIFEM_CHECK(master.num_facets() > 0, "contact: the master surface is empty");
+  TRIFEM_CHECK(slave.num_facets() > 0, "contact: the slave surface is empty");
+  std::vector<Index> common;
+  std::set_intersection(master.nodes().begin(), master.nodes().end(), slave.nodes().begin(),
+                        slave.nodes().end(), std::back_inserter(common));
+  TRIFEM_CHECK(common.empty(),
+               "contact: master and slave surfaces share {} node(s) (e.g. node {}); they must "
+               "belong to different bodies",
+               common.size(), common.empty() ? -1 : common.front());
+}
+
+} // namespace
+
+ContactTerm::ContactTerm(const mesh::Mesh& mesh, const dofs::DofMap& dofs,
+                         dofs::FieldId displacement, dofs::FieldId multiplier,
+                         const mesh::Surface& master, const mesh::Surface& slave,
+                         std::shared_ptr<const ContactLaw> law, ContactSettings settings)
+    : mesh_(mesh), dofs_(dofs), u_(displacement), lambda_(multiplier), master_(master),
+      slave_(slave), law_(std::move(law)), settings_(settings),
+      active_(slave_.num_nodes(), ActiveSetSettings{}) {
+  check_disjoint(master_, slave_);
+  TRIFEM_CHECK(law_ != nullptr, "contact: no contact law given");
+  const dofs::FieldInfo& info = dofs.field(lambda_);
+  TRIFEM_CHECK(info.num_entities == slave_.num_nodes() && info.components == law_->num_components(),
+               "contact: the multiplier field '{}' must have {} entities (slave nodes) with {} "
+               "component(s), not {} with {}",
+               info.name, slave_.num_nodes(), law_->num_components(), info.num_entities,
+               info.components);
+  TRIFEM_CHECK(settings_.scale > 0, "contact: the scale c_N = {} must be > 0 (≈ E/h)",
+               settings_.scale);
+  for (int c = 0; c < law_->num_components(); ++c)
+    if (std::find(paired_.begin(), paired_.end(), law_->paired_field(c)) == paired_.end())
+      paired_.push_back(law_->paired_field(c));
+  area_.assign(slave_.num_nodes(), 0.0);
+  for (Index f = 0; f < slave_.num_facets(); ++f) {
+    const auto& nodes = slave_.facet(f).nodes;
+    const fe::QuadShape w = nodal_areas(slave_.coords(f, mesh.nodes()));
+    std::array<Index, 4> k{};
+    for (int a = 0; a < 4; ++a) {
+      k[a] = slave_.local_node(nodes[a]);
+      area_[k[a]] += w[a];
+    }
+    slave_facet_k_.push_back(k);
+  }
+  resolve_defaults();
+  project_all(Vector::Zero(dofs.num_dofs()));
+  rebuild_stencils();
+}
+
+void ContactTerm::resolve_defaults() {
+  Real sum = 0;
+  for (const ContactSurface* s : {&master_, &slave_})
+    for (Index f = 0; f < s->num_facets(); ++f)
+      sum += facet_size(s->coords(f, mesh_.nodes()));
+  h_ = sum / (master_.num_facets() + slave_.num_facets());
+  if (settings_.search_distance <= 0)
+    settings_.search_distance = 0.5 * h_;
+  if (settings_.release_threshold < 0)
+    settings_.release_threshold = 1e-8 * settings_.scale * h_;
+  if (settings_.gap_tolerance < 0)
+    settings_.gap_tolerance = 1e-6 * h_;
+  active_.settings() = {settings_.release_threshold, settings_.gap_tolerance,
+                        settings_.max_active_set_updates, settings_.max_active_set_resolves,
+                        settings_.update_active_set};
+}
+
+std::pair<ContactTerm::Kind, Index> ContactTerm::locate(Index e) const {
+  const Index ns = slave_.num_facets();
+  if (e < ns)
+    return {Kind::SlaveFacet, e};
+  e -= ns;
+  if (settings_.integration == Integration::BothSurfaces) {
+    if (e < master_.num_facets())
+      return {Kind::MasterFacet, e};
+    e -= master_.num_facets();
+  }
+  return {Kind::SlaveNode, e};
+}
+
+Vec3 ContactTerm::position(Index node, const Vector& x) const {
+  return mesh_.node(node) + Vec3(x[u_dof(node, 0)], x[u_dof(node, 1)], x[u_dof(node, 2)]);
+}
+
+fe::QuadCoords ContactTerm::coords(const std::array<Index, 4>& nodes, const Vector& x) const {
+  fe::QuadCoords X;
+  for (int a = 0; a < 4; ++a)
+    X.row(a) = position(nodes[a], x).transpose();
+  return X;
+}
+
+Eigen::Matrix<Real, 4, Eigen::Dynamic> ContactTerm::facet_multipliers(Index f,
+                                                                      const Vector& x) const {
+  const int C = law_->num_components();
+  Eigen::Matrix<Real, 4, Eigen::Dynamic> lam(4, C);
+  for (int a = 0; a < 4; ++a)
+    for (int c = 0; c < C; ++c)
+      lam(a, c) = x[multiplier_dof(slave_facet_k_[f][a], c)];
+  return lam;
+}
+
+void ContactTerm::project_all(const Vector& x) {
+  const NodePositions pos([this, &x](Index n) { return position(n, x); });
+  ProjectionOptions options;
+  options.xi_tolerance = settings_.xi_tolerance;
+  options.search_distance = settings_.search_distance;
+  const BucketSearch on_master(master_, pos, settings_.search_distance);
+  slave_proj_ = project_nodes(slave_.nodes(), master_, pos, on_master, options);
+  master_proj_.assign(master_.num_nodes(), std::nullopt);
+  if (settings_.integration == Integration::BothSurfaces) {
+    const BucketSearch on_slave(slave_, pos, settings_.search_distance);
+    master_proj_ = project_nodes(master_.nodes(), slave_, pos, on_slave, options);
+  }
+}
+
+void ContactTerm::update_active_set(const physics::EvalState& state) {
+  std::vector<NodeStatus> status(slave_.num_nodes());
+  for (Index k = 0; k < slave_.num_nodes(); ++k) {
+    const auto& pr = slave_proj_[k];
+    if (!pr || pr->on_free_boundary)
+      continue;
+    SlaveNodeRows node;
+    node.slave = k;
+    node.projection = &*pr;
+    node.scale = settings_.scale;
+    node.multiplier.resize(law_->num_components());
+    for (int c = 0; c < law_->num_components(); ++c)
+      node.multiplier[c] = state.x[multiplier_dof(k, c)];
+    status[k] = {true, pr->gap, law_->indicator(node)};
+  }
+  active_.update(state.time, status);
+}
+
+bool ContactTerm::prepare(const physics::EvalState& state) {
+  project_all(state.x);
+  update_active_set(state);
+  return rebuild_stencils();
+}
+
+void ContactTerm::commit(const physics::EvalState& /*state*/) {
+  active_.commit();
+}
+
+void ContactTerm::add_node_dofs(Index node, bool rows, std::vector<Index>& dofs) const {
+  for (int i = 0; i < 3; ++i)
+    dofs.push_back(u_dof(node, i));
+  if (!rows)
+    return;
+  for (dofs::FieldId f : paired_)
+    if (f != u_)
+      for (int i = 0; i < 3; ++i)
+        dofs.push_back(dofs_.dof(f, node, i));
+}
+
+void ContactTerm::stencil_of(Kind kind, Index i, std::vector<Index>& dofs) const {
+  const int C = law_->num_components();
+  const auto add_lambda = [&](Index k) {
+    for (int c = 0; c < C; ++c)
+      dofs.push_back(multiplier_dof(k, c));
+  };
+  dofs.clear();
+  if (kind == Kind::SlaveFacet) {
+    for (int a = 0; a < 4; ++a) {
+      add_node_dofs(slave_.facet(i).nodes[a], true, dofs);
+      add_lambda(slave_facet_k_[i][a]);
+      const auto& pr = slave_proj_[slave_facet_k_[i][a]];
+      if (settings_.integration == Integration::SlaveNodes && pr)
+        for (Index q : master_.facet(pr->facet).nodes)
+          add_node_dofs(q, true, dofs);
+    }
+  } else if (kind == Kind::MasterFacet) {
+    for (Index m : master_.facet(i).nodes) {
+      add_node_dofs(m, true, dofs);
+      const auto& pr = master_proj_[master_.local_node(m)];
+      if (!pr)
+        continue;
+      for (int b = 0; b < 4; ++b) {
+        add_node_dofs(slave_.facet(pr->facet).nodes[b], false, dofs);
+        add_lambda(slave_facet_k_[pr->facet][b]);
+      }
+    }
+  } else {
+    add_lambda(i);
+    std::vector<Index> nodes{slave_.nodes()[i]};
+    if (const auto& pr = slave_proj_[i])
+      nodes.insert(nodes.end(), master_.facet(pr->facet).nodes.begin(),
+                   master_.facet(pr->facet).nodes.end());
+    for (Index n : nodes) {
+      add_node_dofs(n, false, dofs);
+      for (dofs::FieldId f : law_->constraint_fields())
+        for (int c = 0; c < 3; ++c)
+          dofs.push_back(dofs_.dof(f, n, c));
+    }
+  }
+  std::sort(dofs.begin(), dofs.end());
+  dofs.erase(std::unique(dofs.begin(), dofs.end()), dofs.end());
+}
+
+bool ContactTerm::rebuild_stencils() {
+  Index n = slave_.num_facets() + slave_.num_nodes();
+  if (settings_.integration == Integration::BothSurfaces)
+    n += master_.num_facets();
+  const bool resized = static_cast<Index>(stencils_.size()) != n;
+  stencils_.resize(n);
+  bool changed = resized;
+  std::vector<Index> dofs;
+  for (Index e = 0; e < n; ++e) {
+    const auto [kind, i] = locate(e);
+    stencil_of(kind, i, dofs);
+    if (dofs != stencils_[e]) {
+      stencils_[e] = dofs;
+      changed = true;
+    }
+  }
+  return changed;
+}
+
+bool ContactTerm::evaluate(Index e, const physics::EvalState& state, physics::LocalVector& r,
+                           physics::LocalMatrix* K) const {
+  LocalSystem out(stencils_[e], r, K);
+  const auto [kind, i] = locate(e);
+  if (kind == Kind::SlaveNode)
+    slave_node_rows(i, state, out);
+  else if (kind == Kind::MasterFacet)
+    master_facet_work(i, state.x, out);
+  else if (settings_.integration == Integration::SlaveNodes)
+    slave_point_forces(i, state.x, out);
+  else
+    slave_facet_work(i, state.x, out);
+  return true;
+}
+
+void ContactTerm::slave_node_rows(Index k, const physics::EvalState& state,
+                                  LocalSystem& out) const {
+  SlaveNodeRows node;
+  node.slave = k;
+  node.nodes[0] = slave_.nodes()[k];
+  node.state = &state;
+  node.dofs = &dofs_;
+  node.weight = area_[k];
+  node.scale = settings_.scale;
+  node.dt = state.dt;
+  node.multiplier.resize(law_->num_components());
+  for (int c = 0; c < law_->num_components(); ++c)
+    node.multiplier[c] = state.x[multiplier_dof(k, c)];
+  node.lambda_at = out.at(multiplier_dof(k, 0));
+  const auto& pr = slave_proj_[k];
+  ProjectionDerivatives d;
+  if (pr) {
+    node.nodes = stencil_nodes(slave_.nodes()[k], master_, pr->facet);
+    for (int j = 0; j < 5; ++j)
+      node.x_at[j] = out.at(u_dof(node.nodes[j], 0));
+    node.projection = &*pr;
+  } else {
+    node.x_at[0] = out.at(u_dof(slave_.nodes()[k], 0));
+  }
+  if (active_.active(k) && pr && !pr->on_free_boundary) {
+    d = projection_derivatives(*pr, coords(master_.facet(pr->facet).nodes, state.x));
+    node.derivatives = &d;
+    law_->active_rows(node, out);
+  } else {
+    law_->inactive_rows(node, out);
+  }
+}
+
+Vec3 ContactTerm::slave_force(const Vector& x) const {
+  Vec3 f = Vec3::Zero();
+  for (Index s = 0; s < slave_.num_facets(); ++s) {
+    const fe::QuadCoords X = coords(slave_.facet(s).nodes, x);
+    const Eigen::Matrix<Real, 4, 1> lam = facet_multipliers(s, x).col(0);
+    for (const auto& qp : fe::quad_gauss_2x2()) {
+      const FacetPoint fp = evaluate_facet(X, qp.xi);
+      const Vec3 r = fp.t[0].cross(fp.t[1]) * qp.weight;
+      f += fp.N.dot(lam) * r; // = Σ_a λ_a a_a as well (lumped forces have the same sum)
+    }
+  }
+  return f;
+}
+
+} // namespace trifem::contact

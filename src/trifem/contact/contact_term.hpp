@@ -1,0 +1,140 @@
+// SPDX-License-Identifier: MIT
+// One-pass node-to-segment contact with Lagrange multipliers at the slave nodes, interface work
+// integrated over both surfaces (Chen, Sunagawa & Hisada 2009, §3 and Appendix A;
+// FORMULATION.md §6).
+#pragma once
+
+#include "trifem/contact/active_set.hpp"
+#include "trifem/contact/contact_law.hpp"
+#include "trifem/mesh/mesh.hpp"
+
+#include <memory>
+#include <optional>
+
+namespace trifem::contact {
+
+/// How the interface work of the multipliers is integrated (FORMULATION.md §6.3).
+enum class Integration {
+  /// The paper's scheme: slave facets with λ^s(ξ) = Σ_k M_k(ξ) λ_k, master facets with
+  /// λ^m(ξ) = Σ_i N_i(ξ) λ^m_i, λ^m_i = Σ_k M_k(ζ_i) λ_k (ζ_i: projection of master node i
+  /// onto the slave surface; 0 if it has none within the search distance or if it lies beyond
+  /// the free boundary of the slave surface: exposed). Passes the contact patch test.
+  BothSurfaces,
+  /// Conventional one-pass NTS: lumped point force λ_k a_k at slave node k (a_k = ∫ M_k n da,
+  /// current) and its reaction -λ_k N_a(ξ_k) a_k on the nodes of the master facet it projects
+  /// onto. Fails the patch test (kept to show it).
+  SlaveNodes,
+};
+
+/// Parameters of a contact pair. Lengths refer to h = the mean reference facet size of both
+/// surfaces; non-positive values select the defaults given.
+struct ContactSettings {
+  Integration integration = Integration::BothSurfaces;
+  Real scale = 0;              ///< c_N > 0 [stress/length], ≈ E/h (a scaling only; required)
+  Real search_distance = 0;    ///< projections farther than this do not exist; ≤ 0: 0.5 h
+  Real release_threshold = -1; ///< ε_t [stress]; < 0: 1e-8 c_N h (≈ 1e-8 E)
+  Real gap_tolerance = -1; ///< initial set g ≤ tol, settled set |g| ≤ tol [length]; < 0: 1e-6 h
+  int max_active_set_updates = 5;   ///< evaluations per step before the set is frozen
+  int max_active_set_resolves = 10; ///< updates of a frozen set once it has settled
+  bool update_active_set = true;    ///< false: the set stays as initialised or assigned
+  Real xi_tolerance = 1e-6;         ///< interior projections accepted in [-1-tol, 1+tol]²
+};
+
+/// Contact of a master and a slave surface (fixed for the run: one pass), frictionless or
+/// through any ContactLaw. Unknowns: the multipliers λ_k of every slave node k (a field with
+/// one entity per slave surface node, ordered as ContactSurface::nodes()).
+///
+/// Residual contributions (R = f_int - f_ext; the interface traction λ n is external):
+///   slave facets:   R_{F_c,a} -= ∫ N_a λ^s_c(ξ) n da          (BothSurfaces)
+///   master facets:  R_{F_c,a} -= ∫ N_a λ^m_c(ξ) n da          (BothSurfaces)
+///   slave facets:   R_{F_c,a} -= λ_{a,c} a_a,  R_{F_c,q} += λ_{a,c} N_q(ξ_a) a_a   (SlaveNodes)
+///   slave node k:   rows G_k of the law (active or inactive) on the λ_k DOFs
+/// with n da = (t_1 × t_2) dξ in the current configuration, 2×2 Gauss (exact) on each facet.
+/// The consistent tangent includes the area-vector derivatives, the multiplier columns, the
+/// derivative of L_ik = M_k(ζ_i) through the projection of master node i, and of N_q(ξ_k).
+///
+/// Elements: [slave facets | master facets (BothSurfaces only) | slave nodes]. Stencils are
+/// sorted and unique and depend on the current projections (a node's projection facet is in
+/// the stencil whenever the projection exists, so active-set flips never change the pattern);
+/// prepare() recomputes them and reports a change (the assembler then rebuilds the pattern).
+/// Active set: see ActiveSet (primal-dual, indicator of the law, frozen after a few updates
+/// per step, re-checked once settled; pending() > 0 after a converged step means the step
+/// must be cut back).
+class ContactTerm final : public physics::Term {
+public:
+  /// `multiplier`: field with slave.nodes().size() entities and law->num_components()
+  /// components. Throws InputError for empty or overlapping surfaces or a bad field/setting.
+  ContactTerm(const mesh::Mesh& mesh, const dofs::DofMap& dofs, dofs::FieldId displacement,
+              dofs::FieldId multiplier, const mesh::Surface& master, const mesh::Surface& slave,
+              std::shared_ptr<const ContactLaw> law, ContactSettings settings);
+
+  std::string name() const override { return "contact"; }
+  Index num_elements() const override { return static_cast<Index>(stencils_.size()); }
+  void element_dofs(Index e, std::vector<Index>& dofs) const override { dofs = stencils_[e]; }
+  bool evaluate(Index e, const physics::EvalState& state, physics::LocalVector& r,
+                physics::LocalMatrix* K) const override;
+  /// Search and projections in the current configuration, then the active-set update.
+  bool prepare(const physics::EvalState& state) override;
+  void commit(const physics::EvalState& state) override;
+
+  const ContactSurface& master() const { return master_; }
+  const ContactSurface& slave() const { return slave_; }
+  const ContactSettings& settings() const { return settings_; }
+  const ActiveSet& active_set() const { return active_; }
+  ActiveSet& active_set() { return active_; }
+  /// Projection of slave node k onto the master surface (last prepare()).
+  const std::optional<Projection>& slave_projection(Index k) const { return slave_proj_[k]; }
+  /// Projection of master node i (index into master().nodes()) onto the slave surface.
+  const std::optional<Projection>& master_projection(Index i) const { return master_proj_[i]; }
+  /// A_k = ∫ M_k dA over the reference slave surface.
+  Real tributary_area(Index k) const { return area_[k]; }
+  /// DOF of component c of λ_k.
+  Index multiplier_dof(Index k, int c) const { return dofs_.dof(lambda_, k, c); }
+  /// Total interface force of component 0 on the slave body in the state x,
+  /// f = ∫ λ^s n da = Σ_k λ_k a_k (both integration options give the same total).
+  Vec3 slave_force(const Vector& x) const;
+  /// Total interface force of component 0 on the master body in the state x (projections of
+  /// the last prepare()): ∫ λ^m n da (BothSurfaces) or -Σ_k λ_k a_k over the slave nodes that
+  /// transfer their force (SlaveNodes, = -slave_force). The both-surface scheme does not
+  /// conserve momentum exactly: master + slave force is zero for a uniform pressure (patch
+  /// test) and otherwise decreases as the master nodes resolve the pressure distribution.
+  Vec3 master_force(const Vector& x) const;
+
+private:
+  enum class Kind { SlaveFacet, MasterFacet, SlaveNode };
+  std::pair<Kind, Index> locate(Index e) const;
+  Vec3 position(Index node, const Vector& x) const;
+  fe::QuadCoords coords(const std::array<Index, 4>& nodes, const Vector& x) const;
+  Index u_dof(Index node, int i) const { return dofs_.dof(u_, node, i); }
+  /// λ of the four nodes of slave facet f (row a, column c).
+  Eigen::Matrix<Real, 4, Eigen::Dynamic> facet_multipliers(Index f, const Vector& x) const;
+
+  void resolve_defaults();
+  void project_all(const Vector& x);
+  void update_active_set(const physics::EvalState& state);
+  bool rebuild_stencils();
+  void stencil_of(Kind kind, Index i, std::vector<Index>& dofs) const;
+  void add_node_dofs(Index node, bool rows, std::vector<Index>& dofs) const;
+
+  // element kernels (interface_integrals.cpp)
+  void slave_facet_work(Index f, const Vector& x, LocalSystem& out) const;
+  void master_facet_work(Index f, const Vector& x, LocalSystem& out) const;
+  void slave_point_forces(Index f, const Vector& x, LocalSystem& out) const;
+  void slave_node_rows(Index k, const physics::EvalState& state, LocalSystem& out) const;
+
+  const mesh::Mesh& mesh_;
+  const dofs::DofMap& dofs_;
+  dofs::FieldId u_, lambda_;
+  ContactSurface master_, slave_;
+  std::shared_ptr<const ContactLaw> law_;
+  ContactSettings settings_;
+  std::vector<dofs::FieldId> paired_; ///< unique fields paired with the components (rows)
+  std::vector<std::array<Index, 4>> slave_facet_k_; ///< slave-node index of each facet node
+  std::vector<Real> area_;                          ///< A_k
+  Real h_ = 0;                                      ///< mean reference facet size
+  ActiveSet active_;
+  std::vector<std::optional<Projection>> slave_proj_, master_proj_;
+  std::vector<std::vector<Index>> stencils_;
+};
+
+} // namespace trifem::contact

@@ -1,0 +1,160 @@
+// SPDX-License-Identifier: MIT
+// Central-difference check of the whole ContactTerm (residual of slave facets, master facets and
+// slave-node constraint rows) with respect to all its DOFs (positions and multipliers), for both
+// integration options, at warped configurations where (i) all projections are interior and
+// near facet centres, (ii) slave and master nodes project close to facet edges (|ξ| up to
+// 0.97); in both, neighbouring master nodes project onto different slave facets (asserted)
+// and the outer master nodes lie beyond the slave surface (λ^m = 0). Active and inactive rows
+// are both present. Error = max |K - K_fd| / max |K| over the whole term.
+#include "contact_model.hpp"
+
+#include <gtest/gtest.h>
+
+#include <random>
+#include <set>
+
+using namespace trifem;
+
+namespace {
+
+struct Layout {
+  const char* name;
+  std::vector<Real> master; ///< x (= z) node coordinates of the master block
+  std::vector<Real> slave;  ///< x (= z) node coordinates of the slave block
+};
+
+struct Setup {
+  mesh::Mesh mesh;
+  dofs::DofMap dofs;
+  dofs::FieldId u, lambda;
+  std::unique_ptr<contact::ContactTerm> term;
+  Vector x;
+};
+
+std::unique_ptr<Setup> make_setup(const Layout& layout, contact::Integration integration,
+                                  unsigned seed) {
+  auto s = std::make_unique<Setup>();
+  s->mesh = test::make_block("master", layout.master, {-0.5, 0.0}, layout.master);
+  s->mesh.append(test::make_block("slave", layout.slave, {0.0, 0.5}, layout.slave));
+  s->u = s->dofs.add_field("displacement", s->mesh.num_nodes(), 3);
+  const auto ns = static_cast<Index>(s->mesh.node_set("slave.ymin").size());
+  s->lambda = s->dofs.add_field("contact_pressure", ns, 1);
+  contact::ContactSettings settings;
+  settings.integration = integration;
+  settings.scale = 4.0;
+  settings.search_distance = 0.6;
+  settings.update_active_set = false;
+  s->term = std::make_unique<contact::ContactTerm>(
+      s->mesh, s->dofs, s->u, s->lambda, s->mesh.surface("master.ymax"),
+      s->mesh.surface("slave.ymin"), std::make_shared<contact::FrictionlessLaw>(s->u), settings);
+  // Random state: small tangential, larger normal motion (warped, twisted facets; some nodes
+  // penetrate, some are separated), multipliers of both signs.
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<Real> unit(-1, 1);
+  s->x = Vector::Zero(s->dofs.num_dofs());
+  for (Index n = 0; n < s->mesh.num_nodes(); ++n)
+    for (int i = 0; i < 3; ++i)
+      s->x[s->dofs.dof(s->u, n, i)] = (i == 1 ? 0.03 : 0.002) * unit(rng);
+  std::vector<char> active(ns);
+  for (Index k = 0; k < ns; ++k) {
+    s->x[s->dofs.dof(s->lambda, k, 0)] = -0.1 + 0.12 * unit(rng);
+    active[k] = k % 3 != 0;
+  }
+  s->term->active_set().assign(active);
+  return s;
+}
+
+/// Residual (and Jacobian) of the whole term over all DOFs at x, after prepare(x).
+bool assemble(contact::ContactTerm& term, const Vector& x, Vector& R, Eigen::MatrixXd* K) {
+  const physics::EvalState state{x, x, 0.0, 1.0};
+  const bool changed = term.prepare(state);
+  const Index n = static_cast<Index>(x.size());
+  R.setZero(n);
+  if (K)
+    K->setZero(n, n);
+  std::vector<Index> dofs;
+  physics::LocalVector r;
+  physics::LocalMatrix k;
+  for (Index e = 0; e < term.num_elements(); ++e) {
+    term.element_dofs(e, dofs);
+    EXPECT_TRUE(term.evaluate(e, state, r, K ? &k : nullptr));
+    for (std::size_t i = 0; i < dofs.size(); ++i) {
+      R[dofs[i]] += r[i];
+      if (K)
+        for (std::size_t j = 0; j < dofs.size(); ++j)
+          (*K)(dofs[i], dofs[j]) += k(i, j);
+    }
+  }
+  return changed;
+}
+
+/// Smallest distance of a projection's ξ to the facet edges (±1), over all projections.
+Real edge_margin(const contact::ContactTerm& term) {
+  Real margin = 1;
+  const auto visit = [&](const std::optional<contact::Projection>& pr) {
+    if (pr && !pr->on_boundary)
+      margin = std::min(margin, 1 - pr->xi.cwiseAbs().maxCoeff());
+  };
+  for (Index k = 0; k < term.slave().num_nodes(); ++k)
+    visit(term.slave_projection(k));
+  for (Index i = 0; i < term.master().num_nodes(); ++i)
+    visit(term.master_projection(i));
+  return margin;
+}
+
+void check(const Layout& layout, contact::Integration integration, const char* option) {
+  auto s = make_setup(layout, integration, 7);
+  Vector R;
+  Eigen::MatrixXd K;
+  assemble(*s->term, s->x, R, &K);
+  for (Index k = 0; k < s->term->slave().num_nodes(); ++k) {
+    const auto& pr = s->term->slave_projection(k);
+    ASSERT_TRUE(pr && !pr->on_boundary) << "slave node " << k << " must project inside";
+  }
+  std::set<Index> master_targets; // slave facets that interior master nodes project onto
+  for (Index i = 0; i < s->term->master().num_nodes(); ++i) {
+    const auto& pr = s->term->master_projection(i);
+    if (pr && !pr->on_free_boundary)
+      master_targets.insert(pr->facet);
+  }
+  if (integration == contact::Integration::BothSurfaces) {
+    EXPECT_GT(master_targets.size(), 1u) << "neighbouring master nodes on different facets";
+  }
+  Eigen::MatrixXd fd = Eigen::MatrixXd::Zero(K.rows(), K.cols());
+  const Real h = 1e-6;
+  Vector Rp, Rm;
+  for (Index j = 0; j < static_cast<Index>(s->x.size()); ++j) {
+    Vector xp = s->x, xm = s->x;
+    xp[j] += h;
+    xm[j] -= h;
+    EXPECT_FALSE(assemble(*s->term, xp, Rp, nullptr)) << "stencil changed at DOF " << j;
+    EXPECT_FALSE(assemble(*s->term, xm, Rm, nullptr)) << "stencil changed at DOF " << j;
+    fd.col(j) = (Rp - Rm) / (2 * h);
+  }
+  assemble(*s->term, s->x, R, &K); // restore the projections of the base state
+  const Real error = (K - fd).cwiseAbs().maxCoeff() / K.cwiseAbs().maxCoeff();
+  std::printf("[ tangent ] contact %-12s %-10s edge margin %.3f, |K| %.3e, relative FD error "
+              "%.2e (active %d of %d)\n",
+              option, layout.name, edge_margin(*s->term), K.cwiseAbs().maxCoeff(), error,
+              static_cast<int>(s->term->active_set().num_active()),
+              static_cast<int>(s->term->slave().num_nodes()));
+  EXPECT_LE(error, 1e-6) << option << " " << layout.name;
+}
+
+const Layout kInterior{"interior", {-0.25, 0.25, 0.75, 1.25}, {0.0, 0.5, 1.0}};
+const Layout kNearEdges{"near-edges", {-0.25, 0.25, 0.75, 1.25}, {0.0, 0.24, 0.5, 0.77, 1.0}};
+
+} // namespace
+
+TEST(ContactTermTangent, BothSurfacesInterior) {
+  check(kInterior, contact::Integration::BothSurfaces, "both");
+}
+TEST(ContactTermTangent, BothSurfacesNearFacetEdges) {
+  check(kNearEdges, contact::Integration::BothSurfaces, "both");
+}
+TEST(ContactTermTangent, SlaveNodesInterior) {
+  check(kInterior, contact::Integration::SlaveNodes, "slave-nodes");
+}
+TEST(ContactTermTangent, SlaveNodesNearFacetEdges) {
+  check(kNearEdges, contact::Integration::SlaveNodes, "slave-nodes");
+}

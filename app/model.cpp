@@ -2,6 +2,7 @@
 #include "model.hpp"
 
 #include "model_conditions.hpp"
+#include "model_contact.hpp"
 #include "trifem/core/error.hpp"
 #include "trifem/material/registry.hpp"
 #include "trifem/mesh/gmsh_reader.hpp"
@@ -187,9 +188,12 @@ std::unique_ptr<Model> build_model(const io::CaseSpec& spec) {
   const std::vector<CellMaterial>& materials = model->materials;
   model->chem = electrochemistry(spec.electrochemistry);
   add_fields(materials, *model);
+  add_contact_fields(spec, *model);
   set_scales(materials, *model);
 
   auto terms = bulk_terms(spec, materials, *model);
+  for (auto& t : contact_terms(spec, *model))
+    terms.push_back(std::move(t));
   for (auto& t : load_terms(spec, *model))
     terms.push_back(std::move(t));
   auto bcs = boundary_conditions(spec, *model);

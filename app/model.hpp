@@ -3,6 +3,7 @@
 #pragma once
 
 #include "trifem/assembly/fe_problem.hpp"
+#include "trifem/contact/contact_term.hpp"
 #include "trifem/io/case_spec.hpp"
 #include "trifem/material/mixture.hpp"
 #include "trifem/mesh/mesh.hpp"
@@ -39,8 +40,10 @@ struct Model {
   std::vector<CellMaterial> materials; ///< per cell
   physics::MixtureFields fields;       ///< u always; w, p with mixtures; j+-, eta with ions
   material::Electrochemistry chem;
-  const physics::SolidTerm* solid = nullptr; ///< pure-solid cells (owned by problem)
-  physics::MixtureTerm* mixture = nullptr;   ///< mixture cells (owned by problem)
+  const physics::SolidTerm* solid = nullptr;   ///< pure-solid cells (owned by problem)
+  physics::MixtureTerm* mixture = nullptr;     ///< mixture cells (owned by problem)
+  std::vector<dofs::FieldId> contact_fields;   ///< contact pressure of each [[contact]] pair
+  std::vector<contact::ContactTerm*> contacts; ///< owned by problem
   std::unique_ptr<assembly::FeProblem> problem;
   std::vector<ReactionSet> reactions;
   std::vector<Probe> probes;

@@ -21,6 +21,9 @@ std::vector<std::string> history_columns(const Model& model) {
   for (const auto& p : model.probes)
     for (const char* c : {"x", "y", "z"})
       cols.push_back(fmt::format("{}.{}{} [mm]", p.name, p.quantity == "position" ? "" : "u", c));
+  for (std::size_t i = 0; i < model.contacts.size(); ++i)
+    for (const char* c : {"Fx", "Fy", "Fz"})
+      cols.push_back(fmt::format("contact{}.{} [N]", i + 1, c));
   if (model.mixture) {
     cols.push_back("water_outflow [mm^3/s]");
     cols.push_back("water_volume [mm^3]");
@@ -80,6 +83,10 @@ std::vector<double> OutputWriter::history_row(Real time, int step, Real dt, int 
       const Real u = x[model_.dofs.dof(model_.fields.u, p.node, k)];
       row.push_back(p.quantity == "position" ? model_.mesh.node(p.node)[k] + u : u);
     }
+  for (const contact::ContactTerm* c : model_.contacts) {
+    const Vec3 f = c->slave_force(x); // interface force on the slave body
+    row.insert(row.end(), {f.x(), f.y(), f.z()});
+  }
   if (balance_) {
     const Balance b = balance_->measure();
     row.push_back(b.outflow[0]);

@@ -294,3 +294,33 @@ void read_electrochemistry(const Table& root, CaseSpec& spec) {
 }
 
 } // namespace trifem::io::detail
+
+namespace trifem::io::detail {
+
+/// [[contact]] pairs.
+void read_contacts(const Table& root, CaseSpec& spec) {
+  const Options<bool> integration = {{"both-surfaces", true}, {"slave-nodes", false}};
+  for (const Table& t : root.tables("contact")) {
+    t.allow({"master", "slave", "integration", "scale", "search_distance"});
+    ContactSpec c;
+    c.key = t.path();
+    c.master = t.name("master");
+    c.slave = t.name("slave");
+    if (c.master == c.slave)
+      fail(t.find("slave"), t.path("slave"),
+           fmt::format("'{}' is also the master surface; a pair needs two surfaces", c.slave));
+    c.both_surfaces = t.choice("integration", integration, std::optional<bool>(true));
+    c.scale = t.number(
+        "scale", {.range = material::Range::non_negative(), .fallback = 0.0, .unit = "MPa/mm"});
+    c.search_distance =
+        t.number("search_distance",
+                 {.range = material::Range::non_negative(), .fallback = 0.0, .unit = "mm"});
+    spec.contacts.push_back(std::move(c));
+  }
+  for (const auto& [name, m] : spec.materials)
+    if (m.is_mixture() && !spec.contacts.empty())
+      fail(nullptr, spec.contacts.front().key,
+           "contact of biphasic/triphasic bodies is not available yet (solid materials only)");
+}
+
+} // namespace trifem::io::detail

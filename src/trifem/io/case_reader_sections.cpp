@@ -322,7 +322,7 @@ void read_output(const Table& root, CaseSpec& spec) {
 
 void read_sections(const toml::table& document, CaseSpec& spec) {
   const Table root(document, "");
-  root.allow({"title", "mesh", "materials", "curves", "boundary", "loads", "analysis",
+  root.allow({"title", "mesh", "materials", "curves", "boundary", "loads", "contact", "analysis",
               "electrochemistry", "time", "solver", "output"});
   spec.title = root.get<std::string>("title").value_or("");
   read_materials_and_curves(root, spec);
@@ -330,6 +330,7 @@ void read_sections(const toml::table& document, CaseSpec& spec) {
   read_mesh(root, spec);
   read_boundary(root, spec);
   read_loads(root, spec);
+  read_contacts(root, spec);
   read_analysis(root, spec);
   read_electrochemistry(root, spec);
   read_solver(root, spec);

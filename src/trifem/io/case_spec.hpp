@@ -106,6 +106,17 @@ struct BathSpec {
   std::string curve;        ///< empty: the new bath applies from t = 0
 };
 
+/// [[contact]]: a frictionless contact pair (one pass: the slave's nodes carry the contact
+/// pressure). Solid bodies only for now.
+struct ContactSpec {
+  std::string key;            ///< "contact[1]" (for messages)
+  std::string master;         ///< master surface (the coarser one)
+  std::string slave;          ///< slave surface (the finer one)
+  bool both_surfaces = true;  ///< integration "both-surfaces" (default) or "slave-nodes"
+  Real scale = 0.0;           ///< c_N [MPa/mm]; 0: (lambda + 2 mu)_max / h
+  Real search_distance = 0.0; ///< [mm]; 0: half the mean facet size
+};
+
 /// [[loads.traction]]: dead traction per reference area on a surface [MPa].
 struct TractionSpec {
   std::string surface;
@@ -190,6 +201,7 @@ struct CaseSpec {
   std::vector<PressureSpec> pressures;
   std::vector<TractionSpec> tractions;
   std::vector<BathSpec> baths;
+  std::vector<ContactSpec> contacts;
   AnalysisSpec analysis;
   ElectrochemistrySpec electrochemistry;
   TimeSpec time;

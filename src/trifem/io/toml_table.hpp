@@ -261,6 +261,8 @@ void read_sections(const toml::table& document, CaseSpec& spec);
 void read_boundary(const Table& root, CaseSpec& spec);
 /// [[loads.*]] (case_reader_physics.cpp).
 void read_loads(const Table& root, CaseSpec& spec);
+/// [[contact]] pairs (after materials).
+void read_contacts(const Table& root, CaseSpec& spec);
 /// [analysis] (case_reader_physics.cpp).
 void read_analysis(const Table& root, CaseSpec& spec);
 /// [electrochemistry] (case_reader_physics.cpp).

@@ -312,6 +312,27 @@ TEST(CaseReader, ImpermeableSurfaceOfAnyOrientation) {
   EXPECT_EQ(c.impermeable_surfaces[0].key, "boundary.impermeable[1]");
 }
 
+TEST(CaseReader, ContactPairIsRead) {
+  const CaseSpec c = parse_case(kBase + "\n[[contact]]\nmaster = \"a\"\nslave = \"b\"\n"
+                                        "integration = \"slave-nodes\"\n",
+                                kMemoryFile);
+  ASSERT_EQ(c.contacts.size(), 1u);
+  EXPECT_EQ(c.contacts[0].master, "a");
+  EXPECT_EQ(c.contacts[0].slave, "b");
+  EXPECT_FALSE(c.contacts[0].both_surfaces);
+  EXPECT_EQ(c.contacts[0].key, "contact[1]");
+}
+
+TEST(CaseReader, ContactOfMixturesIsRejected) {
+  const std::string mixture =
+      error_of(kBase + kCartilage + "\n[[contact]]\nmaster = \"a\"\nslave = \"b\"\n");
+  EXPECT_NE(mixture.find("contact of biphasic/triphasic bodies is not available yet"),
+            std::string::npos)
+      << mixture;
+  const std::string same = error_of(kBase + "\n[[contact]]\nmaster = \"a\"\nslave = \"a\"\n");
+  EXPECT_NE(same.find("contact[1].slave"), std::string::npos) << same;
+}
+
 TEST(CaseReader, MixtureDefaults) {
   const CaseSpec c = parse_case(kBase + kCartilage, kMemoryFile);
   const MaterialSpec& cart = c.materials.at("cart");

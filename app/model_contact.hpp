@@ -1,0 +1,15 @@
+// SPDX-License-Identifier: MIT
+// Case -> contact pairs of a model (helpers of build_model).
+#pragma once
+
+#include "model.hpp"
+
+namespace trifem::app {
+
+/// Adds one contact-pressure field per [[contact]] pair (one entity per slave-surface node).
+void add_contact_fields(const io::CaseSpec& spec, Model& model);
+
+/// The contact terms of the case (fields must exist); registers them in model.contacts.
+std::vector<std::unique_ptr<physics::Term>> contact_terms(const io::CaseSpec& spec, Model& model);
+
+} // namespace trifem::app

@@ -37,8 +37,9 @@ struct SlaveNodeRows {
 };
 
 /// A contact law: the meaning of the multiplier components and their constraint rows.
-/// Interface work (ContactTerm): component c adds R_{F_c,a} -= ∫ N_a λ_c n da on the rows of
-/// the vector field F_c = paired_field(c) at the facet nodes of both surfaces.
+/// Interface work (ContactTerm): component c adds R_{F_c,a} -= s_c ∫ N_a λ_c n da on the rows of
+/// the vector field F_c = paired_field(c) at the facet nodes of both surfaces (s_c =
+/// work_factor(c, Δt)).
 class ContactLaw {
 public:
   virtual ~ContactLaw() = default;
@@ -48,6 +49,10 @@ public:
   /// The nodal vector field (3 components per mesh node) that component c's interface work
   /// acts on (the displacement field for the contact pressure).
   virtual dofs::FieldId paired_field(int c) const = 0;
+  /// Factor on component c's interface work in the rows of paired_field(c): the row scaling
+  /// of the term that owns those rows (1 for momentum rows; -Δt for the -Δt-scaled mixture flux
+  /// rows, so that R_{F_c,a} += Δt ∫ N_a λ_c n da there). `dt` is the step size.
+  virtual Real work_factor(int /*c*/, Real /*dt*/) const { return 1; }
   /// Further nodal vector fields the constraint rows depend on at the slave node and the
   /// master facet nodes (positions are always available).
   virtual std::vector<dofs::FieldId> constraint_fields() const { return {}; }
@@ -65,7 +70,7 @@ public:
 ///   active:   G_k = A_k g_k,          ΔG_k = A_k n·(Δx_s - Σ_a N_a(ξ) Δx_a)
 ///   inactive: G_k = (A_k / c_N) t_k   (t_k = 0; the weight only makes rows conjugate)
 ///   indicator: t_k + c_N g_k.
-/// A fluid/ion extension appends components (μ_w, μ_+, μ_-) paired with w, j+, j-.
+/// MixtureContactLaw (mixture_contact_law.hpp) appends (mū_w, c_ref mū_±) paired with w, j±.
 class FrictionlessLaw final : public ContactLaw {
 public:
   explicit FrictionlessLaw(dofs::FieldId displacement) : u_(displacement) {}

@@ -241,11 +241,11 @@ bool ContactTerm::evaluate(Index e, const physics::EvalState& state, physics::Lo
   if (kind == Kind::SlaveNode)
     slave_node_rows(i, state, out);
   else if (kind == Kind::MasterFacet)
-    master_facet_work(i, state.x, out);
+    master_facet_work(i, state.x, state.dt, out);
   else if (settings_.integration == Integration::SlaveNodes)
-    slave_point_forces(i, state.x, out);
+    slave_point_forces(i, state.x, state.dt, out);
   else
-    slave_facet_work(i, state.x, out);
+    slave_facet_work(i, state.x, state.dt, out);
   return true;
 }
 

@@ -45,13 +45,15 @@ struct ContactSettings {
 /// one entity per slave surface node, ordered as ContactSurface::nodes()).
 ///
 /// Residual contributions (R = f_int - f_ext; the interface traction λ n is external):
-///   slave facets:   R_{F_c,a} -= ∫ N_a λ^s_c(ξ) n da          (BothSurfaces)
-///   master facets:  R_{F_c,a} -= ∫ N_a λ^m_c(ξ) n da          (BothSurfaces)
+///   slave facets:   R_{F_c,a} -= s_c ∫ N_a λ^s_c(ξ) n da      (BothSurfaces)
+///   master facets:  R_{F_c,a} -= s_c ∫ N_a λ^m_c(ξ) n da      (BothSurfaces)
 ///   slave facets:   R_{F_c,a} -= λ_{a,c} a_a,  R_{F_c,q} += λ_{a,c} N_q(ξ_a) a_a   (SlaveNodes)
 ///   slave node k:   rows G_k of the law (active or inactive) on the λ_k DOFs
-/// with n da = (t_1 × t_2) dξ in the current configuration, 2×2 Gauss (exact) on each facet.
-/// The consistent tangent includes the area-vector derivatives, the multiplier columns, the
-/// derivative of L_ik = M_k(ζ_i) through the projection of master node i, and of N_q(ξ_k).
+/// with s_c = ContactLaw::work_factor(c, Δt) (the row scaling of the field paired with c; the
+/// SlaveNodes terms carry it as well) and n da = (t_1 × t_2) dξ in the current configuration, 2×2
+/// Gauss (exact) on each facet. The consistent tangent includes the area-vector derivatives, the
+/// multiplier columns, the derivative of L_ik = M_k(ζ_i) through the projection of master node i,
+/// and of N_q(ξ_k).
 ///
 /// Elements: [slave facets | master facets (BothSurfaces only) | slave nodes]. Stencils are
 /// sorted and unique and depend on the current projections (a node's projection facet is in
@@ -117,9 +119,9 @@ private:
   void add_node_dofs(Index node, bool rows, std::vector<Index>& dofs) const;
 
   // element kernels (interface_integrals.cpp)
-  void slave_facet_work(Index f, const Vector& x, LocalSystem& out) const;
-  void master_facet_work(Index f, const Vector& x, LocalSystem& out) const;
-  void slave_point_forces(Index f, const Vector& x, LocalSystem& out) const;
+  void slave_facet_work(Index f, const Vector& x, Real dt, LocalSystem& out) const;
+  void master_facet_work(Index f, const Vector& x, Real dt, LocalSystem& out) const;
+  void slave_point_forces(Index f, const Vector& x, Real dt, LocalSystem& out) const;
   void slave_node_rows(Index k, const physics::EvalState& state, LocalSystem& out) const;
 
   const mesh::Mesh& mesh_;

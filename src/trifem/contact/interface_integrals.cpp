@@ -35,7 +35,7 @@ struct MasterLink {
 
 } // namespace
 
-void ContactTerm::slave_facet_work(Index f, const Vector& x, LocalSystem& out) const {
+void ContactTerm::slave_facet_work(Index f, const Vector& x, Real dt, LocalSystem& out) const {
   const auto& nodes = slave_.facet(f).nodes;
   const fe::QuadCoords X = coords(nodes, x);
   const Eigen::Matrix<Real, 4, Eigen::Dynamic> lam = facet_multipliers(f, x);
@@ -46,8 +46,9 @@ void ContactTerm::slave_facet_work(Index f, const Vector& x, LocalSystem& out) c
   }
   for (const auto& qp : fe::quad_gauss_2x2()) {
     const FacetPoint fp = evaluate_facet(X, qp.xi);
-    const Vec3 r = qp.weight * fp.t[0].cross(fp.t[1]);
     for (int c = 0; c < lam.cols(); ++c) {
+      const Real wc = law_->work_factor(c, dt) * qp.weight;
+      const Vec3 r = wc * fp.t[0].cross(fp.t[1]);
       const Real lc = fp.N.dot(lam.col(c));
       for (int a = 0; a < 4; ++a) {
         const Index row = out.at(dofs_.dof(law_->paired_field(c), nodes[a], 0));
@@ -55,7 +56,7 @@ void ContactTerm::slave_facet_work(Index f, const Vector& x, LocalSystem& out) c
         if (!out.with_jacobian())
           continue;
         for (int b = 0; b < 4; ++b) {
-          out.K().block<3, 3>(row, x_at[b]) -= fp.N[a] * lc * area_derivative(fp, b, qp.weight);
+          out.K().block<3, 3>(row, x_at[b]) -= fp.N[a] * lc * area_derivative(fp, b, wc);
           out.K().block<3, 1>(row, l_at[b] + c) -= fp.N[a] * fp.N[b] * r;
         }
       }
@@ -63,7 +64,7 @@ void ContactTerm::slave_facet_work(Index f, const Vector& x, LocalSystem& out) c
   }
 }
 
-void ContactTerm::master_facet_work(Index f, const Vector& x, LocalSystem& out) const {
+void ContactTerm::master_facet_work(Index f, const Vector& x, Real dt, LocalSystem& out) const {
   const auto& nodes = master_.facet(f).nodes;
   const fe::QuadCoords X = coords(nodes, x);
   const int C = law_->num_components();
@@ -92,19 +93,20 @@ void ContactTerm::master_facet_work(Index f, const Vector& x, LocalSystem& out) 
   }
   for (const auto& qp : fe::quad_gauss_2x2()) {
     const FacetPoint fp = evaluate_facet(X, qp.xi);
-    const Vec3 r = qp.weight * fp.t[0].cross(fp.t[1]);
     Vector lm = Vector::Zero(C); // λ^m(ξ) = Σ_i N_i(ξ) λ^m_i
     for (int i = 0; i < 4; ++i)
       if (link[i].linked)
         lm += fp.N[i] * link[i].lambda;
     for (int c = 0; c < C; ++c) {
+      const Real wc = law_->work_factor(c, dt) * qp.weight;
+      const Vec3 r = wc * fp.t[0].cross(fp.t[1]);
       for (int a = 0; a < 4; ++a) {
         const Index row = out.at(dofs_.dof(law_->paired_field(c), nodes[a], 0));
         out.r().segment<3>(row) -= fp.N[a] * lm[c] * r;
         if (!out.with_jacobian())
           continue;
         for (int b = 0; b < 4; ++b)
-          out.K().block<3, 3>(row, x_at[b]) -= fp.N[a] * lm[c] * area_derivative(fp, b, qp.weight);
+          out.K().block<3, 3>(row, x_at[b]) -= fp.N[a] * lm[c] * area_derivative(fp, b, wc);
         for (int i = 0; i < 4; ++i) {
           if (!link[i].linked)
             continue;
@@ -120,7 +122,7 @@ void ContactTerm::master_facet_work(Index f, const Vector& x, LocalSystem& out) 
   }
 }
 
-void ContactTerm::slave_point_forces(Index f, const Vector& x, LocalSystem& out) const {
+void ContactTerm::slave_point_forces(Index f, const Vector& x, Real dt, LocalSystem& out) const {
   const auto& nodes = slave_.facet(f).nodes;
   physics::FacetMatrix dA;
   const physics::FacetVector A =
@@ -147,13 +149,14 @@ void ContactTerm::slave_point_forces(Index f, const Vector& x, LocalSystem& out)
     }
     for (int c = 0; c < lam.cols(); ++c) {
       const dofs::FieldId F = law_->paired_field(c);
-      const Vec3 a_a = A.segment<3>(3 * a);
+      const Real sc = law_->work_factor(c, dt);
+      const Vec3 a_a = sc * A.segment<3>(3 * a);
       const Index row = out.at(dofs_.dof(F, nodes[a], 0));
       out.r().segment<3>(row) -= lam(a, c) * a_a;
       if (out.with_jacobian()) {
         out.K().block<3, 1>(row, l_at + c) -= a_a;
         for (int b = 0; b < 4; ++b)
-          out.K().block<3, 3>(row, x_at[b]) -= lam(a, c) * dA.block<3, 3>(3 * a, 3 * b);
+          out.K().block<3, 3>(row, x_at[b]) -= sc * lam(a, c) * dA.block<3, 3>(3 * a, 3 * b);
       }
       if (!transfer)
         continue;
@@ -164,7 +167,8 @@ void ContactTerm::slave_point_forces(Index f, const Vector& x, LocalSystem& out)
           continue;
         out.K().block<3, 1>(qrow, l_at + c) += Nq[qn] * a_a;
         for (int b = 0; b < 4; ++b)
-          out.K().block<3, 3>(qrow, x_at[b]) += lam(a, c) * Nq[qn] * dA.block<3, 3>(3 * a, 3 * b);
+          out.K().block<3, 3>(qrow, x_at[b]) +=
+              sc * lam(a, c) * Nq[qn] * dA.block<3, 3>(3 * a, 3 * b);
         for (int j = 0; j < 5; ++j)
           out.K().block<3, 3>(qrow, q_at[j]) += lam(a, c) * a_a * dNq.row(qn).segment<3>(3 * j);
       }

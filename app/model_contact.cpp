@@ -3,6 +3,7 @@
 
 #include "model_conditions.hpp"
 #include "trifem/contact/contact_law.hpp"
+#include "trifem/contact/mixture_contact_law.hpp"
 
 #include <cmath>
 
@@ -20,6 +21,15 @@ Real mean_facet_size(const mesh::Mesh& mesh, const mesh::Surface& surface) {
   return sum / static_cast<Real>(surface.facets.size());
 }
 
+/// Frictionless solid contact, or the mixture law (pressure and potential continuity).
+std::shared_ptr<const contact::ContactLaw> law(const Model& model) {
+  if (!model.fields.w.valid())
+    return std::make_shared<contact::FrictionlessLaw>(model.fields.u);
+  const physics::MixtureFields& f = model.fields;
+  return std::make_shared<contact::MixtureContactLaw>(
+      contact::MixtureContactFields{f.u, f.w, f.j_plus, f.j_minus});
+}
+
 } // namespace
 
 void add_contact_fields(const io::CaseSpec& spec, Model& model) {
@@ -28,8 +38,10 @@ void add_contact_fields(const io::CaseSpec& spec, Model& model) {
     const auto& slave = with_context(
         c.key + ".slave", [&]() -> const mesh::Surface& { return model.mesh.surface(c.slave); });
     const auto nodes = static_cast<Index>(mesh::surface_nodes(slave).size());
+    // components: contact pressure [+ water potential [+ c_ref x ion potentials]]
+    const int components = model.fields.j_plus.valid() ? 4 : model.fields.w.valid() ? 2 : 1;
     model.contact_fields.push_back(
-        model.dofs.add_field(fmt::format("contact_pressure_{}", i + 1), nodes, 1));
+        model.dofs.add_field(fmt::format("contact_multipliers_{}", i + 1), nodes, components));
   }
 }
 
@@ -49,7 +61,7 @@ std::vector<std::unique_ptr<physics::Term>> contact_terms(const io::CaseSpec& sp
     auto term = with_context(c.key, [&] {
       return std::make_unique<contact::ContactTerm>(
           model.mesh, model.dofs, model.fields.u, model.contact_fields[i], master, slave,
-          std::make_shared<contact::FrictionlessLaw>(model.fields.u), settings);
+          law(model), settings);
     });
     model.contacts.push_back(term.get());
     terms.push_back(std::move(term));

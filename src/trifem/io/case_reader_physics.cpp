@@ -317,10 +317,6 @@ void read_contacts(const Table& root, CaseSpec& spec) {
                  {.range = material::Range::non_negative(), .fallback = 0.0, .unit = "mm"});
     spec.contacts.push_back(std::move(c));
   }
-  for (const auto& [name, m] : spec.materials)
-    if (m.is_mixture() && !spec.contacts.empty())
-      fail(nullptr, spec.contacts.front().key,
-           "contact of biphasic/triphasic bodies is not available yet (solid materials only)");
 }
 
 } // namespace trifem::io::detail

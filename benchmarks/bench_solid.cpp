@@ -288,7 +288,7 @@ void bm_newton_step(benchmark::State& state) {
   const auto per_solve_ms = [&](double total) {
     return benchmark::Counter(1e3 * total, benchmark::Counter::kAvgIterations);
   };
-  state.counters["iterations"] = report.iterations;
+  state.counters["newton_iterations"] = report.iterations;
   state.counters["assembly_ms"] = per_solve_ms(after.assembly - before.assembly);
   state.counters["factorize_ms"] = per_solve_ms(after.factorization - before.factorization);
   state.counters["solve_ms"] = per_solve_ms(after.solve - before.solve);

@@ -59,9 +59,9 @@ std::vector<std::unique_ptr<physics::Term>> contact_terms(const io::CaseSpec& sp
     settings.scale = c.scale > 0 ? c.scale : model.modulus_scale / h;
     settings.search_distance = c.search_distance;
     auto term = with_context(c.key, [&] {
-      return std::make_unique<contact::ContactTerm>(
-          model.mesh, model.dofs, model.fields.u, model.contact_fields[i], master, slave,
-          law(model), settings);
+      return std::make_unique<contact::ContactTerm>(model.mesh, model.dofs, model.fields.u,
+                                                    model.contact_fields[i], master, slave,
+                                                    law(model), settings);
     });
     model.contacts.push_back(term.get());
     terms.push_back(std::move(term));

@@ -19,6 +19,8 @@ public:
 
 } // namespace
 
-std::unique_ptr<LinearSolver> make_umfpack_solver() { return std::make_unique<UmfpackSolver>(); }
+std::unique_ptr<LinearSolver> make_umfpack_solver() {
+  return std::make_unique<UmfpackSolver>();
+}
 
 } // namespace trifem::linalg

@@ -8,6 +8,8 @@
 // are both present. Error = max |K - K_fd| / max |K| over the whole term.
 #include "contact_model.hpp"
 
+#include "dense_assembly.hpp"
+
 #include <gtest/gtest.h>
 
 #include <random>
@@ -64,28 +66,8 @@ std::unique_ptr<Setup> make_setup(const Layout& layout, contact::Integration int
   return s;
 }
 
-/// Residual (and Jacobian) of the whole term over all DOFs at x, after prepare(x).
 bool assemble(contact::ContactTerm& term, const Vector& x, Vector& R, Eigen::MatrixXd* K) {
-  const physics::EvalState state{x, x, 0.0, 1.0};
-  const bool changed = term.prepare(state);
-  const Index n = static_cast<Index>(x.size());
-  R.setZero(n);
-  if (K)
-    K->setZero(n, n);
-  std::vector<Index> dofs;
-  physics::LocalVector r;
-  physics::LocalMatrix k;
-  for (Index e = 0; e < term.num_elements(); ++e) {
-    term.element_dofs(e, dofs);
-    EXPECT_TRUE(term.evaluate(e, state, r, K ? &k : nullptr));
-    for (std::size_t i = 0; i < dofs.size(); ++i) {
-      R[dofs[i]] += r[i];
-      if (K)
-        for (std::size_t j = 0; j < dofs.size(); ++j)
-          (*K)(dofs[i], dofs[j]) += k(i, j);
-    }
-  }
-  return changed;
+  return test::assemble_dense(term, x, 1.0, R, K);
 }
 
 /// Smallest distance of a projection's ξ to the facet edges (±1), over all projections.

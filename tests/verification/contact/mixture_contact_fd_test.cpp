@@ -6,6 +6,8 @@
 #include "contact_model.hpp"
 #include "trifem/contact/mixture_contact_law.hpp"
 
+#include "dense_assembly.hpp"
+
 #include <gtest/gtest.h>
 
 #include <random>
@@ -69,26 +71,7 @@ std::unique_ptr<Setup> make_setup(const std::vector<Real>& master, const std::ve
 }
 
 bool assemble(contact::ContactTerm& term, const Vector& x, Vector& R, Eigen::MatrixXd* K) {
-  const physics::EvalState state{x, x, 1.0, kDt};
-  const bool changed = term.prepare(state);
-  const Index n = static_cast<Index>(x.size());
-  R.setZero(n);
-  if (K)
-    K->setZero(n, n);
-  std::vector<Index> dofs;
-  physics::LocalVector r;
-  physics::LocalMatrix k;
-  for (Index e = 0; e < term.num_elements(); ++e) {
-    term.element_dofs(e, dofs);
-    EXPECT_TRUE(term.evaluate(e, state, r, K ? &k : nullptr));
-    for (std::size_t i = 0; i < dofs.size(); ++i) {
-      R[dofs[i]] += r[i];
-      if (K)
-        for (std::size_t j = 0; j < dofs.size(); ++j)
-          (*K)(dofs[i], dofs[j]) += k(i, j);
-    }
-  }
-  return changed;
+  return test::assemble_dense(term, x, kDt, R, K);
 }
 
 void check(const char* name, const std::vector<Real>& master, const std::vector<Real>& slave,

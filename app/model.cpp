@@ -3,6 +3,7 @@
 
 #include "model_conditions.hpp"
 #include "model_contact.hpp"
+#include "model_rigid.hpp"
 #include "trifem/core/error.hpp"
 #include "trifem/material/registry.hpp"
 #include "trifem/mesh/gmsh_reader.hpp"
@@ -199,6 +200,8 @@ std::unique_ptr<Model> build_model(const io::CaseSpec& spec) {
   auto bcs = boundary_conditions(spec, *model);
   bcs.push_back(unused_dofs(*model, terms));
   dofs::NodalFrames frames = impermeable_surfaces(spec, *model, bcs);
+  if (auto forces = rigid_bodies(spec, *model, bcs))
+    terms.push_back(std::move(forces));
   dofs::constrain_all(bcs, model->dofs);
   model->dofs.finalize();
 

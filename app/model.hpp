@@ -8,6 +8,7 @@
 #include "trifem/material/mixture.hpp"
 #include "trifem/mesh/mesh.hpp"
 #include "trifem/physics/mixture_term.hpp"
+#include "trifem/physics/nodal_force_term.hpp"
 #include "trifem/physics/solid_term.hpp"
 
 #include <memory>
@@ -17,7 +18,8 @@ namespace trifem::app {
 /// A reaction output: displacement DOFs of a node set per component.
 struct ReactionSet {
   std::string name;
-  std::array<std::vector<Index>, 3> dofs;
+  std::array<bool, 3> tied = {false, false, false}; ///< components moving with the body
+  std::array<std::vector<Index>, 3> dofs;           ///< of the tied components
 };
 
 /// A probe output: one node.
@@ -31,6 +33,14 @@ struct Probe {
 struct CellMaterial {
   std::shared_ptr<const material::ElasticLaw> solid;
   std::shared_ptr<const material::MixtureProperties> mixture;
+};
+
+/// A [[rigid_body]]: the displacement DOFs of its nodes per component (the first one leads).
+struct RigidBody {
+  std::string name;
+  std::array<bool, 3> tied = {false, false, false}; ///< components moving with the body
+  std::array<std::vector<Index>, 3> dofs;           ///< of the tied components
+  std::array<physics::NodalForce, 3> force; ///< applied force per component (magnitude 0: none)
 };
 
 /// Everything a run needs. Owns the mesh and DOF map the problem refers to.
@@ -47,6 +57,7 @@ struct Model {
   std::unique_ptr<assembly::FeProblem> problem;
   std::vector<ReactionSet> reactions;
   std::vector<Probe> probes;
+  std::vector<RigidBody> rigid_bodies;
   Real length_scale = 1.0;       ///< bounding-box diagonal [mm]
   Real modulus_scale = 1.0;      ///< largest P-wave modulus [MPa]
   Real permeability_scale = 0.0; ///< largest permeability [mm^4/(N s)] (0: no mixture)

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "output.hpp"
 
+#include "contact_output.hpp"
+#include "model_rigid.hpp"
 #include "output_fields.hpp"
 
 #include "trifem/core/error.hpp"
@@ -21,9 +23,14 @@ std::vector<std::string> history_columns(const Model& model) {
   for (const auto& p : model.probes)
     for (const char* c : {"x", "y", "z"})
       cols.push_back(fmt::format("{}.{}{} [mm]", p.name, p.quantity == "position" ? "" : "u", c));
-  for (std::size_t i = 0; i < model.contacts.size(); ++i)
+  for (std::string& c : contact_history_columns(model))
+    cols.push_back(std::move(c));
+  for (const RigidBody& b : model.rigid_bodies) {
+    for (const char* c : {"ux", "uy", "uz"})
+      cols.push_back(fmt::format("{}.{} [mm]", b.name, c));
     for (const char* c : {"Fx", "Fy", "Fz"})
-      cols.push_back(fmt::format("contact{}.{} [N]", i + 1, c));
+      cols.push_back(fmt::format("{}.{} [N]", b.name, c));
+  }
   if (model.mixture) {
     cols.push_back("water_outflow [mm^3/s]");
     cols.push_back("water_volume [mm^3]");
@@ -33,6 +40,14 @@ std::vector<std::string> history_columns(const Model& model) {
                           "cation_moles [mmol]", "anion_moles [mmol]"})
       cols.push_back(c);
   return cols;
+}
+
+/// Per-body water columns (when the model has several mixture bodies).
+void add_body_columns(const MassBalance& balance, std::vector<std::string>& cols) {
+  for (std::size_t i = 1; i < balance.regions().size(); ++i) {
+    cols.push_back(fmt::format("{}.water_outflow [mm^3/s]", balance.regions()[i].name));
+    cols.push_back(fmt::format("{}.water_volume [mm^3]", balance.regions()[i].name));
+  }
 }
 
 io::UnstructuredGrid volume_grid(const Model& model) {
@@ -52,10 +67,17 @@ OutputWriter::OutputWriter(const Model& model, const io::OutputSpec& spec,
   std::filesystem::create_directories(directory_, ec);
   TRIFEM_CHECK(!ec, "cannot create the output directory {}: {}", directory_.string(), ec.message());
   pvd_ = std::make_unique<io::PvdWriter>(directory_ / "results.pvd");
-  history_ = std::make_unique<io::CsvWriter>(history_file(), history_columns(model));
-  if (model.mixture)
+  std::vector<std::string> columns = history_columns(model);
+  if (model.mixture) {
     balance_ = std::make_unique<MassBalance>(model);
+    add_body_columns(*balance_, columns);
+  }
+  history_ = std::make_unique<io::CsvWriter>(history_file(), columns);
+  if (!model.contacts.empty())
+    contact_ = std::make_unique<ContactOutput>(model, directory_);
 }
+
+OutputWriter::~OutputWriter() = default;
 
 bool OutputWriter::is_output_time(Real time) const {
   for (Real t : spec_.times)
@@ -83,9 +105,10 @@ std::vector<double> OutputWriter::history_row(Real time, int step, Real dt, int 
       const Real u = x[model_.dofs.dof(model_.fields.u, p.node, k)];
       row.push_back(p.quantity == "position" ? model_.mesh.node(p.node)[k] + u : u);
     }
-  for (const contact::ContactTerm* c : model_.contacts) {
-    const Vec3 f = c->slave_force(x); // interface force on the slave body
-    row.insert(row.end(), {f.x(), f.y(), f.z()});
+  append_contact_history(model_, row);
+  for (const RigidBody& b : model_.rigid_bodies) {
+    const Vec3 u = rigid_body_displacement(model_, b), f = rigid_body_force(model_, b, time);
+    row.insert(row.end(), {u.x(), u.y(), u.z(), f.x(), f.y(), f.z()});
   }
   if (balance_) {
     const Balance b = balance_->measure();
@@ -94,6 +117,10 @@ std::vector<double> OutputWriter::history_row(Real time, int step, Real dt, int 
     if (balance_->has_ions())
       for (double v : {b.outflow[1], b.outflow[2], b.total[1], b.total[2]})
         row.push_back(v);
+    for (std::size_t i = 1; i < balance_->regions().size(); ++i) {
+      const Balance& body = balance_->regions()[i].last; // of the last recorded step
+      row.insert(row.end(), {body.outflow[0], body.total[0]});
+    }
   }
   return row;
 }
@@ -102,18 +129,27 @@ void OutputWriter::write_vtu(Real time) {
   io::UnstructuredGrid grid = volume_grid(model_);
   grid.point_data = point_fields(model_);
   grid.cell_data = cell_fields(model_);
-  const auto file = directory_ / fmt::format("volume_{:04d}.vtu", vtu_count_++);
+  const auto file = directory_ / fmt::format("volume_{:04d}.vtu", state_count_);
   if (const auto bad = io::write_vtu(file, grid); bad > 0)
     log::warn("  {} non-finite values written to {}", bad, file.string());
   pvd_->add(time, file);
+  ++vtu_count_;
+}
+
+void OutputWriter::write_state(Real time) {
+  if (spec_.vtu)
+    write_vtu(time);
+  if (contact_)
+    contact_->write(time, state_count_, spec_.vtu);
+  ++state_count_;
 }
 
 void OutputWriter::write(Real time, int step, Real dt, int iterations, bool volume) {
   const auto start = std::chrono::steady_clock::now();
   const auto row = history_row(time, step, dt, iterations);
   history_->write_row(row);
-  if (volume && spec_.vtu)
-    write_vtu(time);
+  if (volume)
+    write_state(time);
   seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Result files of a run: VTU series + .pvd, history.csv, summary.json.
+// Result files of a run: VTU series + .pvd, contact-surface files, history.csv, summary.json.
 #pragma once
 
 #include "mass_balance.hpp"
@@ -13,15 +13,19 @@
 
 namespace trifem::app {
 
+class ContactOutput;
+
 /// Writes results as the run advances; everything written stays valid if the run stops.
 class OutputWriter {
 public:
   /// Creates `directory` (InputError if impossible) and the history file.
   OutputWriter(const Model& model, const io::OutputSpec& spec, std::filesystem::path directory);
+  ~OutputWriter();
 
   /// Water and ion balances (mixture models; null otherwise).
   MassBalance* balance() { return balance_.get(); }
-  /// Writes the state at `time`: a history row always, a VTU file if `volume` is set.
+  /// Writes the state at `time`: a history row always; if `volume` is set (an output time) the
+  /// VTU file (unless output.vtu = false) and the contact-surface files of every contact pair.
   void write(Real time, int step, Real dt, int iterations, bool volume);
   /// True if `time` is an output time (interval multiple or listed time).
   bool is_output_time(Real time) const;
@@ -34,6 +38,7 @@ public:
 
 private:
   void write_vtu(Real time);
+  void write_state(Real time);
   std::vector<double> history_row(Real time, int step, Real dt, int iterations) const;
 
   const Model& model_;
@@ -42,6 +47,8 @@ private:
   std::unique_ptr<io::PvdWriter> pvd_;
   std::unique_ptr<io::CsvWriter> history_;
   std::unique_ptr<MassBalance> balance_;
+  std::unique_ptr<ContactOutput> contact_; ///< null without contact pairs
+  int state_count_ = 0;                    ///< output states written (the NNNN of the files)
   int vtu_count_ = 0;
   double seconds_ = 0.0;
 };

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "run.hpp"
 
+#include "explicit_run.hpp"
 #include "model.hpp"
 #include "output.hpp"
 #include "trifem/core/error.hpp"
@@ -112,12 +113,20 @@ void write_summary(const std::filesystem::path& file, const io::CaseSpec& spec, 
                       {"solve", phases.solve},
                       {"output", output_s}};
   if (balance) {
-    // largest over the steps of |change of the total + dt x boundary outflow| / total
-    j["mass_balance_max_relative_error"] = {{"water", balance->worst()[0]}};
-    if (balance->has_ions()) {
-      j["mass_balance_max_relative_error"]["cation"] = balance->worst()[1];
-      j["mass_balance_max_relative_error"]["anion"] = balance->worst()[2];
-    }
+    // largest over the steps of |change of the total + dt x boundary outflow| / total, for the
+    // model and (if it has several) for each body
+    const auto errors = [&](const BalanceRegion& r) {
+      nlohmann::json e = {{"water", r.worst[0]}};
+      if (balance->has_ions()) {
+        e["cation"] = r.worst[1];
+        e["anion"] = r.worst[2];
+      }
+      return e;
+    };
+    j["mass_balance_max_relative_error"] = errors(balance->regions().front());
+    for (std::size_t i = 1; i < balance->regions().size(); ++i)
+      j["mass_balance_max_relative_error_by_body"][balance->regions()[i].name] =
+          errors(balance->regions()[i]);
   }
   std::ofstream out(file);
   out << j.dump(2) << '\n';
@@ -135,6 +144,8 @@ std::unique_ptr<Model> build_model_for(const io::CaseSpec& spec) {
 } // namespace
 
 int run_case(const io::CaseSpec& spec, const std::filesystem::path& output_dir) {
+  if (spec.is_explicit())
+    return run_explicit_case(spec, output_dir);
   const auto start = Clock::now();
   std::unique_ptr<Model> model = build_model_for(spec);
   OutputWriter output(*model, spec.output, output_dir);
@@ -181,6 +192,8 @@ int run_case(const io::CaseSpec& spec, const std::filesystem::path& output_dir) 
 }
 
 int check_case(const io::CaseSpec& spec) {
+  if (spec.is_explicit())
+    return check_explicit_case(spec);
   std::unique_ptr<Model> model = build_model_for(spec);
   log_model(spec, *model);
   log::info("check passed: the case is valid");

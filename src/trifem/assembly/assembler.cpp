@@ -94,7 +94,7 @@ void Assembler::rebuild() {
   colours_.clear();
   for (const physics::Term* t : terms_) {
     stencils_.push_back(collect_stencils(*t));
-    colours_.push_back(colour_elements(stencils_.back(), map_.num_dofs()));
+    colours_.push_back(colour_elements(stencils_.back(), map_));
   }
   std::vector<const Stencils*> all;
   for (const auto& s : stencils_)

@@ -52,9 +52,10 @@ solver::SolveStatus FeProblem::linearize(solver::Linearization& lin, bool with_j
   if (!assembler_->assemble(eval_state(), system_, with_jacobian))
     return solver::SolveStatus::Inadmissible;
   const Index neq = map_.num_equations();
-  lin.residual.resize(neq);
-  for (Index eq = 0; eq < neq; ++eq)
-    lin.residual[eq] = system_.residual[map_.dof_of_equation(eq)];
+  lin.residual.setZero(neq);
+  for (Index d = 0; d < map_.num_dofs(); ++d) // tied DOFs add their rows
+    if (const Index eq = map_.equation(d); eq >= 0)
+      lin.residual[eq] += system_.residual[d];
   if (!with_jacobian)
     return solver::SolveStatus::Converged;
   Vector pending(map_.num_constrained());
@@ -68,8 +69,9 @@ solver::SolveStatus FeProblem::linearize(solver::Linearization& lin, bool with_j
 }
 
 solver::SolveStatus FeProblem::update(const Vector& dx, Real step) {
-  for (Index eq = 0; eq < map_.num_equations(); ++eq)
-    x_[map_.dof_of_equation(eq)] += step * dx[eq];
+  for (Index d = 0; d < map_.num_dofs(); ++d) // tied DOFs move together
+    if (const Index eq = map_.equation(d); eq >= 0)
+      x_[d] += step * dx[eq];
   for (Index c = 0; c < map_.num_constrained(); ++c) {
     const Index d = map_.dof_of_constrained(c);
     x_[d] = step == 1.0 ? target_[d] : x_[d] + step * (target_[d] - x_[d]); // exact at s = 1
@@ -93,6 +95,13 @@ void FeProblem::begin_step(Real time, Real dt) {
   dofs::prescribed_values(conditions_, time_, target_);
 }
 
+std::string FeProblem::step_rejection() const {
+  for (const auto& t : terms_)
+    if (std::string why = t->step_rejection(eval_state()); !why.empty())
+      return t->name() + ": " + why;
+  return {};
+}
+
 void FeProblem::commit_step() {
   for (auto& t : terms_)
     t->commit(eval_state());
@@ -102,6 +111,8 @@ void FeProblem::commit_step() {
 }
 
 void FeProblem::reject_step() {
+  for (auto& t : terms_)
+    t->reject();
   x_ = x_old_;
   sync();
   time_ = time_old_;

@@ -74,6 +74,8 @@ public:
 
   // TransientProblem
   void begin_step(Real time, Real dt) override;
+  /// The first term's rejection of the converged state ("<term>: <reason>"), or empty.
+  std::string step_rejection() const override;
   void commit_step() override;
   void reject_step() override;
 

@@ -42,23 +42,8 @@ SparseMatrix make_matrix(Index rows, Index cols, const std::vector<std::vector<I
   return A;
 }
 
-} // namespace
-
-Stencils collect_stencils(const physics::Term& term) {
-  Stencils s;
-  s.offsets.reserve(term.num_elements() + 1);
-  s.offsets.push_back(0);
-  std::vector<Index> dofs;
-  for (Index e = 0; e < term.num_elements(); ++e) {
-    term.element_dofs(e, dofs);
-    s.dofs.insert(s.dofs.end(), dofs.begin(), dofs.end());
-    s.offsets.push_back(static_cast<Index>(s.dofs.size()));
-  }
-  return s;
-}
-
-std::vector<std::vector<Index>> colour_elements(const Stencils& stencils, Index num_dofs) {
-  const DofElements inv = invert({&stencils}, num_dofs);
+/// Greedy colouring: elements of one colour share no DOF of the inverted map `inv`.
+std::vector<std::vector<Index>> colour_with(const Stencils& stencils, const DofElements& inv) {
   std::vector<int> colour(stencils.size(), -1);
   std::vector<std::vector<Index>> colours;
   std::vector<Index> stamp; // stamp[c] == e + 1: colour c is taken by a neighbour of e
@@ -80,6 +65,35 @@ std::vector<std::vector<Index>> colour_elements(const Stencils& stencils, Index 
   return colours;
 }
 
+} // namespace
+
+Stencils collect_stencils(const physics::Term& term) {
+  Stencils s;
+  s.offsets.reserve(term.num_elements() + 1);
+  s.offsets.push_back(0);
+  std::vector<Index> dofs;
+  for (Index e = 0; e < term.num_elements(); ++e) {
+    term.element_dofs(e, dofs);
+    s.dofs.insert(s.dofs.end(), dofs.begin(), dofs.end());
+    s.offsets.push_back(static_cast<Index>(s.dofs.size()));
+  }
+  return s;
+}
+
+std::vector<std::vector<Index>> colour_elements(const Stencils& stencils, Index num_dofs) {
+  const DofElements inv = invert({&stencils}, num_dofs);
+  return colour_with(stencils, inv);
+}
+
+std::vector<std::vector<Index>> colour_elements(const Stencils& stencils, const dofs::DofMap& map) {
+  if (!map.has_ties())
+    return colour_elements(stencils, map.num_dofs());
+  Stencils leaders = stencils; // elements sharing an unknown through a tie share a colour slot
+  for (Index& d : leaders.dofs)
+    d = map.leader(d);
+  return colour_with(leaders, invert({&leaders}, map.num_dofs()));
+}
+
 SystemPattern build_pattern(const dofs::DofMap& map, const std::vector<const Stencils*>& sets) {
   const DofElements inv = invert(sets, map.num_dofs());
   std::vector<std::vector<Index>> ff(map.num_equations()), fc(map.num_constrained());
@@ -94,11 +108,18 @@ SystemPattern build_pattern(const dofs::DofMap& map, const std::vector<const Ste
     }
     std::sort(rows.begin(), rows.end());
     rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
-    if (const Index eq = map.equation(col); eq >= 0)
-      ff[eq] = rows;
-    else
+    if (const Index eq = map.equation(col); eq < 0)
       fc[map.constrained_index(col)] = rows;
+    else if (ff[eq].empty())
+      ff[eq] = rows;
+    else // a tied DOF: its column joins the leader's
+      ff[eq].insert(ff[eq].end(), rows.begin(), rows.end());
   }
+  if (map.has_ties())
+    for (auto& rows_of_eq : ff) {
+      std::sort(rows_of_eq.begin(), rows_of_eq.end());
+      rows_of_eq.erase(std::unique(rows_of_eq.begin(), rows_of_eq.end()), rows_of_eq.end());
+    }
   return {make_matrix(map.num_equations(), map.num_equations(), ff),
           make_matrix(map.num_equations(), map.num_constrained(), fc)};
 }

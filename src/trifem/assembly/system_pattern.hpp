@@ -28,6 +28,8 @@ Stencils collect_stencils(const physics::Term& term);
 /// Greedy colouring: elements of one colour share no DOF, so they can be assembled in
 /// parallel without races, in an order that does not depend on the thread count.
 std::vector<std::vector<Index>> colour_elements(const Stencils& stencils, Index num_dofs);
+/// As above, treating DOFs tied to one unknown (DofMap::tie) as one DOF.
+std::vector<std::vector<Index>> colour_elements(const Stencils& stencils, const dofs::DofMap& map);
 
 /// Zero-valued K_ff (equations x equations) and K_fc (equations x constrained DOFs) with the
 /// union of all stencil couplings; compressed, sorted row indices per column.

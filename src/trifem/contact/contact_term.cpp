@@ -37,7 +37,8 @@ ContactTerm::ContactTerm(const mesh::Mesh& mesh, const dofs::DofMap& dofs,
                          std::shared_ptr<const ContactLaw> law, ContactSettings settings)
     : mesh_(mesh), dofs_(dofs), u_(displacement), lambda_(multiplier), master_(master),
       slave_(slave), law_(std::move(law)), settings_(settings),
-      active_(slave_.num_nodes(), ActiveSetSettings{}) {
+      active_(slave_.num_nodes(), ActiveSetSettings{}),
+      committed_active_(slave_.num_nodes(), ActiveSetSettings{}) {
   check_disjoint(master_, slave_);
   TRIFEM_CHECK(law_ != nullptr, "contact: no contact law given");
   const dofs::FieldInfo& info = dofs.field(lambda_);
@@ -63,6 +64,7 @@ ContactTerm::ContactTerm(const mesh::Mesh& mesh, const dofs::DofMap& dofs,
     slave_facet_k_.push_back(k);
   }
   resolve_defaults();
+  committed_active_ = active_;
   project_all(Vector::Zero(dofs.num_dofs()));
   rebuild_stencils();
 }
@@ -156,8 +158,33 @@ bool ContactTerm::prepare(const physics::EvalState& state) {
   return rebuild_stencils();
 }
 
-void ContactTerm::commit(const physics::EvalState& /*state*/) {
+void ContactTerm::commit(const physics::EvalState& state) {
   active_.commit();
+  committed_active_ = active_;
+  committed_pressure_.assign(slave_.num_nodes(), 0.0);
+  for (Index k = 0; k < slave_.num_nodes(); ++k)
+    if (active_.active(k))
+      committed_pressure_[k] = std::abs(state.x[multiplier_dof(k, 0)]);
+}
+
+std::string ContactTerm::step_rejection(const physics::EvalState& /*state*/) const {
+  if (active_.pending() > 0)
+    return fmt::format("the contact status of {} slave node(s) did not settle within the step",
+                       active_.pending());
+  if (committed_pressure_.empty())
+    return {};
+  const Real peak = *std::max_element(committed_pressure_.begin(), committed_pressure_.end());
+  for (Index k = 0; k < slave_.num_nodes(); ++k) {
+    const auto& pr = slave_proj_[k];
+    if (committed_pressure_[k] > kReleaseFraction * peak && peak > 0 &&
+        (!pr || pr->on_free_boundary))
+      return fmt::format("slave node {} (reference position {:.4g} {:.4g} {:.4g}) left the "
+                         "master surface while carrying {:.0f}% of the peak contact pressure",
+                         slave_.nodes()[k], mesh_.node(slave_.nodes()[k]).x(),
+                         mesh_.node(slave_.nodes()[k]).y(), mesh_.node(slave_.nodes()[k]).z(),
+                         100.0 * committed_pressure_[k] / peak);
+  }
+  return {};
 }
 
 void ContactTerm::add_node_dofs(Index node, bool rows, std::vector<Index>& dofs) const {

@@ -40,6 +40,22 @@ struct ContactSettings {
   Real xi_tolerance = 1e-6;         ///< interior projections accepted in [-1-tol, 1+tol]²
 };
 
+/// Interface state of one slave node k in a configuration x (ContactTerm::slave_states). A node
+/// is `projected` if it has an admissible projection onto the master surface: one within the
+/// search distance that does not lie beyond the master's free boundary. Nodes that are not have
+/// gap = 0 and a zero master normal (no NaN: read `projected` first).
+struct SlaveNodeState {
+  Index node = -1;                 ///< mesh node
+  Vec3 position = Vec3::Zero();    ///< current position x = X + u [length]
+  Vec3 area_vector = Vec3::Zero(); ///< a_k = ∫ M_k n da over the current slave surface [length²]
+  Vec3 normal = Vec3::Zero();      ///< a_k / |a_k|: outward unit normal of the slave surface
+  bool projected = false;          ///< admissible projection onto the master surface
+  bool active = false;             ///< in the active set (of the last prepare())
+  Real gap = 0;                    ///< g = (x - x^m(ξ))·n^m(ξ) [length]: ≥ 0 separated
+  Vec3 master_normal = Vec3::Zero(); ///< n^m(ξ) at the projection (outward from the master)
+  Vector multiplier;                 ///< λ_k as stored (components and units: the ContactLaw)
+};
+
 /// Contact of a master and a slave surface (fixed for the run: one pass), frictionless or
 /// through any ContactLaw. Unknowns: the multipliers λ_k of every slave node k (a field with
 /// one entity per slave surface node, ordered as ContactSurface::nodes()).
@@ -78,6 +94,14 @@ public:
   /// Search and projections in the current configuration, then the active-set update.
   bool prepare(const physics::EvalState& state) override;
   void commit(const physics::EvalState& state) override;
+  /// Restores the active set of the last commit (a retried step starts from it).
+  void reject() override { active_ = committed_active_; }
+  /// Rejects a converged step whose active set has not settled (ActiveSet::pending() > 0) or
+  /// in which a slave node that carried a substantial pressure at the step start (more than
+  /// kReleaseFraction of the peak) slid beyond the master surface: the step is cut back.
+  std::string step_rejection(const physics::EvalState& state) const override;
+  /// Fraction of the peak contact pressure above which losing the projection rejects a step.
+  static constexpr Real kReleaseFraction = 0.25;
 
   const ContactSurface& master() const { return master_; }
   const ContactSurface& slave() const { return slave_; }
@@ -101,6 +125,14 @@ public:
   /// conserve momentum exactly: master + slave force is zero for a uniform pressure (patch
   /// test) and otherwise decreases as the master nodes resolve the pressure distribution.
   Vec3 master_force(const Vector& x) const;
+  /// Interface state of every slave node (order of slave().nodes()) in the state x
+  /// (contact_measures.cpp): projections onto the master surface recomputed in x with the
+  /// search distance and tolerances of prepare(), area vectors in x, the active flags of the
+  /// current active set and the multipliers read from x.
+  std::vector<SlaveNodeState> slave_states(const Vector& x) const;
+  /// Current area of the active part of the slave surface in the state x: Σ |a_k| over the
+  /// active slave nodes k, a_k = ∫ M_k n da (current configuration) [length²].
+  Real contact_area(const Vector& x) const;
 
 private:
   enum class Kind { SlaveFacet, MasterFacet, SlaveNode };
@@ -137,6 +169,8 @@ private:
   ActiveSet active_;
   std::vector<std::optional<Projection>> slave_proj_, master_proj_;
   std::vector<std::vector<Index>> stencils_;
+  std::vector<Real> committed_pressure_; ///< |λ_k,0| of active nodes at the step start
+  ActiveSet committed_active_;           ///< the active set at the last commit
 };
 
 } // namespace trifem::contact

@@ -11,6 +11,8 @@ FieldId DofMap::add_field(std::string name, Index num_entities, int components) 
   fields_.push_back({std::move(name), num_entities, components, num_dofs_});
   num_dofs_ += num_entities * components;
   constrained_.resize(num_dofs_, 0);
+  for (Index d = static_cast<Index>(leader_.size()); !leader_.empty() && d < num_dofs_; ++d)
+    leader_.push_back(d);
   return FieldId{static_cast<int>(fields_.size()) - 1};
 }
 
@@ -28,20 +30,44 @@ void DofMap::constrain(Index dof) {
   constrained_[dof] = 1;
 }
 
+void DofMap::tie(Index follower, Index leader) {
+  TRIFEM_VERIFY(!finalized_, "cannot tie DOF {} after finalize()", follower);
+  TRIFEM_VERIFY(follower >= 0 && follower < num_dofs_ && leader >= 0 && leader < num_dofs_,
+                "tie {} -> {} out of range", follower, leader);
+  if (leader_.empty()) {
+    leader_.resize(num_dofs_);
+    for (Index d = 0; d < num_dofs_; ++d)
+      leader_[d] = d;
+  }
+  TRIFEM_VERIFY(leader_[leader] == leader, "DOF {} is tied to {}: it cannot lead DOF {}", leader,
+                leader_[leader], follower);
+  TRIFEM_VERIFY(leader_[follower] == follower || leader_[follower] == leader,
+                "DOF {} is already tied to {}", follower, leader_[follower]);
+  leader_[follower] = leader;
+}
+
 void DofMap::finalize() {
   equation_.assign(num_dofs_, -1);
   constrained_index_.assign(num_dofs_, -1);
   equation_dofs_.clear();
   constrained_dofs_.clear();
   for (Index d = 0; d < num_dofs_; ++d) {
+    const Index lead = leader(d);
+    TRIFEM_VERIFY(constrained_[d] == constrained_[lead],
+                  "tied DOFs {} and {}: one is constrained, the other free", d, lead);
     if (constrained_[d]) {
       constrained_index_[d] = static_cast<Index>(constrained_dofs_.size());
       constrained_dofs_.push_back(d);
+    } else if (lead != d) {
+      continue; // numbered after the loop (the leader may come later)
     } else {
       equation_[d] = static_cast<Index>(equation_dofs_.size());
       equation_dofs_.push_back(d);
     }
   }
+  for (Index d = 0; d < num_dofs_ && has_ties(); ++d)
+    if (!constrained_[d])
+      equation_[d] = equation_[leader(d)];
   num_equations_ = static_cast<Index>(equation_dofs_.size());
   finalized_ = true;
 }

@@ -52,17 +52,27 @@ public:
   void constrain(Index dof);
   bool is_constrained(Index dof) const { return constrained_[dof]; }
 
-  /// Numbers equations (free DOFs, in DOF order) and constrained DOFs.
+  /// Links `follower` to `leader`: both become one unknown (one equation whose residual is the
+  /// sum of both rows), e.g. the nodes of a rigid body sharing its translation. The leader must
+  /// not be a follower itself. Both must end up free, or both constrained (then the tie has no
+  /// effect: each keeps its prescribed value). Must precede finalize().
+  void tie(Index follower, Index leader);
+  /// The DOF whose unknown `dof` shares (itself unless tied).
+  Index leader(Index dof) const { return leader_.empty() ? dof : leader_[dof]; }
+  bool has_ties() const { return !leader_.empty(); }
+
+  /// Numbers equations (free leader DOFs, in DOF order; followers get their leader's) and
+  /// constrained DOFs.
   void finalize();
   bool finalized() const { return finalized_; }
 
   Index num_equations() const { return num_equations_; }
-  Index num_constrained() const { return num_dofs_ - num_equations_; }
-  /// Equation of a free DOF, or -1.
+  Index num_constrained() const { return static_cast<Index>(constrained_dofs_.size()); }
+  /// Equation of a free DOF (tied DOFs share one), or -1.
   Index equation(Index dof) const { return equation_[dof]; }
   /// Index among constrained DOFs, or -1.
   Index constrained_index(Index dof) const { return constrained_index_[dof]; }
-  /// DOF of an equation.
+  /// Leader DOF of an equation.
   Index dof_of_equation(Index eq) const { return equation_dofs_[eq]; }
   /// DOF of a constrained index.
   Index dof_of_constrained(Index c) const { return constrained_dofs_[c]; }
@@ -73,6 +83,7 @@ private:
   Index num_equations_ = 0;
   bool finalized_ = false;
   std::vector<char> constrained_;
+  std::vector<Index> leader_; ///< empty until the first tie()
   std::vector<Index> equation_, constrained_index_, equation_dofs_, constrained_dofs_;
 };
 

@@ -87,14 +87,13 @@ CellStatus evaluate_cells(const ExplicitModel& model, Constraint constraint, con
   const Index n = model.num_cells();
   if (static_cast<Index>(out.internal.size()) != n)
     out.resize(n);
-  const material::ElasticLaw& law = model.law();
   Index first_bad = std::numeric_limits<Index>::max();
 #pragma omp parallel for schedule(static) reduction(min : first_bad) if (n >= kMinParallelLoop)
   for (Index c = 0; c < n; ++c) {
     Real W = 0.0;
-    const int code = evaluate_cell(model.geometry()[c], model.cell_values(c, U), law, constraint,
-                                   request, out.internal[c], out.gradient[c], out.psi[c], W,
-                                   out.volume_change[c], out.gauss_volume_change[c]);
+    const int code = evaluate_cell(model.geometry()[c], model.cell_values(c, U), model.law(c),
+                                   constraint, request, out.internal[c], out.gradient[c],
+                                   out.psi[c], W, out.volume_change[c], out.gauss_volume_change[c]);
     if (request.energy)
       out.energy[c] = W;
     if (code != kOk)
@@ -105,8 +104,8 @@ CellStatus evaluate_cells(const ExplicitModel& model, Constraint constraint, con
   // Re-evaluate the first failing cell serially to name the quantity (deterministic).
   CellVector q, h;
   Real psi = 0.0, W = 0.0, dJ = 0.0, dev = 0.0;
-  const int code = evaluate_cell(model.geometry()[first_bad], model.cell_values(first_bad, U), law,
-                                 constraint, request, q, h, psi, W, dJ, dev);
+  const int code = evaluate_cell(model.geometry()[first_bad], model.cell_values(first_bad, U),
+                                 model.law(first_bad), constraint, request, q, h, psi, W, dJ, dev);
   const CellFailure failure =
       code == kDetF ? CellFailure::NegativeJacobian : CellFailure::NonFinite;
   return {failure, first_bad, kQuantities[code]};

@@ -12,10 +12,8 @@ namespace trifem::explicit_dynamics {
 
 ExplicitModel::ExplicitModel(mesh::Mesh mesh, ModelSpec spec)
     : mesh_(std::move(mesh)), spec_(std::move(spec)) {
-  TRIFEM_CHECK(spec_.law != nullptr, "explicit model: no material law given");
-  TRIFEM_CHECK(std::isfinite(spec_.density) && spec_.density > 0.0,
-               "explicit model: density = {} t/mm^3, must be > 0", spec_.density);
   TRIFEM_CHECK(mesh_.num_cells() > 0, "explicit model: the mesh has no cells");
+  check_materials();
   build_geometry();
   build_mass_and_fixities();
   build_incidence();
@@ -28,6 +26,30 @@ fe::HexCoords ExplicitModel::cell_values(Index c, const Vector& U) const {
   for (int a = 0; a < 8; ++a)
     u.row(a) = U.segment<3>(3 * nodes[a]).transpose();
   return u;
+}
+
+void ExplicitModel::check_materials() {
+  if (spec_.law) {
+    TRIFEM_CHECK(spec_.materials.empty() && spec_.cell_material.empty(),
+                 "explicit model: give either law and density or materials, not both");
+    spec_.materials = {{spec_.law, spec_.density}};
+    spec_.cell_material.assign(mesh_.num_cells(), 0);
+  }
+  TRIFEM_CHECK(!spec_.materials.empty(), "explicit model: no material law given");
+  for (std::size_t i = 0; i < spec_.materials.size(); ++i) {
+    const ExplicitMaterial& m = spec_.materials[i];
+    TRIFEM_CHECK(m.law != nullptr, "explicit model: material {} has no law", i);
+    TRIFEM_CHECK(std::isfinite(m.density) && m.density > 0.0,
+                 "explicit model: density = {} t/mm^3 (material {}), must be > 0", m.density, i);
+  }
+  TRIFEM_CHECK(static_cast<Index>(spec_.cell_material.size()) == mesh_.num_cells(),
+               "explicit model: {} cell materials given for {} cells", spec_.cell_material.size(),
+               mesh_.num_cells());
+  const int n = static_cast<int>(spec_.materials.size());
+  for (Index c = 0; c < mesh_.num_cells(); ++c)
+    TRIFEM_CHECK(spec_.cell_material[c] >= 0 && spec_.cell_material[c] < n,
+                 "explicit model: cell {} has material {} (expected 0 to {})", c,
+                 spec_.cell_material[c], n - 1);
 }
 
 void ExplicitModel::build_geometry() {
@@ -58,12 +80,14 @@ void ExplicitModel::build_geometry() {
 void ExplicitModel::build_mass_and_fixities() {
   const auto& rule = fe::hex_gauss_2x2x2();
   Vector nodal = Vector::Zero(mesh_.num_nodes());
-  for (Index c = 0; c < mesh_.num_cells(); ++c)
+  for (Index c = 0; c < mesh_.num_cells(); ++c) {
+    const Real rho = density(c);
     for (int q = 0; q < 8; ++q) {
       const fe::HexShape N = fe::hex8_shape(rule[q].xi);
       for (int a = 0; a < 8; ++a)
-        nodal[mesh_.cell(c)[a]] += spec_.density * N[a] * geometry_[c].dV[q];
+        nodal[mesh_.cell(c)[a]] += rho * N[a] * geometry_[c].dV[q];
     }
+  }
   mass_.resize(num_dofs());
   for (Index a = 0; a < mesh_.num_nodes(); ++a)
     mass_.segment<3>(3 * a).setConstant(nodal[a]);

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// The discrete model of an explicit run: mesh, law, density, fixities and surface loads, with
+// The discrete model of an explicit run: mesh, laws, densities, fixities and surface loads, with
 // everything that does not change during the run precomputed (cell geometry, lumped mass,
 // node-to-cell incidence).
 #pragma once
@@ -37,10 +37,19 @@ struct SurfaceLoad {
   dofs::LoadCurve curve = dofs::LoadCurve::constant();
 };
 
-/// Everything the user specifies besides the mesh.
-struct ModelSpec {
-  std::shared_ptr<const material::ElasticLaw> law; ///< W(C) of every cell (shared, immutable)
+/// One material of the model: a law W(C) and a mass density.
+struct ExplicitMaterial {
+  std::shared_ptr<const material::ElasticLaw> law; ///< W(C) (shared, immutable)
   Real density = 0.0;                              ///< ρ [t/mm³] (> 0)
+};
+
+/// Everything the user specifies besides the mesh. One material for every cell: set `law` and
+/// `density`. Several materials: leave `law` empty and give `materials` with `cell_material`.
+struct ModelSpec {
+  std::shared_ptr<const material::ElasticLaw> law; ///< single-material shorthand: W(C) of all cells
+  Real density = 0.0;                              ///< single-material shorthand: ρ [t/mm³]
+  std::vector<ExplicitMaterial> materials;         ///< several materials (used if `law` is empty)
+  std::vector<int> cell_material; ///< index into `materials` of every cell (size num_cells)
   std::vector<Fixity> fixities;
   std::vector<SurfaceLoad> loads;
 };
@@ -61,13 +70,22 @@ struct ResolvedLoad {
 /// The immutable discrete model. DOF numbering: 3 a + k for node a, component k.
 class ExplicitModel {
 public:
-  /// Validates the spec (named sets exist, ρ > 0, every cell has det(∂X/∂ξ) > 0) and
-  /// precomputes the geometry, the lumped mass and the incidence. Throws InputError.
+  /// Validates the spec (named sets exist, ρ > 0, every cell has a material and
+  /// det(∂X/∂ξ) > 0) and precomputes the geometry, the lumped mass and the incidence. The
+  /// single-material shorthand is stored as `materials` = {law, density}. Throws InputError.
   ExplicitModel(mesh::Mesh mesh, ModelSpec spec);
 
   const mesh::Mesh& mesh() const { return mesh_; }
-  const material::ElasticLaw& law() const { return *spec_.law; }
-  Real density() const { return spec_.density; }
+  /// W(C) of cell c.
+  const material::ElasticLaw& law(Index c) const {
+    return *spec_.materials[spec_.cell_material[c]].law;
+  }
+  /// ρ of cell c [t/mm³].
+  Real density(Index c) const { return spec_.materials[spec_.cell_material[c]].density; }
+  /// The materials, indexed by material_of().
+  const std::vector<ExplicitMaterial>& materials() const { return spec_.materials; }
+  /// Index into materials() of cell c.
+  int material_of(Index c) const { return spec_.cell_material[c]; }
   Index num_cells() const { return mesh_.num_cells(); }
   Index num_dofs() const { return 3 * mesh_.num_nodes(); }
 
@@ -90,6 +108,7 @@ public:
   fe::HexCoords cell_values(Index c, const Vector& U) const;
 
 private:
+  void check_materials();
   void build_geometry();
   void build_mass_and_fixities();
   void build_incidence();

@@ -166,20 +166,30 @@ Real ExplicitSolver::max_gauss_volume_change() const {
   return fields_.gauss_volume_change.lpNorm<Eigen::Infinity>();
 }
 
+Vector ExplicitSolver::reaction_force() const {
+  Vector force = f_int_ - f_ext_;
+  if (settings_.multiplier) {
+    Vector pressure;
+    gather(model_, fields_.gradient, &lambda_, pressure);
+    force += pressure;
+  }
+  return force;
+}
+
+Vector ExplicitSolver::velocity() const {
+  // v^n = (v^{n-1/2} + Δt/2 a^n) / (1 + c Δt/2), a^n = M⁻¹(F^n − Q^n − H^n Λ^n).
+  const Real half = 0.5 * dt_prev_;
+  if (half == 0.0)
+    return V_; // the initial state (a non-finite initial force must not make it NaN)
+  return (V_ - half * model_.inverse_mass().cwiseProduct(reaction_force())) /
+         (1.0 + half * settings_.damping);
+}
+
 Energies ExplicitSolver::energies() const {
   Energies e;
   e.external_work = external_work_;
   e.damping_work = damping_work_;
-  // v^n = (v^{n-1/2} + Δt/2 a^n) / (1 + c Δt/2), a^n = M⁻¹(F^n − Q^n − H^n Λ^n).
-  Vector force = f_ext_ - f_int_;
-  if (settings_.multiplier) {
-    Vector pressure;
-    gather(model_, fields_.gradient, &lambda_, pressure);
-    force -= pressure;
-  }
-  const Real half = 0.5 * dt_prev_;
-  const Vector v =
-      (V_ + half * model_.inverse_mass().cwiseProduct(force)) / (1.0 + half * settings_.damping);
+  const Vector v = velocity();
   e.kinetic = 0.5 * v.cwiseAbs2().dot(model_.mass());
   CellFields w;
   const CellStatus s =

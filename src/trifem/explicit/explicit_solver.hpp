@@ -88,8 +88,14 @@ public:
 
   const Vector& displacement() const { return U_; }       ///< U^n [mm]
   const Vector& half_step_velocity() const { return V_; } ///< (U^n − U^{n−1})/Δt [mm/s]
-  const Vector& multiplier() const { return lambda_; }    ///< Λ^n per cell [MPa]
-  const CellFields& fields() const { return fields_; }    ///< cell results at U^n
+  /// Velocity at t_n, vⁿ = (v^{n−½} + Δt/2 M⁻¹(F_Sⁿ − Q_Vⁿ − H_n Λⁿ)) / (1 + cΔt/2) [mm/s]
+  /// (the half-step velocity plus half a kick; 0 on fixed DOFs).
+  Vector velocity() const;
+  /// Q_V(Uⁿ) + H_n Λⁿ − F_S(t_n, Uⁿ) per DOF [N]. On fixed DOFs (zero acceleration) this is the
+  /// support reaction, the force the support exerts on the body; on free DOFs it is −M aⁿ.
+  Vector reaction_force() const;
+  const Vector& multiplier() const { return lambda_; } ///< Λ^n per cell [MPa]
+  const CellFields& fields() const { return fields_; } ///< cell results at U^n
   /// max over cells of |J̄_e − 1|, J̄_e = cell-mean J, at U^n: the volume change the P0
   /// multiplier controls (|J̄ − 1| = |Λ|/α at convergence for Ψ = J − 1).
   Real max_volume_change() const;

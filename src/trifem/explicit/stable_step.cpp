@@ -22,7 +22,7 @@ void apply_stiffness(const ExplicitModel& model, const Vector& U, const Vector& 
   for (Index c = 0; c < n; ++c) {
     physics::HexVector f;
     physics::HexMatrix K;
-    physics::solid_hex8(model.geometry()[c], model.cell_values(c, U), model.law(), f, &K);
+    physics::solid_hex8(model.geometry()[c], model.cell_values(c, U), model.law(c), f, &K);
     const fe::HexCoords vc = model.cell_values(c, v);
     CellVector ve;
     for (int a = 0; a < 8; ++a)
@@ -124,12 +124,12 @@ FrequencyEstimate element_bound_omega(const ExplicitModel& model, const Vector& 
     const fe::HexGeometry& geo = model.geometry()[c];
     physics::HexVector f;
     physics::HexMatrix K;
-    physics::solid_hex8(geo, model.cell_values(c, U), model.law(), f, &K);
+    physics::solid_hex8(geo, model.cell_values(c, U), model.law(c), f, &K);
     CellVector m = CellVector::Zero();
     for (int q = 0; q < 8; ++q) {
       const fe::HexShape N = fe::hex8_shape(rule[q].xi);
       for (int a = 0; a < 8; ++a)
-        m.segment<3>(3 * a).array() += model.density() * N[a] * geo.dV[q];
+        m.segment<3>(3 * a).array() += model.density(c) * N[a] * geo.dV[q];
     }
     const CellVector s = m.cwiseSqrt().cwiseInverse();
     const physics::HexMatrix A = s.asDiagonal() * K * s.asDiagonal();

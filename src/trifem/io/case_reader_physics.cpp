@@ -94,25 +94,6 @@ std::vector<FieldKind> read_field(const Table& t, const ModelFields& model, bool
 // ---------------------------------------------------------------------------------------------
 // [[boundary.fixed]], [[boundary.impermeable]], [[boundary.bonded]], [[boundary.prescribed]]
 
-/// The optional `components` key of `t` (default: all three).
-std::vector<Component> read_components(const Table& t) {
-  const toml::node* n = t.find("components");
-  if (!n)
-    return {0, 1, 2};
-  const toml::array& a = array_of(*n, t.path("components"), "an array of components");
-  if (a.empty())
-    fail(n, t.path("components"), "expected at least one of \"x\", \"y\", \"z\", got []");
-  std::vector<Component> components;
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    const std::string path = element_path(t.path("components"), i);
-    const Component c = component_of(a[i], path);
-    if (std::find(components.begin(), components.end(), c) != components.end())
-      fail(&a[i], fmt::format("{} = '{}'", path, kAxis[c]), "duplicate component");
-    components.push_back(c);
-  }
-  return components;
-}
-
 FixedSpec read_fixed(const Table& t, const ModelFields& model) {
   t.allow({"set", "field", "components"});
   FixedSpec f;
@@ -189,6 +170,19 @@ void require_mixture(const Table& t, const CaseSpec& spec) {
          "'biphasic' or 'triphasic')");
 }
 
+/// The [analysis] keys of mixture models (`type`, read first, applies to every model).
+void check_analysis_keys(const Table& t, const CaseSpec& spec) {
+  static const std::vector<std::string_view> mixture_keys = {"initial_state", "fixed_charge_curve"};
+  t.allow(mixture_keys, {"type"});
+  const auto [key, node] = t.first_key([](std::string_view k) { return k != "type"; });
+  if (node && !model_fields(spec).fluxes)
+    fail(t.where(), t.path(),
+         fmt::format("only applies to biphasic/triphasic materials (no [materials.<name>] has "
+                     "type = 'biphasic' or 'triphasic'); of its keys only 'type' applies to "
+                     "every model, {} does not",
+                     t.path(key)));
+}
+
 } // namespace
 
 void read_boundary(const Table& root, CaseSpec& spec) {
@@ -257,8 +251,9 @@ void read_analysis(const Table& root, CaseSpec& spec) {
   const auto t = root.table("analysis");
   if (!t)
     return;
-  require_mixture(*t, spec);
-  t->allow({"initial_state", "fixed_charge_curve"});
+  check_analysis_keys(*t, spec);
+  if (!model_fields(spec).fluxes)
+    return; // only `type`, read by read_analysis_type
   static const Options<InitialStateKind> states = {
       {"donnan", InitialStateKind::Donnan},
       {"donnan-prestressed", InitialStateKind::DonnanPrestressed}};
@@ -301,7 +296,8 @@ namespace trifem::io::detail {
 void read_contacts(const Table& root, CaseSpec& spec) {
   const Options<bool> integration = {{"both-surfaces", true}, {"slave-nodes", false}};
   for (const Table& t : root.tables("contact")) {
-    t.allow({"master", "slave", "integration", "scale", "search_distance"});
+    t.allow(
+        {"master", "slave", "integration", "scale", "search_distance", "penetration_tolerance"});
     ContactSpec c;
     c.key = t.path();
     c.master = t.name("master");
@@ -315,8 +311,30 @@ void read_contacts(const Table& root, CaseSpec& spec) {
     c.search_distance =
         t.number("search_distance",
                  {.range = material::Range::non_negative(), .fallback = 0.0, .unit = "mm"});
+    c.penetration_tolerance =
+        t.number("penetration_tolerance",
+                 {.range = material::Range::non_negative(), .fallback = -1.0, .unit = "mm"});
     spec.contacts.push_back(std::move(c));
   }
+}
+
+/// The optional `components` key of `t` (default: all three).
+std::vector<Component> read_components(const Table& t) {
+  const toml::node* n = t.find("components");
+  if (!n)
+    return {0, 1, 2};
+  const toml::array& a = array_of(*n, t.path("components"), "an array of components");
+  if (a.empty())
+    fail(n, t.path("components"), "expected at least one of \"x\", \"y\", \"z\", got []");
+  std::vector<Component> components;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    const std::string path = element_path(t.path("components"), i);
+    const Component c = component_of(a[i], path);
+    if (std::find(components.begin(), components.end(), c) != components.end())
+      fail(&a[i], fmt::format("{} = '{}'", path, kAxis[c]), "duplicate component");
+    components.push_back(c);
+  }
+  return components;
 }
 
 } // namespace trifem::io::detail

@@ -29,13 +29,15 @@ std::string read_type(const Table& t, bool mixtures, std::string_view noun) {
   return std::string(t.choice("type", types, std::optional<std::string_view>(), noun));
 }
 
-/// The solid law `type` read from `t`, which holds `type` and the law's parameters only.
-SolidSpec read_solid_law(const Table& t, const std::string& type) {
+/// The solid law `type` read from `t`, which holds `type`, the law's parameters and the
+/// material-level `extra` keys (read by the caller) only.
+SolidSpec read_solid_law(const Table& t, const std::string& type,
+                         std::vector<std::string_view> extra = {}) {
   const material::LawEntry& law = material::find_law(type, t.path());
   std::vector<std::string_view> keys = {"type"};
   for (const auto& p : *law.parameters)
     keys.push_back(p.key);
-  t.allow(keys);
+  t.allow(keys, extra);
   material::ParameterValues values;
   for (const auto& p : *law.parameters)
     if (t.find(p.key) != nullptr)
@@ -98,25 +100,42 @@ MaterialSpec read_mixture(const Table& t, const std::string& type) {
   SolidSpec solid = read_mixture_solid(t);
   MaterialSpec m{type,
                  material::validate_parameters(material::mixture_schema(charged), values, t.path()),
-                 std::move(solid)};
+                 std::move(solid), std::nullopt};
   material::make_mixture(charged,
                          material::create_law(m.solid->type, m.solid->parameters, t.path("solid")),
                          m.parameters, t.path()); // the mixture's own checks
   return m;
 }
 
-MaterialSpec read_material(const Table& t) {
+/// The mass density of the solid-law material `t`: optional, required in explicit analyses.
+std::optional<Real> read_density(const Table& t, const CaseSpec& spec) {
+  const NumberRule rule{.range = Range::positive(), .unit = "t/mm^3"};
+  if (t.find("density"))
+    return t.number("density", rule);
+  if (spec.is_explicit())
+    fail(t.where(), t.path("density"),
+         fmt::format("missing required key (expected a number in {}: dynamic-explicit analyses "
+                     "need the mass density of every material, e.g. 1e-9 for water-like tissue)",
+                     range_text(rule.range, rule.unit)));
+  return std::nullopt;
+}
+
+MaterialSpec read_material(const Table& t, const CaseSpec& spec) {
   const std::string type = read_type(t, true, "material type");
   if (std::find(std::begin(kMixtureTypes), std::end(kMixtureTypes), type) !=
-      std::end(kMixtureTypes))
+      std::end(kMixtureTypes)) {
+    if (spec.is_explicit())
+      fail(t.find("type"), fmt::format("{} = '{}'", t.path("type"), type),
+           "not supported in dynamic-explicit analyses (analysis.type): only solid laws");
     return read_mixture(t, type);
+  }
   if (const toml::node* solid = t.find("solid"))
     fail(solid, t.path("solid"),
          fmt::format("only biphasic and triphasic materials have a [solid] sub-table ({} = '{}' "
                      "is a solid law: give its parameters in [{}] itself)",
                      t.path("type"), type, t.path()));
-  SolidSpec s = read_solid_law(t, type);
-  return {std::move(s.type), std::move(s.parameters), std::nullopt};
+  SolidSpec s = read_solid_law(t, type, {"density"});
+  return {std::move(s.type), std::move(s.parameters), std::nullopt, read_density(t, spec)};
 }
 
 CurveSpec read_curve(const Table& t) {
@@ -134,7 +153,7 @@ CurveSpec read_curve(const Table& t) {
 void read_materials_and_curves(const Table& root, CaseSpec& spec) {
   if (const auto materials = root.table("materials"))
     for (const auto& [name, t] : materials->named_tables())
-      spec.materials.emplace(name, read_material(t));
+      spec.materials.emplace(name, read_material(t, spec));
   if (const auto curves = root.table("curves"))
     for (const auto& [name, t] : curves->named_tables())
       spec.curves.emplace(name, read_curve(t));
@@ -144,6 +163,8 @@ void read_materials_and_curves(const Table& root, CaseSpec& spec) {
 // [time], [solver]
 
 void read_time(const Table& root, CaseSpec& spec) {
+  if (spec.is_explicit())
+    return read_explicit_time(root, spec);
   const auto t = root.table("time");
   if (!t)
     fail(nullptr, "time", "missing required table [time] (with at least end_time and dt)");
@@ -322,18 +343,22 @@ void read_output(const Table& root, CaseSpec& spec) {
 
 void read_sections(const toml::table& document, CaseSpec& spec) {
   const Table root(document, "");
-  root.allow({"title", "mesh", "materials", "curves", "boundary", "loads", "contact", "analysis",
-              "electrochemistry", "time", "solver", "output"});
+  root.allow({"title", "mesh", "materials", "curves", "boundary", "loads", "contact", "rigid_body",
+              "analysis", "electrochemistry", "time", "solver", "explicit", "output"});
   spec.title = root.get<std::string>("title").value_or("");
+  read_analysis_type(root, spec); // the other sections depend on it
+  check_analysis_sections(root, spec);
   read_materials_and_curves(root, spec);
   read_time(root, spec);
   read_mesh(root, spec);
   read_boundary(root, spec);
   read_loads(root, spec);
   read_contacts(root, spec);
+  read_rigid_bodies(root, spec);
   read_analysis(root, spec);
   read_electrochemistry(root, spec);
   read_solver(root, spec);
+  read_explicit(root, spec);
   read_output(root, spec);
 }
 

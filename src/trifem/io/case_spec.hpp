@@ -9,6 +9,7 @@
 
 #include <array>
 #include <filesystem>
+#include <limits>
 #include <map>
 #include <optional>
 #include <string>
@@ -42,6 +43,9 @@ struct MaterialSpec {
   std::string type;
   material::ParameterValues parameters;
   std::optional<SolidSpec> solid; ///< set exactly for mixtures
+  /// Mass density ρ [t/mm³] of a solid-law material (optional key, > 0); required in
+  /// dynamic-explicit analyses, unused by quasi-static ones.
+  std::optional<Real> density;
   bool is_mixture() const { return type == "biphasic" || type == "triphasic"; }
 };
 
@@ -107,7 +111,7 @@ struct BathSpec {
 };
 
 /// [[contact]]: a frictionless contact pair (one pass: the slave's nodes carry the contact
-/// pressure). Solid bodies only for now.
+/// pressure and, between mixtures, the potentials).
 struct ContactSpec {
   std::string key;            ///< "contact[1]" (for messages)
   std::string master;         ///< master surface (the coarser one)
@@ -115,6 +119,34 @@ struct ContactSpec {
   bool both_surfaces = true;  ///< integration "both-surfaces" (default) or "slave-nodes"
   Real scale = 0.0;           ///< c_N [MPa/mm]; 0: (lambda + 2 mu)_max / h
   Real search_distance = 0.0; ///< [mm]; 0: half the mean facet size
+  /// Largest initial penetration accepted [mm]; < 0 (absent): 1e-3 x the mean facet size.
+  Real penetration_tolerance = -1.0;
+};
+
+/// How one translation component of a rigid body is driven.
+enum class RigidDrive {
+  Free,         ///< no prescribed value, no applied force
+  Displacement, ///< translation = value * curve(t) [mm]
+  Force,        ///< applied force = value * curve(t) [N]
+};
+
+/// One component of a [[rigid_body]] (the keys x, y, z).
+struct RigidComponentSpec {
+  RigidDrive drive = RigidDrive::Free;
+  Real value = 0.0;
+  std::string curve; ///< empty: constant 1
+};
+
+/// [[rigid_body]]: the nodes of `set` move with one rigid translation (rotation fixed), the
+/// unknown of the body, e.g. a bone bonded to cartilage. Only the listed `components` are tied
+/// (default all; the others stay per node, e.g. for plane strain); each is free, driven by a
+/// displacement or by a force.
+struct RigidBodySpec {
+  std::string key; ///< "rigid_body[1]" (for messages)
+  std::string name;
+  std::string set;
+  std::vector<Component> components = {0, 1, 2};
+  std::array<RigidComponentSpec, 3> drives; ///< by component (Free unless given)
 };
 
 /// [[loads.traction]]: dead traction per reference area on a surface [MPa].
@@ -130,8 +162,15 @@ enum class InitialStateKind {
   DonnanPrestressed, ///< "donnan-prestressed": as IC-1 with a Cauchy prestress Pi0 (IC-3a)
 };
 
-/// [analysis]: options of mixture models.
+/// The kind of analysis ([analysis] type).
+enum class AnalysisType {
+  QuasiStatic,    ///< "quasi-static": implicit Newton steps, no inertia (default)
+  DynamicExplicit ///< "dynamic-explicit": central differences with a multiplier pressure
+};
+
+/// [analysis]: the analysis type (any model) and the options of mixture models.
 struct AnalysisSpec {
+  AnalysisType type = AnalysisType::QuasiStatic;
   InitialStateKind initial_state = InitialStateKind::Donnan;
   std::string fixed_charge_curve; ///< curve scaling every fixed charge in time (free swelling)
 };
@@ -146,10 +185,49 @@ struct ElectrochemistrySpec {
   Real bath_osmotic = 1.0;          ///< bath osmotic coefficient Phi*, > 0
 };
 
+/// Which forces the per-step iteration of an explicit analysis re-evaluates ([explicit] reading).
+enum class ExplicitReading {
+  A, ///< "A": all forces at t + Δt (first order, dissipative)
+  B  ///< "B": forces at t_n, only the multiplier iterated (second order; default)
+};
+
+/// The volume constraint Ψ(C) of the multiplier term ([explicit] constraint).
+enum class VolumeConstraint {
+  JMinusOne, ///< "J-1": Ψ = J − 1 (σ = λ I)
+  LogJ       ///< "lnJ": Ψ = ln J (τ = λ I)
+};
+
+/// How an explicit analysis estimates its critical step ([explicit] stable_step).
+enum class StableStepEstimate {
+  PowerIteration, ///< "power-iteration": isochoric ω by power iteration (default)
+  ElementBound,   ///< "element-bound": max over cells of the element frequency (upper bound)
+  None            ///< "none": use time.dt as given
+};
+
+/// [explicit]: options of a dynamic-explicit analysis. The defaults are those of
+/// explicit_dynamics::ExplicitSettings.
+struct ExplicitSpec {
+  ExplicitReading reading = ExplicitReading::B;
+  VolumeConstraint constraint = VolumeConstraint::JMinusOne;
+  bool multiplier = true; ///< false: pure-displacement Q1 (the law carries the bulk stiffness)
+  Real penalty = std::numeric_limits<Real>::infinity(); ///< α [MPa]; inf: exact constraint
+  Real damping = 0.0;                                   ///< mass-proportional damping c [1/s]
+  std::optional<Real> safety_factor; ///< of the critical step; default 0.8 (B) or 0.5 (A)
+  StableStepEstimate stable_step = StableStepEstimate::PowerIteration;
+  int stable_step_interval = 0;        ///< re-estimate every this many steps (0: at t = 0 only)
+  int max_iterations = 50;             ///< multiplier iterations per step before Δt is halved
+  int max_halvings = 8;                ///< consecutive halvings before the run stops
+  int factorization_age = 1;           ///< steps one factorization may serve (reading B)
+  Real displacement_tolerance = 1e-10; ///< relative increment that ends the iteration
+  Real constraint_tolerance = 1e-11;   ///< max_e |Ψ_e − V_e Λ_e/α| / V_e that ends it
+};
+
 /// [time]
 struct TimeSpec {
-  Real end_time = 1.0;       ///< end of the analysis [s]
-  Real dt = 0.1;             ///< initial step [s]
+  Real end_time = 1.0; ///< end of the analysis [s]
+  /// Initial step [s]. Dynamic-explicit: the requested step, 0 (time.dt absent) = the stability
+  /// estimate; a request above the estimate is reduced to it.
+  Real dt = 0.1;
   Real dt_min = 0.0;         ///< smallest step before the run fails [s]; 0 means dt * 1e-6
   Real dt_max = 0.0;         ///< largest step [s]; 0 means dt
   int target_iterations = 6; ///< steps that converge in at most this many iterations grow dt
@@ -202,11 +280,15 @@ struct CaseSpec {
   std::vector<TractionSpec> tractions;
   std::vector<BathSpec> baths;
   std::vector<ContactSpec> contacts;
+  std::vector<RigidBodySpec> rigid_bodies;
   AnalysisSpec analysis;
   ElectrochemistrySpec electrochemistry;
   TimeSpec time;
-  SolverSpec solver;
+  SolverSpec solver;              ///< quasi-static analyses
+  ExplicitSpec explicit_dynamics; ///< dynamic-explicit analyses ([explicit])
   OutputSpec output;
+
+  bool is_explicit() const { return analysis.type == AnalysisType::DynamicExplicit; }
 };
 
 } // namespace trifem::io

@@ -218,6 +218,22 @@ void Table::allow(const std::vector<std::string_view>& allowed) const {
                      did_you_mean(key, allowed)));
 }
 
+void Table::allow(const std::vector<std::string_view>& allowed,
+                  const std::vector<std::string_view>& also) const {
+  std::vector<std::string_view> all = allowed;
+  all.insert(all.end(), also.begin(), also.end());
+  const auto [key, node] = first_key(
+      [&](std::string_view k) { return std::find(all.begin(), all.end(), k) == all.end(); });
+  if (!node)
+    return;
+  std::string extra;
+  for (const std::string_view k : also)
+    extra += fmt::format(" or '{}'", k);
+  fail(node, path(key),
+       fmt::format("unknown key (expected one of: {}){}{}", join(allowed), extra,
+                   did_you_mean(key, all)));
+}
+
 void Table::missing(std::string_view key, std::string_view what) const {
   fail(where(), path(key), fmt::format("missing required key (expected {})", what));
 }

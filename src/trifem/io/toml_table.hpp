@@ -154,6 +154,11 @@ public:
 
   /// Throws on the key that is not in `allowed` and comes first in the file, if any.
   void allow(const std::vector<std::string_view>& allowed) const;
+  /// As allow(allowed + also); the message lists `also` separately ("expected one of: <allowed>)
+  /// or '<also>'"), for keys that are not part of the table's own schema (e.g. a
+  /// material-level key next to a law's parameters).
+  void allow(const std::vector<std::string_view>& allowed,
+             const std::vector<std::string_view>& also) const;
 
   [[noreturn]] void missing(std::string_view key, std::string_view what) const;
 
@@ -251,6 +256,9 @@ inline constexpr std::string_view kAxis[3] = {"x", "y", "z"};
 /// The component named by the string `n` (at `path`).
 Component component_of(const toml::node& n, const std::string& path);
 
+/// The optional `components` key of `t`: distinct "x", "y", "z" (default: all three).
+std::vector<Component> read_components(const Table& t);
+
 // ---------------------------------------------------------------------------------------------
 // Section readers. Each reads one top-level table of `root` (if present) into `spec`.
 
@@ -263,9 +271,21 @@ void read_boundary(const Table& root, CaseSpec& spec);
 void read_loads(const Table& root, CaseSpec& spec);
 /// [[contact]] pairs (after materials).
 void read_contacts(const Table& root, CaseSpec& spec);
+/// [[rigid_body]] (case_reader_rigid.cpp); after [[boundary.*]] (conflicts are checked).
+void read_rigid_bodies(const Table& root, CaseSpec& spec);
 /// [analysis] (case_reader_physics.cpp).
 void read_analysis(const Table& root, CaseSpec& spec);
 /// [electrochemistry] (case_reader_physics.cpp).
 void read_electrochemistry(const Table& root, CaseSpec& spec);
+
+/// [analysis] type, before every other section (case_reader_explicit.cpp).
+void read_analysis_type(const Table& root, CaseSpec& spec);
+/// Rejects the sections of another analysis type: [explicit] unless dynamic-explicit; in
+/// dynamic-explicit analyses [solver], [[contact]], [[boundary.prescribed]], ... (the first one).
+void check_analysis_sections(const Table& root, const CaseSpec& spec);
+/// [time] of a dynamic-explicit analysis (dt optional; quasi-static keys are errors).
+void read_explicit_time(const Table& root, CaseSpec& spec);
+/// [explicit] (only with [analysis] type = "dynamic-explicit"; after [time]).
+void read_explicit(const Table& root, CaseSpec& spec);
 
 } // namespace trifem::io::detail

@@ -53,6 +53,8 @@ public:
   /// Total ion moles [mmol] and water volume [mm^3] of the committed state.
   Real total_moles(bool cation) const;
   Real total_water_volume() const;
+  /// Water volume [mm^3] of element e in the committed state, V - phi_s0 V0.
+  Real water_volume(Index e) const;
 
   Index cell(Index e) const { return cells_[e]; }
   bool has_ions() const { return fields_.j_plus.valid(); }

@@ -39,6 +39,13 @@ public:
   /// Called before every evaluation of the whole system (e.g. contact search and projection).
   /// Returns true if element_dofs() changed: the sparsity pattern is then rebuilt.
   virtual bool prepare(const EvalState& /*state*/) { return false; }
+  /// Called when a step is abandoned (before it is retried with a smaller size): state kept by
+  /// the term during the step (e.g. a contact active set) returns to the last commit().
+  virtual void reject() {}
+  /// Called once Newton has converged, before commit(): a non-empty reason rejects the step
+  /// (the time loop cuts it back and logs the reason), e.g. a contact status that has not
+  /// settled. `state` is the converged state.
+  virtual std::string step_rejection(const EvalState& /*state*/) const { return {}; }
 };
 
 } // namespace trifem::physics

@@ -29,6 +29,8 @@ const char* to_string(SolveStatus status) {
     return "maximum Newton iterations reached";
   case SolveStatus::FactorizationFailed:
     return "linear solver failed (singular matrix?)";
+  case SolveStatus::Rejected:
+    return "converged state rejected";
   }
   return "unknown";
 }

@@ -16,6 +16,7 @@ enum class SolveStatus {
   Diverged,            ///< residual grows or becomes non-finite
   MaxIterations,       ///< Newton did not converge in the allowed iterations
   FactorizationFailed, ///< singular or failed LU factorization
+  Rejected,            ///< converged, but a term rejected the state (e.g. contact not settled)
 };
 
 /// Human-readable status.
@@ -64,6 +65,8 @@ class TransientProblem : public NonlinearProblem {
 public:
   /// Sets loads and prescribed targets for the step ending at `time` with size `dt`.
   virtual void begin_step(Real time, Real dt) = 0;
+  /// Called after Newton converged: a non-empty reason rejects the step (it is cut back).
+  virtual std::string step_rejection() const { return {}; }
   /// Accepts the converged step (history variables become the new old state).
   virtual void commit_step() = 0;
   /// Returns to the state at the beginning of the step (after a failure).

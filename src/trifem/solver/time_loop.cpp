@@ -12,8 +12,13 @@ RunReport run_time_loop(TransientProblem& problem, NewtonSolver& newton, StepCon
     const Real dt = controller.next_step();
     const Real t = controller.time() + dt;
     problem.begin_step(t, dt);
-    const NewtonReport report = newton.solve(problem);
+    NewtonReport report = newton.solve(problem);
     run.iterations += report.iterations;
+    if (report.status == SolveStatus::Converged)
+      if (std::string why = problem.step_rejection(); !why.empty()) {
+        report.status = SolveStatus::Rejected;
+        report.failure_reason = std::move(why);
+      }
     if (report.status != SolveStatus::Converged) {
       ++run.failed_attempts;
       problem.reject_step();

@@ -28,6 +28,34 @@ TEST(DofMap, NumbersFieldsContiguouslyAndSplitsFreeAndConstrained) {
     EXPECT_EQ(map.equation(map.dof_of_equation(eq)), eq);
 }
 
+TEST(DofMap, TiedDofsShareTheirLeadersEquation) {
+  dofs::DofMap map;
+  const auto u = map.add_field("u", 4, 1);
+  map.tie(map.dof(u, 0, 0), map.dof(u, 3, 0)); // the follower precedes its leader
+  map.tie(map.dof(u, 2, 0), map.dof(u, 3, 0));
+  const auto p = map.add_field("p", 1, 1); // a field added after a tie is untied
+  map.finalize();
+  EXPECT_EQ(map.num_equations(), 3);
+  EXPECT_EQ(map.num_constrained(), 0);
+  EXPECT_EQ(map.equation(0), map.equation(3));
+  EXPECT_EQ(map.equation(2), map.equation(3));
+  EXPECT_NE(map.equation(1), map.equation(3));
+  EXPECT_EQ(map.dof_of_equation(map.equation(0)), 3);
+  EXPECT_EQ(map.leader(map.dof(p, 0, 0)), map.dof(p, 0, 0));
+}
+
+TEST(DofMap, TieRejectsChainsAndMixedConstraints) {
+  dofs::DofMap chain;
+  chain.add_field("u", 3, 1);
+  chain.tie(0, 1);
+  EXPECT_THROW(chain.tie(2, 0), LogicError); // 0 follows 1: it cannot lead
+  dofs::DofMap mixed;
+  mixed.add_field("u", 2, 1);
+  mixed.tie(0, 1);
+  mixed.constrain(1);
+  EXPECT_THROW(mixed.finalize(), LogicError);
+}
+
 TEST(Dirichlet, PrescribedValuesFollowTheCurve) {
   dofs::DirichletCondition c{
       {1, 3}, 2.0, dofs::LoadCurve({{0, 0}, {2, 1}}, dofs::Interpolation::Linear)};

@@ -133,3 +133,32 @@ TEST(ContactSliding, BlockOverLongBlockBothSurfaces) {
 TEST(ContactSliding, BlockOverLongBlockSlaveNodes) {
   run_sliding(contact::Integration::SlaveNodes, 2.0, 42);
 }
+
+// Dragging the slider off the end of the long block: the step in which the loaded contact
+// zone crosses the master's free edge converges, but the term rejects it (a loaded slave node
+// lost its projection); rejecting the step restores the committed active set.
+TEST(ContactSliding, LoadedNodeLeavingTheMasterSurfaceRejectsTheStep) {
+  auto m = sliding_model(contact::Integration::BothSurfaces, 4.0, 42); // 0.1 per sliding step
+  solver::NewtonSettings newton;
+  newton.residual_tolerance = 1e-12;
+  newton.max_iterations = 30;
+  std::string reason;
+  int step = 1;
+  for (; step <= 42 && reason.empty(); ++step) {
+    m->problem->begin_step(step, 1.0);
+    solver::NewtonSolver solver(newton, linalg::make_linear_solver("umfpack"));
+    const solver::NewtonReport report = solver.solve(*m->problem);
+    ASSERT_EQ(report.status, solver::SolveStatus::Converged) << "step " << step;
+    reason = m->problem->step_rejection();
+    if (!reason.empty()) {
+      const std::vector<char> committed = m->contact->active_set().flags();
+      m->problem->reject_step();
+      EXPECT_NE(m->contact->active_set().flags(), committed) << "the set changed in the step";
+      break;
+    }
+    m->problem->commit_step();
+  }
+  EXPECT_NE(reason.find("left the master surface"), std::string::npos) << reason;
+  EXPECT_GT(step, 3) << "rejected while the slider was still on the long block";
+  std::printf("[ sliding ] step %d rejected: %s\n", step, reason.c_str());
+}

@@ -1,0 +1,216 @@
+// SPDX-License-Identifier: MIT
+#include "contact_output.hpp"
+
+#include "trifem/core/log.hpp"
+#include "trifem/io/csv_writer.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+namespace trifem::app {
+namespace {
+
+using contact::SlaveNodeState;
+
+/// One array of per-node values f(state).
+template <class F>
+io::DataArray scalar_array(std::string name, const std::vector<SlaveNodeState>& states, F&& f) {
+  io::DataArray a{std::move(name), 1, std::vector<double>(states.size())};
+  for (std::size_t k = 0; k < states.size(); ++k)
+    a.values[k] = f(states[k]);
+  return a;
+}
+
+/// Normal component `scale` f·n of the nodal vector field f at a slave node, n = the outward
+/// normal of the slave surface (positive: out of the slave body).
+Real normal_component(const Model& model, dofs::FieldId f, const SlaveNodeState& s, Real scale) {
+  const Vector& x = model.problem->state();
+  Vec3 v;
+  for (int k = 0; k < 3; ++k)
+    v[k] = x[model.dofs.dof(f, s.node, k)];
+  return scale * v.dot(s.normal);
+}
+
+/// Mixture arrays: the water potential, the ion potentials (stored as c_ref mū_±) and the normal
+/// fluxes at the slave nodes (ion flux DOFs hold j / c_ref).
+void add_mixture_arrays(const Model& model, const std::vector<SlaveNodeState>& states,
+                        std::vector<io::DataArray>& out) {
+  const physics::MixtureFields& f = model.fields;
+  const Real c_ref = model.chem.c_ref;
+  const bool ions = f.j_plus.valid();
+  out.push_back(scalar_array("fluid_chemical_potential [MPa]", states,
+                             [](const SlaveNodeState& s) { return s.multiplier[1]; }));
+  if (ions) {
+    out.push_back(scalar_array("cation_electrochemical_potential [mJ/mmol]", states,
+                               [&](const SlaveNodeState& s) { return s.multiplier[2] / c_ref; }));
+    out.push_back(scalar_array("anion_electrochemical_potential [mJ/mmol]", states,
+                               [&](const SlaveNodeState& s) { return s.multiplier[3] / c_ref; }));
+  }
+  out.push_back(scalar_array("normal_fluid_flux [mm/s]", states, [&](const SlaveNodeState& s) {
+    return normal_component(model, f.w, s, 1.0);
+  }));
+  if (!ions)
+    return;
+  out.push_back(
+      scalar_array("normal_cation_flux [mmol/(mm^2 s)]", states, [&](const SlaveNodeState& s) {
+        return normal_component(model, f.j_plus, s, c_ref);
+      }));
+  out.push_back(
+      scalar_array("normal_anion_flux [mmol/(mm^2 s)]", states, [&](const SlaveNodeState& s) {
+        return normal_component(model, f.j_minus, s, c_ref);
+      }));
+}
+
+/// The slave surface as VTK quads (points: the slave nodes at their current positions).
+io::UnstructuredGrid surface_grid(const contact::ContactTerm& pair,
+                                  const std::vector<SlaveNodeState>& states) {
+  io::UnstructuredGrid grid;
+  for (const SlaveNodeState& s : states)
+    grid.points.push_back(s.position);
+  for (const mesh::Facet& facet : pair.slave().facets()) {
+    std::array<Index, 4> local{};
+    for (int a = 0; a < 4; ++a)
+      local[a] = pair.slave().local_node(facet.nodes[a]);
+    grid.add_cell(io::vtk_cell::kQuad, local);
+  }
+  return grid;
+}
+
+/// "name.c [unit]" for component c of the vector array "name [unit]".
+std::string component_name(const std::string& name, char c) {
+  const auto unit = name.find(" [");
+  if (unit == std::string::npos)
+    return fmt::format("{}.{}", name, c);
+  return fmt::format("{}.{}{}", name.substr(0, unit), c, name.substr(unit));
+}
+
+std::vector<std::string> csv_columns(const std::vector<io::DataArray>& arrays) {
+  std::vector<std::string> cols = {"time [s]", "X [mm]", "Y [mm]", "Z [mm]",
+                                   "x [mm]",   "y [mm]", "z [mm]"};
+  for (const io::DataArray& a : arrays) {
+    if (a.components == 1)
+      cols.push_back(a.name);
+    else
+      for (const char c : {'x', 'y', 'z'})
+        cols.push_back(component_name(a.name, c));
+  }
+  cols.emplace_back("node");
+  return cols;
+}
+
+} // namespace
+
+std::vector<io::DataArray> contact_arrays(const Model& model,
+                                          const std::vector<SlaveNodeState>& states) {
+  std::vector<io::DataArray> out;
+  out.push_back(
+      scalar_array("contact_gap [mm]", states, [](const SlaveNodeState& s) { return s.gap; }));
+  out.push_back(scalar_array("contact_traction [MPa]", states,
+                             [](const SlaveNodeState& s) { return s.multiplier[0]; }));
+  if (model.fields.w.valid())
+    add_mixture_arrays(model, states, out);
+  out.push_back(scalar_array("contact_active", states,
+                             [](const SlaveNodeState& s) { return s.active ? 1.0 : 0.0; }));
+  out.push_back(scalar_array("contact_projected", states,
+                             [](const SlaveNodeState& s) { return s.projected ? 1.0 : 0.0; }));
+  io::DataArray normal{"normal", 3, std::vector<double>(3 * states.size())};
+  for (std::size_t k = 0; k < states.size(); ++k)
+    for (int i = 0; i < 3; ++i)
+      normal.values[3 * k + i] = states[k].normal[i];
+  out.push_back(std::move(normal));
+  out.push_back(scalar_array("nodal_area [mm^2]", states,
+                             [](const SlaveNodeState& s) { return s.area_vector.norm(); }));
+  return out;
+}
+
+std::vector<Index> surface_order(const mesh::Mesh& mesh, const std::vector<Index>& nodes) {
+  Vec3 lo = Vec3::Constant(std::numeric_limits<Real>::infinity()), hi = -lo;
+  for (Index n : nodes) {
+    lo = lo.cwiseMin(mesh.node(n));
+    hi = hi.cwiseMax(mesh.node(n));
+  }
+  const Vec3 extent = nodes.empty() ? Vec3::Zero() : Vec3(hi - lo);
+  std::array<int, 3> axes{0, 1, 2};
+  std::stable_sort(axes.begin(), axes.end(), [&](int a, int b) { return extent[a] > extent[b]; });
+  const Real tie = extent.maxCoeff() > 0 ? 1e-9 * extent.maxCoeff() : 1.0;
+  const auto key = [&](Index n) {
+    std::array<long long, 3> k{};
+    for (int i = 0; i < 3; ++i)
+      k[i] = std::llround((mesh.node(n)[axes[i]] - lo[axes[i]]) / tie);
+    return k;
+  };
+  std::vector<Index> order(nodes.size());
+  std::iota(order.begin(), order.end(), Index{0});
+  std::stable_sort(order.begin(), order.end(),
+                   [&](Index a, Index b) { return key(nodes[a]) < key(nodes[b]); });
+  return order;
+}
+
+std::vector<std::string> contact_history_columns(const Model& model) {
+  std::vector<std::string> cols;
+  for (std::size_t i = 1; i <= model.contacts.size(); ++i) {
+    for (const char* c : {"Fx", "Fy", "Fz"})
+      cols.push_back(fmt::format("contact{}.{} [N]", i, c));
+    for (const char* c : {"Fx", "Fy", "Fz"})
+      cols.push_back(fmt::format("contact{}.master_{} [N]", i, c));
+    cols.push_back(fmt::format("contact{}.area [mm^2]", i));
+    cols.push_back(fmt::format("contact{}.active_nodes", i));
+  }
+  return cols;
+}
+
+void append_contact_history(const Model& model, std::vector<double>& row) {
+  const Vector& x = model.problem->state();
+  for (const contact::ContactTerm* pair : model.contacts) {
+    const Vec3 slave = pair->slave_force(x), master = pair->master_force(x);
+    row.insert(row.end(), {slave.x(), slave.y(), slave.z(), master.x(), master.y(), master.z()});
+    row.push_back(pair->contact_area(x));
+    row.push_back(static_cast<double>(pair->active_set().num_active()));
+  }
+}
+
+ContactOutput::ContactOutput(const Model& model, std::filesystem::path directory)
+    : model_(model), directory_(std::move(directory)) {
+  for (std::size_t i = 1; i <= model.contacts.size(); ++i)
+    pvd_.push_back(std::make_unique<io::PvdWriter>(directory_ / fmt::format("contact{}.pvd", i)));
+}
+
+void ContactOutput::write(Real time, int number, bool vtu) {
+  for (std::size_t i = 0; i < model_.contacts.size(); ++i) {
+    const contact::ContactTerm& pair = *model_.contacts[i];
+    const std::vector<SlaveNodeState> states = pair.slave_states(model_.problem->state());
+    std::vector<io::DataArray> arrays = contact_arrays(model_, states);
+    write_csv(directory_ / fmt::format("contact{}_surface_{:04d}.csv", i + 1, number), time, pair,
+              states, arrays);
+    if (!vtu)
+      continue;
+    io::UnstructuredGrid grid = surface_grid(pair, states);
+    grid.point_data = std::move(arrays);
+    const auto file = directory_ / fmt::format("contact{}_{:04d}.vtu", i + 1, number);
+    if (const auto bad = io::write_vtu(file, grid); bad > 0)
+      log::warn("  {} non-finite values written to {}", bad, file.string());
+    pvd_[i]->add(time, file);
+  }
+}
+
+void ContactOutput::write_csv(const std::filesystem::path& file, Real time,
+                              const contact::ContactTerm& pair,
+                              const std::vector<SlaveNodeState>& states,
+                              const std::vector<io::DataArray>& arrays) const {
+  io::CsvWriter csv(file, csv_columns(arrays));
+  std::vector<double> row;
+  for (const Index k : surface_order(model_.mesh, pair.slave().nodes())) {
+    const SlaveNodeState& s = states[k];
+    const Vec3& X = model_.mesh.node(s.node);
+    row.assign({time, X.x(), X.y(), X.z(), s.position.x(), s.position.y(), s.position.z()});
+    for (const io::DataArray& a : arrays)
+      for (int c = 0; c < a.components; ++c)
+        row.push_back(a.values[a.components * k + c]);
+    row.push_back(static_cast<double>(s.node));
+    csv.write_row(row);
+  }
+}
+
+} // namespace trifem::app

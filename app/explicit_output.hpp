@@ -1,0 +1,64 @@
+// SPDX-License-Identifier: MIT
+// Result files of a dynamic-explicit run: VTU series + results.pvd at the output times, and
+// history.csv (step data, energies, reactions, probes) after every step.
+#pragma once
+
+#include "explicit_model.hpp"
+#include "trifem/explicit/explicit_solver.hpp"
+#include "trifem/explicit/history.hpp"
+#include "trifem/io/pvd_writer.hpp"
+#include "trifem/io/vtu_writer.hpp"
+
+#include <filesystem>
+#include <memory>
+#include <vector>
+
+namespace trifem::app {
+
+/// A time the run must land on.
+struct StepTarget {
+  Real time = 0.0;     ///< [s]
+  bool output = false; ///< an output time (VTU file); otherwise a point of a load curve
+};
+
+/// The times the run must land on, ascending, each > 0: the multiples of output.interval,
+/// output.times and time.end_time (the last) as output times, and the points of the load curves
+/// in between (as the quasi-static must points).
+std::vector<StepTarget> explicit_step_targets(const io::CaseSpec& spec);
+
+/// Writes results as the run advances; everything written stays valid if the run stops.
+/// VTU arrays: point data "displacement [mm]", "velocity [mm/s]" (vⁿ); cell data
+/// "multiplier [MPa]" (Λ), "pressure [MPa]" (the multiplier's pressure: −Λ for Ψ = J − 1, where
+/// σ = Λ I; −Λ/J̄ for Ψ = ln J, where τ = Λ I) and "Jbar-1" (cell-mean volume change).
+class ExplicitOutput {
+public:
+  /// Creates `directory` (InputError if impossible), results.pvd and history.csv.
+  ExplicitOutput(const ExplicitCase& model, const io::OutputSpec& spec,
+                 std::filesystem::path directory);
+  ~ExplicitOutput();
+
+  /// The initial state: a history row and a VTU file.
+  void write_initial(const explicit_dynamics::ExplicitSolver& solver);
+  /// The state after the accepted step `report`: a history row, and a VTU file if `volume`.
+  void write_step(const explicit_dynamics::ExplicitSolver& solver,
+                  const explicit_dynamics::StepReport& report, bool volume);
+
+  std::filesystem::path pvd_file() const { return pvd_->file(); }
+  std::filesystem::path history_file() const { return directory_ / "history.csv"; }
+  int vtu_count() const { return vtu_count_; }
+  double seconds() const { return seconds_; } ///< wall time spent writing [s]
+
+private:
+  void write_vtu(const explicit_dynamics::ExplicitSolver& solver);
+
+  const ExplicitCase& case_;
+  bool vtu_ = true;
+  std::filesystem::path directory_;
+  io::UnstructuredGrid grid_; ///< the mesh; the data arrays are replaced at every write
+  std::unique_ptr<io::PvdWriter> pvd_;
+  std::unique_ptr<explicit_dynamics::HistoryWriter> history_;
+  int vtu_count_ = 0;
+  double seconds_ = 0.0;
+};
+
+} // namespace trifem::app

@@ -1,0 +1,208 @@
+// SPDX-License-Identifier: MIT
+#include "explicit_run.hpp"
+
+#include "explicit_model.hpp"
+#include "explicit_output.hpp"
+#include "run.hpp"
+#include "trifem/core/error.hpp"
+#include "trifem/core/log.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <omp.h>
+
+namespace trifem::app {
+namespace {
+
+namespace ed = explicit_dynamics;
+using Clock = std::chrono::steady_clock;
+
+/// More VTU files than this from `output.interval = 0` get a warning.
+constexpr double kManyFiles = 1000.0;
+
+/// Runs `f`, prefixing an InputError with the case file (like the reader's messages).
+template <class F>
+decltype(auto) for_case(const io::CaseSpec& spec, F&& f) {
+  try {
+    return f();
+  } catch (const InputError& e) {
+    throw InputError(fmt::format("{}: {}", spec.file.string(), e.what()));
+  }
+}
+
+/// Counters of a run.
+struct RunStats {
+  long halvings = 0;         ///< step halvings over the run
+  ed::StepReport failure;    ///< the fatal report (ok() if the run completed)
+  double wall_seconds = 0.0; ///< whole run
+};
+
+/// "A" or "B".
+const char* reading_name(const ed::ExplicitSettings& s) {
+  return s.reading == ed::Reading::A ? "A" : "B";
+}
+
+/// Number of fixed DOFs of the model.
+long fixed_dofs(const ed::ExplicitModel& m) {
+  long fixed = 0;
+  for (const char f : m.fixed())
+    fixed += f;
+  return fixed;
+}
+
+/// The case, mesh, materials and scheme options, at the head of the log.
+void log_model(const io::CaseSpec& spec, const ExplicitCase& c) {
+  const ed::ExplicitModel& m = *c.model;
+  const ed::ExplicitSettings& s = c.settings;
+  const long fixed = fixed_dofs(m);
+  log::info("trifem {}  case {}", TRIFEM_VERSION, spec.file.string());
+  if (!spec.title.empty())
+    log::info("  {}", spec.title);
+  log::info("  mesh: {} nodes, {} hex8 cells; {} DOFs, {} fixed; {} threads", m.mesh().num_nodes(),
+            m.num_cells(), m.num_dofs(), fixed, omp_get_max_threads());
+  for (std::size_t i = 0; i < c.material_names.size(); ++i)
+    log::info("  material {}: {}, density {:.4g} t/mm^3, shear modulus {:.4g} MPa",
+              c.material_names[i], m.materials()[i].law->type(), m.materials()[i].density,
+              m.materials()[i].law->shear_modulus());
+  log::info("  dynamic-explicit: reading {}, constraint {}, {}penalty {:.4g} MPa, damping {:.4g} "
+            "1/s, safety factor {:.3g}",
+            reading_name(s), s.constraint == ed::Constraint::LogJ ? "lnJ" : "J-1",
+            s.multiplier ? "" : "no multiplier, ", s.penalty, s.damping, s.safety());
+}
+
+/// The step chosen by the solver (and why), with warnings for a reduced time.dt and for very many
+/// VTU files.
+void log_time_step(const ed::ExplicitSolver& solver, const io::CaseSpec& spec) {
+  const ed::TimeStepInfo& t = solver.time_step_info();
+  if (t.reduced)
+    log::warn("  time.dt = {:.6g} s is above the stability estimate: reduced to {:.6g} s",
+              t.requested, t.used);
+  log::info("  time step: {:.6g} s ({}), about {:.0f} steps to t = {:.6g} s", t.used,
+            t.requested > 0.0 && !t.reduced ? "time.dt" : "stability estimate",
+            std::ceil(spec.time.end_time / t.used), spec.time.end_time);
+  const double files = std::ceil(spec.time.end_time / t.used);
+  if (spec.output.vtu && spec.output.interval <= 0.0 && files > kManyFiles)
+    log::warn("  output.interval = 0 writes a VTU file every step: about {:.0f} files (set "
+              "output.interval)",
+              files);
+}
+
+/// The solver (it estimates the stable step); InputErrors prefixed with the case file.
+std::unique_ptr<ed::ExplicitSolver> make_solver(const io::CaseSpec& spec, const ExplicitCase& c) {
+  return for_case(spec, [&] { return std::make_unique<ed::ExplicitSolver>(*c.model, c.settings); });
+}
+
+/// Steps to every target time in turn; VTU files at the output times (every step if
+/// output.interval = 0), a history row after every step. Stops at the first fatal report.
+void advance(const io::CaseSpec& spec, ed::ExplicitSolver& solver, ExplicitOutput& output,
+             RunStats& stats) {
+  const bool every_step = spec.output.interval <= 0.0;
+  for (const StepTarget& target : explicit_step_targets(spec)) {
+    const Real eps = 1e-12 * std::max(target.time, solver.time_step_info().used);
+    while (solver.time() < target.time - eps) {
+      const ed::StepReport r = solver.step(target.time);
+      stats.halvings += r.halvings;
+      if (!r.ok()) {
+        stats.failure = r;
+        return;
+      }
+      const bool reached = solver.time() >= target.time - eps;
+      output.write_step(solver, r, every_step || (reached && target.output));
+      log::debug("step {:6d}  t = {:<12.6g} dt = {:<10.4g} iterations {:2d}  constraint {:.1e}",
+                 solver.step_count(), solver.time(), r.dt, r.iterations, r.constraint_residual);
+    }
+    if (!target.output)
+      continue;
+    const ed::Energies e = solver.energies();
+    log::info("t = {:<10.6g} step {:6d}  kinetic {:.4g}  strain {:.4g}  external {:.4g}  total "
+              "{:.3g} mJ",
+              solver.time(), solver.step_count(), e.kinetic, e.strain, e.external_work, e.total());
+  }
+}
+
+/// summary.json "time_step_s".
+nlohmann::json time_step_json(const ed::TimeStepInfo& t) {
+  return {{"omega_iso_per_s", t.omega}, {"critical", t.critical}, {"estimate", t.stable},
+          {"requested", t.requested},   {"used", t.used},         {"reduced", t.reduced}};
+}
+
+/// summary.json: status, counts, time step, final energies, sizes and wall times.
+void write_summary(const std::filesystem::path& file, const io::CaseSpec& spec,
+                   const ExplicitCase& c, const ed::ExplicitSolver& solver, const RunStats& stats,
+                   double output_seconds) {
+  const ed::SolverTimings& w = solver.timings();
+  const ed::Energies e = solver.energies();
+  nlohmann::json j;
+  j["trifem_version"] = TRIFEM_VERSION;
+  j["case"] = spec.file.string();
+  j["analysis"] = "dynamic-explicit";
+  j["status"] = stats.failure.ok() ? "completed" : "failed";
+  j["failure"] = stats.failure.message;
+  j["end_time_s"] = solver.time();
+  j["steps"] = solver.step_count();
+  j["multiplier_solves"] = solver.total_iterations();
+  j["halvings"] = stats.halvings;
+  j["factorizations"] = w.factorizations;
+  j["time_step_s"] = time_step_json(solver.time_step_info());
+  j["energies_mJ"] = {{"kinetic", e.kinetic},
+                      {"strain", e.strain},
+                      {"external_work", e.external_work},
+                      {"damping_work", e.damping_work},
+                      {"total", e.total()}};
+  j["max_abs_Jbar_minus_1"] = solver.max_volume_change();
+  j["mesh"] = {{"nodes", c.model->mesh().num_nodes()}, {"cells", c.model->num_cells()}};
+  j["dofs"] = {{"total", c.model->num_dofs()}, {"fixed", fixed_dofs(*c.model)}};
+  j["threads"] = omp_get_max_threads();
+  j["wall_time_s"] = {{"total", stats.wall_seconds}, {"forces", w.forces},
+                      {"lambda", w.lambda},          {"assemble", w.assemble},
+                      {"factorize", w.factorize},    {"solve", w.solve},
+                      {"output", output_seconds}};
+  std::ofstream out(file);
+  out << j.dump(2) << '\n';
+}
+
+} // namespace
+
+int run_explicit_case(const io::CaseSpec& spec, const std::filesystem::path& output_dir) {
+  const auto start = Clock::now();
+  const ExplicitCase c = for_case(spec, [&] { return build_explicit_case(spec); });
+  ExplicitOutput output(c, spec.output, output_dir);
+  log::add_file((output_dir / "run.log").string());
+  log_model(spec, c);
+  const std::unique_ptr<ed::ExplicitSolver> solver = make_solver(spec, c);
+  log_time_step(*solver, spec);
+  output.write_initial(*solver);
+
+  RunStats stats;
+  advance(spec, *solver, output, stats);
+  stats.wall_seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  write_summary(output_dir / "summary.json", spec, c, *solver, stats, output.seconds());
+  const ed::SolverTimings& w = solver->timings();
+  log::info("{}: {} steps, {} multiplier solves, {} halvings, {:.2f} s (forces {:.2f}, "
+            "multiplier {:.2f}, output {:.2f})",
+            stats.failure.ok() ? "completed" : "FAILED", solver->step_count(),
+            solver->total_iterations(), stats.halvings, stats.wall_seconds, w.forces, w.lambda,
+            output.seconds());
+  log::info("results: {} ({} VTU files), {}, {}", output.pvd_file().string(), output.vtu_count(),
+            output.history_file().string(), (output_dir / "summary.json").string());
+  if (!stats.failure.ok()) {
+    log::info("run stopped: {} ({})", stats.failure.message, ed::to_string(stats.failure.status));
+    std::cerr << "error: " << spec.file.string() << ": " << stats.failure.message << '\n';
+    return kAnalysisFailed;
+  }
+  return kSuccess;
+}
+
+int check_explicit_case(const io::CaseSpec& spec) {
+  const ExplicitCase c = for_case(spec, [&] { return build_explicit_case(spec); });
+  log_model(spec, c);
+  const std::unique_ptr<ed::ExplicitSolver> solver = make_solver(spec, c);
+  log_time_step(*solver, spec);
+  log::info("check passed: the case is valid");
+  return kSuccess;
+}
+
+} // namespace trifem::app

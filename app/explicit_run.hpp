@@ -1,0 +1,23 @@
+// SPDX-License-Identifier: MIT
+// The `run` and `check` commands for dynamic-explicit analyses ([analysis] type =
+// "dynamic-explicit"); run_case and check_case dispatch here.
+#pragma once
+
+#include "trifem/io/case_spec.hpp"
+
+#include <filesystem>
+
+namespace trifem::app {
+
+/// Runs a dynamic-explicit case to time.end_time; results (VTU series, results.pvd,
+/// history.csv, summary.json, run.log) go to `output_dir`. Returns an ExitCode: kSuccess, or
+/// kAnalysisFailed with one "error:" line on stderr naming the step, cell or node and quantity
+/// (the results written until then are kept). Invalid input throws InputError before anything
+/// is written.
+int run_explicit_case(const io::CaseSpec& spec, const std::filesystem::path& output_dir);
+
+/// Validates a dynamic-explicit case (mesh, sets, materials, settings) and logs the stable time
+/// step estimate, without stepping.
+int check_explicit_case(const io::CaseSpec& spec);
+
+} // namespace trifem::app

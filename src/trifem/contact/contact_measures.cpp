@@ -1,0 +1,69 @@
+// SPDX-License-Identifier: MIT
+// Interface measures of a contact pair for output and input checks: per-slave-node gap,
+// normals, area vectors and multipliers in a given state, and the current contact area.
+#include "trifem/contact/contact_term.hpp"
+#include "trifem/physics/facet_area.hpp"
+
+namespace trifem::contact {
+namespace {
+
+/// a_k = ∫ M_k n da of every node k of `surface` (index into surface.nodes()) in the
+/// configuration x, exact by 2x2 Gauss on each facet.
+std::vector<Vec3> nodal_area_vectors(const ContactSurface& surface, const NodePositions& x) {
+  std::vector<Vec3> a(surface.num_nodes(), Vec3::Zero());
+  for (Index f = 0; f < surface.num_facets(); ++f) {
+    const physics::FacetVector A = physics::facet_area_vectors(surface.coords(f, x));
+    for (int i = 0; i < 4; ++i)
+      a[surface.local_node(surface.facet(f).nodes[i])] += A.segment<3>(3 * i);
+  }
+  return a;
+}
+
+/// Copies an admissible projection into the state (see SlaveNodeState).
+void set_projection(const std::optional<Projection>& pr, SlaveNodeState& s) {
+  if (!pr || pr->on_free_boundary)
+    return;
+  s.projected = true;
+  s.gap = pr->gap;
+  s.master_normal = pr->normal;
+}
+
+} // namespace
+
+std::vector<SlaveNodeState> ContactTerm::slave_states(const Vector& x) const {
+  const NodePositions pos([this, &x](Index n) { return position(n, x); });
+  ProjectionOptions options;
+  options.xi_tolerance = settings_.xi_tolerance;
+  options.search_distance = settings_.search_distance;
+  const BucketSearch on_master(master_, pos, settings_.search_distance);
+  const auto projections = project_nodes(slave_.nodes(), master_, pos, on_master, options);
+  const std::vector<Vec3> area = nodal_area_vectors(slave_, pos);
+  std::vector<SlaveNodeState> states(slave_.num_nodes());
+  for (Index k = 0; k < slave_.num_nodes(); ++k) {
+    SlaveNodeState& s = states[k];
+    s.node = slave_.nodes()[k];
+    s.position = pos(s.node);
+    s.area_vector = area[k];
+    const Real norm = area[k].norm();
+    if (norm > 0)
+      s.normal = area[k] / norm;
+    s.active = active_.active(k);
+    set_projection(projections[k], s);
+    s.multiplier.resize(law_->num_components());
+    for (int c = 0; c < law_->num_components(); ++c)
+      s.multiplier[c] = x[multiplier_dof(k, c)];
+  }
+  return states;
+}
+
+Real ContactTerm::contact_area(const Vector& x) const {
+  const NodePositions pos([this, &x](Index n) { return position(n, x); });
+  const std::vector<Vec3> area = nodal_area_vectors(slave_, pos);
+  Real sum = 0;
+  for (Index k = 0; k < slave_.num_nodes(); ++k)
+    if (active_.active(k))
+      sum += area[k].norm();
+  return sum;
+}
+
+} // namespace trifem::contact

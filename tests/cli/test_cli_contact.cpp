@@ -1,0 +1,315 @@
+// SPDX-License-Identifier: MIT
+// End-to-end tests of contact pairs: the contact-surface files (VTU series, .pvd, surface CSV),
+// the contact history columns, and the input checks of a pair (surfaces, facing normals,
+// initial penetration).
+#include "cli_harness.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+using namespace trifem::cli_test;
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr double kQ = 0.1; ///< pressure on the patch [MPa]
+
+/// A CSV file read back: column names and numeric rows.
+struct CsvTable {
+  std::vector<std::string> columns;
+  std::vector<std::vector<double>> rows;
+
+  /// Position of column `name`; columns.size() if there is none.
+  std::size_t index(const std::string& name) const {
+    return static_cast<std::size_t>(std::find(columns.begin(), columns.end(), name) -
+                                    columns.begin());
+  }
+  /// All values of column `name` (empty if there is no such column).
+  std::vector<double> column(const std::string& name) const {
+    std::vector<double> values;
+    const std::size_t i = index(name);
+    if (i < columns.size())
+      for (const auto& row : rows)
+        values.push_back(row.at(i));
+    return values;
+  }
+  /// The value of column `name` in the last row (NaN if there is none).
+  double last(const std::string& name) const {
+    const std::vector<double> values = column(name);
+    return values.empty() ? std::nan("") : values.back();
+  }
+};
+
+std::vector<std::string> split(const std::string& line) {
+  std::vector<std::string> parts;
+  std::istringstream in(line);
+  for (std::string part; std::getline(in, part, ',');)
+    parts.push_back(part);
+  return parts;
+}
+
+CsvTable read_csv(const fs::path& file) {
+  CsvTable t;
+  const std::vector<std::string> lines = lines_of(read_text(file));
+  if (lines.empty())
+    return t;
+  t.columns = split(lines[0]);
+  for (std::size_t i = 1; i < lines.size(); ++i) {
+    std::vector<double> row;
+    for (const std::string& v : split(lines[i]))
+      row.push_back(std::stod(v));
+    t.rows.push_back(std::move(row));
+  }
+  return t;
+}
+
+/// Largest |v - mean(v)| / |mean(v)| over the values.
+double spread(const std::vector<double>& v) {
+  double mean = 0;
+  for (double x : v)
+    mean += x / static_cast<double>(v.size());
+  double worst = 0;
+  for (double x : v)
+    worst = std::max(worst, std::abs(x - mean) / std::abs(mean));
+  return worst;
+}
+
+const std::vector<std::string> kSolidColumns = {"time [s]",
+                                                "X [mm]",
+                                                "Y [mm]",
+                                                "Z [mm]",
+                                                "x [mm]",
+                                                "y [mm]",
+                                                "z [mm]",
+                                                "contact_gap [mm]",
+                                                "contact_traction [MPa]",
+                                                "contact_active",
+                                                "contact_projected",
+                                                "normal.x",
+                                                "normal.y",
+                                                "normal.z",
+                                                "nodal_area [mm^2]",
+                                                "node"};
+
+class ContactCli : public Cli {
+protected:
+  /// Runs the patch case; returns whether it succeeded.
+  bool run_patch() const {
+    const Result r =
+        trifem({"run", (kData / "contact_patch.toml").string(), "-o", output().string()});
+    EXPECT_EQ(r.exit_code, kSuccess) << r;
+    return r.exit_code == kSuccess;
+  }
+
+  /// A copy of contact_patch.toml with each `from` replaced by `to` (each must occur).
+  fs::path patch_variant(const std::string& name,
+                         std::initializer_list<std::pair<std::string, std::string>> edits) const {
+    std::string text = read_text(kData / "contact_patch.toml");
+    for (const auto& [from, to] : edits) {
+      const auto at = text.find(from);
+      EXPECT_NE(at, std::string::npos) << "'" << from << "' is not in contact_patch.toml";
+      if (at != std::string::npos)
+        text.replace(at, from.size(), to);
+    }
+    return write_file(name, text);
+  }
+};
+
+} // namespace
+
+// ---------------------------------------------------------------------------------------------
+// Result files
+
+TEST_F(ContactCli, RunWritesTheContactSurfaceSeries) {
+  ASSERT_TRUE(run_patch());
+  for (const char* name :
+       {"contact1.pvd", "contact1_0000.vtu", "contact1_0001.vtu", "contact1_0002.vtu",
+        "contact1_surface_0000.csv", "contact1_surface_0001.csv", "contact1_surface_0002.csv"})
+    EXPECT_TRUE(fs::is_regular_file(output() / name)) << name << " is missing";
+  EXPECT_FALSE(fs::exists(output() / "contact1_0003.vtu"));
+  const std::string pvd = read_text(output() / "contact1.pvd");
+  EXPECT_EQ(count_of(pvd, "<DataSet "), 3u) << pvd;
+  EXPECT_TRUE(contains(pvd, R"(timestep="1" group="" part="0" file="contact1_0002.vtu")")) << pvd;
+  const std::string vtu = read_text(output() / "contact1_0002.vtu");
+  EXPECT_TRUE(contains(vtu, R"(NumberOfPoints="10" NumberOfCells="4")")) << "4 x 1 slave facets";
+  for (const char* array : {R"(Name="contact_gap [mm]" NumberOfComponents="1")",
+                            R"(Name="contact_traction [MPa]" NumberOfComponents="1")",
+                            R"(Name="contact_active" NumberOfComponents="1")",
+                            R"(Name="contact_projected" NumberOfComponents="1")",
+                            R"(Name="normal" NumberOfComponents="3")",
+                            R"(Name="nodal_area [mm^2]" NumberOfComponents="1")"})
+    EXPECT_TRUE(contains(vtu, array)) << array << " is missing";
+  EXPECT_FALSE(contains(vtu, "fluid_chemical_potential")) << "a solid model has no potentials";
+}
+
+/// The exact patch solution along the interface: t = -q, g = 0, all active, normal +z, and the
+/// nodal areas integrate the traction to the interface force of the history.
+TEST_F(ContactCli, SurfaceCsvHoldsThePatchSolution) {
+  ASSERT_TRUE(run_patch());
+  const CsvTable s = read_csv(output() / "contact1_surface_0002.csv");
+  const CsvTable h = read_csv(output() / "history.csv");
+  EXPECT_EQ(s.columns, kSolidColumns);
+  ASSERT_EQ(s.rows.size(), 10u) << "5 x 2 slave nodes";
+  const std::vector<double> X = s.column("X [mm]"), t = s.column("contact_traction [MPa]");
+  const std::vector<double> g = s.column("contact_gap [mm]"), z = s.column("z [mm]");
+  const std::vector<double> nz = s.column("normal.z"), area = s.column("nodal_area [mm^2]");
+  double force = 0, total = 0;
+  for (std::size_t k = 0; k < s.rows.size(); ++k) {
+    if (k > 0) {
+      EXPECT_LE(X[k - 1], X[k]) << "rows are ordered along x (the largest extent)";
+    }
+    EXPECT_NEAR(t[k], -kQ, 1e-10 * kQ) << "row " << k;
+    EXPECT_LE(std::abs(g[k]), 1e-12) << "row " << k;
+    EXPECT_EQ(s.rows[k][s.index("contact_active")], 1.0) << "row " << k;
+    EXPECT_EQ(s.rows[k][s.index("contact_projected")], 1.0) << "row " << k;
+    EXPECT_NEAR(nz[k], 1.0, 1e-14) << "the slave (lower) face points up";
+    EXPECT_NEAR(z[k], z[0], 1e-14) << "a flat interface";
+    force += t[k] * area[k] * nz[k];
+    total += area[k];
+  }
+  EXPECT_NEAR(force, h.last("contact1.Fz [N]"), 1e-13);
+  EXPECT_NEAR(total, h.last("contact1.area [mm^2]"), 1e-13);
+}
+
+/// Area = current width (x of the right edge) x depth 1 mm; master and slave forces are equal
+/// and opposite (uniform traction); every slave node is active.
+TEST_F(ContactCli, HistoryHasTheContactAreaAndBothForces) {
+  ASSERT_TRUE(run_patch());
+  const CsvTable h = read_csv(output() / "history.csv");
+  const auto first = h.index("contact1.Fx [N]");
+  ASSERT_LE(first + 8, h.columns.size());
+  const std::vector<std::string> expected = {"contact1.Fx [N]",        "contact1.Fy [N]",
+                                             "contact1.Fz [N]",        "contact1.master_Fx [N]",
+                                             "contact1.master_Fy [N]", "contact1.master_Fz [N]",
+                                             "contact1.area [mm^2]",   "contact1.active_nodes"};
+  EXPECT_EQ(std::vector<std::string>(h.columns.begin() + static_cast<std::ptrdiff_t>(first),
+                                     h.columns.begin() + static_cast<std::ptrdiff_t>(first) + 8),
+            expected);
+  ASSERT_EQ(h.rows.size(), 3u);
+  const double width = h.last("corner.x [mm]"), area = h.last("contact1.area [mm^2]");
+  EXPECT_GT(width, 1.01) << "the blocks expand laterally under the pressure";
+  EXPECT_NEAR(area, width * 1.0, 1e-13);
+  EXPECT_NEAR(h.column("contact1.area [mm^2]").front(), 1.0, 1e-14) << "t = 0: touching";
+  EXPECT_NEAR(h.last("contact1.Fz [N]"), -kQ * area, 1e-10 * kQ);
+  EXPECT_NEAR(h.last("contact1.master_Fz [N]"), -h.last("contact1.Fz [N]"), 1e-13);
+  EXPECT_EQ(h.last("contact1.active_nodes"), 10.0);
+}
+
+/// Triphasic interface: potentials in physical units, laterally uniform; the normal water flux
+/// into the slave body equals the volume change rate of the lower (master) body, whose only
+/// permeable boundary is the interface (backward Euler balance).
+TEST_F(ContactCli, TriphasicSurfaceCsvHasPotentialsAndNormalFluxes) {
+  const Result r =
+      trifem({"run", (kData / "contact_triphasic_column.toml").string(), "-o", output().string()});
+  ASSERT_EQ(r.exit_code, kSuccess) << r;
+  const CsvTable s1 = read_csv(output() / "contact1_surface_0001.csv");
+  const CsvTable s = read_csv(output() / "contact1_surface_0002.csv");
+  const CsvTable h = read_csv(output() / "history.csv");
+  std::vector<std::string> columns(kSolidColumns.begin(), kSolidColumns.begin() + 9);
+  for (const char* c :
+       {"fluid_chemical_potential [MPa]", "cation_electrochemical_potential [mJ/mmol]",
+        "anion_electrochemical_potential [mJ/mmol]", "normal_fluid_flux [mm/s]",
+        "normal_cation_flux [mmol/(mm^2 s)]", "normal_anion_flux [mmol/(mm^2 s)]"})
+    columns.emplace_back(c);
+  columns.insert(columns.end(), kSolidColumns.begin() + 9, kSolidColumns.end());
+  EXPECT_EQ(s.columns, columns);
+  ASSERT_EQ(s.rows.size(), 16u) << "4 x 4 slave nodes";
+  for (const std::string& c : std::vector<std::string>(columns.begin() + 8, columns.end() - 7))
+    EXPECT_LE(spread(s.column(c)), 1e-8) << c << " is not laterally uniform";
+  const double area = h.last("contact1.area [mm^2]");
+  EXPECT_NEAR(s.last("contact_traction [MPa]") * area, h.last("upper.zmax.Rz [N]"), 1e-9);
+  const double RT = 8.314 * 298, c_ref = 1.5e-4;
+  for (const char* c : {"cation_electrochemical_potential [mJ/mmol]",
+                        "anion_electrochemical_potential [mJ/mmol]"}) {
+    const double mu = std::abs(s.last(c));
+    EXPECT_TRUE(mu > 1.0 && mu < RT) << c << " = " << mu << ": not in mJ/mmol";
+  }
+  const double dt = 2.5, w = s.last("normal_fluid_flux [mm/s]");
+  const double dV = (s.last("z [mm]") - s1.last("z [mm]")) * area; // lower body, 1 x 1 mm
+  EXPECT_LT(w, 0.0) << "water leaves the compressed lower body into the slave";
+  EXPECT_NEAR(w, dV / dt, 1e-9 * std::abs(w));
+  for (const char* c :
+       {"normal_cation_flux [mmol/(mm^2 s)]", "normal_anion_flux [mmol/(mm^2 s)]"}) {
+    const double ratio = s.last(c) / w; // ions carried with the water: ~ concentration
+    EXPECT_TRUE(ratio > 0.1 * c_ref && ratio < 10 * c_ref) << c << ": j.n / w.n = " << ratio;
+  }
+}
+
+/// With output.vtu = false the surface CSVs are still written at the output times.
+TEST_F(ContactCli, SurfaceCsvIsWrittenWithoutVtu) {
+  const fs::path file =
+      patch_variant("no_vtu.toml", {{"[time]", "[output]\nvtu = false\n\n[time]"}});
+  ASSERT_EQ(trifem({"run", file.string(), "-o", output().string()}).exit_code, kSuccess);
+  for (const char* name :
+       {"contact1_surface_0000.csv", "contact1_surface_0001.csv", "contact1_surface_0002.csv"})
+    EXPECT_TRUE(fs::is_regular_file(output() / name)) << name << " is missing";
+  EXPECT_FALSE(fs::exists(output() / "contact1_0000.vtu"));
+  EXPECT_EQ(count_of(read_text(output() / "contact1.pvd"), "<DataSet "), 0u);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Input checks of a pair: exit code 2, one error line naming contact[1]
+
+TEST_F(ContactCli, SurfacesThatDoNotFaceEachOtherAreRejected) {
+  expect_invalid_input(
+      kData / "contact_reversed_normals.toml",
+      {"contact[1]", "'upper.zmax'", "'lower.zmax'", "do not face each other", "9 of the 9"});
+}
+
+TEST_F(ContactCli, InitialPenetrationIsRejected) {
+  const fs::path file = patch_variant("penetrating.toml",
+                                      {{"origin = [0.0, 0.0, 1.0]", "origin = [0.0, 0.0, 0.95]"}});
+  expect_invalid_input(file, {"contact[1]", "10 node(s)", "'lower.zmax'", "penetrate",
+                              "penetration_tolerance", "gap -0.05 mm"});
+}
+
+TEST_F(ContactCli, PenetrationWithinTheToleranceIsAccepted) {
+  const fs::path file = patch_variant(
+      "tolerated.toml",
+      {{"origin = [0.0, 0.0, 1.0]", "origin = [0.0, 0.0, 0.95]"},
+       {"slave = \"lower.zmax\"", "slave = \"lower.zmax\"\npenetration_tolerance = 0.06"}});
+  const Result r = trifem({"check", file.string()});
+  EXPECT_EQ(r.exit_code, kSuccess) << r;
+}
+
+TEST_F(ContactCli, NegativePenetrationToleranceIsOutOfRange) {
+  const fs::path file =
+      patch_variant("negative.toml", {{"slave = \"lower.zmax\"", "slave = \"lower.zmax\"\n"
+                                                                 "penetration_tolerance = -0.1"}});
+  expect_invalid_input(file, {"contact[1].penetration_tolerance", "[0, inf) mm"});
+}
+
+TEST_F(ContactCli, SeparatedSurfacesOnlyWarn) {
+  const fs::path file =
+      patch_variant("apart.toml", {{"origin = [0.0, 0.0, 1.0]", "origin = [0.0, 0.0, 2.0]"}});
+  const Result r = trifem({"check", file.string()});
+  EXPECT_EQ(r.exit_code, kSuccess) << r;
+  EXPECT_TRUE(r.err.empty()) << r;
+  EXPECT_TRUE(contains(r.out, "warning: contact[1]")) << r;
+  EXPECT_TRUE(contains(r.out, "not in contact yet")) << r;
+}
+
+TEST_F(ContactCli, UnknownMasterSurfaceIsNamed) {
+  const fs::path file =
+      patch_variant("master.toml", {{"master = \"upper.zmin\"", "master = \"up\""}});
+  expect_invalid_input(file, {"contact[1].master", "undefined surface 'up'"});
+}
+
+TEST_F(ContactCli, UnknownSlaveSurfaceIsNamed) {
+  const fs::path file = patch_variant("slave.toml", {{"slave = \"lower.zmax\"", "slave = \"lo\""}});
+  expect_invalid_input(file, {"contact[1].slave", "undefined surface 'lo'"});
+}
+
+TEST_F(ContactCli, SameMasterAndSlaveSurfaceIsRejected) {
+  const fs::path file =
+      patch_variant("same.toml", {{"slave = \"lower.zmax\"", "slave = \"upper.zmin\""}});
+  expect_invalid_input(file, {"contact[1].slave", "'upper.zmin' is also the master surface"});
+}
+
+TEST_F(ContactCli, SurfacesOfOneBodyAreRejected) {
+  const fs::path file =
+      patch_variant("one_body.toml", {{"slave = \"lower.zmax\"", "slave = \"upper.xmax\""}});
+  expect_invalid_input(
+      file, {"contact[1]", "'upper.zmin'", "'upper.xmax'", "share 2 node(s)", "different bodies"});
+}

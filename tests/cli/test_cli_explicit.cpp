@@ -1,0 +1,226 @@
+// SPDX-License-Identifier: MIT
+// End-to-end tests of dynamic-explicit analyses ([analysis] type = "dynamic-explicit"): result
+// files, the time step, the keys they reject, and the stop on a non-finite value.
+#include "cli_harness.hpp"
+
+#include <cmath>
+#include <cstdlib>
+
+using namespace trifem::cli_test;
+namespace fs = std::filesystem;
+
+namespace {
+
+const fs::path kBox = kData / "explicit_box.toml";
+
+/// The value of the JSON number `"key": <number>` in `json` (NaN if absent).
+double json_number(const std::string& json, const std::string& key) {
+  const std::string tag = "\"" + key + "\": ";
+  const auto at = json.find(tag);
+  return at == std::string::npos ? std::nan("")
+                                 : std::strtod(json.c_str() + at + tag.size(), nullptr);
+}
+
+/// The numbers of one history.csv row.
+std::vector<double> numbers(const std::string& row) {
+  std::vector<double> values;
+  std::istringstream in(row);
+  for (std::string cell; std::getline(in, cell, ',');)
+    values.push_back(std::strtod(cell.c_str(), nullptr));
+  return values;
+}
+
+/// The index of `column` in the header `row` (-1 if absent).
+int column_index(const std::string& row, const std::string& column) {
+  std::istringstream in(row);
+  int i = 0;
+  for (std::string cell; std::getline(in, cell, ','); ++i)
+    if (cell == column)
+      return i;
+  return -1;
+}
+
+} // namespace
+
+class CliExplicit : public Cli {
+protected:
+  /// explicit_box.toml with `from` replaced by `to` (which must occur), as `name`.
+  fs::path variant(const std::string& name, const std::string& from, const std::string& to) const {
+    std::string text = read_text(kBox);
+    const auto at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << "'" << from << "' is not in " << kBox;
+    if (at != std::string::npos)
+      text.replace(at, from.size(), to);
+    return write_file(name, text);
+  }
+};
+
+// ---------------------------------------------------------------------------------------------
+// A successful run
+
+TEST_F(CliExplicit, RunWritesResultsHistoryAndSummary) {
+  const Result r = trifem({"run", kBox.string(), "-o", output().string()});
+  ASSERT_EQ(r.exit_code, kSuccess) << r;
+  EXPECT_TRUE(r.err.empty()) << r;
+  EXPECT_TRUE(contains(r.out, "omega_iso")) << "the stable step estimate is logged" << r;
+  for (const char* name : {"results.pvd", "volume_0000.vtu", "volume_0004.vtu", "history.csv",
+                           "summary.json", "run.log"})
+    EXPECT_TRUE(fs::is_regular_file(output() / name)) << name << " is missing";
+  EXPECT_FALSE(fs::exists(output() / "volume_0005.vtu")) << "4 intervals + the initial state";
+
+  const std::string pvd = read_text(output() / "results.pvd");
+  EXPECT_EQ(count_of(pvd, "<DataSet "), 5u) << pvd;
+  EXPECT_TRUE(contains(pvd, R"(timestep="0.0005)")) << "output times are hit" << pvd;
+  const std::string vtu = read_text(output() / "volume_0004.vtu");
+  for (const char* array :
+       {R"(Name="displacement [mm]" NumberOfComponents="3")",
+        R"(Name="velocity [mm/s]" NumberOfComponents="3")", R"(Name="multiplier [MPa]")",
+        R"(Name="pressure [MPa]")", R"(Name="Jbar-1")"})
+    EXPECT_TRUE(contains(vtu, array)) << array << " is missing";
+
+  const std::vector<std::string> rows = lines_of(read_text(output() / "history.csv"));
+  ASSERT_GE(rows.size(), 3u);
+  EXPECT_EQ(rows[0], "step,time [s],dt [s],iterations,halvings,constraint_residual,max|Jbar-1|,"
+                     "max_gauss|J-1|,kinetic [mJ],strain [mJ],external_work [mJ],"
+                     "damping_work [mJ],total_energy [mJ],bar.xmin.Rx [N],bar.xmin.Ry [N],"
+                     "bar.xmin.Rz [N],tip.ux [mm],tip.uy [mm],tip.uz [mm]");
+  const std::vector<double> last = numbers(rows.back());
+  const std::string summary = read_text(output() / "summary.json");
+  EXPECT_TRUE(contains(summary, R"("status": "completed")")) << summary;
+  EXPECT_TRUE(contains(summary, R"("analysis": "dynamic-explicit")")) << summary;
+  EXPECT_EQ(json_number(summary, "steps"), double(rows.size() - 2)) << "one row per step + t = 0";
+  EXPECT_DOUBLE_EQ(last[1], 1e-3) << "the run ends at time.end_time";
+  // The time step is the stability estimate (no time.dt): every step but the truncated ones.
+  const double used = json_number(summary, "used");
+  EXPECT_EQ(used, json_number(summary, "estimate"));
+  EXPECT_GT(used, 0.0);
+  EXPECT_LE(numbers(rows[2])[2], used);
+  // Undamped from rest: kinetic + strain − external work stays near 0 (0.05 % measured).
+  const double external = last[column_index(rows[0], "external_work [mJ]")];
+  EXPECT_GT(external, 0.0);
+  EXPECT_LT(std::abs(last[column_index(rows[0], "total_energy [mJ]")]), 2e-3 * external);
+  EXPECT_LT(last[column_index(rows[0], "tip.uz [mm]")], 0.0) << "the tip moves with the load";
+  EXPECT_TRUE(contains(read_text(output() / "run.log"), "completed: "));
+}
+
+TEST_F(CliExplicit, CheckLogsTheStableStepAndWritesNothing) {
+  const Result r = trifem({"check", kBox.string()});
+  EXPECT_EQ(r.exit_code, kSuccess) << r;
+  EXPECT_TRUE(contains(r.out, "20 nodes, 4 hex8 cells")) << r;
+  EXPECT_TRUE(contains(r.out, "stable dt = ")) << r;
+  EXPECT_TRUE(contains(r.out, "check passed")) << r;
+  EXPECT_TRUE(r.err.empty()) << r;
+  EXPECT_FALSE(fs::exists(dir_ / "results"));
+}
+
+TEST_F(CliExplicit, RequestedStepAboveTheEstimateIsReducedWithAWarning) {
+  const fs::path file = variant("big_dt.toml", "end_time = 1e-3", "end_time = 1e-3\ndt = 1e-3");
+  const Result r = trifem({"run", file.string(), "-o", output().string()});
+  ASSERT_EQ(r.exit_code, kSuccess) << r;
+  EXPECT_TRUE(contains(r.out, "time.dt = 0.001 s is above the stability estimate")) << r;
+  const std::string summary = read_text(output() / "summary.json");
+  EXPECT_TRUE(contains(summary, R"("reduced": true)")) << summary;
+  EXPECT_EQ(json_number(summary, "requested"), 1e-3) << summary;
+  EXPECT_LT(json_number(summary, "used"), 1e-4) << summary;
+  EXPECT_EQ(json_number(summary, "used"), json_number(summary, "estimate")) << summary;
+}
+
+TEST_F(CliExplicit, IntervalZeroWritesEveryStep) {
+  const fs::path file = variant("every.toml", "interval = 2.5e-4", "interval = 0.0");
+  ASSERT_EQ(trifem({"run", file.string(), "-o", output().string()}).exit_code, kSuccess);
+  const std::size_t rows = lines_of(read_text(output() / "history.csv")).size();
+  EXPECT_EQ(count_of(read_text(output() / "results.pvd"), "<DataSet "), rows - 1);
+  EXPECT_GT(rows, 30u);
+}
+
+TEST_F(CliExplicit, ExactConstraintIsAccepted) {
+  const fs::path file = variant("inf.toml", "penalty = 4000.0", "penalty = inf");
+  const Result r = trifem({"check", file.string()});
+  EXPECT_EQ(r.exit_code, kSuccess) << r;
+  EXPECT_TRUE(contains(r.out, "penalty inf MPa")) << r;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Invalid input: exit code 2, one error line naming the key
+
+TEST_F(CliExplicit, MissingDensityIsNamed) {
+  expect_invalid_input(variant("no_density.toml", "density = 1.1e-9", ""),
+                       {"materials.rubber.density", "missing required key", "dynamic-explicit"});
+}
+
+TEST_F(CliExplicit, ExplicitTableNeedsTheExplicitAnalysis) {
+  expect_invalid_input(
+      variant("quasi_static.toml", "type = \"dynamic-explicit\"", "type = \"quasi-static\""),
+      {"explicit: only applies to dynamic-explicit analyses", "(line "});
+}
+
+TEST_F(CliExplicit, UnknownAnalysisTypeIsNamed) {
+  expect_invalid_input(
+      variant("typo.toml", "type = \"dynamic-explicit\"", "type = \"explicit\""),
+      {"analysis.type = 'explicit'", "unknown analysis type", "quasi-static, dynamic-explicit"});
+}
+
+TEST_F(CliExplicit, QuasiStaticTimeKeyIsRejected) {
+  expect_invalid_input(variant("growth.toml", "end_time = 1e-3", "end_time = 1e-3\ngrowth = 1.5"),
+                       {"time.growth", "quasi-static analyses only"});
+}
+
+TEST_F(CliExplicit, SolverTableIsRejected) {
+  expect_invalid_input(variant("solver.toml", "[time]", "[solver]\nmax_iterations = 5\n\n[time]"),
+                       {"solver: applies to quasi-static analyses only", "[explicit]"});
+}
+
+TEST_F(CliExplicit, MixtureMaterialIsRejected) {
+  expect_invalid_input(kData / "explicit_mixture.toml",
+                       {"materials.gel.type = 'biphasic'", "not supported in dynamic-explicit"});
+}
+
+TEST_F(CliExplicit, PrescribedDisplacementIsRejected) {
+  expect_invalid_input(
+      variant("prescribed.toml", "[[loads.traction]]",
+              "[[boundary.prescribed]]\nset = \"bar.xmax\"\ncomponent = \"z\"\nvalue = 0.1\n\n"
+              "[[loads.traction]]"),
+      {"boundary.prescribed[1]", "not supported in dynamic-explicit", "use boundary.fixed"});
+}
+
+TEST_F(CliExplicit, FluxFieldIsRejected) {
+  expect_invalid_input(
+      variant("flux.toml", "set = \"bar.xmin\"", "set = \"bar.xmin\"\nfield = \"fluid_flux\""),
+      {"boundary.fixed[1].field = 'fluid_flux'", "only the displacement field"});
+}
+
+TEST_F(CliExplicit, NegativePenaltyIsOutOfRange) {
+  expect_invalid_input(variant("penalty.toml", "penalty = 4000.0", "penalty = -1.0"),
+                       {"explicit.penalty = -1", "(0, inf) MPa", "or inf"});
+}
+
+TEST_F(CliExplicit, UndefinedSurfaceOfALoadIsNamed) {
+  expect_invalid_input(variant("surface.toml", "surface = \"bar.xmax\"", "surface = \"bar.top\""),
+                       {"loads.traction[1].surface", "bar.top"});
+}
+
+// ---------------------------------------------------------------------------------------------
+// A non-finite value stops the run: exit code 3, the step, cell and quantity named, the
+// results written so far kept
+
+TEST_F(CliExplicit, NonFiniteValueStopsTheRunKeepingTheResults) {
+  const Result r =
+      trifem({"run", (kData / "explicit_nonfinite.toml").string(), "-o", output().string()});
+  EXPECT_EQ(r.exit_code, kAnalysisFailed) << r;
+  const std::vector<std::string> errors = error_lines(r.err);
+  ASSERT_EQ(errors.size(), 1u) << r;
+  ASSERT_EQ(lines_of(r.err).size(), 1u) << r;
+  for (const char* part :
+       {"explicit_nonfinite.toml", "step 1 (t = 0 s)", "non-finite displacement", "cell 3"})
+    EXPECT_TRUE(contains(errors[0], part)) << "'" << part << "' is not named" << r;
+
+  const std::vector<std::string> rows = lines_of(read_text(output() / "history.csv"));
+  ASSERT_EQ(rows.size(), 2u) << "header + the initial state";
+  EXPECT_TRUE(rows[1].starts_with("0,0,0,")) << rows[1];
+  EXPECT_EQ(count_of(read_text(output() / "results.pvd"), "<DataSet "), 1u);
+  EXPECT_TRUE(fs::is_regular_file(output() / "volume_0000.vtu"));
+  const std::string summary = read_text(output() / "summary.json");
+  EXPECT_TRUE(contains(summary, R"("status": "failed")")) << summary;
+  EXPECT_EQ(json_number(summary, "steps"), 0.0) << summary;
+  EXPECT_TRUE(contains(summary, "non-finite displacement in cell 3")) << summary;
+}

@@ -31,7 +31,7 @@ constexpr Real kBending = 0.02;     ///< amplitude of a smooth sin·sin bending 
 constexpr Real kPenetration = 0.05; ///< interface penetration, in slave facet sizes h_s
 constexpr Real kOffsetX = 0.3;      ///< tangential offset of the upper block, in h_s
 constexpr Real kOffsetY = 0.2;
-constexpr Real kPressure = 0.01; ///< contact pressure in every multiplier, in E
+constexpr Real kPressure = 0.01; ///< contact pressure at the edges of the interface, in E
 
 /// Master facets per side for n_s slave facets per side: 3/4 as many (non-matching).
 int master_divisions(int n_s) {
@@ -71,9 +71,17 @@ Vec3 displacement(const Vec3& X, bool upper, Real h_s) {
   return u;
 }
 
+/// Contact pressure at slave node X: kPressure * E, raised by up to 50 % towards the centre. Not
+/// uniform, so that the derivatives through the master-node projections (Σ_k ∂M_k/∂ζ λ_k) do not
+/// vanish as they would for equal multipliers.
+Real pressure(const Vec3& X) {
+  return kPressure * kModulus *
+         (1 + 0.5 * std::sin(std::numbers::pi * X.x()) * std::sin(std::numbers::pi * X.y()));
+}
+
 /// Everything one size needs: mesh, DOFs (bottom of the lower block fixed), the contact term
-/// (frictionless, both-surface integration) and a deformed state with every multiplier at
-/// -kPressure. prepare() has been called once at that state. Never moved once built.
+/// (frictionless, both-surface integration) and a deformed, compressive state. prepare() has
+/// been called once at that state. Never moved once built.
 struct ContactFixture {
   int n_s;
   mesh::Mesh mesh;
@@ -102,9 +110,9 @@ struct ContactFixture {
   ContactFixture(const ContactFixture&) = delete;
   ContactFixture& operator=(const ContactFixture&) = delete;
 
-  /// All multipliers at -kPressure, displacements from displacement().
+  /// Displacements from displacement(), multipliers from pressure().
   Vector deformed_state() const {
-    Vector out = Vector::Constant(map.num_dofs(), -kPressure * kModulus);
+    Vector out(map.num_dofs());
     const auto& upper = mesh.node_set("upper.all");
     for (Index node = 0; node < mesh.num_nodes(); ++node) {
       const bool is_upper = std::binary_search(upper.begin(), upper.end(), node);
@@ -112,6 +120,9 @@ struct ContactFixture {
       for (int k = 0; k < 3; ++k)
         out[map.dof(u, node, k)] = d[k];
     }
+    const auto& slave = term->slave().nodes();
+    for (Index k = 0; k < static_cast<Index>(slave.size()); ++k)
+      out[term->multiplier_dof(k, 0)] = -pressure(mesh.node(slave[k]));
     return out;
   }
 

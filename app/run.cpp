@@ -21,36 +21,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-solver::StepSettings step_settings(const io::CaseSpec& spec) {
-  const io::TimeSpec& t = spec.time;
-  solver::StepSettings s;
-  s.end_time = t.end_time;
-  s.dt = t.dt;
-  s.dt_min = t.dt_min > 0 ? t.dt_min : t.dt * 1e-6;
-  s.dt_max = t.dt_max > 0 ? t.dt_max : t.dt;
-  s.growth = t.growth;
-  s.cutback = t.cutback;
-  s.target_iterations = t.target_iterations;
-  s.must_points = spec.output.times;
-  if (spec.output.interval > 0)
-    for (Real time = spec.output.interval; time < t.end_time; time += spec.output.interval)
-      s.must_points.push_back(time);
-  for (const auto& [name, curve] : spec.curves)
-    for (const auto& p : curve.points)
-      if (p.first > 0 && p.first < t.end_time)
-        s.must_points.push_back(p.first);
-  return s;
-}
-
-solver::NewtonSettings newton_settings(const io::SolverSpec& s) {
-  solver::NewtonSettings n;
-  n.max_iterations = s.max_iterations;
-  n.residual_tolerance = s.residual_tolerance;
-  n.increment_tolerance = s.increment_tolerance;
-  n.line_search = s.line_search;
-  return n;
-}
-
 /// Derived scales of mixture models: osmotic pressure scale, Donnan state, consolidation time.
 void log_mixture_scales(const Model& model) {
   const material::Electrochemistry& c = model.chem;
@@ -142,6 +112,36 @@ std::unique_ptr<Model> build_model_for(const io::CaseSpec& spec) {
 }
 
 } // namespace
+
+solver::StepSettings step_settings(const io::CaseSpec& spec) {
+  const io::TimeSpec& t = spec.time;
+  solver::StepSettings s;
+  s.end_time = t.end_time;
+  s.dt = t.dt;
+  s.dt_min = t.dt_min > 0 ? t.dt_min : t.dt * 1e-6;
+  s.dt_max = t.dt_max > 0 ? t.dt_max : t.dt;
+  s.growth = t.growth;
+  s.cutback = t.cutback;
+  s.target_iterations = t.target_iterations;
+  s.must_points = spec.output.times;
+  if (spec.output.interval > 0)
+    for (Real time = spec.output.interval; time < t.end_time; time += spec.output.interval)
+      s.must_points.push_back(time);
+  for (const auto& [name, curve] : spec.curves)
+    for (const auto& p : curve.points)
+      if (p.first > 0 && p.first < t.end_time)
+        s.must_points.push_back(p.first);
+  return s;
+}
+
+solver::NewtonSettings newton_settings(const io::SolverSpec& s) {
+  solver::NewtonSettings n;
+  n.max_iterations = s.max_iterations;
+  n.residual_tolerance = s.residual_tolerance;
+  n.increment_tolerance = s.increment_tolerance;
+  n.line_search = s.line_search;
+  return n;
+}
 
 int run_case(const io::CaseSpec& spec, const std::filesystem::path& output_dir) {
   if (spec.is_explicit())

@@ -3,6 +3,8 @@
 #pragma once
 
 #include "trifem/io/case_spec.hpp"
+#include "trifem/solver/newton.hpp"
+#include "trifem/solver/step_controller.hpp"
 
 #include <filesystem>
 
@@ -16,6 +18,13 @@ enum ExitCode : int {
   kAnalysisFailed = 3, ///< the analysis stopped early (results written so far are kept)
   kInternalError = 4,  ///< a bug in trifem
 };
+
+/// Step control of a quasi-static case: [time], plus the output times and the kinks of every
+/// load curve as must points.
+solver::StepSettings step_settings(const io::CaseSpec& spec);
+
+/// Newton settings of a case ([solver]).
+solver::NewtonSettings newton_settings(const io::SolverSpec& s);
 
 /// Runs a case; results go to `output_dir`. Returns an ExitCode.
 int run_case(const io::CaseSpec& spec, const std::filesystem::path& output_dir);

@@ -67,11 +67,12 @@ void ExplicitSolver::update_end_forces() {
 
 void ExplicitSolver::estimate_stable_step() {
   TimeStepInfo& info = dt_info_;
+  const Vector lambda = settings_.multiplier ? lambda_ : Vector();
   const FrequencyEstimate est =
       settings_.stable_step == StableStepMethod::PowerIteration
-          ? power_iteration_omega(model_, settings_.constraint, U_, settings_.multiplier,
+          ? power_iteration_omega(model_, settings_.constraint, U_, lambda, settings_.multiplier,
                                   settings_.power_iterations, settings_.power_tolerance)
-          : element_bound_omega(model_, U_);
+          : element_bound_omega(model_, settings_.constraint, U_, lambda);
   info.omega = est.omega;
   info.critical = (settings_.reading == Reading::B ? 2.0 : 1.0) / est.omega;
   info.stable = settings_.safety() * info.critical;
@@ -109,6 +110,21 @@ StepReport ExplicitSolver::fatal(StepStatus status, const std::string& what) con
   return r;
 }
 
+namespace {
+
+/// The time to t_end split into equal steps of at most dt_max (the last one may exceed dt_max
+/// by round-off only). Truncating only the last step before each output time instead gives a
+/// periodic short step, and central differences with a periodically varying step are
+/// parametrically unstable for some frequencies below the critical one: on a 30 x 3 x 3
+/// cantilever at 0.8 of the critical step, one short step in 44 made the energy grow by about
+/// 0.8 % per step. Equal steps per output interval keep the step sequence uniform.
+Real equal_step(Real remaining, Real dt_max) {
+  const Real n = std::max(1.0, std::ceil(remaining / dt_max - 1e-9));
+  return remaining / n;
+}
+
+} // namespace
+
 StepReport ExplicitSolver::step(Real t_end) {
   const int interval = settings_.stable_step_interval;
   if (interval > 0 && step_count_ > 0 && step_count_ % interval == 0 &&
@@ -116,7 +132,7 @@ StepReport ExplicitSolver::step(Real t_end) {
     choose_time_step(); // re-estimate on the deformed configuration
   int halvings = 0;
   for (;;) {
-    const Real dt = std::min(dt_current_, t_end - time_);
+    const Real dt = equal_step(t_end - time_, dt_current_);
     StepReport r = try_step(dt);
     r.halvings = halvings;
     if (r.ok()) {

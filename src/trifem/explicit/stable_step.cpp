@@ -2,6 +2,7 @@
 #include "trifem/explicit/stable_step.hpp"
 
 #include "trifem/explicit/lambda_system.hpp"
+#include "trifem/explicit/multiplier_stiffness.hpp"
 #include "trifem/explicit/parallel.hpp"
 #include "trifem/fe/quadrature.hpp"
 #include "trifem/physics/solid_kernel.hpp"
@@ -13,16 +14,28 @@
 namespace trifem::explicit_dynamics {
 namespace {
 
-/// y = K(U) v, element by element (K_e of W from physics::solid_hex8, never assembled).
-void apply_stiffness(const ExplicitModel& model, const Vector& U, const Vector& v,
-                     std::vector<CellVector>& scratch, Vector& y) {
+/// K_e = K_W,e + K_Λ,e of cell c at U (K_Λ left out if `lambda` is empty).
+physics::HexMatrix cell_stiffness(const ExplicitModel& model, Constraint constraint,
+                                  const Vector& U, const Vector& lambda, Index c) {
+  const fe::HexCoords u = model.cell_values(c, U);
+  physics::HexVector f;
+  physics::HexMatrix K, K_lambda;
+  physics::solid_hex8(model.geometry()[c], u, model.law(c), f, &K);
+  if (lambda.size() > 0 && lambda[c] != 0.0 &&
+      multiplier_stiffness(model.geometry()[c], u, constraint, lambda[c], K_lambda))
+    K += K_lambda;
+  return K;
+}
+
+/// y = K(U) v, element by element (never assembled).
+void apply_stiffness(const ExplicitModel& model, Constraint constraint, const Vector& U,
+                     const Vector& lambda, const Vector& v, std::vector<CellVector>& scratch,
+                     Vector& y) {
   const Index n = model.num_cells();
   scratch.resize(n);
 #pragma omp parallel for schedule(static) if (n >= kMinParallelLoop)
   for (Index c = 0; c < n; ++c) {
-    physics::HexVector f;
-    physics::HexMatrix K;
-    physics::solid_hex8(model.geometry()[c], model.cell_values(c, U), model.law(c), f, &K);
+    const physics::HexMatrix K = cell_stiffness(model, constraint, U, lambda, c);
     const fe::HexCoords vc = model.cell_values(c, v);
     CellVector ve;
     for (int a = 0; a < 8; ++a)
@@ -83,8 +96,8 @@ Real mass_norm(const ExplicitModel& model, const Vector& v) {
 } // namespace
 
 FrequencyEstimate power_iteration_omega(const ExplicitModel& model, Constraint constraint,
-                                        const Vector& U, bool project, int max_iterations,
-                                        Real tolerance) {
+                                        const Vector& U, const Vector& lambda, bool project,
+                                        int max_iterations, Real tolerance) {
   std::unique_ptr<Projector> projector;
   if (project) {
     projector = std::make_unique<Projector>(model, constraint, U);
@@ -99,7 +112,7 @@ FrequencyEstimate power_iteration_omega(const ExplicitModel& model, Constraint c
   FrequencyEstimate est;
   Real previous = 0.0;
   for (int it = 1; it <= max_iterations; ++it) {
-    apply_stiffness(model, U, v, scratch, y);
+    apply_stiffness(model, constraint, U, lambda, v, scratch, y);
     const Real omega2 = v.dot(y); // vᵀ K v with vᵀ M v = 1
     est = {std::sqrt(std::max(omega2, 0.0)), it, false};
     if (it > 1 && std::abs(omega2 - previous) <= tolerance * std::abs(omega2)) {
@@ -115,16 +128,15 @@ FrequencyEstimate power_iteration_omega(const ExplicitModel& model, Constraint c
   return est;
 }
 
-FrequencyEstimate element_bound_omega(const ExplicitModel& model, const Vector& U) {
+FrequencyEstimate element_bound_omega(const ExplicitModel& model, Constraint constraint,
+                                      const Vector& U, const Vector& lambda) {
   const Index n = model.num_cells();
   const auto& rule = fe::hex_gauss_2x2x2();
   Real max_omega2 = 0.0;
 #pragma omp parallel for schedule(static) reduction(max : max_omega2) if (n >= kMinParallelLoop)
   for (Index c = 0; c < n; ++c) {
     const fe::HexGeometry& geo = model.geometry()[c];
-    physics::HexVector f;
-    physics::HexMatrix K;
-    physics::solid_hex8(geo, model.cell_values(c, U), model.law(c), f, &K);
+    const physics::HexMatrix K = cell_stiffness(model, constraint, U, lambda, c);
     CellVector m = CellVector::Zero();
     for (int q = 0; q < 8; ++q) {
       const fe::HexShape N = fe::hex8_shape(rule[q].xi);

@@ -219,7 +219,9 @@ StepReport ExplicitSolver::iterate_multiplier(Real h2, const Vector& U_pred, Vec
 
 bool ExplicitSolver::needs_factorization(Real h2) const {
   const FactorizationState& f = factorization_;
-  return f.age < 0 || h2 != f.h2 || f.age >= settings_.max_factorization_age ||
+  // h² equal up to round-off: equal steps towards a target differ in the last bits.
+  const bool same_step = std::abs(h2 - f.h2) <= 1e-9 * f.h2;
+  return f.age < 0 || !same_step || f.age >= settings_.max_factorization_age ||
          f.last_iterations > f.fresh_iterations + 3;
 }
 

@@ -149,6 +149,8 @@ penalty = 1000.0
 damping = 0.5
 safety_factor = 0.7
 factorization_age = 3
+stable_step = "element-bound"
+stable_step_interval = 4
 
 [time]
 end_time = 5.0
@@ -211,6 +213,8 @@ ExplicitSettings two_bodies_settings() {
   s.damping = 0.5;
   s.safety_factor = 0.7;
   s.max_factorization_age = 3;
+  s.stable_step = StableStepMethod::ElementBound;
+  s.stable_step_interval = 4;
   s.time_step = 3.0;
   return s;
 }
@@ -417,8 +421,8 @@ TEST(ExplicitCaseFile, DocumentedExampleBuilds) {
   const app::ExplicitCase c = app::build_explicit_case(spec);
   EXPECT_EQ(c.model->num_cells(), 270);
   EXPECT_EQ(c.model->density(0), 1.1e-9);
-  EXPECT_EQ(c.settings.stable_step, StableStepMethod::ElementBound);
-  EXPECT_EQ(c.settings.stable_step_interval, 100);
+  EXPECT_EQ(c.settings.stable_step, StableStepMethod::PowerIteration);
+  EXPECT_EQ(c.settings.stable_step_interval, 0);
   EXPECT_EQ(c.settings.penalty, 4000.0);
   EXPECT_EQ(c.settings.time_step, 0.0);
   ASSERT_EQ(c.probes.size(), 1u);

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // The paper's section 4.1 confined column as a whole model (FORMULATION V5): stress relaxation
 // of a triphasic column under a ramped platen displacement, against the reference history, and
-// its equilibrium against the closed form.
+// its equilibrium against the closed form, from the Donnan state (IC-1) and from the prestressed
+// Donnan state (IC-3a).
 #include "exact/exact_solutions.hpp"
 #include "mixture_model.hpp"
 
@@ -16,7 +17,7 @@ namespace {
 
 /// 1 x 1 x 1 mm column of 1 x 1 x 10 cells: bottom fixed and impermeable, lateral faces
 /// confined and impermeable, top = porous platen (bath) moved to u_z = -0.05 mm over 50 s.
-test::MixtureModel paper_column() {
+test::MixtureModel paper_column(physics::InitialState initial = physics::InitialState::Donnan) {
   mesh::BoxSpec spec;
   spec.divisions = {1, 1, 10};
   test::MixtureModel m(mesh::make_box(spec), test::paper_tissue(true));
@@ -28,7 +29,7 @@ test::MixtureModel paper_column() {
   m.impermeable("box.zmin", 2);
   m.fix("box.zmax", m.f.u, 2, -0.05,
         dofs::LoadCurve({{0.0, 0.0}, {50.0, 1.0}}, dofs::Interpolation::Linear));
-  m.build();
+  m.build(initial);
   return m;
 }
 
@@ -84,6 +85,30 @@ TEST(PaperColumn, EquilibriumMatchesClosedForm) {
   const exact::ColumnEquilibrium eq =
       exact::confined_column_equilibrium(0.95, 0.3, 0.0, exact::paper_medium());
   EXPECT_NEAR(platen_stress(m), eq.total_stress, 1e-6 * std::abs(eq.total_stress));
+  for (Index e = 0; e < m.mesh.num_cells(); ++e) {
+    EXPECT_NEAR(m.value(m.f.p, e), eq.donnan.pressure, 1e-6 * eq.donnan.pressure);
+    EXPECT_NEAR(m.value(m.f.eta, e) / m.chem.c_ref, eq.donnan.eta, 1e-6 * std::abs(eq.donnan.eta));
+  }
+}
+
+/// IC-3a: the prestress Pi0 shifts every total stress and reaction by +Pi0 and changes nothing
+/// else. At t = 0 the platen carries no load (IC-1: -Pi0); at equilibrium (stretch 0.95) it
+/// carries sigma_e - Pi(0.95) + Pi0 = -0.03400 MPa (IC-1: -0.18403), with the same p and eta.
+TEST(PaperColumn, PrestressedEquilibriumIsShiftedByTheDonnanPressure) {
+  const exact::ChargedMedium medium = exact::paper_medium();
+  const Real pi0 = exact::donnan_at(medium, 1.0).pressure;
+  test::MixtureModel m = paper_column(physics::InitialState::DonnanPrestressed);
+  solver::Linearization initial; // the reactions of the initial state
+  ASSERT_EQ(m.problem->linearize(initial, false), solver::SolveStatus::Converged);
+  EXPECT_LT(initial.residual.lpNorm<Eigen::Infinity>(), 1e-12 * pi0); // in equilibrium
+  EXPECT_NEAR(platen_stress(m), 0.0, 1e-12 * pi0);
+  ASSERT_TRUE(m.run(50.0, 2.5, 2.5).success);
+  ASSERT_TRUE(m.run(6e4, 10.0, 5000.0).success);
+  const exact::ColumnEquilibrium eq = exact::confined_column_equilibrium(0.95, 0.3, 0.0, medium);
+  std::printf("prestressed column: platen stress %.6f MPa (IC-1 closed form %.6f, Pi0 %.6f)\n",
+              platen_stress(m), eq.total_stress, pi0);
+  EXPECT_NEAR(platen_stress(m), eq.total_stress + pi0, 1e-6 * std::abs(eq.total_stress));
+  EXPECT_NEAR(eq.total_stress + pi0, -0.03400, 5e-6); // FORMULATION V5 under IC-3a
   for (Index e = 0; e < m.mesh.num_cells(); ++e) {
     EXPECT_NEAR(m.value(m.f.p, e), eq.donnan.pressure, 1e-6 * eq.donnan.pressure);
     EXPECT_NEAR(m.value(m.f.eta, e) / m.chem.c_ref, eq.donnan.eta, 1e-6 * std::abs(eq.donnan.eta));

@@ -2,6 +2,7 @@
 // Free swelling from IC-1 (FORMULATION V4, VERIFICATION 2): the equilibrium stretch of a
 // laterally confined column and of an unconstrained cube equals the closed-form root of
 // sigma_e(lambda) = Pi(cF(J)) (SVK and neo-Hookean), and every element holds the Donnan state at J.
+// From the prestressed state IC-3a the same cube does not move at all.
 #include "exact/exact_solutions.hpp"
 #include "mixture_model.hpp"
 
@@ -49,7 +50,8 @@ test::MixtureModel confined_column(exact::SolidLaw law) {
 
 /// 1 mm cube, 2 x 2 x 2 cells: symmetry planes xmin, ymin, zmin (normal u = 0, impermeable),
 /// the other faces traction-free bath.
-test::MixtureModel free_cube(exact::SolidLaw law) {
+test::MixtureModel free_cube(exact::SolidLaw law,
+                             physics::InitialState initial = physics::InitialState::Donnan) {
   mesh::BoxSpec spec;
   spec.divisions = {2, 2, 2};
   test::MixtureModel m(mesh::make_box(spec), tissue(law));
@@ -58,7 +60,7 @@ test::MixtureModel free_cube(exact::SolidLaw law) {
     m.fix(planes[k], m.f.u, k);
     m.impermeable(planes[k], k);
   }
-  m.build();
+  m.build(initial);
   return m;
 }
 
@@ -171,4 +173,24 @@ TEST(FreeSwelling, ConfinedColumnNeoHookeanMatchesClosedForm) {
 /// VERIFICATION 2 table (b), neo-Hookean, isotropic: 1.209410.
 TEST(FreeSwelling, FreeCubeNeoHookeanMatchesClosedForm) {
   check_isotropic(exact::SolidLaw::NeoHookean, 1.209410, "isotropic NH");
+}
+
+/// IC-3a: the Cauchy prestress Pi0 balances the Donnan pressure, so the traction-free cube that
+/// swells to 1.17354 from IC-1 (above) is in equilibrium at the reference: no Newton iteration is
+/// needed in any step, nothing moves, and every element keeps the Donnan state at J = 1.
+TEST(FreeSwelling, PrestressedCubeStaysAtRestInItsBath) {
+  test::MixtureModel m =
+      free_cube(exact::SolidLaw::StVenantKirchhoff, physics::InitialState::DonnanPrestressed);
+  const solver::RunReport run = m.run(2e5, 1.0, 1e4);
+  ASSERT_TRUE(run.success) << run.failure;
+  Real largest = 0.0;
+  for (Index n = 0; n < m.mesh.num_nodes(); ++n)
+    for (int k = 0; k < 3; ++k)
+      largest = std::max(largest, std::abs(m.value(m.f.u, n, k)));
+  std::printf("[prestressed cube] %d steps, %d Newton iterations, max |u| = %.3e mm\n", run.steps,
+              run.iterations, largest);
+  EXPECT_GT(run.steps, 5);
+  EXPECT_EQ(run.iterations, 0);
+  EXPECT_LT(largest, 1e-14);
+  expect_donnan_everywhere(m, 1.0);
 }

@@ -6,6 +6,7 @@
 #include "run.hpp"
 #include "trifem/core/error.hpp"
 #include "trifem/core/log.hpp"
+#include "trifem/explicit/energy_balance.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -35,10 +36,22 @@ decltype(auto) for_case(const io::CaseSpec& spec, F&& f) {
 
 /// Counters of a run.
 struct RunStats {
+  explicit RunStats(const ed::ExplicitModel& model) : balance(model) {}
   long halvings = 0;         ///< step halvings over the run
   ed::StepReport failure;    ///< the fatal report (ok() if the run completed)
   double wall_seconds = 0.0; ///< whole run
+  ed::EnergyBalance balance; ///< energy balance at the output times
 };
+
+/// Warns (once) when the energy balance error first exceeds its threshold.
+void check_energy_balance(const ed::Energies& e, Real time, ed::EnergyBalance& balance) {
+  if (balance.record(e))
+    log::warn("t = {:.6g} s: the energy balance is off by {:.3g} % of the largest energy "
+              "(kinetic + strain - external work + damping = {:.4g} mJ). The step is probably "
+              "above the stability limit: lower explicit.safety_factor, leave out time.dt or use "
+              "explicit.stable_step = \"element-bound\" (docs/input.md)",
+              time, 100.0 * balance.last_error(), e.total());
+}
 
 /// "A" or "B".
 const char* reading_name(const ed::ExplicitSettings& s) {
@@ -120,6 +133,7 @@ void advance(const io::CaseSpec& spec, ed::ExplicitSolver& solver, ExplicitOutpu
     log::info("t = {:<10.6g} step {:6d}  kinetic {:.4g}  strain {:.4g}  external {:.4g}  total "
               "{:.3g} mJ",
               solver.time(), solver.step_count(), e.kinetic, e.strain, e.external_work, e.total());
+    check_energy_balance(e, solver.time(), stats.balance);
   }
 }
 
@@ -152,6 +166,9 @@ void write_summary(const std::filesystem::path& file, const io::CaseSpec& spec,
                       {"external_work", e.external_work},
                       {"damping_work", e.damping_work},
                       {"total", e.total()}};
+  j["energy_balance"] = {{"max_relative_error", stats.balance.max_error()},
+                         {"threshold", ed::EnergyBalance::kThreshold},
+                         {"exceeded", stats.balance.exceeded()}};
   j["max_abs_Jbar_minus_1"] = solver.max_volume_change();
   j["mesh"] = {{"nodes", c.model->mesh().num_nodes()}, {"cells", c.model->num_cells()}};
   j["dofs"] = {{"total", c.model->num_dofs()}, {"fixed", fixed_dofs(*c.model)}};
@@ -176,7 +193,7 @@ int run_explicit_case(const io::CaseSpec& spec, const std::filesystem::path& out
   log_time_step(*solver, spec);
   output.write_initial(*solver);
 
-  RunStats stats;
+  RunStats stats(*c.model);
   advance(spec, *solver, output, stats);
   stats.wall_seconds = std::chrono::duration<double>(Clock::now() - start).count();
   write_summary(output_dir / "summary.json", spec, c, *solver, stats, output.seconds());
@@ -188,6 +205,10 @@ int run_explicit_case(const io::CaseSpec& spec, const std::filesystem::path& out
             output.seconds());
   log::info("results: {} ({} VTU files), {}, {}", output.pvd_file().string(), output.vtu_count(),
             output.history_file().string(), (output_dir / "summary.json").string());
+  if (stats.balance.exceeded())
+    log::warn("the energy balance error reached {:.3g} % of the largest energy: check the "
+              "results (history.csv, total_energy [mJ])",
+              100.0 * stats.balance.max_error());
   if (!stats.failure.ok()) {
     log::info("run stopped: {} ({})", stats.failure.message, ed::to_string(stats.failure.status));
     std::cerr << "error: " << spec.file.string() << ": " << stats.failure.message << '\n';

@@ -90,16 +90,22 @@ TEST_F(CliExplicit, RunWritesResultsHistoryAndSummary) {
   EXPECT_TRUE(contains(summary, R"("analysis": "dynamic-explicit")")) << summary;
   EXPECT_EQ(json_number(summary, "steps"), double(rows.size() - 2)) << "one row per step + t = 0";
   EXPECT_DOUBLE_EQ(last[1], 1e-3) << "the run ends at time.end_time";
-  // The time step is the stability estimate (no time.dt): every step but the truncated ones.
+  // The time step is the stability estimate (no time.dt), shortened so that each output
+  // interval holds equal steps: 2.5e-4 s in ceil(2.5e-4 / used) steps.
   const double used = json_number(summary, "used");
   EXPECT_EQ(used, json_number(summary, "estimate"));
   EXPECT_GT(used, 0.0);
-  EXPECT_LE(numbers(rows[2])[2], used);
+  const double equal = 2.5e-4 / std::ceil(2.5e-4 / used);
+  for (std::size_t i = 1; i + 1 < rows.size(); ++i)
+    EXPECT_NEAR(numbers(rows[i + 1])[2], equal, 1e-12 * used) << "step " << i;
   // Undamped from rest: kinetic + strain − external work stays near 0 (0.05 % measured).
   const double external = last[column_index(rows[0], "external_work [mJ]")];
   EXPECT_GT(external, 0.0);
   EXPECT_LT(std::abs(last[column_index(rows[0], "total_energy [mJ]")]), 2e-3 * external);
   EXPECT_LT(last[column_index(rows[0], "tip.uz [mm]")], 0.0) << "the tip moves with the load";
+  EXPECT_TRUE(contains(summary, R"("exceeded": false)")) << summary;
+  EXPECT_LT(json_number(summary, "max_relative_error"), 0.01) << summary;
+  EXPECT_FALSE(contains(r.out, "energy balance")) << r;
   EXPECT_TRUE(contains(read_text(output() / "run.log"), "completed: "));
 }
 
@@ -123,6 +129,21 @@ TEST_F(CliExplicit, RequestedStepAboveTheEstimateIsReducedWithAWarning) {
   EXPECT_EQ(json_number(summary, "requested"), 1e-3) << summary;
   EXPECT_LT(json_number(summary, "used"), 1e-4) << summary;
   EXPECT_EQ(json_number(summary, "used"), json_number(summary, "estimate")) << summary;
+}
+
+// time.dt = 5e-5 s is 1.34 times the critical step 3.74e-5 s, and stable_step = "none" trusts
+// it: the run is unstable, and the energy balance at the output times says so.
+TEST_F(CliExplicit, UnstableStepIsFlaggedByTheEnergyBalance) {
+  std::string text = read_text(variant("dt.toml", "end_time = 1e-3", "end_time = 1e-3\ndt = 5e-5"));
+  text.replace(text.find("penalty = 4000.0"), 16, "penalty = 4000.0\nstable_step = \"none\"");
+  const fs::path file = write_file("unstable.toml", text);
+  const Result r = trifem({"run", file.string(), "-o", output().string()});
+  ASSERT_TRUE(fs::is_regular_file(output() / "summary.json")) << r;
+  EXPECT_TRUE(contains(r.out, "the energy balance is off by")) << r;
+  EXPECT_TRUE(contains(r.out, "lower explicit.safety_factor")) << r;
+  const std::string summary = read_text(output() / "summary.json");
+  EXPECT_TRUE(contains(summary, R"("exceeded": true)")) << summary;
+  EXPECT_GT(json_number(summary, "max_relative_error"), 0.05) << summary;
 }
 
 TEST_F(CliExplicit, IntervalZeroWritesEveryStep) {

@@ -6,6 +6,7 @@
 #include "fixtures.hpp"
 
 #include "trifem/explicit/cell_kernel.hpp"
+#include "trifem/explicit/energy_balance.hpp"
 #include "trifem/explicit/multiplier_stiffness.hpp"
 #include "trifem/explicit/stable_step.hpp"
 #include "trifem/mesh/box.hpp"
@@ -140,4 +141,23 @@ TEST(ExplicitStability, DefaultStepKeepsTheEnergyOfABendingCantileverBalanced) {
               solver.step_count(), deflection, worst / work);
   EXPECT_GT(deflection, 3.0); // large deformation indeed
   EXPECT_LT(worst, 1e-4 * work);
+}
+
+TEST(ExplicitStability, EnergyBalanceFlagsTheFirstErrorAboveTheThreshold) {
+  // 4 cells of 1 x 1 x 1, mu = 1: round-off floor 1e-10 x 4 mJ.
+  const ExplicitModel model = cantilever(Vec3(4.0, 1.0, 1.0), {4, 1, 1}, 1.0, 1.0, 0.01);
+  EnergyBalance balance(model);
+  ASSERT_EQ(EnergyBalance::kThreshold, 0.05);
+  EXPECT_FALSE(balance.record({1e-13, 0.0, 0.0, 0.0})) << "below the round-off floor";
+  EXPECT_EQ(balance.last_error(), 0.0);
+  EXPECT_FALSE(balance.record({0.4, 0.6, 1.0, 0.0})); // kinetic, strain, work, damping: balanced
+  EXPECT_NEAR(balance.last_error(), 0.0, 1e-15);
+  EXPECT_FALSE(balance.record({0.38, 0.6, 1.0, 0.0})); // 2 % of the work lost
+  EXPECT_NEAR(balance.last_error(), 0.02, 1e-12);
+  EXPECT_FALSE(balance.exceeded());
+  EXPECT_TRUE(balance.record({0.5, 0.6, 1.0, 0.0})); // 10 % gained: reported
+  EXPECT_NEAR(balance.last_error(), 0.1, 1e-12);
+  EXPECT_FALSE(balance.record({1.0, 0.6, 1.0, 0.0})) << "reported once";
+  EXPECT_NEAR(balance.max_error(), 0.6, 1e-12); // total 0.6 against the largest energy, 1.0
+  EXPECT_TRUE(balance.exceeded());
 }

@@ -1,0 +1,37 @@
+// SPDX-License-Identifier: MIT
+// Energy balance check of an explicit run: kinetic + strain − external work + damping work is 0
+// from rest up to the time-discretisation error; a large value means an unstable step.
+#pragma once
+
+#include "trifem/explicit/explicit_model.hpp"
+#include "trifem/explicit/explicit_solver.hpp"
+
+namespace trifem::explicit_dynamics {
+
+/// Records the energies of a run and measures the balance error |total| against the largest
+/// energy met so far (external work, kinetic, strain or damping work). Energies below a
+/// round-off floor (10⁻¹⁰ Σ_e μ_e V_e: the rounding of W(C) near C = I) are not judged.
+class EnergyBalance {
+public:
+  /// Errors above this fraction of the largest energy are reported.
+  static constexpr Real kThreshold = 0.05;
+
+  explicit EnergyBalance(const ExplicitModel& model);
+
+  /// Adds the energies at one time; true the first time the error exceeds kThreshold.
+  bool record(const Energies& e);
+  /// |total| / scale of the last record (0 while the scale is below the floor).
+  Real last_error() const { return last_; }
+  /// Largest error recorded so far.
+  Real max_error() const { return max_; }
+  bool exceeded() const { return exceeded_; }
+
+private:
+  Real floor_ = 0.0;
+  Real scale_ = 0.0;
+  Real last_ = 0.0;
+  Real max_ = 0.0;
+  bool exceeded_ = false;
+};
+
+} // namespace trifem::explicit_dynamics

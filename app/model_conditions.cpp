@@ -135,7 +135,7 @@ void add_outputs(const io::CaseSpec& spec, Model& model) {
   for (std::size_t i = 0; i < spec.output.reactions.size(); ++i) {
     const auto& r = spec.output.reactions[i];
     const auto& nodes = node_set(model, fmt::format("output.reaction[{}].set", i + 1), r.set);
-    ReactionSet set{r.set, {}};
+    ReactionSet set{r.set, {false, false, false}, {}};
     for (Index n : nodes)
       for (int k = 0; k < 3; ++k)
         set.dofs[k].push_back(model.dofs.dof(model.fields.u, n, k));

@@ -6,6 +6,7 @@
 #include "output.hpp"
 #include "trifem/core/error.hpp"
 #include "trifem/core/log.hpp"
+#include "trifem/linalg/auto_solver.hpp"
 #include "trifem/linalg/linear_solver.hpp"
 
 #include <chrono>
@@ -111,6 +112,16 @@ std::unique_ptr<Model> build_model_for(const io::CaseSpec& spec) {
   }
 }
 
+/// The sparse direct solver, and for "auto" the backend it takes for this many equations.
+void log_linear_solver(const std::string& name, Index equations) {
+  if (name != "auto")
+    log::info("  linear solver: {}", name);
+  else
+    log::info("  linear solver: auto, {} for {} equations (sparselu below {})",
+              equations < linalg::kAutoSparseLuLimit ? "sparselu" : "umfpack", equations,
+              linalg::kAutoSparseLuLimit);
+}
+
 } // namespace
 
 solver::StepSettings step_settings(const io::CaseSpec& spec) {
@@ -154,6 +165,7 @@ int run_case(const io::CaseSpec& spec, const std::filesystem::path& output_dir) 
 
   solver::NewtonSolver newton(newton_settings(spec.solver),
                               linalg::make_linear_solver(spec.solver.linear_solver));
+  log_linear_solver(spec.solver.linear_solver, model->problem->num_equations());
   solver::StepController controller(step_settings(spec));
   solver::Linearization initial;
   if (model->problem->linearize(initial, false) != solver::SolveStatus::Converged) {

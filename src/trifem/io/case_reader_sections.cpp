@@ -193,8 +193,8 @@ void read_solver(const Table& root, CaseSpec& spec) {
     return;
   t->allow({"max_iterations", "residual_tolerance", "increment_tolerance", "line_search",
             "linear_solver"});
-  static const Options<std::string_view> solvers = {{"umfpack", "umfpack"},
-                                                    {"sparselu", "sparselu"}};
+  static const Options<std::string_view> solvers = {
+      {"auto", "auto"}, {"umfpack", "umfpack"}, {"sparselu", "sparselu"}};
   SolverSpec& s = spec.solver;
   s.max_iterations = t->integer("max_iterations", 1, s.max_iterations);
   s.residual_tolerance = t->number(

@@ -241,7 +241,7 @@ struct SolverSpec {
   Real residual_tolerance = 1e-8;  ///< relative to the characteristic residual of each field
   Real increment_tolerance = 1e-8; ///< relative to the characteristic size of each field
   bool line_search = true;
-  std::string linear_solver = "umfpack"; ///< "umfpack" or "sparselu"
+  std::string linear_solver = "auto"; ///< "auto", "umfpack" or "sparselu"
 };
 
 /// [[output.reaction]]: total reaction force on a node set, in history.csv.

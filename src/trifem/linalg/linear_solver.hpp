@@ -20,7 +20,7 @@ public:
   virtual bool factorize(const SparseMatrix& A) = 0;
   /// Solves A x = b with the last factorization; false on failure.
   virtual bool solve(const Vector& b, Vector& x) = 0;
-  /// Backend name ("umfpack", "sparselu").
+  /// Backend name ("umfpack", "sparselu", "auto (sparselu)", ...).
   virtual std::string name() const = 0;
 };
 

@@ -198,7 +198,7 @@ TEST(CaseReader, MinimalCaseGetsDefaults) {
   EXPECT_DOUBLE_EQ(c.time.cutback, 0.5);
   EXPECT_EQ(c.solver.max_iterations, 20);
   EXPECT_TRUE(c.solver.line_search);
-  EXPECT_EQ(c.solver.linear_solver, "umfpack");
+  EXPECT_EQ(c.solver.linear_solver, "auto");
   EXPECT_DOUBLE_EQ(c.output.interval, 0.0);
   EXPECT_TRUE(c.output.vtu);
   EXPECT_TRUE(c.fixed.empty());
@@ -598,7 +598,7 @@ const std::vector<BadCase> kBadCases = {
      {"output.times[2] = 3: out of range, expected a value in [0, 1] s"}},
     {"bad_linear_solver",
      kBase + "[solver]\nlinear_solver = \"mumps\"\n",
-     {"solver.linear_solver = 'mumps': unknown value (expected one of: umfpack, sparselu)"}},
+     {"solver.linear_solver = 'mumps': unknown value (expected one of: auto, umfpack, sparselu)"}},
     {"tolerance_out_of_range",
      kBase + "[solver]\nresidual_tolerance = 1.5\n",
      {"solver.residual_tolerance = 1.5: out of range, expected a value in (0, 1)"}},

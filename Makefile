@@ -6,7 +6,7 @@ BUILD_DIR ?= build
 JOBS ?= $(shell nproc)
 EXAMPLE ?= confined_column
 
-.PHONY: all deps configure build run test clean format
+.PHONY: all deps configure build build-app run test clean format
 
 all: build
 
@@ -19,7 +19,11 @@ configure: deps
 build: configure
 	@cmake --build $(BUILD_DIR) -j $(JOBS)
 
-run: build
+# only what an example needs: the trifem command (not the tests and benchmarks)
+build-app: configure
+	@cmake --build $(BUILD_DIR) -j $(JOBS) --target trifem
+
+run: build-app
 	@bash examples/run_example.sh $(EXAMPLE) $(BUILD_DIR)
 
 test: build

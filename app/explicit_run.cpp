@@ -4,7 +4,9 @@
 #include "explicit_model.hpp"
 #include "explicit_output.hpp"
 #include "run.hpp"
+#include "run_files.hpp"
 #include "trifem/core/error.hpp"
+#include "trifem/core/interrupt.hpp"
 #include "trifem/core/log.hpp"
 #include "trifem/explicit/energy_balance.hpp"
 
@@ -37,10 +39,23 @@ decltype(auto) for_case(const io::CaseSpec& spec, F&& f) {
 /// Counters of a run.
 struct RunStats {
   explicit RunStats(const ed::ExplicitModel& model) : balance(model) {}
-  long halvings = 0;         ///< step halvings over the run
-  ed::StepReport failure;    ///< the fatal report (ok() if the run completed)
-  double wall_seconds = 0.0; ///< whole run
-  ed::EnergyBalance balance; ///< energy balance at the output times
+  long halvings = 0;          ///< step halvings over the run
+  bool interrupted = false;   ///< stopped on request (Ctrl-C)
+  std::string output_failure; ///< a result file could not be written
+  ed::StepReport failure;     ///< the fatal report (ok() if the run completed)
+  double wall_seconds = 0.0;  ///< whole run
+  ed::EnergyBalance balance;  ///< energy balance at the output times
+
+  bool completed() const { return failure.ok() && !interrupted && output_failure.empty(); }
+  std::string status() const {
+    return completed() ? "completed" : interrupted ? "interrupted" : "failed";
+  }
+  /// Why the run stopped early ("" if it completed).
+  std::string message() const {
+    if (interrupted)
+      return "interrupted";
+    return output_failure.empty() ? failure.message : output_failure;
+  }
 };
 
 /// Warns (once) when the energy balance error first exceeds its threshold.
@@ -116,6 +131,10 @@ void advance(const io::CaseSpec& spec, ed::ExplicitSolver& solver, ExplicitOutpu
   for (const StepTarget& target : explicit_step_targets(spec)) {
     const Real eps = 1e-12 * std::max(target.time, solver.time_step_info().used);
     while (solver.time() < target.time - eps) {
+      if (interrupt::requested()) {
+        stats.interrupted = true;
+        return;
+      }
       const ed::StepReport r = solver.step(target.time);
       stats.halvings += r.halvings;
       if (!r.ok()) {
@@ -144,17 +163,13 @@ nlohmann::json time_step_json(const ed::TimeStepInfo& t) {
 }
 
 /// summary.json: status, counts, time step, final energies, sizes and wall times.
-void write_summary(const std::filesystem::path& file, const io::CaseSpec& spec,
-                   const ExplicitCase& c, const ed::ExplicitSolver& solver, const RunStats& stats,
-                   double output_seconds) {
+nlohmann::json summary(const io::CaseSpec& spec, const ExplicitCase& c,
+                       const ed::ExplicitSolver& solver, const RunStats& stats,
+                       double output_seconds) {
   const ed::SolverTimings& w = solver.timings();
   const ed::Energies e = solver.energies();
-  nlohmann::json j;
-  j["trifem_version"] = TRIFEM_VERSION;
-  j["case"] = spec.file.string();
+  nlohmann::json j = summary_header(spec, stats.status(), stats.message());
   j["analysis"] = "dynamic-explicit";
-  j["status"] = stats.failure.ok() ? "completed" : "failed";
-  j["failure"] = stats.failure.message;
   j["end_time_s"] = solver.time();
   j["steps"] = solver.step_count();
   j["multiplier_solves"] = solver.total_iterations();
@@ -177,8 +192,7 @@ void write_summary(const std::filesystem::path& file, const io::CaseSpec& spec,
                       {"lambda", w.lambda},          {"assemble", w.assemble},
                       {"factorize", w.factorize},    {"solve", w.solve},
                       {"output", output_seconds}};
-  std::ofstream out(file);
-  out << j.dump(2) << '\n';
+  return j;
 }
 
 } // namespace
@@ -186,6 +200,7 @@ void write_summary(const std::filesystem::path& file, const io::CaseSpec& spec,
 int run_explicit_case(const io::CaseSpec& spec, const std::filesystem::path& output_dir) {
   const auto start = Clock::now();
   const ExplicitCase c = for_case(spec, [&] { return build_explicit_case(spec); });
+  start_output_directory(output_dir, spec);
   ExplicitOutput output(c, spec.output, output_dir);
   log::add_file((output_dir / "run.log").string());
   log_model(spec, c);
@@ -194,24 +209,43 @@ int run_explicit_case(const io::CaseSpec& spec, const std::filesystem::path& out
   output.write_initial(*solver);
 
   RunStats stats(*c.model);
-  advance(spec, *solver, output, stats);
+  try {
+    advance(spec, *solver, output, stats);
+  } catch (const OutputError& e) { // solved, but the results cannot be written
+    stats.output_failure =
+        fmt::format("the results at t = {:.6g} could not be written: {}", solver->time(), e.what());
+  }
   stats.wall_seconds = std::chrono::duration<double>(Clock::now() - start).count();
-  write_summary(output_dir / "summary.json", spec, c, *solver, stats, output.seconds());
+  const nlohmann::json summary_json = summary(spec, c, *solver, stats, output.seconds());
   const ed::SolverTimings& w = solver->timings();
   log::info("{}: {} steps, {} multiplier solves, {} halvings, {:.2f} s (forces {:.2f}, "
             "multiplier {:.2f}, output {:.2f})",
-            stats.failure.ok() ? "completed" : "FAILED", solver->step_count(),
-            solver->total_iterations(), stats.halvings, stats.wall_seconds, w.forces, w.lambda,
-            output.seconds());
+            stats.completed()   ? "completed"
+            : stats.interrupted ? "INTERRUPTED"
+                                : "FAILED",
+            solver->step_count(), solver->total_iterations(), stats.halvings, stats.wall_seconds,
+            w.forces, w.lambda, output.seconds());
   log::info("results: {} ({} VTU files), {}, {}", output.pvd_file().string(), output.vtu_count(),
             output.history_file().string(), (output_dir / "summary.json").string());
   if (stats.balance.exceeded())
     log::warn("the energy balance error reached {:.3g} % of the largest energy: check the "
               "results (history.csv, total_energy [mJ])",
               100.0 * stats.balance.max_error());
-  if (!stats.failure.ok()) {
-    log::info("run stopped: {} ({})", stats.failure.message, ed::to_string(stats.failure.status));
-    std::cerr << "error: " << spec.file.string() << ": " << stats.failure.message << '\n';
+  try {
+    write_summary_file(output_dir / "summary.json", summary_json);
+  } catch (const OutputError& e) {
+    std::cerr << "error: " << spec.file.string() << ": " << e.what() << '\n';
+    return kAnalysisFailed;
+  }
+  if (stats.interrupted) {
+    std::cerr << "error: " << spec.file.string() << ": interrupted at t = " << solver->time()
+              << " (results up to the last step are kept)\n";
+    return interrupted_exit_code();
+  }
+  if (!stats.completed()) {
+    if (!stats.failure.ok())
+      log::info("run stopped: {} ({})", stats.failure.message, ed::to_string(stats.failure.status));
+    std::cerr << "error: " << spec.file.string() << ": " << stats.message() << '\n';
     return kAnalysisFailed;
   }
   return kSuccess;

@@ -2,6 +2,7 @@
 // trifem command-line interface: run, check, --version.
 #include "run.hpp"
 #include "trifem/core/error.hpp"
+#include "trifem/core/interrupt.hpp"
 #include "trifem/core/log.hpp"
 #include "trifem/io/case_reader.hpp"
 
@@ -70,6 +71,7 @@ int main(int argc, char** argv) {
     const io::CaseSpec spec = io::read_case(case_file);
     if (check->parsed())
       return app::check_case(spec);
+    interrupt::install_handler(); // Ctrl-C ends the run cleanly, with its summary
     const std::filesystem::path out = output_dir.empty()
                                           ? std::filesystem::path("results") / spec.file.stem()
                                           : std::filesystem::path(output_dir);

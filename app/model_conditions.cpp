@@ -6,6 +6,8 @@
 #include "trifem/physics/bath_term.hpp"
 #include "trifem/physics/surface_load_term.hpp"
 
+#include <unordered_map>
+
 namespace trifem::app {
 namespace {
 
@@ -35,6 +37,28 @@ const std::vector<Index>& node_set(const Model& model, const std::string& key,
                       [&]() -> const std::vector<Index>& { return model.mesh.node_set(name); });
 }
 
+/// A DOF may take one value: a DOF of a [[boundary.prescribed]] entry that another entry also
+/// constrains (through other sets sharing nodes) is an input error. Fixing a DOF twice is fine.
+void check_single_value_per_dof(const Model& model, const std::vector<dofs::DirichletCondition>& c,
+                                const std::vector<std::string>& keys,
+                                std::size_t first_prescribed) {
+  std::unordered_map<Index, std::size_t> owner;
+  for (std::size_t i = 0; i < c.size(); ++i)
+    for (Index d : c[i].dofs) {
+      const auto [it, inserted] = owner.emplace(d, i);
+      if (inserted || it->second == i || std::max(it->second, i) < first_prescribed)
+        continue;
+      const dofs::FieldInfo& field = model.dofs.field(model.dofs.field_of(d));
+      const Index node = (d - field.offset) / field.components;
+      const Vec3& x = model.mesh.node(node);
+      throw InputError(fmt::format(
+          "{} and {} both constrain {} component {} of the node at ({:.6g}, {:.6g}, {:.6g}): a "
+          "degree of freedom takes one value; use node sets that do not share this node",
+          keys[it->second], keys[i], field.name, "xyz"[(d - field.offset) % field.components],
+          x.x(), x.y(), x.z()));
+    }
+}
+
 } // namespace
 
 dofs::LoadCurve make_curve(const io::CaseSpec& spec, const std::string& name) {
@@ -47,8 +71,10 @@ dofs::LoadCurve make_curve(const io::CaseSpec& spec, const std::string& name) {
 std::vector<dofs::DirichletCondition> boundary_conditions(const io::CaseSpec& spec,
                                                           const Model& model) {
   std::vector<dofs::DirichletCondition> out;
+  std::vector<std::string> keys;
   for (std::size_t i = 0; i < spec.fixed.size(); ++i) {
     const auto& f = spec.fixed[i];
+    keys.push_back(fmt::format("{}.set '{}'", f.key, f.set));
     const auto& nodes = node_set(model, f.key + ".set", f.set);
     dofs::DirichletCondition c;
     for (io::FieldKind kind : f.fields) {
@@ -64,6 +90,7 @@ std::vector<dofs::DirichletCondition> boundary_conditions(const io::CaseSpec& sp
   for (std::size_t i = 0; i < spec.prescribed.size(); ++i) {
     const auto& p = spec.prescribed[i];
     const std::string key = fmt::format("boundary.prescribed[{}]", i + 1);
+    keys.push_back(fmt::format("{}.set '{}'", key, p.set));
     const auto& nodes = node_set(model, key + ".set", p.set);
     const dofs::FieldId id = field_id(model, p.field);
     TRIFEM_CHECK(id.valid(), "{}.field: the model has no such field", key);
@@ -73,6 +100,7 @@ std::vector<dofs::DirichletCondition> boundary_conditions(const io::CaseSpec& sp
       c.dofs.push_back(model.dofs.dof(id, n, p.component));
     out.push_back(std::move(c));
   }
+  check_single_value_per_dof(model, out, keys, spec.fixed.size());
   return out;
 }
 

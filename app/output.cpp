@@ -142,6 +142,15 @@ void OutputWriter::write_state(Real time) {
   if (contact_)
     contact_->write(time, state_count_, spec_.vtu);
   ++state_count_;
+  last_state_time_ = time;
+}
+
+void OutputWriter::write_last_state(Real time) {
+  if (state_count_ > 0 && last_state_time_ == time)
+    return;
+  const auto start = std::chrono::steady_clock::now();
+  write_state(time);
+  seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 void OutputWriter::write(Real time, int step, Real dt, int iterations, bool volume) {

@@ -27,6 +27,9 @@ public:
   /// Writes the state at `time`: a history row always; if `volume` is set (an output time) the
   /// VTU file (unless output.vtu = false) and the contact-surface files of every contact pair.
   void write(Real time, int step, Real dt, int iterations, bool volume);
+  /// After a run that stopped early: the current (last accepted) state at `time` as a VTU file
+  /// and contact-surface files, unless it was the last state written.
+  void write_last_state(Real time);
   /// True if `time` is an output time (interval multiple or listed time).
   bool is_output_time(Real time) const;
 
@@ -49,6 +52,7 @@ private:
   std::unique_ptr<MassBalance> balance_;
   std::unique_ptr<ContactOutput> contact_; ///< null without contact pairs
   int state_count_ = 0;                    ///< output states written (the NNNN of the files)
+  Real last_state_time_ = -1.0;            ///< time of the last output state written
   int vtu_count_ = 0;
   double seconds_ = 0.0;
 };

@@ -4,13 +4,17 @@
 #include "explicit_run.hpp"
 #include "model.hpp"
 #include "output.hpp"
+#include "run_files.hpp"
 #include "trifem/core/error.hpp"
+#include "trifem/core/interrupt.hpp"
 #include "trifem/core/log.hpp"
 #include "trifem/linalg/auto_solver.hpp"
 #include "trifem/linalg/linear_solver.hpp"
+#include "trifem/mesh/mesh.hpp"
 
 #include <chrono>
 #include <cmath>
+#include <csignal>
 #include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -61,19 +65,17 @@ void log_model(const io::CaseSpec& spec, const Model& model) {
     log_mixture_scales(model);
 }
 
-void write_summary(const std::filesystem::path& file, const io::CaseSpec& spec, const Model& model,
-                   const solver::RunReport& run, const solver::PhaseTimes& phases, double output_s,
-                   double wall_s, const MassBalance* balance) {
-  nlohmann::json j;
-  j["trifem_version"] = TRIFEM_VERSION;
-  j["case"] = spec.file.string();
-  j["status"] = run.success ? "completed" : "failed";
-  j["failure"] = run.failure;
+/// summary.json of a quasi-static run.
+nlohmann::json summary(const io::CaseSpec& spec, const Model& model, const solver::RunReport& run,
+                       const solver::PhaseTimes& phases, double output_s, double wall_s,
+                       const MassBalance* balance) {
+  nlohmann::json j = summary_header(spec, run_status(run), run.failure);
   j["end_time_s"] = run.end_time;
   j["steps"] = run.steps;
   j["newton_iterations"] = run.iterations;
   j["cutbacks"] = run.cutbacks;
   j["failed_attempts"] = run.failed_attempts;
+  j["roundoff_floor_steps"] = run.roundoff_floor_steps;
   j["mesh"] = {{"nodes", model.mesh.num_nodes()}, {"cells", model.mesh.num_cells()}};
   j["dofs"] = {{"equations", model.dofs.num_equations()},
                {"prescribed", model.dofs.num_constrained()}};
@@ -99,8 +101,21 @@ void write_summary(const std::filesystem::path& file, const io::CaseSpec& spec, 
       j["mass_balance_max_relative_error_by_body"][balance->regions()[i].name] =
           errors(balance->regions()[i]);
   }
-  std::ofstream out(file);
-  out << j.dump(2) << '\n';
+  return j;
+}
+
+/// Says once that Newton reached the round-off floor, with the mesh grading that causes it.
+void note_roundoff_floor(const Model& model, const solver::StepInfo& info, bool& noted) {
+  if (!info.newton->at_roundoff_floor || noted)
+    return;
+  noted = true;
+  const mesh::EdgeRange edges = mesh::edge_length_range(model.mesh);
+  log::warn("  step {}: Newton reached the round-off floor (the residual stalls at {:.2e} of its "
+            "reference while the increments are at the round-off of the unknowns) and the step "
+            "was accepted: the state is as converged as double precision allows. The cell edges "
+            "range from {:.3g} to {:.3g} mm (ratio {:.3g}); strong grading raises this floor. "
+            "Later steps at the floor are counted in summary.json (roundoff_floor_steps).",
+            info.step, info.newton->final_residual, edges.min, edges.max, edges.max / edges.min);
 }
 
 /// build_model with errors prefixed by the case file, like the reader's.
@@ -122,7 +137,58 @@ void log_linear_solver(const std::string& name, Index equations) {
               linalg::kAutoSparseLuLimit);
 }
 
+/// Writes the summary, the final report and the error line; returns the exit code.
+int finish_run(const io::CaseSpec& spec, const std::filesystem::path& output_dir,
+               const nlohmann::json& summary_json, const solver::RunReport& run) {
+  try {
+    write_summary_file(output_dir / "summary.json", summary_json);
+  } catch (const OutputError& e) {
+    std::cerr << "error: " << spec.file.string() << ": " << e.what() << '\n';
+    return kAnalysisFailed;
+  }
+  if (run.interrupted) {
+    std::cerr << "error: " << spec.file.string() << ": " << run.failure
+              << " (results up to the last accepted step are kept)\n";
+    return interrupted_exit_code();
+  }
+  if (!run.success) {
+    std::cerr << "error: " << spec.file.string() << ": " << run.failure << '\n';
+    return kAnalysisFailed;
+  }
+  return kSuccess;
+}
+
+/// The state at t = 0 with its reactions; the reason if it cannot be written.
+std::string write_initial_state(OutputWriter& output) {
+  try {
+    output.write(0.0, 0, 0.0, 0, true);
+    return {};
+  } catch (const OutputError& e) {
+    return fmt::format("the initial state could not be written: {}", e.what());
+  }
+}
+
+/// After a run that stopped early: the last accepted state as a VTU file, if it is not one yet.
+void write_last_state(Model& model, OutputWriter& output, const solver::RunReport& run) {
+  solver::Linearization lin; // the reactions of the last accepted state, not the failed attempt
+  if (model.problem->linearize(lin, false) != solver::SolveStatus::Converged)
+    return;
+  try {
+    output.write_last_state(run.end_time);
+  } catch (const OutputError& e) {
+    log::warn("  the last accepted state could not be written: {}", e.what());
+  }
+}
+
 } // namespace
+
+std::string run_status(const solver::RunReport& run) {
+  return run.success ? "completed" : run.interrupted ? "interrupted" : "failed";
+}
+
+int interrupted_exit_code() {
+  return 128 + (interrupt::signal_number() > 0 ? interrupt::signal_number() : SIGINT);
+}
 
 solver::StepSettings step_settings(const io::CaseSpec& spec) {
   const io::TimeSpec& t = spec.time;
@@ -159,6 +225,7 @@ int run_case(const io::CaseSpec& spec, const std::filesystem::path& output_dir) 
     return run_explicit_case(spec, output_dir);
   const auto start = Clock::now();
   std::unique_ptr<Model> model = build_model_for(spec);
+  start_output_directory(output_dir, spec);
   OutputWriter output(*model, spec.output, output_dir);
   log::add_file((output_dir / "run.log").string());
   log_model(spec, *model);
@@ -167,40 +234,42 @@ int run_case(const io::CaseSpec& spec, const std::filesystem::path& output_dir) 
                               linalg::make_linear_solver(spec.solver.linear_solver));
   log_linear_solver(spec.solver.linear_solver, model->problem->num_equations());
   solver::StepController controller(step_settings(spec));
+  solver::RunReport run;
   solver::Linearization initial;
   if (model->problem->linearize(initial, false) != solver::SolveStatus::Converged) {
-    std::cerr << "error: " << spec.file.string()
-              << ": the initial state (t = 0) inverts an element (J <= 0); prescribed values "
-                 "without a load curve apply from t = 0\n";
-    return kAnalysisFailed;
+    run.failure = "the initial state (t = 0) inverts an element (J <= 0); prescribed values "
+                  "without a load curve apply from t = 0";
+  } else if (std::string why = write_initial_state(output); !why.empty()) {
+    run.failure = why;
+  } else {
+    bool noted = false;
+    auto observer = [&](const solver::StepInfo& info) {
+      if (output.balance())
+        output.balance()->record_step(info.dt);
+      log::info("step {:4d}  t = {:<10.5g} dt = {:<9.3g} iterations {:2d}  residual {:.2e}",
+                info.step, info.time, info.dt, info.newton->iterations,
+                info.newton->final_residual);
+      note_roundoff_floor(*model, info, noted);
+      output.write(info.time, info.step, info.dt, info.newton->iterations,
+                   output.is_output_time(info.time) || controller.finished());
+    };
+    run = solver::run_time_loop(*model->problem, newton, controller, observer);
+    if (!run.success)
+      write_last_state(*model, output, run);
   }
-  output.write(0.0, 0, 0.0, 0, true); // the initial state, with its reactions
-
-  auto observer = [&](const solver::StepInfo& info) {
-    if (output.balance())
-      output.balance()->record_step(info.dt);
-    log::info("step {:4d}  t = {:<10.5g} dt = {:<9.3g} iterations {:2d}  residual {:.2e}",
-              info.step, info.time, info.dt, info.newton->iterations, info.newton->final_residual);
-    output.write(info.time, info.step, info.dt, info.newton->iterations,
-                 output.is_output_time(info.time) || controller.finished());
-  };
-  const solver::RunReport run =
-      solver::run_time_loop(*model->problem, newton, controller, observer);
   const double wall = std::chrono::duration<double>(Clock::now() - start).count();
-  write_summary(output_dir / "summary.json", spec, *model, run, newton.times(), output.seconds(),
-                wall, output.balance());
+  const nlohmann::json summary_json =
+      summary(spec, *model, run, newton.times(), output.seconds(), wall, output.balance());
   log::info("{}: {} steps, {} Newton iterations, {} cutbacks, {:.2f} s (assembly {:.2f}, "
             "factorization {:.2f}, solve {:.2f}, output {:.2f})",
-            run.success ? "completed" : "FAILED", run.steps, run.iterations, run.cutbacks, wall,
-            newton.times().assembly, newton.times().factorization, newton.times().solve,
-            output.seconds());
+            run.success       ? "completed"
+            : run.interrupted ? "INTERRUPTED"
+                              : "FAILED",
+            run.steps, run.iterations, run.cutbacks, wall, newton.times().assembly,
+            newton.times().factorization, newton.times().solve, output.seconds());
   log::info("results: {} ({} VTU files), {}, {}", output.pvd_file().string(), output.vtu_count(),
             output.history_file().string(), (output_dir / "summary.json").string());
-  if (!run.success) {
-    std::cerr << "error: " << spec.file.string() << ": " << run.failure << '\n';
-    return kAnalysisFailed;
-  }
-  return kSuccess;
+  return finish_run(spec, output_dir, summary_json, run);
 }
 
 int check_case(const io::CaseSpec& spec) {

@@ -5,6 +5,7 @@
 #include "trifem/io/case_spec.hpp"
 #include "trifem/solver/newton.hpp"
 #include "trifem/solver/step_controller.hpp"
+#include "trifem/solver/time_loop.hpp"
 
 #include <filesystem>
 
@@ -17,7 +18,14 @@ enum ExitCode : int {
   kInvalidInput = 2,   ///< the case file, mesh or parameters are invalid; nothing was run
   kAnalysisFailed = 3, ///< the analysis stopped early (results written so far are kept)
   kInternalError = 4,  ///< a bug in trifem
+  // 128 + the signal number (130 for Ctrl-C): the run was interrupted, results kept
 };
+
+/// "completed", "failed" or "interrupted" (summary.json "status").
+std::string run_status(const solver::RunReport& run);
+
+/// Exit code of an interrupted run: 128 + the signal (130 for SIGINT, 143 for SIGTERM).
+int interrupted_exit_code();
 
 /// Step control of a quasi-static case: [time], plus the output times and the kinks of every
 /// load curve as must points.

@@ -3,6 +3,9 @@
 
 #include "trifem/core/error.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 namespace trifem::assembly {
 
 FeProblem::FeProblem(const dofs::DofMap& map, std::vector<dofs::DirichletCondition> conditions,
@@ -78,6 +81,15 @@ solver::SolveStatus FeProblem::update(const Vector& dx, Real step) {
   }
   sync();
   return solver::SolveStatus::Converged;
+}
+
+std::vector<Real> FeProblem::field_magnitudes() const {
+  std::vector<Real> magnitudes(scales_.size(), 0.0);
+  for (Index eq = 0; eq < map_.num_equations(); ++eq) {
+    Real& m = magnitudes[equation_fields_[eq]];
+    m = std::max(m, std::abs(x_[map_.dof_of_equation(eq)]));
+  }
+  return magnitudes;
 }
 
 bool FeProblem::constraints_satisfied() const {

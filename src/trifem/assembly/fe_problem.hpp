@@ -66,6 +66,7 @@ public:
   solver::SolveStatus linearize(solver::Linearization& lin, bool with_jacobian) override;
   solver::SolveStatus update(const Vector& dx, Real step) override;
   bool constraints_satisfied() const override;
+  std::vector<Real> field_magnitudes() const override;
   void save_iterate() override { saved_ = x_; }
   void restore_iterate() override {
     x_ = saved_;

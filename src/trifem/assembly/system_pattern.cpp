@@ -31,6 +31,8 @@ DofElements invert(const std::vector<const Stencils*>& sets, Index num_dofs) {
 
 SparseMatrix make_matrix(Index rows, Index cols, const std::vector<std::vector<Index>>& columns) {
   SparseMatrix A(rows, cols);
+  if (rows == 0 || cols == 0) // every DOF prescribed, or none: an empty block
+    return A;
   Eigen::VectorXi sizes(cols);
   for (Index c = 0; c < cols; ++c)
     sizes[c] = static_cast<int>(columns[c].size());

@@ -15,6 +15,14 @@ public:
   explicit InputError(const std::string& what) : std::runtime_error(what) {}
 };
 
+/// A result file cannot be created or written (permissions, disk full). Before a run starts it
+/// is a setup error like bad input; during a run it ends the run as a failure, keeping what
+/// was written.
+class OutputError : public InputError {
+public:
+  explicit OutputError(const std::string& what) : InputError(what) {}
+};
+
 /// Violated internal invariant: a bug in trifem, not in the input.
 class LogicError : public std::logic_error {
 public:
@@ -32,6 +40,13 @@ namespace detail {
   do {                                                                                             \
     if (!(cond)) [[unlikely]]                                                                      \
       throw ::trifem::InputError(::fmt::format(__VA_ARGS__));                                      \
+  } while (false)
+
+/// Always-on check of a result file operation: throws OutputError with the formatted message.
+#define TRIFEM_CHECK_OUTPUT(cond, ...)                                                             \
+  do {                                                                                             \
+    if (!(cond)) [[unlikely]]                                                                      \
+      throw ::trifem::OutputError(::fmt::format(__VA_ARGS__));                                     \
   } while (false)
 
 /// Always-on internal invariant check: throws LogicError with file and line.

@@ -10,7 +10,7 @@ namespace trifem {
 
 /// Real scalar type of all physical quantities.
 using Real = double;
-/// Index of nodes, cells and equations (32-bit, as UMFPACK's int interface expects).
+/// Index of nodes, cells and equations (32-bit; the UMFPACK backend converts to 64-bit).
 using Index = int;
 
 /// Dynamic real vector (solution and residual vectors).

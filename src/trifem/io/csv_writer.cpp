@@ -33,8 +33,8 @@ CsvWriter::CsvWriter(std::filesystem::path file, std::vector<std::string> column
     : file_(std::move(file)), columns_(std::move(columns)) {
   TRIFEM_VERIFY(!columns_.empty(), "CSV file '{}' needs at least one column", file_.string());
   out_.open(file_, std::ios::out | std::ios::trunc);
-  TRIFEM_CHECK(out_.is_open(), "cannot create CSV file '{}' ({})", file_.string(),
-               std::generic_category().message(errno));
+  TRIFEM_CHECK_OUTPUT(out_.is_open(), "cannot create CSV file '{}' ({})", file_.string(),
+                      std::generic_category().message(errno));
   std::string header;
   for (std::size_t i = 0; i < columns_.size(); ++i) {
     if (i > 0)
@@ -58,7 +58,7 @@ void CsvWriter::write_row(std::span<const double> values) {
 
 void CsvWriter::flush_checked() {
   out_.flush();
-  TRIFEM_CHECK(out_.good(), "cannot write to CSV file '{}'", file_.string());
+  TRIFEM_CHECK_OUTPUT(out_.good(), "cannot write to CSV file '{}'", file_.string());
 }
 
 } // namespace trifem::io

@@ -60,8 +60,8 @@ void write_file_atomically(const fs::path& file, const std::function<void(std::o
   std::error_code ignored;
   {
     std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    TRIFEM_CHECK(out.is_open(), "cannot write '{}': cannot create '{}' ({})", file.string(),
-                 tmp.string(), std::generic_category().message(errno));
+    TRIFEM_CHECK_OUTPUT(out.is_open(), "cannot write '{}': cannot create '{}' ({})", file.string(),
+                        tmp.string(), std::generic_category().message(errno));
     try {
       write(out);
     } catch (...) {
@@ -72,7 +72,7 @@ void write_file_atomically(const fs::path& file, const std::function<void(std::o
     out.close();
     if (out.fail()) {
       fs::remove(tmp, ignored);
-      throw InputError(
+      throw OutputError(
           fmt::format("cannot write '{}': write error on '{}'", file.string(), tmp.string()));
     }
   }
@@ -80,8 +80,8 @@ void write_file_atomically(const fs::path& file, const std::function<void(std::o
   fs::rename(tmp, file, ec);
   if (ec) {
     fs::remove(tmp, ignored);
-    throw InputError(fmt::format("cannot write '{}': cannot rename '{}' onto it ({})",
-                                 file.string(), tmp.string(), ec.message()));
+    throw OutputError(fmt::format("cannot write '{}': cannot rename '{}' onto it ({})",
+                                  file.string(), tmp.string(), ec.message()));
   }
 }
 

@@ -21,6 +21,9 @@ public:
   std::string name() const override {
     return backend_ ? "auto (" + backend_->name() + ")" : "auto";
   }
+  LinearSolverFailure failure() const override {
+    return backend_ ? backend_->failure() : LinearSolverFailure{};
+  }
 
 private:
   std::unique_ptr<LinearSolver> backend_;

@@ -10,6 +10,12 @@
 
 namespace trifem::linalg {
 
+/// Why the last analyze_pattern / factorize / solve failed.
+struct LinearSolverFailure {
+  std::string reason;     ///< what failed, in words ("" after a success)
+  bool permanent = false; ///< a smaller time step cannot cure it (out of memory, size limits)
+};
+
 /// A sparse direct solver for general (unsymmetric) matrices.
 class LinearSolver {
 public:
@@ -17,11 +23,14 @@ public:
   /// Symbolic analysis (ordering); reused while the sparsity pattern is unchanged.
   virtual void analyze_pattern(const SparseMatrix& A) = 0;
   /// Numeric factorization; false if the matrix is singular or the factorization failed.
+  /// `A` (same pattern as analysed) must stay alive and unchanged for the following solves.
   virtual bool factorize(const SparseMatrix& A) = 0;
   /// Solves A x = b with the last factorization; false on failure.
   virtual bool solve(const Vector& b, Vector& x) = 0;
   /// Backend name ("umfpack", "sparselu", "auto (sparselu)", ...).
   virtual std::string name() const = 0;
+  /// Why the last operation failed (empty reason if it succeeded).
+  virtual LinearSolverFailure failure() const { return {}; }
 };
 
 /// Names of the available backends.

@@ -5,7 +5,9 @@
 #include "trifem/mesh/hex_faces.hpp"
 
 #include <algorithm>
+#include <array>
 #include <fmt/ranges.h>
+#include <limits>
 #include <unordered_map>
 
 namespace trifem::mesh {
@@ -189,6 +191,32 @@ std::vector<Index> surface_nodes(const Surface& surface) {
   std::sort(nodes.begin(), nodes.end());
   nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
   return nodes;
+}
+
+EdgeRange edge_length_range(const Mesh& mesh) {
+  // hex8 edges in the VTK/Gmsh node order: bottom face, top face, verticals
+  constexpr std::array<std::array<int, 2>, 12> kEdges = {{{0, 1},
+                                                          {1, 2},
+                                                          {2, 3},
+                                                          {3, 0},
+                                                          {4, 5},
+                                                          {5, 6},
+                                                          {6, 7},
+                                                          {7, 4},
+                                                          {0, 4},
+                                                          {1, 5},
+                                                          {2, 6},
+                                                          {3, 7}}};
+  EdgeRange range{std::numeric_limits<Real>::infinity(), 0.0};
+  for (const Hex8& cell : mesh.cells())
+    for (const auto& [a, b] : kEdges) {
+      const Real h = (mesh.node(cell[b]) - mesh.node(cell[a])).norm();
+      range.min = std::min(range.min, h);
+      range.max = std::max(range.max, h);
+    }
+  if (mesh.num_cells() == 0)
+    range.min = 0.0;
+  return range;
 }
 
 } // namespace trifem::mesh

@@ -89,4 +89,13 @@ private:
 /// Sorted, unique node indices of a surface.
 std::vector<Index> surface_nodes(const Surface& surface);
 
+/// Shortest and longest cell edge of a mesh [length].
+struct EdgeRange {
+  Real min = 0.0;
+  Real max = 0.0;
+};
+
+/// The range of the cell edge lengths (the twelve edges of every hex8) in the reference mesh.
+EdgeRange edge_length_range(const Mesh& mesh);
+
 } // namespace trifem::mesh

@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: MIT
 #include "trifem/solver/newton.hpp"
 
+#include "trifem/core/interrupt.hpp"
 #include "trifem/core/log.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace trifem::solver {
 namespace {
@@ -31,6 +33,10 @@ const char* to_string(SolveStatus status) {
     return "linear solver failed (singular matrix?)";
   case SolveStatus::Rejected:
     return "converged state rejected";
+  case SolveStatus::Unrecoverable:
+    return "unrecoverable failure";
+  case SolveStatus::Interrupted:
+    return "interrupted";
   }
   return "unknown";
 }
@@ -73,6 +79,24 @@ bool NewtonSolver::residual_converged(const NonlinearProblem& problem, const Vec
   return true;
 }
 
+bool NewtonSolver::at_roundoff_floor(const NonlinearProblem& problem, const Vector& dx, Real step,
+                                     const std::vector<Real>& history) const {
+  // The residual has not halved over the last two iterations ...
+  const std::size_t k = history.size() - 1;
+  if (k < 3 || history[k] < 0.5 * history[k - 2])
+    return false;
+  // ... while the increments change the unknowns only at the round-off of their magnitude.
+  constexpr Real kRoundoff = 1e4 * std::numeric_limits<Real>::epsilon();
+  const std::vector<Real> norms = field_norms(problem, dx, true);
+  const std::vector<Real> magnitudes = problem.field_magnitudes();
+  const auto& scales = problem.field_scales();
+  for (std::size_t f = 0; f < norms.size(); ++f)
+    if (const Real x = f < magnitudes.size() ? magnitudes[f] : 0.0;
+        step * norms[f] > kRoundoff * std::max(x, scales[f].size))
+      return false;
+  return true;
+}
+
 bool NewtonSolver::increment_converged(const NonlinearProblem& problem, const Vector& dx,
                                        Real step) const {
   const std::vector<Real> norms = field_norms(problem, dx, true);
@@ -85,6 +109,10 @@ bool NewtonSolver::increment_converged(const NonlinearProblem& problem, const Ve
 
 SolveStatus NewtonSolver::factor_and_solve(NonlinearProblem& problem, Linearization& lin,
                                            Vector& dx) {
+  if (problem.num_equations() == 0) { // every unknown is prescribed: nothing to solve
+    dx.resize(0);
+    return SolveStatus::Converged;
+  }
   auto start = Clock::now();
   if (analyzed_pattern_ != problem.pattern_id()) {
     linear_->analyze_pattern(lin.jacobian);
@@ -93,12 +121,17 @@ SolveStatus NewtonSolver::factor_and_solve(NonlinearProblem& problem, Linearizat
   const bool factored = linear_->factorize(lin.jacobian);
   times_.factorization += seconds_since(start);
   if (!factored)
-    return SolveStatus::FactorizationFailed;
+    return linear_failure_status();
   start = Clock::now();
   const Vector rhs = -(lin.residual + lin.constraint_rhs);
   const bool solved = linear_->solve(rhs, dx);
   times_.solve += seconds_since(start);
-  return solved ? SolveStatus::Converged : SolveStatus::FactorizationFailed;
+  return solved ? SolveStatus::Converged : linear_failure_status();
+}
+
+SolveStatus NewtonSolver::linear_failure_status() const {
+  return linear_->failure().permanent ? SolveStatus::Unrecoverable
+                                      : SolveStatus::FactorizationFailed;
 }
 
 SolveStatus NewtonSolver::line_search(NonlinearProblem& problem, const Vector& dx, const Vector& r0,
@@ -179,6 +212,17 @@ NewtonReport NewtonSolver::solve(NonlinearProblem& problem) {
       report.status = SolveStatus::Converged;
       return report;
     }
+    if (problem.constraints_satisfied() &&
+        at_roundoff_floor(problem, dx, step, report.residual_history)) {
+      report.status = SolveStatus::Converged;
+      report.at_roundoff_floor = true;
+      return report;
+    }
+    if (interrupt::requested()) {
+      report.status = SolveStatus::Interrupted;
+      report.failure_reason = "interrupted";
+      return report;
+    }
     if (k == settings_.max_iterations) {
       report.status = SolveStatus::MaxIterations;
       report.failure_reason =
@@ -188,7 +232,13 @@ NewtonReport NewtonSolver::solve(NonlinearProblem& problem) {
     const SolveStatus solved = factor_and_solve(problem, lin, dx);
     if (solved != SolveStatus::Converged) {
       report.status = solved;
-      report.failure_reason = "the linear solver failed (singular Jacobian?)";
+      const std::string why = linear_->failure().reason;
+      report.failure_reason = "the linear solve failed: " +
+                              (why.empty() ? std::string("the Jacobian is singular") : why);
+      if (solved == SolveStatus::FactorizationFailed && k == 0)
+        report.failure_reason +=
+            " (at the first iteration: is every body supported against rigid motion, and "
+            "every field constrained where it needs to be?)";
       return report;
     }
     const Vector r0 = lin.residual;

@@ -36,6 +36,8 @@ struct NewtonReport {
   std::vector<Real> residual_history; ///< scaled residual norm at each evaluation
   Real final_residual = 0.0;
   std::string failure_reason;
+  /// Converged by reaching the round-off floor rather than the residual tolerance.
+  bool at_roundoff_floor = false;
 };
 
 /// Newton solver. Owns the linear solver and reuses its symbolic analysis across calls while
@@ -53,7 +55,16 @@ private:
   std::vector<Real> field_norms(const NonlinearProblem& problem, const Vector& v, bool inf) const;
   bool residual_converged(const NonlinearProblem& problem, const Vector& r) const;
   bool increment_converged(const NonlinearProblem& problem, const Vector& dx, Real step) const;
+  /// The round-off floor of the discrete system: the residual stalls (not halved in two
+  /// iterations) while the Newton increments change every field by less than 1e4 eps of the
+  /// magnitude of its unknowns. The state is then as converged as double arithmetic allows
+  /// (strongly graded meshes: a stiff tiny cell turns the round-off of the unknowns into a
+  /// residual above the tolerance), and the solve is accepted.
+  bool at_roundoff_floor(const NonlinearProblem& problem, const Vector& dx, Real step,
+                         const std::vector<Real>& history) const;
   SolveStatus factor_and_solve(NonlinearProblem& problem, Linearization& lin, Vector& dx);
+  /// FactorizationFailed, or Unrecoverable if the linear solver says no step can cure it.
+  SolveStatus linear_failure_status() const;
   SolveStatus line_search(NonlinearProblem& problem, const Vector& dx, const Vector& r0, Real& step,
                           Linearization& lin);
 

@@ -17,6 +17,8 @@ enum class SolveStatus {
   MaxIterations,       ///< Newton did not converge in the allowed iterations
   FactorizationFailed, ///< singular or failed LU factorization
   Rejected,            ///< converged, but a term rejected the state (e.g. contact not settled)
+  Unrecoverable,       ///< a failure no smaller step can cure (e.g. out of memory): stop at once
+  Interrupted,         ///< a stop was requested (interrupt::requested) during the solve
 };
 
 /// Human-readable status.
@@ -53,6 +55,8 @@ public:
   /// Moves the state by step * dx on free equations and step * (pending increment) on
   /// constrained DOFs. Returns Inadmissible (state unchanged) if the trial state is unphysical.
   virtual SolveStatus update(const Vector& dx, Real step) = 0;
+  /// Largest magnitude of the current unknowns of each field (the scale of their round-off).
+  virtual std::vector<Real> field_magnitudes() const { return {}; }
   /// True once all constrained DOFs have reached their targets.
   virtual bool constraints_satisfied() const = 0;
   /// Saves / restores the iterate (for line search).

@@ -1,14 +1,31 @@
 // SPDX-License-Identifier: MIT
 #include "trifem/solver/time_loop.hpp"
 
+#include "trifem/core/error.hpp"
+#include "trifem/core/interrupt.hpp"
 #include "trifem/core/log.hpp"
 
 namespace trifem::solver {
+namespace {
+
+/// Ends the run early with `why`.
+RunReport& stop(RunReport& run, const StepController& controller, std::string why) {
+  run.failure = std::move(why);
+  run.end_time = controller.time();
+  run.cutbacks = controller.cutbacks();
+  return run;
+}
+
+} // namespace
 
 RunReport run_time_loop(TransientProblem& problem, NewtonSolver& newton, StepController& controller,
                         const StepObserver& observer) {
   RunReport run;
   while (!controller.finished()) {
+    if (interrupt::requested()) {
+      run.interrupted = true;
+      return stop(run, controller, fmt::format("interrupted at t = {:.6g}", controller.time()));
+    }
     const Real dt = controller.next_step();
     const Real t = controller.time() + dt;
     problem.begin_step(t, dt);
@@ -19,25 +36,37 @@ RunReport run_time_loop(TransientProblem& problem, NewtonSolver& newton, StepCon
         report.status = SolveStatus::Rejected;
         report.failure_reason = std::move(why);
       }
+    if (report.status == SolveStatus::Interrupted) {
+      problem.reject_step();
+      run.interrupted = true;
+      return stop(run, controller, fmt::format("interrupted at t = {:.6g}", controller.time()));
+    }
     if (report.status != SolveStatus::Converged) {
       ++run.failed_attempts;
       problem.reject_step();
       log::warn("  step to t = {:.6g} (dt = {:.3g}) failed: {}; {}", t, dt,
                 to_string(report.status), report.failure_reason);
-      if (!controller.reject(dt)) {
-        run.failure = fmt::format("step to t = {:.6g} failed at the minimum step size {:.3g}: {}",
-                                  t, dt, report.failure_reason);
-        run.end_time = controller.time();
-        run.cutbacks = controller.cutbacks();
-        return run;
-      }
+      // a failure no smaller step can cure stops the run at once, without cutbacks
+      if (report.status == SolveStatus::Unrecoverable)
+        return stop(run, controller,
+                    fmt::format("step to t = {:.6g} failed: {}", t, report.failure_reason));
+      if (!controller.reject(dt))
+        return stop(run, controller,
+                    fmt::format("step to t = {:.6g} failed at the minimum step size {:.3g}: {}", t,
+                                dt, report.failure_reason));
       log::info("  cutting the step back to dt = {:.3g}", controller.dt());
       continue;
     }
     problem.commit_step();
     controller.accept(dt, report.iterations);
     ++run.steps;
-    observer(StepInfo{run.steps, t, dt, &report});
+    run.roundoff_floor_steps += report.at_roundoff_floor ? 1 : 0;
+    try {
+      observer(StepInfo{run.steps, t, dt, &report});
+    } catch (const OutputError& e) { // the step is solved, but its results cannot be written
+      return stop(run, controller,
+                  fmt::format("the results at t = {:.6g} could not be written: {}", t, e.what()));
+    }
   }
   run.success = true;
   run.end_time = controller.time();

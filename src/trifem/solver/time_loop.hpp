@@ -26,10 +26,13 @@ struct RunReport {
   int cutbacks = 0;
   int failed_attempts = 0;
   Real end_time = 0.0;
-  std::string failure; ///< why the run stopped early (empty on success)
+  std::string failure;          ///< why the run stopped early (empty on success)
+  bool interrupted = false;     ///< stopped on request (interrupt::requested), not by a failure
+  int roundoff_floor_steps = 0; ///< steps accepted at the round-off floor (NewtonReport)
 };
 
-/// Called after every accepted step (output, progress line). May throw to abort the run.
+/// Called after every accepted step (output, progress line). An OutputError it throws ends
+/// the run as a failure (the step itself was accepted); other exceptions propagate.
 using StepObserver = std::function<void(const StepInfo&)>;
 
 /// Advances `problem` from the controller's start to its end time.

@@ -1,0 +1,51 @@
+// SPDX-License-Identifier: MIT
+#include "run_files.hpp"
+
+#include "trifem/core/error.hpp"
+#include "trifem/io/vtu_writer.hpp"
+
+#include <regex>
+
+namespace trifem::app {
+
+namespace fs = std::filesystem;
+
+bool is_result_file_name(const std::string& name) {
+  static const std::regex pattern(R"((results\.pvd|history\.csv|summary\.json|run\.log|)"
+                                  R"(volume_\d{4,}\.vtu|contact\d+\.pvd|contact\d+_\d{4,}\.vtu|)"
+                                  R"(contact\d+_surface_\d{4,}\.csv)(\.tmp)?)");
+  return std::regex_match(name, pattern);
+}
+
+void start_output_directory(const fs::path& directory, const io::CaseSpec& spec) {
+  std::error_code ec;
+  fs::create_directories(directory, ec);
+  TRIFEM_CHECK_OUTPUT(!ec, "cannot create the output directory {}: {}", directory.string(),
+                      ec.message());
+  for (const fs::directory_entry& entry : fs::directory_iterator(directory, ec)) {
+    if (!entry.is_regular_file() || !is_result_file_name(entry.path().filename().string()))
+      continue;
+    fs::remove(entry.path(), ec);
+    TRIFEM_CHECK_OUTPUT(!ec, "cannot remove the earlier result file {}: {}", entry.path().string(),
+                        ec.message());
+  }
+  TRIFEM_CHECK_OUTPUT(!ec, "cannot read the output directory {}: {}", directory.string(),
+                      ec.message());
+  write_summary_file(directory / "summary.json", summary_header(spec, "running", ""));
+}
+
+void write_summary_file(const fs::path& file, const nlohmann::json& summary) {
+  io::write_file_atomically(file, [&](std::ostream& out) { out << summary.dump(2) << '\n'; });
+}
+
+nlohmann::json summary_header(const io::CaseSpec& spec, const std::string& status,
+                              const std::string& failure) {
+  nlohmann::json j;
+  j["trifem_version"] = TRIFEM_VERSION;
+  j["case"] = spec.file.string();
+  j["status"] = status;
+  j["failure"] = failure;
+  return j;
+}
+
+} // namespace trifem::app

@@ -1,0 +1,30 @@
+// SPDX-License-Identifier: MIT
+// The output directory of a run: stale result files of an earlier run are removed at the start,
+// summary.json says "running" until the run ends, and is written atomically at the end.
+#pragma once
+
+#include "trifem/io/case_spec.hpp"
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+namespace trifem::app {
+
+/// Creates `directory`, removes the result files an earlier run left there (only trifem's own
+/// file names: results.pvd, volume_NNNN.vtu, contact files, history.csv, summary.json, run.log)
+/// and writes a summary.json with "status": "running", so that the files of a run that is
+/// killed are never mistaken for those of a completed one. OutputError if impossible.
+void start_output_directory(const std::filesystem::path& directory, const io::CaseSpec& spec);
+
+/// True for the names of the files a run writes into its output directory.
+bool is_result_file_name(const std::string& name);
+
+/// Writes `summary` to `file` atomically (a temporary file renamed onto it); OutputError if it
+/// cannot be written.
+void write_summary_file(const std::filesystem::path& file, const nlohmann::json& summary);
+
+/// The status fields every summary.json starts with ("status": completed, failed, interrupted).
+nlohmann::json summary_header(const io::CaseSpec& spec, const std::string& status,
+                              const std::string& failure);
+
+} // namespace trifem::app

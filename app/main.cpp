@@ -8,6 +8,7 @@
 
 #include <CLI/CLI.hpp>
 #include <iostream>
+#include <new>
 
 using namespace trifem;
 
@@ -21,6 +22,9 @@ int guarded(F&& action) {
   } catch (const InputError& e) {
     std::cerr << "error: " << e.what() << '\n';
     return app::kInvalidInput;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "error: out of memory: the model is too large for the memory available\n";
+    return app::kAnalysisFailed;
   } catch (const std::exception& e) {
     std::cerr << "internal error: " << e.what() << '\n';
     return app::kInternalError;

@@ -4,6 +4,7 @@
 #include "model_conditions.hpp"
 #include "model_contact.hpp"
 #include "model_rigid.hpp"
+#include "model_support.hpp"
 #include "trifem/core/error.hpp"
 #include "trifem/material/registry.hpp"
 #include "trifem/mesh/gmsh_reader.hpp"
@@ -204,6 +205,7 @@ std::unique_ptr<Model> build_model(const io::CaseSpec& spec) {
     terms.push_back(std::move(forces));
   dofs::constrain_all(bcs, model->dofs);
   model->dofs.finalize();
+  check_support(spec, *model);
 
   model->problem = std::make_unique<assembly::FeProblem>(
       model->dofs, std::move(bcs), std::move(terms), field_scales(*model), std::move(frames));

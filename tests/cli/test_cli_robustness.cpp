@@ -177,6 +177,22 @@ curve = "ramp"
                               "boundary.prescribed[1].set 'block.all'", "displacement"});
 }
 
+TEST_F(Cli, ABodyWithoutSupportIsAnInputErrorNotANewtonFailure) {
+  // loaded by a pressure, held in z only: its x and y translations are undetermined
+  const auto file = write_file("unsupported.toml", block_case(R"(
+[[boundary.fixed]]
+set = "block.zmin"
+components = ["z"]
+[[loads.pressure]]
+surface = "block.zmax"
+value = 0.01
+curve = "ramp"
+)",
+                                                              "end_time = 1.0\ndt = 0.5"));
+  expect_invalid_input(
+      file, {"unsupported.toml", "body 'block' is not supported in x", "[[boundary.fixed]]"});
+}
+
 TEST_F(Cli, CtrlCEndsTheRunWithAnInterruptedSummaryAndValidResults) {
   const auto file = write_file(
       "long.toml", column_case("divisions = [1, 1, 20]", "end_time = 1e5\ndt = 2.5\ndt_max = 2.5"));

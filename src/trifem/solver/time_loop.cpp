@@ -5,6 +5,8 @@
 #include "trifem/core/interrupt.hpp"
 #include "trifem/core/log.hpp"
 
+#include <new>
+
 namespace trifem::solver {
 namespace {
 
@@ -29,7 +31,13 @@ RunReport run_time_loop(TransientProblem& problem, NewtonSolver& newton, StepCon
     const Real dt = controller.next_step();
     const Real t = controller.time() + dt;
     problem.begin_step(t, dt);
-    NewtonReport report = newton.solve(problem);
+    NewtonReport report;
+    try {
+      report = newton.solve(problem);
+    } catch (const std::bad_alloc&) { // no smaller step needs less memory: stop at once
+      report.status = SolveStatus::Unrecoverable;
+      report.failure_reason = "out of memory (the model is too large for the memory available)";
+    }
     run.iterations += report.iterations;
     if (report.status == SolveStatus::Converged)
       if (std::string why = problem.step_rejection(); !why.empty()) {

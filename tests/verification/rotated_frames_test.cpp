@@ -6,7 +6,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 using namespace trifem;
 
@@ -63,17 +65,34 @@ TEST(RotatedFrames, RotatedConfinedCreepEqualsAxisAlignedColumn) {
   ASSERT_TRUE(plain.run(200.0, 5.0, 5.0).success);
   ASSERT_TRUE(rotated.run(200.0, 5.0, 5.0).success);
   const Vec3 axis = Q * Vec3::UnitZ();
+  const auto displacement = [](const test::MixtureModel& m, Index n) {
+    return Vec3(m.value(m.f.u, n, 0), m.value(m.f.u, n, 1), m.value(m.f.u, n, 2));
+  };
+  // Displacements are compared relative to the largest one of the column (its settlement), never
+  // to a nodal value: near the bonded base u vanishes while the round-off of the solves (and of
+  // the rotated unit coordinates) does not. The two runs differ by about 1e-11 of the settlement
+  // (the round-off of the solves, on every BLAS kernel); a wrong frame or a lost constraint
+  // would differ at order 1 of it.
+  Real u_max = 0.0;
+  for (Index n = 0; n < plain.mesh.num_nodes(); ++n)
+    u_max = std::max(u_max, displacement(plain, n).norm());
+  ASSERT_GT(u_max, 0.0);
+  const Real tolerance = 1e-10 * u_max;
+  Real worst = 0.0;
   for (Index n = 0; n < plain.mesh.num_nodes(); ++n) {
-    Vec3 u_plain, u_rot;
-    for (int k = 0; k < 3; ++k) {
-      u_plain[k] = plain.value(plain.f.u, n, k);
-      u_rot[k] = rotated.value(rotated.f.u, n, k);
-    }
-    EXPECT_NEAR((Q * u_plain - u_rot).norm(), 0.0, 1e-10 * std::abs(u_plain.z()) + 1e-16)
-        << "node " << n;
-    EXPECT_NEAR(u_rot.dot(axis), u_plain.z(), 1e-10 * std::abs(u_plain.z()) + 1e-16);
+    const Vec3 u_plain = displacement(plain, n), u_rot = displacement(rotated, n);
+    worst = std::max(worst, (Q * u_plain - u_rot).norm());
+    EXPECT_LE((Q * u_plain - u_rot).norm(), tolerance) << "node " << n;
+    EXPECT_NEAR(u_rot.dot(axis), u_plain.z(), tolerance) << "node " << n;
   }
-  for (Index c = 0; c < plain.mesh.num_cells(); ++c)
-    EXPECT_NEAR(rotated.value(rotated.f.p, c), plain.value(plain.f.p, c), 1e-10 * kSigma0)
-        << "cell " << c;
+  std::printf("largest |u| %.3e mm; largest |Q u_plain - u_rotated| %.3e mm (%.1e of it)\n", u_max,
+              worst, worst / u_max);
+  // p is compared on the scale of the applied stress (p carries it at early times)
+  Real worst_p = 0.0;
+  for (Index c = 0; c < plain.mesh.num_cells(); ++c) {
+    const Real pr = rotated.value(rotated.f.p, c), pp = plain.value(plain.f.p, c);
+    worst_p = std::max(worst_p, std::abs(pr - pp));
+    EXPECT_NEAR(pr, pp, 1e-10 * kSigma0) << "cell " << c;
+  }
+  std::printf("largest |p_plain - p_rotated| %.1e of the applied stress\n", worst_p / kSigma0);
 }

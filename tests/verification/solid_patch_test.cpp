@@ -56,12 +56,14 @@ void run_patch_test(const std::string& law_type) {
   for (Index e = 0; e < m.solid->num_elements(); ++e) {
     const physics::CellStress s = m.solid->stress(e, m.problem->state());
     EXPECT_LE((s.cauchy - exact).norm(), 1e-10 * exact.norm()) << law_type << " element " << e;
-    EXPECT_NEAR(s.J, F.determinant(), 1e-12);
+    EXPECT_NEAR(s.J, F.determinant(), 1e-12 * F.determinant());
   }
-  // interior nodes follow the homogeneous map
+  // interior nodes follow the homogeneous map, to 1e-12 of the 1 mm block (|u| ~ 0.2 mm; a
+  // non-homogeneous solution would be off by the 0.08 mm distortion of the cells)
+  const Real edge = 1.0;
   for (Index n = 0; n < m.mesh.num_nodes(); ++n) {
     const Vec3 expected = (F - Mat3::Identity()) * m.mesh.node(n);
-    EXPECT_LE((m.displacement(n) - expected).norm(), 1e-12) << "node " << n;
+    EXPECT_LE((m.displacement(n) - expected).norm(), 1e-12 * edge) << "node " << n;
   }
 }
 

@@ -55,7 +55,8 @@ void run_uniaxial(const std::string& law, Real stretch, Uniaxial exact) {
     EXPECT_NEAR(sigma(0, 1), 0.0, 1e-10 * std::abs(exact.sigma));
   }
   const Index corner = m.mesh.num_nodes() - 1; // (2, 1, 1)
-  EXPECT_NEAR(m.displacement(corner).y(), exact.lateral - 1.0, 1e-10);
+  const Real width = 1.0;                      // lateral size: u_y = (lateral - 1) width
+  EXPECT_NEAR(m.displacement(corner).y(), (exact.lateral - 1.0) * width, 1e-10 * width);
 }
 
 } // namespace

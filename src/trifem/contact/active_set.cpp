@@ -8,12 +8,17 @@
 
 namespace trifem::contact {
 
-bool ActiveSet::wanted(Index k, const NodeStatus& s) const {
+NodeContact ActiveSet::wanted(Index k, const NodeStatus& s) const {
+  const auto current = static_cast<NodeContact>(active_[k]);
   if (!s.admissible)
-    return false;
+    return NodeContact::Open;
   if (!initialized_)
-    return s.gap <= settings_.gap_tolerance;
-  return active_[k] ? s.indicator <= settings_.release_threshold : s.indicator < 0;
+    return s.gap <= settings_.gap_tolerance ? NodeContact::Sealed : NodeContact::Open;
+  if (current == NodeContact::Open)
+    return s.indicator < 0 ? NodeContact::Sealed : NodeContact::Open;
+  if (s.indicator <= settings_.release_threshold)
+    return current; // compressive or at most ε_t of tension: stays
+  return current == NodeContact::Sealed && s.wettable ? NodeContact::Wetted : NodeContact::Open;
 }
 
 bool ActiveSet::settled(const std::vector<NodeStatus>& nodes) const {
@@ -33,13 +38,14 @@ Index ActiveSet::update(Real time, const std::vector<NodeStatus>& nodes) {
     time_ = time;
   }
   ++evaluations_;
-  std::vector<Index> wanted_flips;
+  std::vector<std::pair<Index, NodeContact>> wanted_flips;
   Index flips = 0;
   for (Index k = 0; k < static_cast<Index>(nodes.size()); ++k) {
-    if (wanted(k, nodes[k]) == active(k))
+    const NodeContact target = wanted(k, nodes[k]);
+    if (static_cast<char>(target) == active_[k])
       continue;
     if (nodes[k].admissible) {
-      wanted_flips.push_back(k);
+      wanted_flips.emplace_back(k, target);
     } else {
       active_[k] = 0; // lost its projection: always released
       ++flips;
@@ -52,8 +58,8 @@ Index ActiveSet::update(Real time, const std::vector<NodeStatus>& nodes) {
   }
   pending_ = allow || !settings_.update ? 0 : static_cast<Index>(wanted_flips.size());
   if (allow)
-    for (Index k : wanted_flips) {
-      active_[k] = !active_[k];
+    for (const auto& [k, target] : wanted_flips) {
+      active_[k] = static_cast<char>(target);
       ++flips;
     }
   initialized_ = true;

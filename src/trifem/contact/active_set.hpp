@@ -26,13 +26,26 @@ struct NodeStatus {
   bool admissible = false; ///< projects onto the master surface, not beyond its free boundary
   Real gap = 0;            ///< g_k [length]
   Real indicator = 0;      ///< complementarity function, e.g. t_k + c_N g_k [stress]
+  bool wettable = false;   ///< the law has a wetted state (mixtures: see ActiveSet)
+};
+
+/// Contact status of a slave node (the stored flag; `Open` = 0 is inactive).
+enum class NodeContact : char {
+  Open = 0,   ///< separated or not projecting: traction-free (and free-draining for mixtures)
+  Sealed = 1, ///< in contact; for mixtures the interface is sealed (potential and flux continuity)
+  Wetted = 2, ///< in contact, but the interface is wetted by the bath (mixtures: free-draining)
 };
 
 /// The set of active slave nodes. Rules, applied at every system evaluation (Term::prepare):
 ///   * a node that is not admissible is inactive (its row is t_k = 0);
 ///   * first evaluation of the run: active ⇔ admissible and g_k ≤ gap_tolerance (geometry);
-///   * then (primal-dual): an inactive node becomes active if t_k + c_N g_k < 0, an active
-///     node is released if t_k + c_N g_k > ε_t;
+///   * then (primal-dual): an inactive node becomes active (sealed) if t_k + c_N g_k < 0, an
+///     active node is released if t_k + c_N g_k > ε_t. For a wettable node (mixture contact)
+///     the release of a sealed node goes through the wetted state: a sealed interface that
+///     would carry tension lets the bath in while the surfaces still touch (Wetted: gap row,
+///     free-draining potentials); a wetted node is released (Open) when it carries tension as
+///     well. A sealed interface that goes tensile would otherwise chatter: released, it drains
+///     to the bath, swells and penetrates; closed, it pulls (the separation test);
 ///   * after `max_updates` evaluations of a step the set is frozen (only non-admissible nodes
 ///     are still released) until it has *settled*: every active node has |g_k| ≤
 ///     gap_tolerance, i.e. Newton has converged for the frozen set. Then the rule is applied
@@ -51,10 +64,13 @@ public:
   Index update(Real time, const std::vector<NodeStatus>& nodes);
   /// The step converged: the next evaluation starts a new step.
   void commit() { new_step_ = true; }
-  /// Replaces the set (e.g. a restart or a test); marks it initialised.
+  /// Replaces the set (flags: NodeContact values; e.g. a restart or a test); marks it
+  /// initialised.
   void assign(std::vector<char> active);
 
   bool active(Index k) const { return active_[k] != 0; }
+  /// In contact with a wetted (free-draining) interface.
+  bool wetted(Index k) const { return active_[k] == static_cast<char>(NodeContact::Wetted); }
   const std::vector<char>& flags() const { return active_; }
   Index num_active() const;
   bool initialized() const { return initialized_; }
@@ -68,7 +84,7 @@ public:
   Index pending() const { return pending_; }
 
 private:
-  bool wanted(Index k, const NodeStatus& s) const;
+  NodeContact wanted(Index k, const NodeStatus& s) const;
   bool settled(const std::vector<NodeStatus>& nodes) const;
 
   ActiveSetSettings settings_;

@@ -30,6 +30,7 @@ struct SlaveNodeRows {
   Real scale = 1;       ///< c_N > 0 [stress/length]: the complementarity scaling
   Real dt = 0;          ///< step size (for rate-type constraints such as flux continuity)
   Vector multiplier;    ///< λ_k (num_components() values)
+  bool wetted = false;  ///< in contact with a wetted interface (NodeContact::Wetted)
   Index lambda_at = -1; ///< local position of λ_k component 0 (components are contiguous)
   /// Local position of coordinate component 0 of stencil point j (j = 0: the slave node,
   /// 1 + a: master facet node a; -1 when there is no projection).
@@ -59,7 +60,10 @@ public:
   /// Complementarity function of the normal contact, e.g. λ_t + c_N g: the primal-dual active
   /// set activates a node where it is negative (FORMULATION.md §6.5).
   virtual Real indicator(const SlaveNodeRows& node) const = 0;
-  /// Constraint rows (on the λ_k DOFs) of an active node, added to `out`.
+  /// Whether the law distinguishes a wetted from a sealed contact (NodeContact::Wetted).
+  virtual bool wettable() const { return false; }
+  /// Constraint rows (on the λ_k DOFs) of an active node, added to `out` (node.wetted tells
+  /// a wetted from a sealed contact).
   virtual void active_rows(const SlaveNodeRows& node, LocalSystem& out) const = 0;
   /// Rows of an inactive node (separated, or not projecting onto the master surface).
   virtual void inactive_rows(const SlaveNodeRows& node, LocalSystem& out) const = 0;

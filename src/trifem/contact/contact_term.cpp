@@ -66,6 +66,7 @@ ContactTerm::ContactTerm(const mesh::Mesh& mesh, const dofs::DofMap& dofs,
   resolve_defaults();
   committed_active_ = active_;
   project_all(Vector::Zero(dofs.num_dofs()));
+  committed_projected_ = admissible_projections();
   rebuild_stencils();
 }
 
@@ -134,6 +135,13 @@ void ContactTerm::project_all(const Vector& x) {
   }
 }
 
+std::vector<char> ContactTerm::admissible_projections() const {
+  std::vector<char> flags(slave_.num_nodes(), 0);
+  for (Index k = 0; k < slave_.num_nodes(); ++k)
+    flags[k] = slave_proj_[k] && !slave_proj_[k]->on_free_boundary ? 1 : 0;
+  return flags;
+}
+
 void ContactTerm::update_active_set(const physics::EvalState& state) {
   std::vector<NodeStatus> status(slave_.num_nodes());
   for (Index k = 0; k < slave_.num_nodes(); ++k) {
@@ -147,7 +155,7 @@ void ContactTerm::update_active_set(const physics::EvalState& state) {
     node.multiplier.resize(law_->num_components());
     for (int c = 0; c < law_->num_components(); ++c)
       node.multiplier[c] = state.x[multiplier_dof(k, c)];
-    status[k] = {true, pr->gap, law_->indicator(node)};
+    status[k] = {true, pr->gap, law_->indicator(node), law_->wettable()};
   }
   active_.update(state.time, status);
 }
@@ -161,16 +169,19 @@ bool ContactTerm::prepare(const physics::EvalState& state) {
 void ContactTerm::commit(const physics::EvalState& state) {
   active_.commit();
   committed_active_ = active_;
+  committed_projected_ = admissible_projections();
   committed_pressure_.assign(slave_.num_nodes(), 0.0);
   for (Index k = 0; k < slave_.num_nodes(); ++k)
     if (active_.active(k))
       committed_pressure_[k] = std::abs(state.x[multiplier_dof(k, 0)]);
 }
 
-std::string ContactTerm::step_rejection(const physics::EvalState& /*state*/) const {
+std::string ContactTerm::step_rejection(const physics::EvalState& state) const {
   if (active_.pending() > 0)
     return fmt::format("the contact status of {} slave node(s) did not settle within the step",
                        active_.pending());
+  if (std::string why = crossing_rejection(state); !why.empty())
+    return why;
   if (committed_pressure_.empty())
     return {};
   const Real peak = *std::max_element(committed_pressure_.begin(), committed_pressure_.end());
@@ -290,6 +301,7 @@ void ContactTerm::slave_node_rows(Index k, const physics::EvalState& state,
   for (int c = 0; c < law_->num_components(); ++c)
     node.multiplier[c] = state.x[multiplier_dof(k, c)];
   node.lambda_at = out.at(multiplier_dof(k, 0));
+  node.wetted = active_.wetted(k);
   const auto& pr = slave_proj_[k];
   ProjectionDerivatives d;
   if (pr) {

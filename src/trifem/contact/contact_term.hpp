@@ -96,9 +96,12 @@ public:
   void commit(const physics::EvalState& state) override;
   /// Restores the active set of the last commit (a retried step starts from it).
   void reject() override { active_ = committed_active_; }
-  /// Rejects a converged step whose active set has not settled (ActiveSet::pending() > 0) or
-  /// in which a slave node that carried a substantial pressure at the step start (more than
-  /// kReleaseFraction of the peak) slid beyond the master surface: the step is cut back.
+  /// Rejects a converged step whose active set has not settled (ActiveSet::pending() > 0), in
+  /// which a slave node crossed the master surface (tunnelling: it was in front of the master
+  /// surface, or within the search distance behind it, at the step start and ends behind it
+  /// beyond the search distance, where no projection finds it), or in which a slave node that
+  /// carried a substantial pressure at the step start (more than kReleaseFraction of the peak)
+  /// slid beyond the master surface: the step is cut back.
   std::string step_rejection(const physics::EvalState& state) const override;
   /// Fraction of the peak contact pressure above which losing the projection rejects a step.
   static constexpr Real kReleaseFraction = 0.25;
@@ -145,10 +148,23 @@ private:
 
   void resolve_defaults();
   void project_all(const Vector& x);
+  /// Per slave node: 1 if its projection of the last prepare() exists and is admissible.
+  std::vector<char> admissible_projections() const;
   void update_active_set(const physics::EvalState& state);
   bool rebuild_stencils();
   void stencil_of(Kind kind, Index i, std::vector<Index>& dofs) const;
   void add_node_dofs(Index node, bool rows, std::vector<Index>& dofs) const;
+
+  // tunnelling (crossing_check.cpp)
+  /// Closest point of the master surface to p in the state x, without a distance limit.
+  std::optional<Projection> nearest_on_master(const Vec3& p, const Vector& x) const;
+  /// Whether slave node k must be checked for a crossing: it has no admissible projection now
+  /// and had one at the last commit, or some node of the pair moved farther than the search
+  /// distance within the step.
+  bool crossing_candidate(Index k, bool large_motion) const;
+  /// The reason to reject a step from state.x_old to state.x because a slave node crossed the
+  /// master surface within it (empty: none did).
+  std::string crossing_rejection(const physics::EvalState& state) const;
 
   // element kernels (interface_integrals.cpp)
   void slave_facet_work(Index f, const Vector& x, Real dt, LocalSystem& out) const;
@@ -169,8 +185,9 @@ private:
   ActiveSet active_;
   std::vector<std::optional<Projection>> slave_proj_, master_proj_;
   std::vector<std::vector<Index>> stencils_;
-  std::vector<Real> committed_pressure_; ///< |λ_k,0| of active nodes at the step start
-  ActiveSet committed_active_;           ///< the active set at the last commit
+  std::vector<Real> committed_pressure_;  ///< |λ_k,0| of active nodes at the step start
+  ActiveSet committed_active_;            ///< the active set at the last commit
+  std::vector<char> committed_projected_; ///< admissible projection at the last commit
 };
 
 } // namespace trifem::contact

@@ -69,6 +69,10 @@ void MixtureContactLaw::flux_row(const SlaveNodeRows& node, int c, dofs::FieldId
 
 void MixtureContactLaw::active_rows(const SlaveNodeRows& node, LocalSystem& out) const {
   normal_.active_rows(node, out);
+  if (node.wetted) {
+    bath_rows(node, 1, out);
+    return;
+  }
   flux_row(node, 1, f_.w, out);
   if (triphasic()) {
     flux_row(node, 2, f_.j_plus, out);
@@ -77,8 +81,12 @@ void MixtureContactLaw::active_rows(const SlaveNodeRows& node, LocalSystem& out)
 }
 
 void MixtureContactLaw::inactive_rows(const SlaveNodeRows& node, LocalSystem& out) const {
+  bath_rows(node, 0, out);
+}
+
+void MixtureContactLaw::bath_rows(const SlaveNodeRows& node, int first, LocalSystem& out) const {
   const Real w = node.weight / node.scale;
-  for (int c = 0; c < num_components(); ++c) {
+  for (int c = first; c < num_components(); ++c) {
     const Index row = node.lambda_at + c;
     out.r()[row] += w * node.multiplier[c];
     if (out.with_jacobian())

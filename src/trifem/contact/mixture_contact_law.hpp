@@ -27,6 +27,8 @@ struct MixtureContactFields {
 ///   ΔG_w = Δt A_k [ (Σ_a N_a Δw_a - Δw_s)·n + (w^m - w_s)·Δn + (Σ_a N_{a,α} w_a)·n Δξ^α ]
 /// Inactive rows (separated or not projecting): (A_k / c_N) λ_k,c = 0 for every component, i.e.
 /// t = 0 and the bath potentials mū = 0 (free-draining; §6.5).
+/// Wetted rows (in contact, interface wetted by the bath; NodeContact::Wetted): G_u = A_k g_k
+/// and (A_k / c_N) λ_k,c = 0 for c ≥ 1 (free-draining while the surfaces touch).
 /// Indicator of the active set: t_k + c_N g_k (mechanical complementarity only).
 class MixtureContactLaw final : public ContactLaw {
 public:
@@ -38,6 +40,7 @@ public:
   Real work_factor(int c, Real dt) const override { return c == 0 ? 1.0 : -dt; }
   std::vector<dofs::FieldId> constraint_fields() const override;
   Real indicator(const SlaveNodeRows& node) const override;
+  bool wettable() const override { return true; }
   void active_rows(const SlaveNodeRows& node, LocalSystem& out) const override;
   void inactive_rows(const SlaveNodeRows& node, LocalSystem& out) const override;
 
@@ -46,6 +49,8 @@ public:
 private:
   /// G_c = Δt A_k (f^m(ξ_k) - f_s)·n of the flux field F on the λ component c.
   void flux_row(const SlaveNodeRows& node, int c, dofs::FieldId F, LocalSystem& out) const;
+  /// (A_k / c_N) λ_k,c = 0 for the components c ≥ first.
+  void bath_rows(const SlaveNodeRows& node, int first, LocalSystem& out) const;
 
   MixtureContactFields f_;
   FrictionlessLaw normal_;

@@ -4,6 +4,7 @@
 #include "trifem/io/case_reader.hpp"
 
 #include "trifem/core/error.hpp"
+#include "trifem/core/log.hpp"
 #include "trifem/io/toml_table.hpp"
 
 #include <algorithm>
@@ -165,6 +166,8 @@ CaseSpec parse_case(std::string_view text, const std::filesystem::path& file) {
   } catch (const InputError& e) {
     fail(name, e.what());
   }
+  for (const std::string& warning : spec.warnings)
+    log::warn("warning: {}: {}", name, warning);
   return spec;
 }
 

@@ -11,6 +11,10 @@ namespace {
 
 constexpr std::string_view kExplicit = "dynamic-explicit analyses";
 
+/// Most multiplier iterations per step, and most halvings of one step (2^-100 of the step).
+constexpr int kMaxMultiplierIterations = 10000;
+constexpr int kMaxHalvings = 100;
+
 /// [time] keys that only the adaptive quasi-static step control reads.
 constexpr std::string_view kQuasiStaticTimeKeys[] = {"dt_min", "dt_max", "target_iterations",
                                                      "growth", "cutback"};
@@ -63,8 +67,8 @@ void read_explicit_numbers(const Table& t, ExplicitSpec& e) {
   if (t.find("safety_factor"))
     e.safety_factor = t.number("safety_factor", {.range = {0.0, 1.0, true, false}});
   e.stable_step_interval = t.integer("stable_step_interval", 0, e.stable_step_interval);
-  e.max_iterations = t.integer("max_iterations", 1, e.max_iterations);
-  e.max_halvings = t.integer("max_halvings", 0, e.max_halvings);
+  e.max_iterations = t.integer("max_iterations", 1, e.max_iterations, kMaxMultiplierIterations);
+  e.max_halvings = t.integer("max_halvings", 0, e.max_halvings, kMaxHalvings);
   e.factorization_age = t.integer("factorization_age", 1, e.factorization_age);
   e.displacement_tolerance =
       t.number("displacement_tolerance",

@@ -219,7 +219,9 @@ void read_boundary(const Table& root, CaseSpec& spec) {
       fail(t.where(), t.path(), "a bath needs a triphasic material");
     spec.baths.push_back(
         {t.name("surface"),
-         t.number("concentration", {.range = material::Range::positive(), .unit = "mmol/mm^3"}),
+         t.number("concentration", {.range = material::Range::positive(),
+                                    .unit = "mmol/mm^3",
+                                    .plausible = &material::plausible::concentration()}),
          read_curve_reference(t, spec)});
   }
 }
@@ -283,7 +285,11 @@ void read_electrochemistry(const Table& root, CaseSpec& spec) {
   e.R = positive("R", e.R, "mJ/(mmol K)");
   e.T = positive("T", e.T, "K");
   e.faraday = positive("faraday", e.faraday, "C/mmol");
-  e.bath_concentration = positive("bath_concentration", e.bath_concentration, "mmol/mm^3");
+  e.bath_concentration =
+      t->number("bath_concentration", {.range = Range::positive(),
+                                       .fallback = e.bath_concentration,
+                                       .unit = "mmol/mm^3",
+                                       .plausible = &material::plausible::concentration()});
   e.bath_activity = positive("bath_activity", e.bath_activity, "");
   e.bath_osmotic = positive("bath_osmotic", e.bath_osmotic, "");
 }

@@ -41,7 +41,9 @@ SolidSpec read_solid_law(const Table& t, const std::string& type,
   material::ParameterValues values;
   for (const auto& p : *law.parameters)
     if (t.find(p.key) != nullptr)
-      values[p.key] = t.number(p.key, {.range = p.range, .unit = p.unit});
+      values[p.key] = t.number(
+          p.key,
+          {.range = p.range, .unit = p.unit, .plausible = material::parameter_plausibility(p.key)});
   SolidSpec s{law.type, material::validate_parameters(*law.parameters, values, t.path())};
   material::create_law(s.type, s.parameters, t.path()); // the law's own checks, if any
   return s;
@@ -72,7 +74,9 @@ material::ParameterValues read_mixture_values(const Table& t, bool charged) {
       continue;
     values[p.key] = p.key == "fixed_charge_basis"
                         ? t.choice(p.key, bases, std::optional<Real>(), "basis")
-                        : t.number(p.key, {.range = p.range, .unit = p.unit});
+                        : t.number(p.key, {.range = p.range,
+                                           .unit = p.unit,
+                                           .plausible = material::parameter_plausibility(p.key)});
   }
   return values;
 }
@@ -109,7 +113,8 @@ MaterialSpec read_mixture(const Table& t, const std::string& type) {
 
 /// The mass density of the solid-law material `t`: optional, required in explicit analyses.
 std::optional<Real> read_density(const Table& t, const CaseSpec& spec) {
-  const NumberRule rule{.range = Range::positive(), .unit = "t/mm^3"};
+  const NumberRule rule{
+      .range = Range::positive(), .unit = "t/mm^3", .plausible = &material::plausible::density()};
   if (t.find("density"))
     return t.number("density", rule);
   if (spec.is_explicit())
@@ -170,7 +175,9 @@ void read_time(const Table& root, CaseSpec& spec) {
     fail(nullptr, "time", "missing required table [time] (with at least end_time and dt)");
   t->allow({"end_time", "dt", "dt_min", "dt_max", "target_iterations", "growth", "cutback"});
   TimeSpec& s = spec.time; // holds the defaults until overwritten
-  s.end_time = t->number("end_time", {.range = Range::positive(), .unit = "s"});
+  s.end_time = t->number("end_time", {.range = {kMinEndTime, kUnbounded, false, false},
+                                      .unit = "s",
+                                      .hint = "the step control resolves times to 1e-10 s"});
   s.dt = t->number(
       "dt",
       {.range = {0.0, s.end_time, true, false}, .unit = "s", .hint = "at most time.end_time"});
@@ -196,7 +203,7 @@ void read_solver(const Table& root, CaseSpec& spec) {
   static const Options<std::string_view> solvers = {
       {"auto", "auto"}, {"umfpack", "umfpack"}, {"sparselu", "sparselu"}};
   SolverSpec& s = spec.solver;
-  s.max_iterations = t->integer("max_iterations", 1, s.max_iterations);
+  s.max_iterations = t->integer("max_iterations", 1, s.max_iterations, kMaxNewtonIterations);
   s.residual_tolerance = t->number(
       "residual_tolerance", {.range = Range::open(0.0, 1.0), .fallback = s.residual_tolerance});
   s.increment_tolerance = t->number(
@@ -227,7 +234,10 @@ BoxMeshSpec read_box(const Table& t, const CaseSpec& spec) {
       fail(t.find("name"), fmt::format("{} = '{}'", t.path("name"), b.box.name),
            fmt::format("duplicate box name (already used by {})", element_path("mesh.box", i)));
   b.box.origin = t.vec3("origin", {.unit = "mm"}, Vec3::Zero());
-  b.box.size = t.vec3("size", {.range = Range::positive(), .unit = "mm"}, std::nullopt);
+  b.box.size = t.vec3(
+      "size",
+      {.range = Range::positive(), .unit = "mm", .plausible = &material::plausible::length()},
+      std::nullopt);
   b.box.divisions = t.required<std::array<int, 3>>("divisions");
   for (std::size_t d = 0; d < 3; ++d)
     if (b.box.divisions[d] < 1)
@@ -342,7 +352,7 @@ void read_output(const Table& root, CaseSpec& spec) {
 } // namespace
 
 void read_sections(const toml::table& document, CaseSpec& spec) {
-  const Table root(document, "");
+  const Table root(document, "", &spec.warnings);
   root.allow({"title", "mesh", "materials", "curves", "boundary", "loads", "contact", "rigid_body",
               "analysis", "electrochemistry", "time", "solver", "explicit", "output"});
   spec.title = root.get<std::string>("title").value_or("");
@@ -360,6 +370,8 @@ void read_sections(const toml::table& document, CaseSpec& spec) {
   read_solver(root, spec);
   read_explicit(root, spec);
   read_output(root, spec);
+  check_time_limits(root, spec);
+  check_model_size(root, spec);
 }
 
 } // namespace trifem::io::detail

@@ -287,6 +287,9 @@ struct CaseSpec {
   SolverSpec solver;              ///< quasi-static analyses
   ExplicitSpec explicit_dynamics; ///< dynamic-explicit analyses ([explicit])
   OutputSpec output;
+  /// Values far outside the range of soft tissues, most likely in another unit (the reader also
+  /// logs them): "<key> = <value> <unit> is far outside ... (line N)".
+  std::vector<std::string> warnings;
 
   bool is_explicit() const { return analysis.type == AnalysisType::DynamicExplicit; }
 };

@@ -7,6 +7,7 @@
 #include <climits>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <numeric>
 
 namespace trifem::io::detail {
@@ -145,6 +146,11 @@ Real convert(const toml::node& n, std::string_view path, Tag<Real>) {
     wrong_type(n, path, expected(Tag<Real>{}));
   if (!std::isfinite(v))
     fail(&n, path, fmt::format("expected a finite number, got {}", v));
+  if (std::fpclassify(v) == FP_SUBNORMAL)
+    fail(&n, path,
+         fmt::format("expected 0 or a number of magnitude at least {:g} (the smallest normal "
+                     "double), got {}",
+                     std::numeric_limits<Real>::min(), v));
   return v;
 }
 
@@ -246,7 +252,21 @@ Real Table::number(std::string_view key, const NumberRule& rule) const {
     missing(key, fmt::format("a number in {}", range_text(rule.range, rule.unit)));
   const Real v = convert(*n, path(key), Tag<Real>{});
   check_range(n, path(key), v, rule);
+  check_plausible(n, path(key), v, rule);
   return v;
+}
+
+bool Table::check_plausible(const toml::node* n, std::string_view key_path, Real value,
+                            const NumberRule& rule) const {
+  if (rule.plausible == nullptr || warnings_ == nullptr)
+    return true;
+  const std::string why = material::implausibility(*rule.plausible, value, rule.unit);
+  if (why.empty())
+    return true;
+  const auto line = n ? n->source().begin.line : 0;
+  warnings_->push_back(line > 0 ? fmt::format("{} {} (line {})", key_path, why, line)
+                                : fmt::format("{} {}", key_path, why));
+  return false;
 }
 
 Vec3 Table::vec3(std::string_view key, const NumberRule& rule, std::optional<Vec3> fallback) const {
@@ -257,17 +277,22 @@ Vec3 Table::vec3(std::string_view key, const NumberRule& rule, std::optional<Vec
   const toml::array& a = *n->as_array();
   for (std::size_t d = 0; d < 3; ++d)
     check_range(&a[d], element_path(path(key), d), v[static_cast<Eigen::Index>(d)], rule);
+  for (std::size_t d = 0; d < 3; ++d) // one warning at most: the first implausible element
+    if (!check_plausible(&a[d], element_path(path(key), d), v[static_cast<Eigen::Index>(d)], rule))
+      break;
   return v;
 }
 
-int Table::integer(std::string_view key, int min, int fallback) const {
+int Table::integer(std::string_view key, int min, int fallback, int max) const {
   const toml::node* n = find(key);
   if (!n)
     return fallback;
   const int v = convert(*n, path(key), Tag<int>{});
-  if (v < min)
+  if (v < min || v > max)
     fail(n, fmt::format("{} = {}", path(key), v),
-         fmt::format("out of range, expected an integer >= {}", min));
+         max == INT_MAX
+             ? fmt::format("out of range, expected an integer >= {}", min)
+             : fmt::format("out of range, expected an integer >= {} and <= {}", min, max));
   return v;
 }
 
@@ -287,7 +312,7 @@ std::optional<Table> Table::table(std::string_view key) const {
     return std::nullopt;
   if (!n->is_table())
     wrong_type(*n, path(key), fmt::format("a table [{}]", path(key)));
-  return Table(*n->as_table(), path(key));
+  return Table(*n->as_table(), path(key), warnings_);
 }
 
 std::vector<Table> Table::tables(std::string_view key) const {
@@ -300,7 +325,7 @@ std::vector<Table> Table::tables(std::string_view key) const {
   for (std::size_t i = 0; i < a.size(); ++i) {
     if (!a[i].is_table())
       wrong_type(a[i], element_path(path(key), i), "a table");
-    out.emplace_back(*a[i].as_table(), element_path(path(key), i));
+    out.emplace_back(*a[i].as_table(), element_path(path(key), i), warnings_);
   }
   return out;
 }
@@ -310,7 +335,7 @@ std::vector<std::pair<std::string, Table>> Table::named_tables() const {
   for (const auto& [key, node] : *table_) {
     if (!node.is_table())
       wrong_type(node, path(key.str()), fmt::format("a table [{}]", path(key.str())));
-    out.emplace_back(std::string(key.str()), Table(*node.as_table(), path(key.str())));
+    out.emplace_back(std::string(key.str()), Table(*node.as_table(), path(key.str()), warnings_));
   }
   return out;
 }

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <array>
+#include <climits>
 #include <fmt/format.h>
 #include <optional>
 #include <string>
@@ -114,13 +115,18 @@ std::vector<T> convert(const toml::node& n, std::string_view path, Tag<std::vect
 // ---------------------------------------------------------------------------------------------
 // Tables
 
-/// How a number is checked: valid range, default (absent: required), unit and a hint.
+/// How a number is checked: valid range, default (absent: required), unit and a hint; values
+/// outside `plausible` (if set) are kept with a warning (a unit mistake, most likely).
 struct NumberRule {
   Range range{};
   std::optional<Real> fallback{};
   std::string_view unit{};
   std::string_view hint{};
+  const material::Plausibility* plausible = nullptr;
 };
+
+/// Warnings gathered while a case is read (implausible values); each names the key and line.
+using Warnings = std::vector<std::string>;
 
 /// Throws "<path> = <v>: out of range ..." unless `v` is in `rule.range`.
 void check_range(const toml::node* n, std::string_view path, Real v, const NumberRule& rule);
@@ -132,7 +138,9 @@ using Options = std::vector<std::pair<std::string_view, E>>;
 /// A TOML table being read: the table, its key path for messages and typed accessors.
 class Table {
 public:
-  Table(const toml::table& table, std::string path) : table_(&table), path_(std::move(path)) {}
+  /// `warnings` (may be null) receives the warnings of this table and of its sub-tables.
+  Table(const toml::table& table, std::string path, Warnings* warnings = nullptr)
+      : table_(&table), path_(std::move(path)), warnings_(warnings) {}
 
   const std::string& path() const { return path_; }
   std::string path(std::string_view key) const { return join_path(path_, key); }
@@ -179,11 +187,16 @@ public:
   /// A number checked against `rule`.
   Real number(std::string_view key, const NumberRule& rule) const;
 
+  /// Adds a warning (naming `path` and the line of `n`) and returns false if `value` is outside
+  /// `rule.plausible`.
+  bool check_plausible(const toml::node* n, std::string_view key_path, Real value,
+                       const NumberRule& rule) const;
+
   /// Three numbers, each checked against `rule` (rule.fallback is ignored).
   Vec3 vec3(std::string_view key, const NumberRule& rule, std::optional<Vec3> fallback) const;
 
-  /// An integer >= `min`, `fallback` if absent.
-  int integer(std::string_view key, int min, int fallback) const;
+  /// An integer in [min, max], `fallback` if absent.
+  int integer(std::string_view key, int min, int fallback, int max = INT_MAX) const;
 
   /// A non-empty string; "" if absent and not `required`.
   std::string name(std::string_view key, bool required = true) const;
@@ -221,6 +234,7 @@ public:
 private:
   const toml::table* table_;
   std::string path_;
+  Warnings* warnings_;
 };
 
 // ---------------------------------------------------------------------------------------------
@@ -262,8 +276,31 @@ std::vector<Component> read_components(const Table& t);
 // ---------------------------------------------------------------------------------------------
 // Section readers. Each reads one top-level table of `root` (if present) into `spec`.
 
-/// Every section, in dependency order (case_reader_sections.cpp).
+/// Every section, in dependency order (case_reader_sections.cpp); implausible values are
+/// added to spec.warnings.
 void read_sections(const toml::table& document, CaseSpec& spec);
+
+/// Refuses a case whose time settings imply absurd work: more than kMaxSteps steps (end_time
+/// over the largest step) or more than kMaxOutputTimes output times and curve points, which are
+/// all steps the run must land on (case_reader_limits.cpp; after [time], [curves], [output]).
+void check_time_limits(const Table& root, const CaseSpec& spec);
+
+/// Refuses a model of [[mesh.box]] cells whose equations overflow the 32-bit index or whose
+/// estimated memory exceeds the physical memory of the machine (case_reader_limits.cpp; after
+/// the materials and meshes).
+void check_model_size(const Table& root, const CaseSpec& spec);
+
+/// Most steps a run may need: end_time / (largest step) above this is refused.
+inline constexpr Real kMaxSteps = 1e8;
+/// Most times a failed step may be cut back before the run fails.
+inline constexpr Real kMaxCutbacks = 200;
+/// Most Newton iterations per step attempt ([solver] max_iterations).
+inline constexpr int kMaxNewtonIterations = 1000;
+/// Most output times (end_time / output.interval) and must points a run may have.
+inline constexpr Real kMaxOutputTimes = 1e6;
+/// Shortest time.end_time of a quasi-static analysis [s]: its step control resolves times to
+/// 1e-10 s, so a shorter analysis would end before its first step.
+inline constexpr Real kMinEndTime = 1e-8;
 
 /// [[boundary.*]] (case_reader_physics.cpp).
 void read_boundary(const Table& root, CaseSpec& spec);

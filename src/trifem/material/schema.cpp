@@ -26,6 +26,71 @@ std::string known_keys(const std::vector<ParameterSchema>& schema) {
 
 } // namespace
 
+namespace plausible {
+
+// Typical values: cartilage E 0.3-10 MPa (brain 1e-3, bone 2e4), permeability 1e-3 mm^4/(N s)
+// (1e-15 m^4/(N s)), bath 0.15 M = 1.5e-4 mmol/mm^3, fixed charge 0.1-0.3 mEq/mL = 1e-4 to
+// 3e-4 mEq/mm^3, ion diffusivities 5e-4 to 2e-3 mm^2/s (5e-10 to 2e-9 m^2/s), water density
+// 1e-9 t/mm^3.
+const Plausibility& modulus() {
+  static const Plausibility p{1e-5, 1e5, {{1e-6, "Pa"}, {1e-3, "kPa"}, {1e3, "GPa"}}};
+  return p;
+}
+const Plausibility& permeability() {
+  static const Plausibility p{1e-7, 1e2, {{1e12, "m^4/(N s)"}}};
+  return p;
+}
+const Plausibility& concentration() {
+  static const Plausibility p{1e-7, 1e-2, {{1e-3, "M (mol/L)"}, {1e-6, "mM (mmol/L)"}}};
+  return p;
+}
+const Plausibility& fixed_charge() {
+  static const Plausibility p{1e-7, 1e-2, {{1e-3, "mEq/mL"}, {1e-6, "mEq/L"}}};
+  return p;
+}
+const Plausibility& diffusivity() {
+  static const Plausibility p{1e-7, 1e-1, {{1e6, "m^2/s"}, {1e2, "cm^2/s"}}};
+  return p;
+}
+const Plausibility& length() {
+  static const Plausibility p{1e-4, 1e4, {}}; // 1 mm written in m or um is still plausible
+  return p;
+}
+const Plausibility& density() {
+  static const Plausibility p{1e-11, 1e-7, {{1e-12, "kg/m^3"}, {1e-9, "g/cm^3"}}};
+  return p;
+}
+
+} // namespace plausible
+
+const Plausibility* parameter_plausibility(std::string_view key) {
+  static const std::map<std::string_view, const Plausibility*> table = {
+      {"E", &plausible::modulus()},
+      {"permeability", &plausible::permeability()},
+      {"fixed_charge", &plausible::fixed_charge()},
+      {"d_plus", &plausible::diffusivity()},
+      {"d_minus", &plausible::diffusivity()},
+  };
+  const auto it = table.find(key);
+  return it == table.end() ? nullptr : it->second;
+}
+
+std::string implausibility(const Plausibility& p, Real value, std::string_view unit) {
+  const Real size = std::abs(value);
+  if (size == 0.0 || (size >= p.lo && size <= p.hi))
+    return {};
+  std::string text = fmt::format("= {:g} {} is far outside the range of soft tissues ({:g} to {:g} "
+                                 "{})",
+                                 value, unit, p.lo, p.hi, unit);
+  for (const UnitSlip& slip : p.slips) {
+    const Real meant = size * slip.factor;
+    if (meant >= p.lo && meant <= p.hi)
+      return text +
+             fmt::format("; if it is in {}, write {:g}", slip.unit, value < 0 ? -meant : meant);
+  }
+  return text;
+}
+
 bool Range::contains(Real v) const {
   if (!std::isfinite(v))
     return false;

@@ -7,6 +7,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace trifem::material {
@@ -38,6 +39,43 @@ struct ParameterSchema {
   Range range;                       ///< valid values
   std::optional<Real> default_value; ///< absent: required
 };
+
+/// A unit in which values of a quantity are often written by mistake, and the factor that
+/// converts a value in that unit to the unit of the key (0.15 M = 0.15 x 1e-3 mmol/mm^3).
+struct UnitSlip {
+  Real factor;
+  std::string unit;
+};
+
+/// The magnitudes a quantity takes in soft tissues, widened by one to two orders of magnitude on
+/// each side: a value outside was almost surely written in another unit. Such a value is a
+/// warning, never an error (the case may model something else).
+struct Plausibility {
+  Real lo;                     ///< smallest plausible magnitude, in the key's unit
+  Real hi;                     ///< largest plausible magnitude
+  std::vector<UnitSlip> slips; ///< likely mistakes, tried in order for a suggestion
+};
+
+/// Plausible magnitudes of the quantities of a case (mm-N-s-mmol units).
+namespace plausible {
+const Plausibility& modulus();       ///< [MPa]: Young's moduli of soft tissues to bone
+const Plausibility& permeability();  ///< [mm^4/(N s)]: hydraulic permeability
+const Plausibility& concentration(); ///< [mmol/mm^3]: NaCl concentration of a bath
+const Plausibility& fixed_charge();  ///< [mEq/mm^3]: fixed charge density (0 is uncharged)
+const Plausibility& diffusivity();   ///< [mm^2/s]: ion diffusivity
+const Plausibility& length();        ///< [mm]: size of a body
+const Plausibility& density();       ///< [t/mm^3]: mass density
+} // namespace plausible
+
+/// The plausibility of a material parameter by its key (E, permeability, fixed_charge, d_plus,
+/// d_minus), or null if the key's values are not checked.
+const Plausibility* parameter_plausibility(std::string_view key);
+
+/// "" if `value` is 0 or its magnitude lies within `p`; otherwise a warning text (after the key)
+/// saying so in `unit` and, if one of the slips turns it into a plausible value, what was
+/// probably meant, e.g. "= 0.15 mmol/mm^3 is far outside the range of soft tissues (1e-07 to
+/// 0.01 mmol/mm^3); if it is in M (mol/L), write 0.00015".
+std::string implausibility(const Plausibility& p, Real value, std::string_view unit);
 
 /// Parameter values by key, as read from a case file.
 using ParameterValues = std::map<std::string, Real>;

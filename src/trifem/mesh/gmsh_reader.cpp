@@ -158,42 +158,43 @@ const ElementType* find_element_type(int type) {
   return nullptr;
 }
 
-/// Maps Gmsh node tags to dense indices: a vector for tags up to about twice the node count,
-/// a hash map for larger ones.
+/// Maps Gmsh node tags to dense indices: a vector for tags up to about twice the number of nodes
+/// stored so far, a hash map for larger ones. The vector grows with the nodes actually read, not
+/// with the count a file declares, so a wrong count or a huge tag cannot exhaust the memory.
 class NodeMap {
 public:
-  /// Clears the map and sizes the dense range for `num_nodes` nodes.
-  void reset(Tag num_nodes) {
+  /// Clears the map.
+  void reset() {
     dense_.clear();
     sparse_.clear();
-    limit_ = 2 * num_nodes + 1024;
+    size_ = 0;
   }
 
   /// Stores tag -> index; false if the tag is already present. Requires tag > 0.
   bool insert(Tag tag, Index index) {
-    if (tag >= limit_)
+    if (find(tag) >= 0)
+      return false;
+    ++size_;
+    const Tag limit = 2 * size_ + 1024;
+    if (tag >= limit)
       return sparse_.emplace(tag, index).second;
     if (tag >= std::ssize(dense_))
       dense_.resize(
-          static_cast<std::size_t>(std::min(limit_, std::max(tag + 1, 2 * std::ssize(dense_)))),
-          -1);
-    Index& slot = dense_[static_cast<std::size_t>(tag)];
-    if (slot >= 0)
-      return false;
-    slot = index;
+          static_cast<std::size_t>(std::min(limit, std::max(tag + 1, 2 * std::ssize(dense_)))), -1);
+    dense_[static_cast<std::size_t>(tag)] = index;
     return true;
   }
 
   /// Index of a tag, -1 if absent.
   Index find(Tag tag) const {
-    if (tag >= 0 && tag < std::ssize(dense_))
+    if (tag >= 0 && tag < std::ssize(dense_) && dense_[static_cast<std::size_t>(tag)] >= 0)
       return dense_[static_cast<std::size_t>(tag)];
     const auto it = sparse_.find(tag);
     return it == sparse_.end() ? -1 : it->second;
   }
 
 private:
-  Tag limit_ = 1024;
+  Tag size_ = 0; ///< tags stored
   std::vector<Index> dense_;
   std::unordered_map<Tag, Index> sparse_;
 };
@@ -363,7 +364,7 @@ void read_nodes_v4(LineReader& in, GmshData& d) {
   const Tag num_nodes = read_count(in, "number of nodes");
   in.number<Tag>("minimum node tag");
   in.number<Tag>("maximum node tag");
-  d.node_map.reset(num_nodes);
+  d.node_map.reset();
   Tag total = 0;
   for (Tag b = 0; b < num_blocks; ++b)
     total += read_node_block_v4(in, d, num_nodes - total);
@@ -375,7 +376,7 @@ void read_nodes_v4(LineReader& in, GmshData& d) {
 void read_nodes_v2(LineReader& in, GmshData& d) {
   in.require_line();
   const Tag num_nodes = read_count(in, "number of nodes");
-  d.node_map.reset(num_nodes);
+  d.node_map.reset();
   for (Tag i = 0; i < num_nodes; ++i) {
     in.require_line();
     add_node_tag(in, d, in.number<Tag>("node tag"), d.mesh.num_nodes());

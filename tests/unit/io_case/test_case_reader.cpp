@@ -865,3 +865,141 @@ TEST(CaseReader, DocumentedTriphasicExampleParses) {
   EXPECT_EQ(c.fixed.size(), 9u); // 6 fixed + 2 impermeable + 1 bonded
   EXPECT_EQ(c.prescribed.size(), 1u);
 }
+
+// ---------------------------------------------------------------------------------------------
+// Limits on the work a case implies (steps, output times, model size), denormal numbers
+
+const std::vector<BadCase> kLimitCases = {
+    {"output_interval_too_small",
+     kBase + "[output]\ninterval = 1e-300\n",
+     {"output.interval = 1e-300: time.end_time / output.interval = 1e+300 output times, more "
+      "than the 1e+06 allowed",
+      "(line 19)"}},
+    {"end_time_too_long_for_the_interval",
+     replaced("end_time = 1.0\ndt = 0.1", "end_time = 1e7\ndt = 0.1\ndt_max = 1e6") +
+         "[output]\ninterval = 1.0\n",
+     {"output.interval = 1: time.end_time / output.interval = 1e+07 output times"}},
+    {"denormal_end_time_and_dt",
+     replaced("end_time = 1.0\ndt = 0.1", "end_time = 1e-320\ndt = 1e-320"),
+     {"time.end_time: expected 0 or a number of magnitude at least 2.22507e-308 (the smallest "
+      "normal double), got 1e-320 (line 16)"}},
+    {"denormal_modulus",
+     replaced("E = 1.0", "E = 4.9e-324"),
+     {"materials.soft.E: expected 0 or a number of magnitude at least"}},
+    {"end_time_below_the_time_resolution",
+     replaced("end_time = 1.0\ndt = 0.1", "end_time = 1e-11\ndt = 1e-11"),
+     {"time.end_time = 1e-11: out of range, expected a value in [1e-08, inf) s (the step control "
+      "resolves times to 1e-10 s)"}},
+    {"too_many_steps",
+     replaced("dt = 0.1", "dt = 1e-301"),
+     {"time.end_time = 1: with time.dt = 1e-301 s the run needs at least 1e+301 steps, more than "
+      "the 1e+08 allowed"}},
+    {"too_many_steps_with_slow_growth",
+     replaced("dt = 0.1", "dt = 1e-300\ndt_max = 1.0\ngrowth = 1.0000001"),
+     {"time.end_time = 1: with time.dt = 1e-300 s, time.dt_max = 1 s the run needs at least",
+      "steps, more than the 1e+08 allowed"}},
+    {"too_many_cutbacks",
+     replaced("dt = 0.1", "dt = 0.1\ncutback = 0.999999"),
+     {"time.cutback = 0.999999: a failed step would be cut back 1.38e+07 times",
+      "more than the 200 allowed"}},
+    {"too_many_newton_iterations",
+     kBase + "[solver]\nmax_iterations = 2147483647\n",
+     {"solver.max_iterations = 2147483647: out of range, expected an integer >= 1 and <= 1000"}},
+    {"too_many_equations",
+     replaced("divisions = [2, 2, 2]", "divisions = [1000, 1000, 1000]"),
+     {"mesh.box[1].divisions: the boxes make a model of 1.003e+09 nodes and 1e+09 cells, about "
+      "3.009e+09 equations, more than the 2147483647 a model can have (line 5)"}},
+    {"model_larger_than_the_memory",
+     replaced("divisions = [2, 2, 2]", "divisions = [600, 600, 600]"),
+     {"mesh.box[1].divisions: the boxes make a model of 2.171e+08 nodes", "a run needs at least",
+      "GB of memory", "of this machine (line 5)"}},
+    {"triphasic_model_larger_than_the_memory",
+     replaced_in(kBase + kCartilage, "divisions = [2, 2, 2]\nmaterial = \"soft\"",
+                 "divisions = [300, 300, 300]\nmaterial = \"cart\""),
+     {"2.727e+07 nodes and 2.7e+07 cells, about 3.813e+08 equations; a run needs at least"}},
+};
+
+INSTANTIATE_TEST_SUITE_P(Limits, BadInput, testing::ValuesIn(kLimitCases),
+                         [](const testing::TestParamInfo<BadCase>& info) {
+                           return info.param.name;
+                         });
+
+TEST(CaseReader, LongRunsWithinTheLimitsAreAccepted) {
+  const CaseSpec c =
+      parse_case(replaced("end_time = 1.0\ndt = 0.1", "end_time = 1e6\ndt = 1e-6\ndt_max = 100.0") +
+                     "[output]\ninterval = 10.0\n",
+                 kMemoryFile);
+  EXPECT_DOUBLE_EQ(c.time.end_time, 1e6);
+  EXPECT_DOUBLE_EQ(c.output.interval, 10.0);
+  const CaseSpec zero = parse_case(replaced("E = 1.0", "E = 1.0\nnu = 0"), kMemoryFile);
+  EXPECT_EQ(zero.materials.at("soft").parameters.at("nu"), 0.0); // 0 is not a denormal
+}
+
+// ---------------------------------------------------------------------------------------------
+// Implausible values: a warning naming the key, its unit and the value probably meant
+
+/// The warnings of reading `text` (which must be valid).
+std::vector<std::string> warnings_of(const std::string& text) {
+  return parse_case(text, kMemoryFile).warnings;
+}
+
+/// Expects exactly one warning, containing every fragment.
+void expect_one_warning(const std::string& text, const std::vector<std::string>& fragments) {
+  const std::vector<std::string> w = warnings_of(text);
+  ASSERT_EQ(w.size(), 1u) << testing::PrintToString(w);
+  for (const auto& fragment : fragments)
+    EXPECT_NE(w[0].find(fragment), std::string::npos) << "'" << fragment << "' not in: " << w[0];
+}
+
+TEST(CaseReaderWarnings, MolarBathConcentration) {
+  expect_one_warning(kBase + kCartilage + "[electrochemistry]\nbath_concentration = 0.15\n",
+                     {"electrochemistry.bath_concentration = 0.15 mmol/mm^3 is far outside the "
+                      "range of soft tissues (1e-07 to 0.01 mmol/mm^3); if it is in M (mol/L), "
+                      "write 0.00015 (line 31)"});
+}
+
+TEST(CaseReaderWarnings, MillimolarBathOfASurface) {
+  expect_one_warning(
+      kBase + kCartilage + "[[boundary.bath]]\nsurface = \"block.xmax\"\nconcentration = 150\n",
+      {"boundary.bath[1].concentration = 150 mmol/mm^3", "if it is in mM (mmol/L), write "
+                                                         "0.00015"});
+}
+
+TEST(CaseReaderWarnings, MixtureParametersInOtherUnits) {
+  expect_one_warning(cartilage_with("fixed_charge = 2e-4", "fixed_charge = 0.2"),
+                     {"materials.cart.fixed_charge = 0.2 mEq/mm^3", "in mEq/mL, write 0.0002"});
+  expect_one_warning(
+      cartilage_with("permeability = 1e-3", "permeability = 1e-15"),
+      {"materials.cart.permeability = 1e-15 mm^4/(N s)", "in m^4/(N s), write 0.001"});
+  expect_one_warning(cartilage_with("d_plus = 5e-4", "d_plus = 5e-10"),
+                     {"materials.cart.d_plus = 5e-10 mm^2/s", "in m^2/s, write 0.0005"});
+}
+
+TEST(CaseReaderWarnings, ModulusInPascalAndSizeInMetres) {
+  expect_one_warning(replaced("E = 1.0", "E = 300000"),
+                     {"materials.soft.E = 300000 MPa", "if it is in Pa, write 0.3 (line 10)"});
+  expect_one_warning(cartilage_with("[materials.cart.solid]\ntype = \"neo-hookean\"\nE = 1.0",
+                                    "[materials.cart.solid]\ntype = \"neo-hookean\"\nE = 1e-7"),
+                     {"materials.cart.solid.E = 1e-07 MPa"});
+  expect_one_warning(replaced("size = [1, 1, 1]", "size = [1, 2e5, 1]"),
+                     {"mesh.box[1].size[2] = 200000 mm is far outside the range of soft tissues "
+                      "(0.0001 to 10000 mm) (line 4)"});
+}
+
+TEST(CaseReaderWarnings, PlausibleValuesGiveNoWarning) {
+  EXPECT_TRUE(warnings_of(kBase + kCartilage + kGel).empty());
+  EXPECT_TRUE(warnings_of(cartilage_with("fixed_charge = 2e-4", "fixed_charge = 0")).empty());
+  for (const auto& dir : fs::directory_iterator(fs::path(TRIFEM_SOURCE_DIR) / "examples")) {
+    if (!dir.is_directory())
+      continue;
+    for (const auto& file : fs::directory_iterator(dir.path())) {
+      if (file.path().extension() == ".toml") {
+        EXPECT_TRUE(read_case(file.path()).warnings.empty()) << file.path();
+      }
+    }
+  }
+  EXPECT_TRUE(
+      parse_case(documented_example("Complete annotated example"), kInputDoc).warnings.empty());
+  EXPECT_TRUE(
+      parse_case(documented_example("Complete triphasic example"), kInputDoc).warnings.empty());
+}

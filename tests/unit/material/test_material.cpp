@@ -32,7 +32,8 @@ material::ParameterValues params(Real E, Real nu) {
 TEST(MaterialRegistry, EveryLawHasZeroStressAtIdentity) {
   for (const auto& law : material::registered_laws()) {
     auto m = law.make(material::validate_parameters(*law.parameters, params(2.0, 0.3), "m"));
-    EXPECT_LT(m->stress(Mat3::Identity()).norm(), 1e-14) << law.type;
+    const Real E = 2.0; // relative to the modulus (the stress is exactly 0 at F = I)
+    EXPECT_LT(m->stress(Mat3::Identity()).norm(), 5e-15 * E) << law.type;
   }
 }
 
@@ -91,9 +92,10 @@ TEST(SaintVenantKirchhoff, UniaxialStretchMatchesClosedForm) {
     const Mat3 S = m->stress(F.transpose() * F);
     // S11 = E (l^2 - 1)/2, Cauchy sigma11 = l S11 (J = l)
     const Real S11 = E * (stretch * stretch - 1.0) / 2.0;
-    EXPECT_NEAR(S(0, 0), S11, 1e-15);
-    EXPECT_NEAR(S(1, 1), 0.0, 1e-15);
-    EXPECT_NEAR(kinematics::cauchy_from_pk2(F, S)(0, 0), stretch * S11, 1e-15);
+    // relative to the modulus E (S22 vanishes, S11 is of order E)
+    EXPECT_NEAR(S(0, 0), S11, 3e-15 * E);
+    EXPECT_NEAR(S(1, 1), 0.0, 3e-15 * E);
+    EXPECT_NEAR(kinematics::cauchy_from_pk2(F, S)(0, 0), stretch * S11, 3e-15 * E);
   }
 }
 
@@ -112,8 +114,9 @@ TEST(NeoHookean, UniaxialStretchMatchesClosedForm) {
     const Real J = l * t * t;
     const Real expected = (mu * (l * l - 1) + lambda * std::log(J)) / J;
     EXPECT_NEAR(sigma(0, 0), expected, 1e-12 * std::abs(expected));
-    EXPECT_NEAR(sigma(1, 1), 0.0, 1e-12);
-    EXPECT_NEAR(sigma(2, 2), 0.0, 1e-12);
+    // zero lateral stress, relative to the modulus (t is a Newton root to round-off)
+    EXPECT_NEAR(sigma(1, 1), 0.0, 1e-12 * E);
+    EXPECT_NEAR(sigma(2, 2), 0.0, 1e-12 * E);
   }
 }
 

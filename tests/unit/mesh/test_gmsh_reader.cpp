@@ -6,7 +6,10 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/resource.h>
+
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 namespace {
@@ -20,6 +23,28 @@ using trifem::mesh::read_gmsh;
 
 std::filesystem::path data(const std::string& name) {
   return std::filesystem::path(TRIFEM_TEST_DATA_DIR) / name;
+}
+
+/// Writes `text` to a file of the temporary directory and returns its path.
+std::filesystem::path temp_file(const std::string& name, const std::string& text) {
+  const auto file = std::filesystem::temp_directory_path() / name;
+  std::ofstream(file) << text;
+  return file;
+}
+
+/// The content of two_hex_v41.msh with `from` replaced by `to` (first occurrence).
+std::string two_hex_v41_with(const std::string& from, const std::string& to) {
+  std::ifstream in(data("two_hex_v41.msh"));
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  text.replace(text.find(from), from.size(), to);
+  return text;
+}
+
+/// Peak resident memory of this process [kB].
+long peak_memory_kb() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return usage.ru_maxrss;
 }
 
 /// Message of the InputError thrown by read_gmsh(file), or "" if none is thrown.
@@ -179,6 +204,47 @@ TEST(GmshReaderErrors, TetrahedronIsUnsupported) {
 
 TEST(GmshReaderErrors, TriangleIsUnsupported) {
   expect_error("triangle.msh", 17, "unsupported element type 2 (triangle3)");
+}
+
+// A count of 2e9 nodes declared for 12 and a tag of 1e9 used to size a table of 1e9 entries
+// (4 GB) before the count was found wrong.
+TEST(GmshReaderErrors, WrongNodeCountAndHugeTagDoNotExhaustMemory) {
+  const std::string text = two_hex_v41_with("\n5000000\n", "\n1000000000\n");
+  const std::string header = "2 12 1 5000000";
+  std::string wrong = text;
+  wrong.replace(wrong.find(header), header.size(), "2 2000000000 1 5000000");
+  const auto file = temp_file("trifem_gmsh_wrong_count.msh", wrong);
+  const long before = peak_memory_kb();
+  try {
+    read_gmsh(file);
+    ADD_FAILURE() << "expected an error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("$Nodes declares 2000000000 nodes but its blocks hold 12"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_LT(peak_memory_kb() - before, 100'000) << "the node tags took more than 100 MB";
+  std::filesystem::remove(file);
+}
+
+// A tag first stored among the large (hashed) tags is still found as a duplicate once the dense
+// table has grown past it.
+TEST(GmshReaderErrors, DuplicateTagAcrossTheDenseAndHashedRanges) {
+  std::string text = "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n601\n1100 0 0 0\n";
+  for (int tag = 1; tag <= 599; ++tag)
+    text += std::to_string(tag) + " " + std::to_string(tag) + " 0 0\n";
+  text += "1100 1 1 1\n$EndNodes\n";
+  const auto file = temp_file("trifem_gmsh_duplicate_tag.msh", text);
+  try {
+    read_gmsh(file);
+    ADD_FAILURE() << "expected an error";
+  } catch (const InputError& e) {
+    const std::string prefix = file.string() + ":606: ";
+    EXPECT_EQ(std::string(e.what()).rfind(prefix, 0), 0u) << e.what();
+    EXPECT_NE(std::string(e.what()).find("node tag 1100 is defined twice"), std::string::npos)
+        << e.what();
+  }
+  std::filesystem::remove(file);
 }
 
 } // namespace

@@ -70,9 +70,12 @@ Vec3 corner_stretch(const ExplicitSolver& solver, const Vec3& origin) {
 
 TEST(ExplicitMaterials, LumpedMassUsesTheDensityOfEachCell) {
   const ExplicitModel model = two_materials(0.1, 3.0);
-  EXPECT_NEAR(model.mass().sum() / 3.0, 1.0 * 1.0 + 3.0 * 1.0, 1e-13); // Σ ρ V
-  EXPECT_NEAR(model.mass()[0], 1.0 * 0.125 / 8.0, 1e-15);              // corner of a: ρ V_cell / 8
-  EXPECT_NEAR(model.mass()[3 * 27], 3.0 * 0.125 / 8.0, 1e-15);         // first node of b
+  // relative to each exact mass: sums of positive quadrature terms, a few ulp each
+  const Real total = 1.0 * 1.0 + 3.0 * 1.0, corner_a = 1.0 * 0.125 / 8.0,
+             first_b = 3.0 * 0.125 / 8.0;
+  EXPECT_NEAR(model.mass().sum() / 3.0, total, 2.5e-14 * total); // Σ ρ V
+  EXPECT_NEAR(model.mass()[0], corner_a, 5e-14 * corner_a);      // corner of a: ρ V_cell / 8
+  EXPECT_NEAR(model.mass()[3 * 27], first_b, 2e-14 * first_b);   // first node of b
   EXPECT_EQ(model.material_of(0), 0);
   EXPECT_EQ(model.material_of(15), 1);
   EXPECT_EQ(model.law(15).shear_modulus(), 3.0);

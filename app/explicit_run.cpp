@@ -118,9 +118,26 @@ void log_time_step(const ed::ExplicitSolver& solver, const io::CaseSpec& spec) {
               files);
 }
 
+/// Refuses a run whose steps, once the stable step is known, exceed io::kMaxSteps (the reader
+/// checks this only for a requested time.dt).
+void check_step_count(const io::CaseSpec& spec, const ed::TimeStepInfo& t) {
+  const double steps = spec.time.end_time / t.used;
+  if (steps <= io::kMaxSteps)
+    return;
+  throw InputError(fmt::format(
+      "time.end_time = {:.6g} s: with the {} of {:.6g} s the run needs {:.3g} steps, more than "
+      "the {:.0e} allowed (shorten time.end_time; a coarser mesh allows longer steps)",
+      spec.time.end_time, t.reduced || t.requested <= 0.0 ? "stability estimate" : "time.dt",
+      t.used, steps, io::kMaxSteps));
+}
+
 /// The solver (it estimates the stable step); InputErrors prefixed with the case file.
 std::unique_ptr<ed::ExplicitSolver> make_solver(const io::CaseSpec& spec, const ExplicitCase& c) {
-  return for_case(spec, [&] { return std::make_unique<ed::ExplicitSolver>(*c.model, c.settings); });
+  return for_case(spec, [&] {
+    auto solver = std::make_unique<ed::ExplicitSolver>(*c.model, c.settings);
+    check_step_count(spec, solver->time_step_info());
+    return solver;
+  });
 }
 
 /// Steps to every target time in turn; VTU files at the output times (every step if
@@ -200,11 +217,12 @@ nlohmann::json summary(const io::CaseSpec& spec, const ExplicitCase& c,
 int run_explicit_case(const io::CaseSpec& spec, const std::filesystem::path& output_dir) {
   const auto start = Clock::now();
   const ExplicitCase c = for_case(spec, [&] { return build_explicit_case(spec); });
+  // before the output directory: an invalid case creates no output
+  const std::unique_ptr<ed::ExplicitSolver> solver = make_solver(spec, c);
   start_output_directory(output_dir, spec);
   ExplicitOutput output(c, spec.output, output_dir);
   log::add_file((output_dir / "run.log").string());
   log_model(spec, c);
-  const std::unique_ptr<ed::ExplicitSolver> solver = make_solver(spec, c);
   log_time_step(*solver, spec);
   output.write_initial(*solver);
 

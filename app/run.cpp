@@ -127,6 +127,16 @@ std::unique_ptr<Model> build_model_for(const io::CaseSpec& spec) {
   }
 }
 
+/// The linear solver of the case; InputErrors (unknown or unused PETSc options) prefixed with
+/// the case file.
+std::unique_ptr<linalg::LinearSolver> linear_solver_for(const io::CaseSpec& spec) {
+  try {
+    return linalg::make_linear_solver(spec.solver.linear_solver, spec.solver.petsc_options);
+  } catch (const InputError& e) {
+    throw InputError(fmt::format("{}: {}", spec.file.string(), e.what()));
+  }
+}
+
 /// The sparse direct solver, and for "auto" the backend it takes for this many equations.
 void log_linear_solver(const std::string& name, Index equations) {
   if (name != "auto")
@@ -225,13 +235,13 @@ int run_case(const io::CaseSpec& spec, const std::filesystem::path& output_dir) 
     return run_explicit_case(spec, output_dir);
   const auto start = Clock::now();
   std::unique_ptr<Model> model = build_model_for(spec);
+  std::unique_ptr<linalg::LinearSolver> linear_solver = linear_solver_for(spec);
   start_output_directory(output_dir, spec);
   OutputWriter output(*model, spec.output, output_dir);
   log::add_file((output_dir / "run.log").string());
   log_model(spec, *model);
 
-  solver::NewtonSolver newton(newton_settings(spec.solver),
-                              linalg::make_linear_solver(spec.solver.linear_solver));
+  solver::NewtonSolver newton(newton_settings(spec.solver), std::move(linear_solver));
   log_linear_solver(spec.solver.linear_solver, model->problem->num_equations());
   solver::StepController controller(step_settings(spec));
   solver::RunReport run;
@@ -276,6 +286,7 @@ int check_case(const io::CaseSpec& spec) {
   if (spec.is_explicit())
     return check_explicit_case(spec);
   std::unique_ptr<Model> model = build_model_for(spec);
+  linear_solver_for(spec); // unknown or unused PETSc options
   log_model(spec, *model);
   log::info("check passed: the case is valid");
   return kSuccess;

@@ -18,6 +18,14 @@ target_include_directories(trifem_umfpack SYSTEM INTERFACE ${UMFPACK_INCLUDE_DIR
 target_link_libraries(trifem_umfpack INTERFACE ${UMFPACK_LIBRARY} ${AMD_LIBRARY}
                       ${SUITESPARSECONFIG_LIBRARY})
 
+# PETSc (MUMPS, hypre, PT-Scotch, SuperLU_dist) over OpenMPI: Debian's petsc-dev.
+find_package(PkgConfig REQUIRED)
+pkg_check_modules(PETSC REQUIRED IMPORTED_TARGET PETSc>=3.18)
+set(MPI_CXX_SKIP_MPICXX ON) # the C API only, not the deprecated C++ bindings
+find_package(MPI REQUIRED COMPONENTS CXX)
+add_library(trifem_petsc INTERFACE)
+target_link_libraries(trifem_petsc INTERFACE PkgConfig::PETSC MPI::MPI_CXX)
+
 if(TRIFEM_BUILD_TESTS)
   find_package(GTest REQUIRED)
 endif()

@@ -10,7 +10,7 @@ set title "Confined triphasic column: total axial stress on the platen (area 1 m
 set xlabel "time [s]"
 set ylabel "total stress [MPa]"
 plot "history.csv" using 1:(column("column.zmax.Rz [N]")) with lines lw 2 title "trifem (reaction / area)", \
-     ref using 1:2 with points pt 7 ps 1.3 title "reference (FORMULATION V5)"
+     ref using 1:2 with points pt 7 ps 1.3 title "reference solution (paper §4.1)"
 set output "confined_column_outflow.png"
 set title "Water squeezed out through the porous platen"
 set ylabel "water outflow [mm^3/s]"

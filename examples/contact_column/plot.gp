@@ -12,4 +12,4 @@ set xrange [0:200]
 set ylabel "stress [MPa]"
 plot "history.csv" using 1:(column("upper.zmax.Rz [N]")) with lines lw 2 title "platen stress (contact model)", \
      "history.csv" every ::1 using 1:(-column("contact1.Fz [N]")) with lines dt 2 lw 2 title "contact pressure (interface force on the upper body, sign flipped)", \
-     ref using 1:2 with points pt 7 ps 1.3 title "whole-model reference (FORMULATION V5)"
+     ref using 1:2 with points pt 7 ps 1.3 title "whole-model reference (paper §4.1)"

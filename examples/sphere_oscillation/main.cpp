@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Radial oscillation of a thick nearly incompressible neo-Hookean sphere under a step internal
 // pressure (README.md): explicit multiplier scheme on an octant, compared with the exact
-// one-degree-of-freedom ODE of VERIFICATION.md §7 d. Writes history.csv, reference.csv and
-// plot.gp into the output folder and, with --plot, runs gnuplot on it.
+// one-degree-of-freedom ODE of docs/theory/reference-solutions.md §R8.4. Writes history.csv,
+// reference.csv and plot.gp into the output folder and, with --plot, runs gnuplot on it.
 #include "exact_sphere.hpp"
 
 #include "trifem/core/log.hpp"

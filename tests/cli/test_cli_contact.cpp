@@ -334,6 +334,16 @@ TEST_F(ContactCli, SameMasterAndSlaveSurfaceIsRejected) {
   expect_invalid_input(file, {"contact[1].slave", "'upper.zmin' is also the master surface"});
 }
 
+TEST_F(ContactCli, ADuplicatedPairIsRejected) {
+  // it passed `check` and failed in the first step as "contact status did not settle"
+  const fs::path file = patch_variant(
+      "duplicate.toml",
+      {{"[[contact]]",
+        "[[contact]]\nmaster = \"lower.zmax\"\nslave = \"upper.zmin\"\n\n[[contact]]"}});
+  expect_invalid_input(file, {"contact[2]", "'upper.zmin' and 'lower.zmax'",
+                              "already a pair in contact[1]", "remove the duplicate"});
+}
+
 TEST_F(ContactCli, SurfacesOfOneBodyAreRejected) {
   const fs::path file =
       patch_variant("one_body.toml", {{"slave = \"lower.zmax\"", "slave = \"upper.xmax\""}});

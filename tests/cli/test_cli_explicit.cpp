@@ -215,6 +215,15 @@ TEST_F(CliExplicit, NegativePenaltyIsOutOfRange) {
                        {"explicit.penalty = -1", "(0, inf) MPa", "or inf"});
 }
 
+TEST_F(CliExplicit, RunOfMoreStepsThanAllowedIsRefusedWithTheStableStep) {
+  // 2^31 s at the stability estimate (3e-5 s) would be 7e13 steps: refused at once, before
+  // any output, naming the step and the count (it ran until killed)
+  expect_invalid_input(
+      variant("endless.toml", "end_time = 1e-3\n\n[output]\ninterval = 2.5e-4",
+              "end_time = 2147483648.0\n\n[output]\ninterval = 1e6"),
+      {"time.end_time = 2.14748e+09 s", "stability estimate", "e+13 steps", "1e+08 allowed"});
+}
+
 TEST_F(CliExplicit, UndefinedSurfaceOfALoadIsNamed) {
   expect_invalid_input(variant("surface.toml", "surface = \"bar.xmax\"", "surface = \"bar.top\""),
                        {"loads.traction[1].surface", "bar.top"});

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Biphasic confined creep (Terzaghi; VERIFICATION 3, FORMULATION V1) and the exact reduction of
-// the triphasic model to the biphasic one when the tissue is uncharged (FORMULATION V2).
+// Biphasic confined creep (Terzaghi; docs/theory/reference-solutions.md §R1) and the exact
+// reduction of the triphasic model to the biphasic one when the tissue is uncharged (§R2).
 #include "exact/exact_solutions.hpp"
 #include "mixture_model.hpp"
 
@@ -92,8 +92,9 @@ TEST(ConfinedCreep, UnchargedTriphasicEqualsBiphasic) {
 
 namespace {
 
-/// Ramp-displacement stress relaxation (VERIFICATION 3): the free-draining top is moved to a
-/// strain eps0 over t0 and held; the surface stress follows the series of Mow et al. (1980).
+/// Ramp-displacement stress relaxation (docs/theory/reference-solutions.md §R1.4): the
+/// free-draining top is moved to a strain eps0 over t0 and held; the surface stress follows the
+/// series of Mow et al. (1980).
 Real ramp_relaxation_error(int n, Real dt) {
   mesh::BoxSpec spec;
   spec.divisions = {1, 1, n};

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Donnan equilibrium of the triphasic element (VERIFICATION 1, FORMULATION 5.2 and V3).
+// Donnan equilibrium of the triphasic element (docs/theory/reference-solutions.md §R3).
 #include "exact/exact_solutions.hpp"
 #include "mixture_model.hpp"
 
@@ -64,8 +64,9 @@ TEST(Donnan, SingleElementInBathMatchesClosedFormAtSeveralJ) {
   }
 }
 
-/// Paper values (FORMULATION 5.2 table): c+ = 0.280278 M, c- = 0.080278 M, Pi = 0.150030 MPa,
-/// psi = -16.05 mV at J = 1 (cF0 = 0.2 M per water volume, c* = 0.15 M, T = 298 K).
+/// Paper values (reference-solutions.md §R3.5): c+ = 0.280278 M, c- = 0.080278 M,
+/// Pi = 0.150030 MPa, psi = -16.05 mV at J = 1 (cF0 = 0.2 M per water volume, c* = 0.15 M,
+/// T = 298 K).
 TEST(Donnan, PaperInitialStateValues) {
   test::MixtureModel m = single_element(1.0);
   const Index c = m.mixture->cell(0);

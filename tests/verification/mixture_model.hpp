@@ -15,7 +15,8 @@
 
 namespace trifem::test {
 
-/// The paper's section 4.1 tissue (FORMULATION 9.1), optionally uncharged or biphasic.
+/// The paper's section 4.1 tissue (docs/theory/reference-solutions.md §R0), optionally uncharged
+/// or biphasic.
 inline material::MixtureProperties paper_tissue(bool charged, Real fixed_charge = 2e-4,
                                                 Real nu = 0.0) {
   auto solid = material::create_law("saint-venant-kirchhoff", {{"E", 0.3}, {"nu", nu}}, "solid");

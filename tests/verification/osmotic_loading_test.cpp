@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: MIT
-// Osmotic loading and free swelling from an uncharged reference (FORMULATION V4, 5.1, 5.3):
+// Osmotic loading and free swelling from an uncharged reference
+// (docs/theory/reference-solutions.md §R4; bath term and initial states:
+// docs/theory/triphasic.md §2, §6, §8 item 4):
 // (a) a free cube in equilibrium with the reference 0.15 M bath is moved to a 0.015 M and to a
 // 1.5 M bath (BathTerm): it reaches the closed-form swelling stretch at the new bath;
 // (b) a confined column whose fixed charge is ramped from zero (IC-2) reaches the same
@@ -63,12 +65,12 @@ void check_bath_change(Real c_bath) {
 
 } // namespace
 
-/// FORMULATION V4: isotropic stretch 1.38074 in a 0.015 M bath.
+/// reference-solutions.md §R4.4: isotropic stretch 1.38074 in a 0.015 M bath.
 TEST(OsmoticLoading, FreeCubeInDiluteBath) {
   check_bath_change(1.5e-5);
 }
 
-/// FORMULATION V4: isotropic stretch 1.04095 in a 1.5 M bath.
+/// reference-solutions.md §R4.4: isotropic stretch 1.04095 in a 1.5 M bath.
 TEST(OsmoticLoading, FreeCubeInConcentratedBath) {
   check_bath_change(1.5e-3);
 }

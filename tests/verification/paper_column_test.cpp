@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
-// The paper's section 4.1 confined column as a whole model (FORMULATION V5): stress relaxation
-// of a triphasic column under a ramped platen displacement, against the reference history, and
-// its equilibrium against the closed form, from the Donnan state (IC-1) and from the prestressed
-// Donnan state (IC-3a).
+// The paper's section 4.1 confined column as a whole model (docs/theory/reference-solutions.md
+// §R5): stress relaxation of a triphasic column under a ramped platen displacement, against the
+// reference history, and its equilibrium against the closed form, from the Donnan state (IC-1)
+// and from the prestressed Donnan state (IC-3a).
 #include "exact/exact_solutions.hpp"
 #include "mixture_model.hpp"
 
@@ -41,7 +41,7 @@ Real platen_stress(const test::MixtureModel& m) {
   return force; // area 1 mm^2
 }
 
-/// FORMULATION V5 reference: t -> (total stress top, p top, p bottom, eta bottom).
+/// reference-solutions.md §R5.2: t -> (total stress top, p top, p bottom, eta bottom).
 const std::map<Real, std::array<Real, 4>> kReference = {
     {5, {-0.23944, 0.22557, 0.23944, -1733.74}},    {25, {-0.35190, 0.31246, 0.35190, -1966.56}},
     {50, {-0.45976, 0.40887, 0.45976, -2180.17}},   {100, {-0.26328, 0.22775, 0.26312, -1783.87}},
@@ -108,7 +108,7 @@ TEST(PaperColumn, PrestressedEquilibriumIsShiftedByTheDonnanPressure) {
   std::printf("prestressed column: platen stress %.6f MPa (IC-1 closed form %.6f, Pi0 %.6f)\n",
               platen_stress(m), eq.total_stress, pi0);
   EXPECT_NEAR(platen_stress(m), eq.total_stress + pi0, 1e-6 * std::abs(eq.total_stress));
-  EXPECT_NEAR(eq.total_stress + pi0, -0.03400, 5e-6); // FORMULATION V5 under IC-3a
+  EXPECT_NEAR(eq.total_stress + pi0, -0.03400, 5e-6); // reference-solutions.md §R5.3, IC-3a
   for (Index e = 0; e < m.mesh.num_cells(); ++e) {
     EXPECT_NEAR(m.value(m.f.p, e), eq.donnan.pressure, 1e-6 * eq.donnan.pressure);
     EXPECT_NEAR(m.value(m.f.eta, e) / m.chem.c_ref, eq.donnan.eta, 1e-6 * std::abs(eq.donnan.eta));

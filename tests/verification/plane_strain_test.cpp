@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
-// Plane strain by one hex layer (FORMULATION V9): with all y-components of u, w, j+, j- fixed, the
-// solution per unit depth does not depend on the layer thickness (exact answer: equality of the
-// nodal fields, element p and eta, and the platen reaction per depth at thickness 1 and 0.1).
+// Plane strain by one hex layer (docs/theory/reference-solutions.md §R9): with all y-components of
+// u, w, j+, j- fixed, the solution per unit depth does not depend on the layer thickness (exact
+// answer: equality of the nodal fields, element p and eta, and the platen reaction per depth at
+// thickness 1 and 0.1).
 #include "mixture_model.hpp"
 
 #include <gtest/gtest.h>

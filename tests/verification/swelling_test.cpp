@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Free swelling from IC-1 (FORMULATION V4, VERIFICATION 2): the equilibrium stretch of a
+// Free swelling from IC-1 (docs/theory/reference-solutions.md §R4): the equilibrium stretch of a
 // laterally confined column and of an unconstrained cube equals the closed-form root of
 // sigma_e(lambda) = Pi(cF(J)) (SVK and neo-Hookean), and every element holds the Donnan state at J.
 // From the prestressed state IC-3a the same cube does not move at all.
@@ -155,22 +155,23 @@ void check_isotropic(exact::SolidLaw law, Real table_value, const char* label) {
 
 } // namespace
 
-/// FORMULATION V4, SVK, 1-D: lambda E (lambda^2 - 1)/2 = Pi(J = lambda), lambda = 1.225066.
+/// reference-solutions.md §R4.4, SVK, 1-D: lambda E (lambda^2 - 1)/2 = Pi(J = lambda), 1.225066.
 TEST(FreeSwelling, ConfinedColumnSvkMatchesClosedForm) {
   check_confined(exact::SolidLaw::StVenantKirchhoff, 1.225066, "confined SVK");
 }
 
-/// FORMULATION V4, SVK, isotropic: E (lambda^2 - 1)/(2 lambda) = Pi(J = lambda^3), 1.17354.
+/// reference-solutions.md §R4.4, SVK, isotropic: E (lambda^2 - 1)/(2 lambda) = Pi(J = lambda^3),
+/// 1.17354.
 TEST(FreeSwelling, FreeCubeSvkMatchesClosedForm) {
   check_isotropic(exact::SolidLaw::StVenantKirchhoff, 1.17354, "isotropic SVK");
 }
 
-/// VERIFICATION 2 table (b), neo-Hookean, 1-D: 1.300923.
+/// reference-solutions.md §R4.3 table (b), neo-Hookean, 1-D: 1.300923.
 TEST(FreeSwelling, ConfinedColumnNeoHookeanMatchesClosedForm) {
   check_confined(exact::SolidLaw::NeoHookean, 1.300923, "confined NH");
 }
 
-/// VERIFICATION 2 table (b), neo-Hookean, isotropic: 1.209410.
+/// reference-solutions.md §R4.3 table (b), neo-Hookean, isotropic: 1.209410.
 TEST(FreeSwelling, FreeCubeNeoHookeanMatchesClosedForm) {
   check_isotropic(exact::SolidLaw::NeoHookean, 1.209410, "isotropic NH");
 }

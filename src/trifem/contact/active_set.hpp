@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Primal-dual active set (semismooth Newton) for the normal contact complementarity
-// g ≥ 0, t ≤ 0, t g = 0 at the slave nodes (FORMULATION.md §6.5).
+// g ≥ 0, t ≤ 0, t g = 0 at the slave nodes (docs/theory/contact.md §5.2).
 #pragma once
 
 #include "trifem/core/types.hpp"

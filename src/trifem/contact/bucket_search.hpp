@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Broad phase of the contact search: a hashed uniform grid ("buckets") over the current facet
-// bounding boxes inflated by a search radius (FORMULATION.md §6.7).
+// bounding boxes inflated by a search radius (docs/theory/contact.md §2.3).
 #pragma once
 
 #include "trifem/contact/contact_surface.hpp"

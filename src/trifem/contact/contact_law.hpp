@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// The contact-law seam (STYLE §7, FORMULATION.md §6.2–§6.5): what the slave-node multipliers
+// The contact-law seam (docs/theory/contact.md §3–§5): what the slave-node multipliers
 // mean, which rows their interface work acts on, and which constraint each one imposes.
 // Geometry, search, projections, the interface integrals and the DOF bookkeeping stay in
 // ContactTerm; a law only sees one slave node at a time.
@@ -58,7 +58,7 @@ public:
   /// master facet nodes (positions are always available).
   virtual std::vector<dofs::FieldId> constraint_fields() const { return {}; }
   /// Complementarity function of the normal contact, e.g. λ_t + c_N g: the primal-dual active
-  /// set activates a node where it is negative (FORMULATION.md §6.5).
+  /// set activates a node where it is negative (docs/theory/contact.md §5.2).
   virtual Real indicator(const SlaveNodeRows& node) const = 0;
   /// Whether the law distinguishes a wetted from a sealed contact (NodeContact::Wetted).
   virtual bool wettable() const { return false; }
@@ -70,7 +70,7 @@ public:
 };
 
 /// Frictionless normal contact of solids, multiplier = contact pressure t (≤ 0 compressive,
-/// the normal component of the total traction; FORMULATION.md §6.4):
+/// the normal component of the total traction; docs/theory/contact.md §5.1):
 ///   active:   G_k = A_k g_k,          ΔG_k = A_k n·(Δx_s - Σ_a N_a(ξ) Δx_a)
 ///   inactive: G_k = (A_k / c_N) t_k   (t_k = 0; the weight only makes rows conjugate)
 ///   indicator: t_k + c_N g_k.

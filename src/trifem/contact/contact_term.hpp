@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // One-pass node-to-segment contact with Lagrange multipliers at the slave nodes, interface work
 // integrated over both surfaces (Chen, Sunagawa & Hisada 2009, §3 and Appendix A;
-// FORMULATION.md §6).
+// docs/theory/contact.md).
 #pragma once
 
 #include "trifem/contact/active_set.hpp"
@@ -13,7 +13,7 @@
 
 namespace trifem::contact {
 
-/// How the interface work of the multipliers is integrated (FORMULATION.md §6.3).
+/// How the interface work of the multipliers is integrated (docs/theory/contact.md §4).
 enum class Integration {
   /// The paper's scheme: slave facets with λ^s(ξ) = Σ_k M_k(ξ) λ_k, master facets with
   /// λ^m(ξ) = Σ_i N_i(ξ) λ^m_i, λ^m_i = Σ_k M_k(ζ_i) λ_k (ζ_i: projection of master node i

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Current-configuration geometry of a bilinear quad4 contact facet at one point of the reference
-// square: position, tangents, twist and unit normal (FORMULATION.md §6.6).
+// square: position, tangents, twist and unit normal (docs/theory/contact.md §2.1).
 #pragma once
 
 #include "trifem/fe/hex8.hpp"

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Element kernels of ContactTerm: the interface work of the multipliers on the slave and master
-// facets (FORMULATION.md §6.3) and its consistent tangent (§6.6, K_c1 and K_c2).
+// facets (docs/theory/contact.md §4) and its consistent tangent (§6 there, K_c1 and K_c2).
 #include "trifem/contact/contact_term.hpp"
 #include "trifem/physics/facet_area.hpp"
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Frictionless contact of biphasic/triphasic mixtures (FORMULATION.md §6.1–§6.6): the contact
+// Frictionless contact of biphasic/triphasic mixtures (docs/theory/contact.md §13): the contact
 // pressure plus continuity of the water and ion potentials and of the normal fluxes.
 #pragma once
 
@@ -26,7 +26,7 @@ struct MixtureContactFields {
 ///   G_w = Δt A_k (w^m(ξ_k) - w_s)·n,   G_± = Δt A_k (ĵ±^m(ξ_k) - ĵ±_s)·n   (ĵ = j/c_ref, stored)
 ///   ΔG_w = Δt A_k [ (Σ_a N_a Δw_a - Δw_s)·n + (w^m - w_s)·Δn + (Σ_a N_{a,α} w_a)·n Δξ^α ]
 /// Inactive rows (separated or not projecting): (A_k / c_N) λ_k,c = 0 for every component, i.e.
-/// t = 0 and the bath potentials mū = 0 (free-draining; §6.5).
+/// t = 0 and the bath potentials mū = 0 (free-draining; docs/theory/contact.md §13.3).
 /// Wetted rows (in contact, interface wetted by the bath; NodeContact::Wetted): G_u = A_k g_k
 /// and (A_k / c_N) λ_k,c = 0 for c ≥ 1 (free-draining while the surfaces touch).
 /// Indicator of the active set: t_k + c_N g_k (mechanical complementarity only).

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Closest-point projection of a point onto the bilinear facets of a contact surface
-// (FORMULATION.md §6.1, §6.7): local Newton per candidate facet, then selection.
+// (docs/theory/contact.md §2.2): local Newton per candidate facet, then selection.
 #pragma once
 
 #include "trifem/contact/bucket_search.hpp"

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Linearisation of the closest-point projection (FORMULATION.md §6.6, paper Appendix A):
+// Linearisation of the closest-point projection (docs/theory/contact.md §2.4, paper Appendix A):
 // derivatives of ξ, of the gap g and of the normal n with respect to the 15 coordinates
 // (x_s, x_0, x_1, x_2, x_3) of the projected point and of the facet nodes.
 #pragma once

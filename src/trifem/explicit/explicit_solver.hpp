@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The `dynamic-explicit` time integrator: central differences with a lumped mass and a P0
-// Lagrange-multiplier pressure, iterated per step as A2.16 → A2.21 → A2.17 (FORMULATION §7.2).
+// Lagrange-multiplier pressure, iterated per step as A2.16 → A2.21 → A2.17
+// (docs/theory/explicit.md §3).
 #pragma once
 
 #include "trifem/explicit/cell_kernel.hpp"

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Geometric stiffness of the multiplier force H Λ of one hex8 cell (FORMULATION §7.3): the part
-// of the tangent that central differences treat explicitly, since H is held at t_n.
+// Geometric stiffness of the multiplier force H Λ of one hex8 cell (docs/theory/explicit.md §5):
+// the part of the tangent that central differences treat explicitly, since H is held at t_n.
 #pragma once
 
 #include "trifem/explicit/settings.hpp"

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Settings of the explicit solver with a P0 Lagrange-multiplier pressure (FORMULATION §7).
+// Settings of the explicit solver with a P0 Lagrange-multiplier pressure (docs/theory/explicit.md).
 #pragma once
 
 #include "trifem/core/types.hpp"
@@ -12,7 +12,7 @@
 /// called `explicit` because that is a C++ keyword.
 namespace trifem::explicit_dynamics {
 
-/// Which forces the per-step iteration re-evaluates (FORMULATION §7.3).
+/// Which forces the per-step iteration re-evaluates (docs/theory/explicit.md §3, §5).
 enum class Reading {
   /// Q_V, H and follower loads at the iterate U^(k) ("all forces at t+Δt", literal A2.15):
   /// first order, dissipative, |z| = 1/sqrt(1 + ω²Δt²); the iteration converges for Δt < 1/ω_iso.

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
-// Critical time step of the explicit scheme (FORMULATION §7.3): the largest frequency ω_iso of
-// M⁻¹K restricted to isochoric modes, where K is the tangent of the explicitly integrated forces:
-// the internal force of W and, since H is held at t_n, the multiplier force H Λ at fixed Λ.
+// Critical time step of the explicit scheme (docs/theory/explicit.md §5): the largest frequency
+// ω_iso of M⁻¹K restricted to isochoric modes, where K is the tangent of the explicitly
+// integrated forces: the internal force of W and, since H is held at t_n, the multiplier force
+// H Λ at fixed Λ.
 #pragma once
 
 #include "trifem/explicit/cell_kernel.hpp"

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// One step of the explicit scheme: the iteration A2.16 → A2.21 → A2.17 of FORMULATION §7.2.
+// One step of the explicit scheme: the iteration A2.16 → A2.21 → A2.17 of
+// docs/theory/explicit.md §3.
 //
 // Variable-step central differences with mass-proportional damping c (velocities at half
 // steps, Δt̄ = (Δt_{n-1/2} + Δt)/2, β = 1 + c Δt̄/2):

@@ -311,6 +311,13 @@ void read_contacts(const Table& root, CaseSpec& spec) {
     if (c.master == c.slave)
       fail(t.find("slave"), t.path("slave"),
            fmt::format("'{}' is also the master surface; a pair needs two surfaces", c.slave));
+    for (const ContactSpec& other : spec.contacts)
+      if ((other.master == c.master && other.slave == c.slave) ||
+          (other.master == c.slave && other.slave == c.master))
+        fail(t.find("slave"), c.key,
+             fmt::format("the surfaces '{}' and '{}' are already a pair in {}; each pair of "
+                         "surfaces is one [[contact]] entry (remove the duplicate)",
+                         c.master, c.slave, other.key));
     c.both_surfaces = t.choice("integration", integration, std::optional<bool>(true));
     c.scale = t.number(
         "scale", {.range = material::Range::non_negative(), .fallback = 0.0, .unit = "MPa/mm"});

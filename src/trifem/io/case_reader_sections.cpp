@@ -199,9 +199,9 @@ void read_solver(const Table& root, CaseSpec& spec) {
   if (!t)
     return;
   t->allow({"max_iterations", "residual_tolerance", "increment_tolerance", "line_search",
-            "linear_solver"});
+            "linear_solver", "petsc_options"});
   static const Options<std::string_view> solvers = {
-      {"auto", "auto"}, {"umfpack", "umfpack"}, {"sparselu", "sparselu"}};
+      {"auto", "auto"}, {"umfpack", "umfpack"}, {"sparselu", "sparselu"}, {"mumps", "mumps"}};
   SolverSpec& s = spec.solver;
   s.max_iterations = t->integer("max_iterations", 1, s.max_iterations, kMaxNewtonIterations);
   s.residual_tolerance = t->number(
@@ -211,6 +211,12 @@ void read_solver(const Table& root, CaseSpec& spec) {
   s.line_search = t->get<bool>("line_search").value_or(s.line_search);
   s.linear_solver = std::string(
       t->choice("linear_solver", solvers, std::optional<std::string_view>(s.linear_solver)));
+  s.petsc_options = t->get<std::string>("petsc_options").value_or("");
+  if (!s.petsc_options.empty() && s.linear_solver != "mumps")
+    fail(t->find("petsc_options"), t->path("petsc_options"),
+         fmt::format("applies to the PETSc backends (linear_solver = \"mumps\"), not to "
+                     "linear_solver = \"{}\"",
+                     s.linear_solver));
 }
 
 // ---------------------------------------------------------------------------------------------

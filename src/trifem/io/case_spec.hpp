@@ -222,6 +222,10 @@ struct ExplicitSpec {
   Real constraint_tolerance = 1e-11;   ///< max_e |Ψ_e − V_e Λ_e/α| / V_e that ends it
 };
 
+/// Most steps a run may need: end_time / (largest step) above this is refused (by the reader,
+/// and by the explicit analysis once its stability estimate is known).
+inline constexpr Real kMaxSteps = 1e8;
+
 /// [time]
 struct TimeSpec {
   Real end_time = 1.0; ///< end of the analysis [s]
@@ -241,7 +245,8 @@ struct SolverSpec {
   Real residual_tolerance = 1e-8;  ///< relative to the characteristic residual of each field
   Real increment_tolerance = 1e-8; ///< relative to the characteristic size of each field
   bool line_search = true;
-  std::string linear_solver = "auto"; ///< "auto", "umfpack" or "sparselu"
+  std::string linear_solver = "auto"; ///< "auto", "umfpack", "sparselu" or "mumps"
+  std::string petsc_options;          ///< "-key value ..." for the PETSc backends
 };
 
 /// [[output.reaction]]: total reaction force on a node set, in history.csv.

@@ -290,8 +290,6 @@ void check_time_limits(const Table& root, const CaseSpec& spec);
 /// the materials and meshes).
 void check_model_size(const Table& root, const CaseSpec& spec);
 
-/// Most steps a run may need: end_time / (largest step) above this is refused.
-inline constexpr Real kMaxSteps = 1e8;
 /// Most times a failed step may be cut back before the run fails.
 inline constexpr Real kMaxCutbacks = 200;
 /// Most Newton iterations per step attempt ([solver] max_iterations).

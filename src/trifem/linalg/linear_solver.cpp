@@ -3,24 +3,32 @@
 
 #include "trifem/core/error.hpp"
 #include "trifem/linalg/auto_solver.hpp"
+#include "trifem/linalg/petsc_solver.hpp"
 #include "trifem/linalg/sparse_lu_solver.hpp"
 #include "trifem/linalg/umfpack_solver.hpp"
 
 namespace trifem::linalg {
 
 std::vector<std::string> available_linear_solvers() {
-  return {"auto", "umfpack", "sparselu"};
+  return {"auto", "umfpack", "sparselu", "mumps"};
 }
 
-std::unique_ptr<LinearSolver> make_linear_solver(const std::string& name) {
+std::unique_ptr<LinearSolver> make_linear_solver(const std::string& name,
+                                                 const std::string& petsc_options) {
+  if (!petsc_options.empty() && name != "mumps")
+    throw InputError(fmt::format("solver.petsc_options applies to the PETSc backends (mumps), "
+                                 "not to linear_solver = '{}'",
+                                 name));
   if (name == "auto")
     return make_auto_solver();
   if (name == "umfpack")
     return make_umfpack_solver();
   if (name == "sparselu")
     return make_sparse_lu_solver();
+  if (name == "mumps")
+    return make_mumps_solver(petsc_options);
   throw InputError(
-      fmt::format("unknown linear solver '{}' (expected auto, umfpack or sparselu)", name));
+      fmt::format("unknown linear solver '{}' (expected auto, umfpack, sparselu or mumps)", name));
 }
 
 } // namespace trifem::linalg

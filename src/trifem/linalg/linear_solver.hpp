@@ -27,7 +27,7 @@ public:
   virtual bool factorize(const SparseMatrix& A) = 0;
   /// Solves A x = b with the last factorization; false on failure.
   virtual bool solve(const Vector& b, Vector& x) = 0;
-  /// Backend name ("umfpack", "sparselu", "auto (sparselu)", ...).
+  /// Backend name ("umfpack", "sparselu", "mumps", "auto (sparselu)", ...).
   virtual std::string name() const = 0;
   /// Why the last operation failed (empty reason if it succeeded).
   virtual LinearSolverFailure failure() const { return {}; }
@@ -36,7 +36,10 @@ public:
 /// Names of the available backends.
 std::vector<std::string> available_linear_solvers();
 
-/// Creates the backend `name`; InputError listing the available ones otherwise.
-std::unique_ptr<LinearSolver> make_linear_solver(const std::string& name);
+/// Creates the backend `name`; InputError listing the available ones otherwise. `petsc_options`
+/// ("-key value ...") are passed to the PETSc backends (InputError for the others, or when PETSc
+/// does not use one of them).
+std::unique_ptr<LinearSolver> make_linear_solver(const std::string& name,
+                                                 const std::string& petsc_options = "");
 
 } // namespace trifem::linalg

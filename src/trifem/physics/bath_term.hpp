@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // A bath of NaCl concentration c*(t) different from the reference bath, on a surface of a
 // mixture: the natural boundary terms -int N_a mu*_bar n da of the water and ion rows
-// (FORMULATION 5.1). Surfaces without any condition are in the reference bath (no term).
+// (docs/theory/triphasic.md §2 and §8 item 4). Surfaces without any condition are in the
+// reference bath (no term).
 #pragma once
 
 #include "trifem/dofs/load_curve.hpp"

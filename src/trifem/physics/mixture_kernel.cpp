@@ -20,7 +20,7 @@ struct PointData {
   Mat3 Gw, Gp, Gm; ///< flux gradients sum_a x_a (x) b_a
 };
 
-/// Element integrals in the current configuration (FORMULATION 2.2, 4.2).
+/// Element integrals in the current configuration (docs/theory/triphasic.md §3, §4).
 struct Integrals {
   std::array<PointData, 8> qp;
   Real V = 0.0;
@@ -132,7 +132,7 @@ void residual(const Integrals& I, const MixtureChemistry& c, const MixtureUnknow
     r.segment<3>(L.w(a, 0)) = Rw.row(a).transpose();
 }
 
-/// d(outflow)/du_c = int [(div j) b_c - (grad j)^T b_c] dv  (FORMULATION 4.2, q_b).
+/// d(outflow)/du_c = int [(div j) b_c - (grad j)^T b_c] dv  (docs/theory/triphasic.md §4, q_b).
 Node3 outflow_shape_derivative(const Integrals& I, Mat3 PointData::*grad) {
   Node3 q = Node3::Zero();
   for (const PointData& d : I.qp) {

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Hex8 element of the triphasic (and biphasic) mixture: residual of the paper's eqs 14-19 with
-// backward Euler and its consistent tangent (FORMULATION sections 2-4).
+// backward Euler and its consistent tangent (docs/theory/triphasic.md §2-§4).
 #pragma once
 
 #include "trifem/fe/hex8.hpp"

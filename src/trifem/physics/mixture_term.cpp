@@ -9,7 +9,8 @@
 namespace trifem::physics {
 namespace {
 
-/// Donnan equilibrium with a bath of concentration c_bath (FORMULATION 5.2).
+/// Donnan equilibrium with a bath of concentration c_bath (docs/theory/triphasic.md §6,
+/// docs/theory/reference-solutions.md §R3.1).
 struct Donnan {
   Real c_plus, c_minus, pressure, eta;
 };

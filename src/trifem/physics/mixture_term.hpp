@@ -14,13 +14,13 @@
 namespace trifem::physics {
 
 /// The fields of a mixture model. Ion fields are invalid in biphasic-only models.
-/// Stored unknowns are scaled for conditioning (FORMULATION 9.2): the ion flux DOFs hold
-/// j / c_ref [mm/s] and the potential DOF holds c_ref eta [MPa].
+/// Stored unknowns are scaled for conditioning (docs/theory/triphasic.md §5): the ion flux DOFs
+/// hold j / c_ref [mm/s] and the potential DOF holds c_ref eta [MPa].
 struct MixtureFields {
   dofs::FieldId u, w, j_plus, j_minus, p, eta;
 };
 
-/// How the initial state is set (FORMULATION 5.3).
+/// How the initial state is set (docs/theory/triphasic.md §6).
 enum class InitialState {
   Donnan,            ///< IC-1: Donnan equilibrium with the bath at the reference configuration
   DonnanPrestressed, ///< IC-3a: as IC-1 plus a constant Cauchy prestress Pi0 (zero net stress)

@@ -7,26 +7,32 @@
 
 namespace trifem::solver {
 namespace {
-/// Relative tolerance for "time equals a must point".
+/// Tolerance for "time equals a must point", relative to the time scale.
 constexpr Real kTimeTol = 1e-10;
 } // namespace
 
 StepController::StepController(StepSettings settings)
     : settings_(std::move(settings)), time_(settings_.start_time), dt_(settings_.dt) {
-  TRIFEM_VERIFY(settings_.dt > 0 && settings_.dt_min > 0 && settings_.dt_max >= settings_.dt_min,
+  TRIFEM_VERIFY(settings_.dt > 0 && settings_.dt_min > 0 && settings_.dt_max >= settings_.dt_min &&
+                    settings_.end_time > settings_.start_time,
                 "bad step settings");
   std::sort(settings_.must_points.begin(), settings_.must_points.end());
 }
 
+Real StepController::time_scale() const {
+  // the accumulated round-off of the time grows with |t|; the span cannot vanish
+  return std::max({std::abs(settings_.start_time), std::abs(settings_.end_time),
+                   settings_.end_time - settings_.start_time});
+}
+
 bool StepController::finished() const {
-  return time_ >= settings_.end_time - kTimeTol * std::max(1.0, std::abs(settings_.end_time));
+  return time_ >= settings_.end_time - kTimeTol * time_scale();
 }
 
 Real StepController::next_step() const {
-  const Real scale = std::max(1.0, std::abs(settings_.end_time));
   Real target = settings_.end_time;
   for (Real t : settings_.must_points) {
-    if (t > time_ + kTimeTol * scale) {
+    if (t > time_ + kTimeTol * time_scale()) {
       target = std::min(target, t);
       break;
     }
@@ -40,10 +46,11 @@ Real StepController::next_step() const {
 
 void StepController::accept(Real dt, int iterations) {
   time_ += dt;
-  const Real scale = std::max(1.0, std::abs(settings_.end_time));
   for (Real t : settings_.must_points)
-    if (std::abs(time_ - t) <= kTimeTol * scale)
+    if (std::abs(time_ - t) <= kTimeTol * time_scale())
       time_ = t;
+  if (std::abs(time_ - settings_.end_time) <= kTimeTol * time_scale())
+    time_ = settings_.end_time;
   if (iterations <= settings_.target_iterations)
     dt_ = std::min(settings_.dt_max, std::max(dt_, dt) * settings_.growth);
 }

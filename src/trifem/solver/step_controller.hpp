@@ -38,6 +38,9 @@ public:
   int cutbacks() const { return cutbacks_; }
 
 private:
+  /// Largest of |start|, |end| and the span: the scale of the time tolerances (never zero).
+  Real time_scale() const;
+
   StepSettings settings_;
   Real time_;
   Real dt_;

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
-// Central-difference checks of the projection linearisation (FORMULATION.md §6.6): dξ, dg and
-// dn with respect to all 15 coordinates (x_s, x_0..x_3) on warped, twisted facets, at interior
-// projections, near a facet edge (|ξ| = 0.95), and for edge/corner (clamped) projections.
+// Central-difference checks of the projection linearisation (docs/theory/contact.md §2.4): dξ,
+// dg and dn with respect to all 15 coordinates (x_s, x_0..x_3) on warped, twisted facets, at
+// interior projections, near a facet edge (|ξ| = 0.95), and for edge/corner (clamped)
+// projections.
 #include "contact_test_utils.hpp"
 
 #include "trifem/contact/projection_derivatives.hpp"

@@ -597,8 +597,9 @@ const std::vector<BadCase> kBadCases = {
      kBase + "[output]\ntimes = [0.5, 3.0]\n",
      {"output.times[2] = 3: out of range, expected a value in [0, 1] s"}},
     {"bad_linear_solver",
-     kBase + "[solver]\nlinear_solver = \"mumps\"\n",
-     {"solver.linear_solver = 'mumps': unknown value (expected one of: auto, umfpack, sparselu)"}},
+     kBase + "[solver]\nlinear_solver = \"pardiso\"\n",
+     {"solver.linear_solver = 'pardiso': unknown value (expected one of: auto, umfpack, sparselu, "
+      "mumps)"}},
     {"tolerance_out_of_range",
      kBase + "[solver]\nresidual_tolerance = 1.5\n",
      {"solver.residual_tolerance = 1.5: out of range, expected a value in (0, 1)"}},

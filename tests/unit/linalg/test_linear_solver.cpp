@@ -80,9 +80,54 @@ TEST(LinearSolver, AutoTakesSparseLuForSmallAndUmfpackForLargeSystems) {
 
 TEST(LinearSolver, UnknownBackendIsNamedWithTheChoices) {
   try {
-    linalg::make_linear_solver("mumps");
+    linalg::make_linear_solver("pardiso");
     FAIL() << "no error";
   } catch (const InputError& e) {
-    EXPECT_STREQ(e.what(), "unknown linear solver 'mumps' (expected auto, umfpack or sparselu)");
+    EXPECT_STREQ(e.what(),
+                 "unknown linear solver 'pardiso' (expected auto, umfpack, sparselu or mumps)");
   }
+}
+
+TEST(LinearSolver, MumpsReanalysesANewPatternAndTakesPetscOptions) {
+  // a new pattern (another size) after the first; options that MUMPS reads (AMD ordering,
+  // 50 % workspace relaxation) give the same solution to round-off
+  auto plain = linalg::make_linear_solver("mumps");
+  auto tuned = linalg::make_linear_solver("mumps", "-mat_mumps_icntl_7 0 -mat_mumps_icntl_14 50");
+  for (const Index n : {300, 900}) {
+    const SparseMatrix S = saddle_point(n, 3);
+    const Vector b = right_hand_side(S.rows());
+    Vector x1, x2;
+    for (auto* solver : {plain.get(), tuned.get()}) {
+      solver->analyze_pattern(S);
+      ASSERT_TRUE(solver->factorize(S)) << solver->failure().reason;
+      ASSERT_TRUE(solver->solve(b, solver == plain.get() ? x1 : x2));
+    }
+    EXPECT_LT((S * x1 - b).norm(), 1e-13 * b.norm());
+    EXPECT_LT((x1 - x2).norm(), 1e-12 * x1.norm());
+  }
+}
+
+TEST(LinearSolver, MumpsReportsASingularMatrixAsCurable) {
+  SparseMatrix S = saddle_point(60, 3);
+  for (Index k = S.outerIndexPtr()[5]; k < S.outerIndexPtr()[6]; ++k)
+    S.valuePtr()[k] = 0.0; // column 5 zero: singular
+  auto solver = linalg::make_linear_solver("mumps");
+  solver->analyze_pattern(S);
+  EXPECT_FALSE(solver->factorize(S));
+  EXPECT_NE(solver->failure().reason.find("singular"), std::string::npos)
+      << solver->failure().reason;
+  EXPECT_FALSE(solver->failure().permanent); // a smaller step may give a regular matrix
+}
+
+TEST(LinearSolver, UnusedPetscOptionIsAnInputErrorNamingIt) {
+  try {
+    linalg::make_linear_solver("mumps", "-mat_mumps_icntl_14 50 -mat_mumsp_icntl_7 5");
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("-mat_mumsp_icntl_7 5"), std::string::npos) << what;
+    EXPECT_EQ(what.find("icntl_14"), what.find("icntl_14 50 -mat")) << what; // not as unused
+  }
+  EXPECT_NO_THROW(linalg::make_linear_solver("mumps", "-mat_mumps_icntl_14 60")); // cleared
+  EXPECT_THROW(linalg::make_linear_solver("umfpack", "-ksp_type gmres"), InputError);
 }

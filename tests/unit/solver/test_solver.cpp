@@ -89,6 +89,26 @@ TEST(StepController, LandsOnMustPointsAndTheEnd) {
   EXPECT_NE(std::find(times.begin(), times.end(), 0.5), times.end());
 }
 
+TEST(StepController, ShortRunsTakeEveryStepAndKeepCloseMustPointsApart) {
+  // a 1 ns run in 0.1 ns steps: an absolute time tolerance (1e-10 s) ended it a step early and
+  // merged must points 4e-11 s apart
+  solver::StepSettings s;
+  s.end_time = 1e-9;
+  s.dt = s.dt_max = 1e-10;
+  s.dt_min = 1e-13;
+  s.must_points = {5e-10, 5.4e-10};
+  solver::StepController c(s);
+  std::vector<Real> times;
+  while (!c.finished() && times.size() < 100) {
+    c.accept(c.next_step(), 10);
+    times.push_back(c.time());
+  }
+  ASSERT_EQ(times.size(), 11u); // 5 steps to 5e-10, one of 4e-11, then 4.6e-10 in 5 steps
+  EXPECT_EQ(times.back(), 1e-9);
+  EXPECT_NE(std::find(times.begin(), times.end(), 5e-10), times.end());
+  EXPECT_NE(std::find(times.begin(), times.end(), 5.4e-10), times.end());
+}
+
 TEST(StepController, CutsBackThenStopsAtTheMinimumStep) {
   solver::StepSettings s;
   s.dt = s.dt_max = 0.1;

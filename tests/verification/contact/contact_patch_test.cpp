@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
-// Contact patch test (FORMULATION.md §6.8, §8 V6; issue 4 acceptance): two stacked blocks with
-// non-matching interface meshes under a uniform follower pressure q on the top. Lateral
-// rollers on the x = 0 faces (and z = 0 in 3-D; every z DOF fixed in 2-D), bottom fixed in y:
-// the exact solution is a uniform uniaxial (2-D: plane-strain) stress with σ_yy = -q in both
-// bodies, and every contact pressure t_k = -q. The both-surface integration reproduces it to
-// round-off; the conventional slave-node point-force NTS does not (negative control).
+// Contact patch test (docs/theory/reference-solutions.md §R6.1; issue 4 acceptance): two stacked
+// blocks with non-matching interface meshes under a uniform follower pressure q on the top.
+// Lateral rollers on the x = 0 faces (and z = 0 in 3-D; every z DOF fixed in 2-D), bottom fixed
+// in y: the exact solution is a uniform uniaxial (2-D: plane-strain) stress with σ_yy = -q in
+// both bodies, and every contact pressure t_k = -q. The both-surface integration reproduces it
+// to round-off; the conventional slave-node point-force NTS does not (negative control).
 #include "contact_model.hpp"
 #include "trifem/physics/surface_load_term.hpp"
 

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 // The paper's §4.1 confined triphasic column split at mid-height by a contact interface
-// (FORMULATION.md §8 V5 and V6(c)): two 1 x 1 x 0.5 mm blocks of 5 cells in height, lower block
-// = master, upper = slave, MixtureContactLaw (t, mū_w, c_ref mū_±). Bottom fixed and
-// impermeable, lateral faces confined and impermeable, top = porous platen (bath) moved to
-// u_z = -0.05 mm over 50 s; IC-1. The exact solution is 1-D, so
+// (docs/theory/reference-solutions.md §R5, §R6.3): two 1 x 1 x 0.5 mm blocks of 5 cells in
+// height, lower block = master, upper = slave, MixtureContactLaw (t, mū_w, c_ref mū_±). Bottom
+// fixed and impermeable, lateral faces confined and impermeable, top = porous platen (bath)
+// moved to u_z = -0.05 mm over 50 s; IC-1. The exact solution is 1-D, so
 //   * with matching interface meshes (one cell across) the contact model equals the whole
 //     model (1 x 1 x 10 cells) to solver tolerance;
 //   * with non-matching lateral meshes (2 x 2 cells below, 3 x 3 above) the interface

@@ -10,8 +10,9 @@
 #include <utility>
 
 /// Exact (closed-form, or closed-form up to a scalar root) solutions used as references by the
-/// verification tests. Units: mm, N, s, MPa, mmol, K (FORMULATION §9.1); concentrations are per
-/// unit interstitial water volume in mmol/mm³ (1 M = 1e-3 mmol/mm³), RT in mJ/mmol, so RT·c is MPa;
+/// verification tests; stated with their tables in docs/theory/reference-solutions.md (section
+/// numbers §R… below). Units: mm, N, s, MPa, mmol, K (§R0); concentrations are per unit
+/// interstitial water volume in mmol/mm³ (1 M = 1e-3 mmol/mm³), RT in mJ/mmol, so RT·c is MPa;
 /// η = F·ψ in mJ/mmol and ψ[mV] = η/F with F in C/mmol.
 namespace trifem::exact {
 
@@ -19,7 +20,8 @@ namespace trifem::exact {
 // Parameters
 // =================================================================================================
 
-/// Material and bath data of the seed paper's §4.1 (FORMULATION §9.1 table), cF0 per water volume.
+/// Material and bath data of the seed paper's §4.1 (reference-solutions.md §R0), cF0 per water
+/// volume.
 struct PaperParameters {
   double E = 0.3;          ///< Young's modulus of the drained solid [MPa]
   double nu = 0.0;         ///< Poisson's ratio of the drained solid [-]
@@ -41,7 +43,7 @@ struct PaperParameters {
 inline constexpr PaperParameters paper_parameters{};
 
 // =================================================================================================
-// 1. Donnan equilibrium (FORMULATION §5.2, VERIFICATION §1)
+// 1. Donnan equilibrium (reference-solutions.md §R3)
 // =================================================================================================
 
 /// Interstitial state of a charged tissue in equilibrium with a NaCl bath (bath p* = 0, η* = 0).
@@ -58,7 +60,7 @@ struct DonnanState {
 ///   c⁺ = (cF + sqrt(cF² + 4 K c*²)) / 2,      c⁻ = c⁺ − cF  (evaluated as K c*²/c⁺, same value)
 ///   Π  = RT [Φ (c⁺ + c⁻) − 2 Φ* c*]           (evaluated without cancellation for small cF)
 ///   η  = −RT ln(γ⁺ c⁺ / (γ⁺* c*)),             ψ = η / F
-/// Source: FORMULATION §5.2; VERIFICATION §1 "Formulas".
+/// Source: reference-solutions.md §R3.1.
 inline DonnanState donnan(double cF, double c_bath, double RT, double faraday,
                           double gamma_ratio_K = 1.0, double phi = 1.0, double phi_bath = 1.0,
                           double gamma_plus = 1.0, double gamma_plus_bath = 1.0) {
@@ -79,7 +81,7 @@ inline DonnanState donnan(double cF, double c_bath, double RT, double faraday,
 /// Fixed-charge density per water volume after a volume change J from the reference where
 /// φˢ = φˢ₀ and cF = cF0 (charge moves with the solid, both phases intrinsically incompressible):
 ///   cF(J) = cF0 (1 − φˢ₀) / (J − φˢ₀).
-/// Source: FORMULATION §0 "Fixed charge"; VERIFICATION §1 "Fixed charge density under deformation".
+/// Source: reference-solutions.md §R3.2.
 inline double fixed_charge(double cF0, double phi_s0, double J) {
   TRIFEM_CHECK(J > phi_s0, "fixed_charge: J = {} must exceed phi_s0 = {}", J, phi_s0);
   return cF0 * (1.0 - phi_s0) / (J - phi_s0);
@@ -88,7 +90,7 @@ inline double fixed_charge(double cF0, double phi_s0, double J) {
 /// dΠ/dJ of the Donnan pressure Π(cF(J)) by analytic differentiation:
 ///   dΠ/dJ = RT Φ d(c⁺ + c⁻)/dcF · dcF/dJ = −RT Φ cF² / (sqrt(cF² + 4Kc*²) (J − φˢ₀)).
 /// (Φ, Φ*, K constant.) At J = 1, φˢ₀ = 0.25, cF0 = 0.2 M, c* = 0.15 M, T = 298 K: −0.36648 MPa
-/// (VERIFICATION §1, unit test 2; FORMULATION §5.2 table).
+/// (reference-solutions.md §R3.2, §R3.5).
 inline double donnan_pressure_derivative_dJ(double cF0, double phi_s0, double J, double c_bath,
                                             double RT, double gamma_ratio_K = 1.0,
                                             double phi = 1.0) {
@@ -128,7 +130,7 @@ inline double donnan_pressure_dJ(const ChargedMedium& m, double J) {
 }
 
 // =================================================================================================
-// 2. Homogeneous solid stress and swelling equilibria (VERIFICATION §2, FORMULATION §8 V4)
+// 2. Homogeneous solid stress and swelling equilibria (reference-solutions.md §R4)
 // =================================================================================================
 
 /// Drained solid laws with closed-form homogeneous stress.
@@ -173,11 +175,11 @@ struct StressSlope {
 
 /// Drained Cauchy stress of a homogeneous mode, with K = λ_L + 2μ/3 and H_A = λ_L + 2μ.
 /// St Venant–Kirchhoff (E_GL = (λ² − 1)/2 on the stretched axes):
-///   isotropic  σ = (3K/2)(λ² − 1)/λ          (ν = 0: E(λ² − 1)/(2λ), FORMULATION V4)
-///   confined   σ_zz = λ H_A (λ² − 1)/2         (ν = 0: λE(λ² − 1)/2, FORMULATION V4/V5)
-/// Neo-Hookean (VERIFICATION §2):
+///   isotropic  σ = (3K/2)(λ² − 1)/λ          (ν = 0: E(λ² − 1)/(2λ), §R4.4)
+///   confined   σ_zz = λ H_A (λ² − 1)/2         (ν = 0: λE(λ² − 1)/2, §R4.4, §R5.3)
+/// Neo-Hookean (reference-solutions.md §R4.2):
 ///   isotropic  σ = [μ(λ² − 1) + λ_L ln λ³]/λ³,   confined σ_zz = [μ(λ² − 1) + λ_L ln λ]/λ
-/// Linear (VERIFICATION §2, e = J − 1): isotropic σ = K e, confined σ_zz = H_A e.
+/// Linear (§R4.2, e = J − 1): isotropic σ = K e, confined σ_zz = H_A e.
 inline StressSlope solid_stress(SolidLaw law, Deformation mode, Lame c, double stretch) {
   const double l = stretch;
   const double K = c.lambda + 2.0 * c.mu / 3.0;
@@ -245,9 +247,9 @@ struct SwellingState {
 };
 
 /// Free swelling in a bath with p* = 0: total stress σ^e − Π(J) I = 0 on the loaded axes, i.e.
-///   f(λ) = σ^e(λ) − Π(cF(J(λ)), c*) = 0      (VERIFICATION §2 "Equilibrium condition").
+///   f(λ) = σ^e(λ) − Π(cF(J(λ)), c*) = 0      (reference-solutions.md §R4.1).
 /// SVK, ν = 0: isotropic E(λ² − 1)/(2λ) = Π(J = λ³), confined λE(λ² − 1)/2 = Π(J = λ)
-/// (FORMULATION §8 V4). The stress-free reference is J = 1 with cF = cF0. Root: the first sign
+/// (§R4.4). The stress-free reference is J = 1 with cF = cF0. Root: the first sign
 /// change of f scanning away from λ = 1 (upward if Π(1) > 0: the state reached by ramping the
 /// charge), refined by safeguarded Newton to 1e-14 relative.
 inline SwellingState swelling_equilibrium(SolidLaw law, Deformation mode, double E, double nu,
@@ -281,7 +283,7 @@ inline SwellingState swelling_equilibrium(SolidLaw law, Deformation mode, double
 }
 
 // =================================================================================================
-// 3. Triphasic confined column at equilibrium (FORMULATION §8 V5, "∞" row)
+// 3. Triphasic confined column at equilibrium (reference-solutions.md §R5.3, "∞" row)
 // =================================================================================================
 
 /// Equilibrium of a laterally confined column held at axial stretch λ in a bath.
@@ -295,7 +297,8 @@ struct ColumnEquilibrium {
 /// stress-free at J = 1, p = Π0): at equilibrium p = Π(J = λ) everywhere and
 ///   σ_zz = σ^e_zz(λ) − Π(λ);   SVK, ν = 0: λE(λ² − 1)/2 − Π(λ).
 /// Paper data, λ = 0.95: σ_zz = −0.18403 MPa, p = 0.17014 MPa, η = −1645.93 mJ/mmol.
-/// Under IC-3a (Cauchy prestress Π0 I) add +Π0 to total_stress. Source: FORMULATION §8 V5, §5.3.
+/// Under IC-3a (Cauchy prestress Π0 I) add +Π0 to total_stress. Source: reference-solutions.md
+/// §R5.3; initial states: docs/theory/triphasic.md §6.
 inline ColumnEquilibrium confined_column_equilibrium(double stretch, double E, double nu,
                                                      const ChargedMedium& m,
                                                      SolidLaw law = SolidLaw::StVenantKirchhoff) {
@@ -305,7 +308,7 @@ inline ColumnEquilibrium confined_column_equilibrium(double stretch, double E, d
 }
 
 // =================================================================================================
-// 4. Biphasic confined compression (VERIFICATION §3, FORMULATION §8 V1)
+// 4. Biphasic confined compression (reference-solutions.md §R1)
 // =================================================================================================
 
 /// Layer 0 ≤ z ≤ h: rigid impermeable bottom at z = 0 (u = 0, ∂p/∂z = 0), free-draining loaded
@@ -415,9 +418,10 @@ inline double ramp_g(double S) {
 /// Creep displacement u(z, t) under a step compressive stress σ0 > 0 (total stress −σ0) applied at
 /// t = 0 on the free-draining top; z from the impermeable bottom, M_n = (2n + 1)π/2:
 ///   u(z, t) = −(σ0/H_A) [ z − h Σ (2(−1)ⁿ/M_n²) sin(M_n z/h) e^{−M_n² t/τ} ]
-///   u(h, t) = −(σ0 h/H_A) [ 1 − Σ (2/M_n²) e^{−M_n² t/τ} ]          (VERIFICATION §3;
-/// FORMULATION V1 with 2/M_n² = 8/((2n + 1)²π²), M_n²/τ = λ_n² c_v). For t < 0.1τ the equivalent
-/// image series (detail::creep_images) is summed instead; both converge to < 1e-16.
+///   u(h, t) = −(σ0 h/H_A) [ 1 − Σ (2/M_n²) e^{−M_n² t/τ} ]
+/// (reference-solutions.md §R1.2, also in the form 2/M_n² = 8/((2n + 1)²π²), M_n²/τ = λ_n² c_v).
+/// For t < 0.1τ the equivalent image series (detail::creep_images) is summed instead; both
+/// converge to < 1e-16.
 inline double creep_displacement(const ConfinedLayer& layer, double sigma0, double z, double t) {
   return sigma0 * layer.h / layer.H_A * detail::creep_nd(z / layer.h, t / layer.tau()).first;
 }
@@ -430,8 +434,8 @@ inline double creep_surface_displacement(const ConfinedLayer& layer, double sigm
 /// Creep pore pressure with z measured from the impermeable bottom (∂p/∂z = 0 at z = 0, p = 0 at
 /// the draining top z = h, p = σ0 at t = 0+), λ_n = (2n + 1)π/(2h):
 ///   p(z, t) = σ0 Σ 4(−1)ⁿ/((2n + 1)π) cos(λ_n z) e^{−λ_n² c_v t},
-///   p(0, t) = σ0 Σ (2/M_n)(−1)ⁿ e^{−M_n² t/τ}                       (VERIFICATION §3).
-/// NB: the factor (−1)ⁿ is missing in FORMULATION V1's p(z, t); without it p ≠ 0 at z = h.
+///   p(0, t) = σ0 Σ (2/M_n)(−1)ⁿ e^{−M_n² t/τ}         (reference-solutions.md §R1.2).
+/// NB: the factor (−1)ⁿ is essential (an early statement lacked it); without it p ≠ 0 at z = h.
 inline double creep_pressure(const ConfinedLayer& layer, double sigma0, double z, double t) {
   return sigma0 * detail::creep_nd(z / layer.h, t / layer.tau()).second;
 }
@@ -440,9 +444,9 @@ inline double creep_pressure(const ConfinedLayer& layer, double sigma0, double z
 /// then held (Mow et al. 1980), with S = t/τ, S0 = t0/τ, G(S) = Σ (1 − e^{−n²π²S})/(n²π²):
 ///   0 ≤ t ≤ t0:  σ = −H_A ε0 [ S/S0 + (2/S0) G(S) ]
 ///   t > t0:      σ = −H_A ε0 [ 1 + (2/S0) (G(S) − G(S − S0)) ]
-/// Peak at t0; σ → −H_A ε0. For t0 ≪ τ the peak is −H_A ε0 · 2/sqrt(π S0). Source: VERIFICATION §3
-/// (its series rewritten with G; the peak column of its table is a 4000-term truncation, see the
-/// test file).
+/// Peak at t0; σ → −H_A ε0. For t0 ≪ τ the peak is −H_A ε0 · 2/sqrt(π S0). Source:
+/// reference-solutions.md §R1.4 (a first tabulation printed the peaks from a 4000-term truncation,
+/// see the test file).
 inline double ramp_relaxation_stress(const ConfinedLayer& layer, double eps0, double t0, double t) {
   TRIFEM_CHECK(t0 > 0.0 && t >= 0.0, "ramp_relaxation_stress: need t0 > 0, t >= 0");
   const double S = t / layer.tau();

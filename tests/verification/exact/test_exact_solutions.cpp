@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Checks the closed-form references against the printed design tables and independent derivations.
+// Checks the closed-form references against the tables of docs/theory/reference-solutions.md and
+// independent derivations.
 #include "exact_solutions.hpp"
 
 #include <Eigen/Dense>
@@ -33,7 +34,7 @@ ChargedMedium medium(double cF0, double phi_s0, double c_bath, double T) {
 // 1. Donnan
 // ------------------------------------------------------------------------------------------------
 
-// VERIFICATION §1 "Worked example": ideal case, T = 298 K.
+// reference-solutions.md §R3.3 worked examples: ideal case, T = 298 K.
 TEST(Donnan, WorkedExampleTable) {
   struct Row {
     double cF, cs, cp, cm, pi, psi, tol_c;
@@ -55,7 +56,7 @@ TEST(Donnan, WorkedExampleTable) {
   }
 }
 
-// FORMULATION §5.2 table and V3 (paper data at J = 1), through the paper parameter set.
+// reference-solutions.md §R3.5 and §R3.6 (paper data at J = 1), through the paper parameter set.
 TEST(Donnan, PaperReferenceState) {
   constexpr PaperParameters p = paper_parameters;
   static_assert(p.E == 0.3 && p.cF0 == 2.0e-4 && p.c_bath == 1.5e-4 && p.faraday == 96.485);
@@ -68,7 +69,7 @@ TEST(Donnan, PaperReferenceState) {
   EXPECT_NEAR(d.psi_mV, -16.05, 5e-3);
 }
 
-// VERIFICATION §1 "Non-ideal variants".
+// reference-solutions.md §R3.3 non-ideal variants.
 TEST(Donnan, NonIdealVariants) {
   const double RT = R * 298.0;
   // Φ = Φ* = 0.93, γ± = γ* = 0.75: K = 1, concentrations unchanged, π scaled by 0.93.
@@ -84,7 +85,8 @@ TEST(Donnan, NonIdealVariants) {
   EXPECT_NEAR(b.pressure, 0.309696, 5e-7 * (1 + 1e-9));
 }
 
-// Defining relations hold to round-off, including the anion form of ψ (VERIFICATION §1).
+// Defining relations hold to round-off, including the anion form of ψ (reference-solutions.md
+// §R3.1).
 TEST(Donnan, DefiningRelations) {
   const double RT = R * 310.0;
   struct Case {
@@ -110,9 +112,10 @@ TEST(Donnan, DefiningRelations) {
   EXPECT_NEAR(w.pressure, RT * 1e-18 / (4.0 * 1.5e-4), 1e-6 * RT * 1e-18 / (4.0 * 1.5e-4));
 }
 
-// VERIFICATION §1 "cF versus J" (cF0 = 200 mEq/L, c* = 150 mM, T = 298 K). Three printed
-// concentrations are off by one unit in the last digit (c⁺ = 304.6295 and 262.2625, c⁻ = 66.3555
-// is printed as c⁺ − cF of the rounded values), so c± are checked to one printed unit (1e-3 mM).
+// reference-solutions.md §R3.4, cF versus J (cF0 = 200 mEq/L, c* = 150 mM, T = 298 K). Three
+// printed concentrations are off by one unit in the last digit (c⁺ = 304.6295 and 262.2625,
+// c⁻ = 66.3555 is printed as c⁺ − cF of the rounded values), so c± are checked to one printed
+// unit (1e-3 mM).
 TEST(Donnan, FixedChargeVersusJTable) {
   struct Row {
     double phi_s0, J, phi_w, cF, cp, cm, pi;
@@ -141,12 +144,12 @@ TEST(Donnan, FixedChargeVersusJTable) {
   EXPECT_THROW(fixed_charge(2e-4, 0.25, 0.25), trifem::InputError);
 }
 
-// VERIFICATION §1 unit test 2 and FORMULATION §5.2: dπ/dJ = −0.36648 MPa at J = 1, plus FD.
+// reference-solutions.md §R3.2 and §R3.5: dπ/dJ = −0.36648 MPa at J = 1, plus FD.
 TEST(Donnan, PressureDerivative) {
   const double RT = R * 298.0;
   const double dpdJ = donnan_pressure_derivative_dJ(0.2 * Mol, 0.25, 1.0, 0.15 * Mol, RT);
   EXPECT_NEAR(dpdJ, -0.36648, 5e-6);
-  EXPECT_NEAR(0.3 - dpdJ, 0.666, 5e-4); // FORMULATION: 1-D equilibrium modulus E − dΠ/dJ
+  EXPECT_NEAR(0.3 - dpdJ, 0.666, 5e-4); // §R3.5: 1-D equilibrium modulus E − dΠ/dJ
   ChargedMedium m = medium(0.2 * Mol, 0.25, 0.15 * Mol, 298.0);
   for (double K : {1.0, 1.6}) {
     m.gamma_ratio_K = K;
@@ -164,7 +167,7 @@ TEST(Donnan, PressureDerivative) {
 // ------------------------------------------------------------------------------------------------
 
 // The closed-form homogeneous stresses equal the tensor definitions (general ν), and for ν = 0
-// the SVK forms reduce to FORMULATION V4's λE(λ² − 1)/2 and E(λ² − 1)/(2λ).
+// the SVK forms reduce to reference-solutions.md §R4.4's λE(λ² − 1)/2 and E(λ² − 1)/(2λ).
 TEST(SolidStress, MatchesTensorDefinitions) {
   using Mat = Eigen::Matrix3d;
   const Mat I = Mat::Identity();
@@ -208,7 +211,7 @@ TEST(SolidStress, MatchesTensorDefinitions) {
   }
 }
 
-// VERIFICATION §2 table (a): E = 0.3, ν = 0, φs0 = 0.2, cF0 = 200 mEq/L, T = 293 K.
+// reference-solutions.md §R4.3 table (a): E = 0.3, ν = 0, φs0 = 0.2, cF0 = 200 mEq/L, T = 293 K.
 TEST(Swelling, TableA) {
   struct Row {
     double cs, nh_iso, nh_conf, lin_iso_e, lin_conf_e;
@@ -242,7 +245,8 @@ TEST(Swelling, TableA) {
   EXPECT_NEAR(conf.stretch * h0, 1.304634, 5e-7);
 }
 
-// VERIFICATION §2 tables (b) (φs0 = 0.25, T = 298) and (c) (E = 1, φs0 = 0.2, T = 298).
+// reference-solutions.md §R4.3 tables (b) (φs0 = 0.25, T = 298) and (c) (E = 1, φs0 = 0.2,
+// T = 298).
 TEST(Swelling, TablesBandC) {
   struct Row {
     double E, phi_s0, cs, iso, conf;
@@ -262,7 +266,7 @@ TEST(Swelling, TablesBandC) {
   }
 }
 
-// VERIFICATION §2 "Osmotic loading of a free cube" (isotropic NH, table (a) parameters).
+// reference-solutions.md §R4.3, osmotic loading of a free cube (isotropic NH, table (a) data).
 TEST(Swelling, OsmoticLoading) {
   const auto stretch = [](double cs) {
     return swelling_equilibrium(SolidLaw::NeoHookean, Deformation::Isotropic, 0.3, 0.0,
@@ -276,7 +280,8 @@ TEST(Swelling, OsmoticLoading) {
   EXPECT_NEAR(stretch(1500), 1.043847, 5e-7);
 }
 
-// FORMULATION §8 V4 and §5.3 IC-2: the paper's SVK solid (E = 0.3, ν = 0).
+// reference-solutions.md §R4.4 (case V4; also the IC-2 swelling of docs/theory/triphasic.md §6):
+// the paper's SVK solid (E = 0.3, ν = 0).
 TEST(Swelling, PaperSvkV4) {
   const PaperParameters p = paper_parameters;
   const ChargedMedium m = paper_medium();
@@ -287,7 +292,7 @@ TEST(Swelling, PaperSvkV4) {
   EXPECT_NEAR(c.donnan.c_minus / Mol, 0.091654, 5e-7);
   EXPECT_NEAR(c.donnan.pressure, 0.092025, 5e-7);
   EXPECT_NEAR(c.donnan.eta, -1220.50, 5e-3);
-  // The root satisfies FORMULATION's 1-D equation λE(λ² − 1)/2 = Π(J = λ), evaluated here.
+  // The root satisfies the 1-D equation λE(λ² − 1)/2 = Π(J = λ) of §R4.4, evaluated here.
   const double l = c.stretch;
   EXPECT_NEAR(l * p.E * (l * l - 1) / 2, donnan_at(m, l).pressure, 1e-13);
 
@@ -299,7 +304,7 @@ TEST(Swelling, PaperSvkV4) {
   const double li = iso.stretch;
   EXPECT_NEAR(p.E * (li * li - 1) / (2 * li), donnan_at(m, li * li * li).pressure, 1e-13);
 
-  // Other baths (FORMULATION V4; these are the isotropic cube).
+  // Other baths (§R4.4; these are the isotropic cube).
   for (auto [cs, expected] : {std::pair{0.015, 1.38074}, std::pair{1.5, 1.04095}}) {
     PaperParameters q = p;
     q.c_bath = cs * Mol;
@@ -336,7 +341,7 @@ TEST(Swelling, ResidualVanishesOnBothBranches) {
 }
 
 // ------------------------------------------------------------------------------------------------
-// 3. Triphasic confined column (FORMULATION §8 V5)
+// 3. Triphasic confined column (reference-solutions.md §R5.3)
 // ------------------------------------------------------------------------------------------------
 
 TEST(ConfinedColumn, PaperEquilibriumV5) {
@@ -361,7 +366,7 @@ TEST(ConfinedColumn, PaperEquilibriumV5) {
 // 4. Biphasic confined compression
 // ------------------------------------------------------------------------------------------------
 
-// VERIFICATION §3 creep table (nondimensional: h = H_A = σ0 = τ = 1).
+// reference-solutions.md §R1.2 creep table (nondimensional: h = H_A = σ0 = τ = 1).
 TEST(ConfinedCompression, CreepTable) {
   const ConfinedLayer unit{1.0, 1.0, 1.0};
   ASSERT_EQ(unit.tau(), 1.0);
@@ -384,7 +389,8 @@ TEST(ConfinedCompression, CreepTable) {
   EXPECT_NEAR(creep_surface_displacement(unit, 1.0, 60.0), -1.0, 1e-15); // 4 ulp of the limit
 }
 
-// FORMULATION §8 V1: h = 1 mm, σ0 = 1e-4 MPa, H_A = 0.3 MPa, κ = 1.07e-3 mm⁴/(N s).
+// reference-solutions.md §R1.3 (case V1): h = 1 mm, σ0 = 1e-4 MPa, H_A = 0.3 MPa,
+// κ = 1.07e-3 mm⁴/(N s).
 TEST(ConfinedCompression, FormulationV1) {
   const PaperParameters p = paper_parameters;
   const ConfinedLayer layer{1.0, aggregate_modulus(p.E, p.nu), p.kappa};
@@ -438,7 +444,7 @@ TEST(ConfinedCompression, CreepFieldsSatisfyTheProblem) {
   }
 }
 
-// VERIFICATION §3 ramp table, columns t = 2t0, 5t0, 10t0 (printed digits).
+// reference-solutions.md §R1.4 ramp table, columns t = 2t0, 5t0, 10t0 (printed digits).
 TEST(ConfinedCompression, RampRelaxationTable) {
   const ConfinedLayer unit{1.0, 1.0, 1.0};
   struct Row {
@@ -469,9 +475,10 @@ TEST(ConfinedCompression, RampRelaxationTable) {
 //   t0 ≪ τ: half-space solution σ = −H_A ε0 · 2/sqrt(π S0) (corrections ~ e^{−1/S0});
 //   any S0: Poisson form G(S0) = sqrt(S0/π) − S0/2 + 2 sqrt(S0) Σ ierfc(k/sqrt(S0)), and the
 //   eigen form G = 1/6 − Σ e^{−n²π²S0}/(n²π²), each summed here.
-// VERIFICATION §3 prints −11.278726, −3.567756, −1.333272 for the peaks: those are the series
-// Σ_{n≤4000} (1 − e^{−n²π²S0})/(n²π²) truncated at 4000 terms (tail 2/(π² · 4000 S0)), reproduced
-// below; the converged values are −11.283792, −3.568262, −1.333323.
+// A first tabulation (reference-solutions.md §R1.4) printed −11.278726, −3.567756, −1.333272 for
+// the peaks: those are the series Σ_{n≤4000} (1 − e^{−n²π²S0})/(n²π²) truncated at 4000 terms
+// (tail 2/(π² · 4000 S0)), reproduced below; the converged values are −11.283792, −3.568262,
+// −1.333323.
 TEST(ConfinedCompression, RampPeak) {
   const ConfinedLayer unit{1.0, 1.0, 1.0};
   const auto g_poisson = [](double S) {

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Step control of the explicit solver: lumped mass, stability estimates, reduction of a too
-// large requested step, reading-A iteration limit Δt < 1/ω (FORMULATION §7.3), and the stop on
-// a non-finite value with the output written so far kept.
+// large requested step, reading-A iteration limit Δt < 1/ω (docs/theory/explicit.md §3, §5), and
+// the stop on a non-finite value with the output written so far kept.
 #include "fixtures.hpp"
 
 #include "trifem/explicit/history.hpp"

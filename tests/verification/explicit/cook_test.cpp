@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Cook's membrane (plane strain, one cell through the thickness), μ = ρ = 1 units:
-// iteration counts independent of α (FORMULATION §7.3), volume change |J̄ − 1| ≈ |Λ|/α, and
-// volumetric locking of the pure-displacement Q1 version of the same problem.
+// iteration counts independent of α (docs/theory/explicit.md §5), volume change |J̄ − 1| ≈ |Λ|/α,
+// and volumetric locking of the pure-displacement Q1 version of the same problem
+// (docs/theory/reference-solutions.md §R8.5).
 #include "fixtures.hpp"
 
 #include "trifem/explicit/history.hpp"

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
-// Exact solutions of the incompressible neo-Hookean thick sphere (VERIFICATION.md §7 b, d):
-// the static pressure-radius relation and the one-degree-of-freedom radial-oscillation ODE,
-// integrated here with classical RK4.
+// Exact solutions of the incompressible neo-Hookean thick sphere
+// (docs/theory/reference-solutions.md §R8.2, §R8.4): the static pressure-radius relation and the
+// one-degree-of-freedom radial-oscillation ODE, integrated here with classical RK4.
 #pragma once
 
 #include "trifem/core/types.hpp"
@@ -20,7 +20,7 @@ struct Sphere {
   /// Current outer radius from incompressibility: b³ − B³ = a³ − A³.
   Real outer(Real a) const { return std::cbrt(B * B * B + a * a * a - A * A * A); }
 
-  /// Static pressure difference P_in − P_out holding inner radius a (VERIFICATION §7 b):
+  /// Static pressure difference P_in − P_out holding inner radius a (reference-solutions.md §R8.2):
   /// P_el = μ [2/λ_b + 1/(2 λ_b⁴) − 2/λ_a − 1/(2 λ_a⁴)], λ_a = a/A, λ_b = b/B.
   Real static_pressure(Real a) const {
     const Real la = a / A, lb = outer(a) / B;
@@ -37,7 +37,7 @@ struct Sphere {
     return 0.5 * (lo + hi);
   }
 
-  /// ä of VERIFICATION §7 d:
+  /// ä of reference-solutions.md §R8.4:
   /// ρ [(a² ä + 2 a ȧ²)(1/a − 1/b) − ½ a⁴ ȧ² (1/a⁴ − 1/b⁴)] = P(t) − P_el(a).
   Real acceleration(Real a, Real v, Real P) const {
     const Real b = outer(a);

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
-// Homogeneous-deformation patch test of the multiplier pressure (VERIFICATION §7 a, FORMULATION
-// §7.4 item 1): a distorted 2x2x2 cube under a dead uniaxial traction, damped to rest, must reach
-// the exact homogeneous state with a uniform Λ, J − 1 = Λ/α to round-off and the constraint
-// satisfied to round-off in every step.
+// Homogeneous-deformation patch test of the multiplier pressure
+// (docs/theory/reference-solutions.md §R8.1, §R8.5): a distorted 2x2x2 cube under a dead uniaxial
+// traction, damped to rest, must reach the exact homogeneous state with a uniform Λ, J − 1 = Λ/α
+// to round-off and the constraint satisfied to round-off in every step.
 #include "fixtures.hpp"
 
 #include "trifem/explicit/mesh_builders.hpp"
@@ -140,7 +140,7 @@ TEST(ExplicitPatch, UniaxialLogJIsHomogeneousWithUniformMultiplier) {
 }
 
 TEST(ExplicitPatch, NearlyIncompressibleLimitMatchesClosedForm) {
-  // VERIFICATION §7 a: stretch 1.5 needs P = 1.055556 μ when J = 1.
+  // reference-solutions.md §R8.1: stretch 1.5 needs P = 1.055556 μ when J = 1.
   const Real P = 1.055556 * kMu, alpha = 1e6 * kMu;
   const Uniaxial exact = uniaxial_exact(P, alpha, Constraint::JMinusOne);
   EXPECT_NEAR(exact.a, 1.5, 1e-5);

@@ -1,0 +1,32 @@
+// SPDX-License-Identifier: MIT
+// PETSc (and through it MPI) is initialised on first use by a PETSc backend, once per process,
+// and finalised at exit. A run that never selects a PETSc backend never starts MPI.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+namespace trifem::linalg::petsc {
+
+/// A PETSc call that returned an error code, with PETSc's message.
+class PetscError : public std::runtime_error {
+public:
+  using std::runtime_error::runtime_error;
+};
+
+/// Initialises PETSc once (without its signal handlers, so Ctrl-C keeps trifem's meaning, and
+/// with an error handler that returns codes instead of printing tracebacks).
+void ensure_initialized();
+
+/// Throws PetscError for a non-zero PETSc error code: "<what>: <PETSc's message>".
+void check(int code, const char* what);
+
+/// Inserts `options` ("-key value ...") into PETSc's global options database; PetscError if it
+/// cannot be parsed.
+void insert_options(const std::string& options);
+
+/// The options of the database that no PETSc object has read so far, as "-key value" items
+/// separated by ", " ("" if every option was used); they are removed from the database.
+std::string take_unused_options();
+
+} // namespace trifem::linalg::petsc

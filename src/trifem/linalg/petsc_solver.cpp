@@ -1,0 +1,264 @@
+// SPDX-License-Identifier: MIT
+#include "trifem/linalg/petsc_solver.hpp"
+
+#include "trifem/core/error.hpp"
+#include "trifem/linalg/petsc_session.hpp"
+
+#include <fmt/format.h>
+#include <petscksp.h>
+
+#include <algorithm>
+#include <vector>
+
+namespace trifem::linalg {
+namespace {
+
+using petsc::check;
+
+/// The pattern of a column-major matrix in compressed rows (PETSc's AIJ format) and, per CSR
+/// entry, the position of its value in the column-major storage.
+struct CsrPattern {
+  std::vector<PetscInt> row_start, column;
+  std::vector<Index> source; ///< csr entry k holds A.valuePtr()[source[k]]
+
+  explicit CsrPattern(const SparseMatrix& A) {
+    const Index n = static_cast<Index>(A.rows());
+    row_start.assign(n + 1, 0);
+    for (Index k = 0; k < A.nonZeros(); ++k)
+      ++row_start[A.innerIndexPtr()[k] + 1];
+    for (Index i = 0; i < n; ++i)
+      row_start[i + 1] += row_start[i];
+    column.resize(A.nonZeros());
+    source.resize(A.nonZeros());
+    std::vector<PetscInt> next(row_start.begin(), row_start.end() - 1);
+    for (Index j = 0; j < A.cols(); ++j) // columns in order: each row's columns come sorted
+      for (Index k = A.outerIndexPtr()[j]; k < A.outerIndexPtr()[j + 1]; ++k) {
+        const PetscInt at = next[A.innerIndexPtr()[k]]++;
+        column[at] = j;
+        source[at] = k;
+      }
+  }
+};
+
+/// Reason and permanence of a MUMPS failure from its INFOG(1), INFOG(2).
+LinearSolverFailure mumps_failure(PetscInt infog1, PetscInt infog2) {
+  switch (infog1) {
+  case -10:
+    return {"MUMPS: the matrix is numerically singular (INFOG(1) = -10)", false};
+  case -13:
+    return {fmt::format("MUMPS could not allocate its workspace ({} {} of memory; INFOG(1) = "
+                        "-13): the model is too large for this machine's memory",
+                        infog2 < 0 ? -infog2 : infog2, infog2 < 0 ? "million bytes" : "bytes"),
+            true};
+  case -8:
+  case -9:
+  case -14:
+  case -15:
+  case -17:
+  case -20:
+    return {fmt::format("MUMPS: its workspace estimate was too small (INFOG(1) = {}); raise "
+                        "the relaxation with petsc_options = \"-mat_mumps_icntl_14 100\"",
+                        infog1),
+            true};
+  default:
+    return {fmt::format("MUMPS failed with INFOG(1) = {}, INFOG(2) = {} (see the MUMPS users' "
+                        "guide)",
+                        infog1, infog2),
+            infog1 < 0 && infog1 != -10};
+  }
+}
+
+const char* pc_failure_text(PCFailedReason reason) {
+  switch (reason) {
+  case PC_FACTOR_STRUCT_ZEROPIVOT:
+    return "structurally zero pivot";
+  case PC_FACTOR_NUMERIC_ZEROPIVOT:
+    return "numerically zero pivot (singular matrix)";
+  case PC_FACTOR_OUTMEMORY:
+    return "out of memory in the factorization";
+  default:
+    return "the factorization failed";
+  }
+}
+
+/// MUMPS LU through a PETSc KSP of type preonly.
+class MumpsSolver final : public LinearSolver {
+public:
+  explicit MumpsSolver(const std::string& options) {
+    petsc::ensure_initialized();
+    if (!options.empty())
+      try {
+        petsc::insert_options(options);
+      } catch (const petsc::PetscError& e) {
+        throw InputError(fmt::format("solver.petsc_options = '{}': {}", options, e.what()));
+      }
+  }
+  ~MumpsSolver() override { release(); }
+  MumpsSolver(const MumpsSolver&) = delete;
+  MumpsSolver& operator=(const MumpsSolver&) = delete;
+
+  void analyze_pattern(const SparseMatrix& A) override {
+    release();
+    failure_ = {};
+    n_ = static_cast<Index>(A.rows());
+    if (n_ == 0)
+      return;
+    try {
+      pattern_ = std::make_unique<CsrPattern>(A);
+      values_.assign(A.nonZeros(), 0.0);
+      copy_values(A, values_.data());
+      check(MatCreateSeqAIJWithArrays(PETSC_COMM_SELF, n_, n_, pattern_->row_start.data(),
+                                      pattern_->column.data(), values_.data(), &matrix_),
+            "PETSc matrix");
+      check(MatCreateVecs(matrix_, &x_, &b_), "PETSc vectors");
+      check(KSPCreate(PETSC_COMM_SELF, &ksp_), "PETSc KSP");
+      check(KSPSetOperators(ksp_, matrix_, matrix_), "PETSc KSP operators");
+      check(KSPSetType(ksp_, KSPPREONLY), "PETSc KSP type");
+      PC pc = nullptr;
+      check(KSPGetPC(ksp_, &pc), "PETSc PC");
+      check(PCSetType(pc, PCLU), "PETSc PC type");
+      check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS), "MUMPS");
+      check(KSPSetFromOptions(ksp_), "PETSc options");
+    } catch (const petsc::PetscError& e) {
+      failure_ = {e.what(), true};
+      release();
+    }
+  }
+
+  bool factorize(const SparseMatrix& A) override {
+    if (n_ == 0)
+      return true;
+    if (!ksp_)
+      return false; // the set-up failed: failure_ says why
+    failure_ = {};
+    factored_ = false;
+    try {
+      // through Get/RestoreArray, so PETSc sees new values (a numeric factorization only)
+      PetscScalar* values = nullptr;
+      check(MatSeqAIJGetArray(matrix_, &values), "PETSc matrix");
+      copy_values(A, values);
+      check(MatSeqAIJRestoreArray(matrix_, &values), "PETSc matrix");
+      check(KSPSetUp(ksp_), "MUMPS factorization");
+      PC pc = nullptr;
+      check(KSPGetPC(ksp_, &pc), "PETSc PC");
+      PCFailedReason reason = PC_NOERROR;
+      check(PCGetFailedReason(pc, &reason), "PETSc PC");
+      if (reason != PC_NOERROR) {
+        failure_ = factor_failure(pc, reason);
+        return false;
+      }
+      factored_ = true;
+      return true;
+    } catch (const petsc::PetscError& e) {
+      failure_ = {e.what(), false};
+      return false;
+    }
+  }
+
+  bool solve(const Vector& b, Vector& x) override {
+    x.resize(n_);
+    if (n_ == 0)
+      return true;
+    if (!factored_)
+      return false;
+    try {
+      PetscScalar* data = nullptr;
+      check(VecGetArray(b_, &data), "PETSc vector");
+      std::copy(b.data(), b.data() + n_, data);
+      check(VecRestoreArray(b_, &data), "PETSc vector");
+      check(KSPSolve(ksp_, b_, x_), "MUMPS solve");
+      KSPConvergedReason reason = KSP_CONVERGED_ITERATING;
+      check(KSPGetConvergedReason(ksp_, &reason), "PETSc KSP");
+      if (reason < 0) {
+        failure_ = {fmt::format("MUMPS solve failed ({})", KSPConvergedReasons[reason]), false};
+        return false;
+      }
+      const PetscScalar* result = nullptr;
+      check(VecGetArrayRead(x_, &result), "PETSc vector");
+      std::copy(result, result + n_, x.data());
+      check(VecRestoreArrayRead(x_, &result), "PETSc vector");
+    } catch (const petsc::PetscError& e) {
+      failure_ = {e.what(), false};
+      return false;
+    }
+    if (x.allFinite())
+      return true;
+    failure_ = {"MUMPS solve gave non-finite values", false};
+    return false;
+  }
+
+  std::string name() const override { return "mumps"; }
+  LinearSolverFailure failure() const override { return failure_; }
+
+private:
+  void copy_values(const SparseMatrix& A, PetscScalar* to) const {
+    const Real* v = A.valuePtr();
+    for (std::size_t k = 0; k < values_.size(); ++k)
+      to[k] = v[pattern_->source[k]];
+  }
+
+  LinearSolverFailure factor_failure(PC pc, PCFailedReason reason) const {
+    Mat factor = nullptr;
+    PetscInt infog1 = 0, infog2 = 0;
+    if (PCFactorGetMatrix(pc, &factor) == 0 && factor != nullptr &&
+        MatMumpsGetInfog(factor, 1, &infog1) == 0 && MatMumpsGetInfog(factor, 2, &infog2) == 0 &&
+        infog1 < 0)
+      return mumps_failure(infog1, infog2);
+    return {fmt::format("MUMPS: {}", pc_failure_text(reason)), reason == PC_FACTOR_OUTMEMORY};
+  }
+
+  void release() {
+    if (ksp_)
+      KSPDestroy(&ksp_);
+    if (x_)
+      VecDestroy(&x_);
+    if (b_)
+      VecDestroy(&b_);
+    if (matrix_)
+      MatDestroy(&matrix_);
+    ksp_ = nullptr;
+    x_ = b_ = nullptr;
+    matrix_ = nullptr;
+    factored_ = false;
+  }
+
+  Index n_ = 0;
+  std::unique_ptr<CsrPattern> pattern_;
+  std::vector<PetscScalar> values_; ///< CSR values; the PETSc matrix uses this storage
+  Mat matrix_ = nullptr;
+  Vec x_ = nullptr, b_ = nullptr;
+  KSP ksp_ = nullptr;
+  bool factored_ = false; ///< the symbolic analysis runs with the first factorization
+  LinearSolverFailure failure_;
+};
+
+/// Solves a 2×2 system with a solver made with `options`, then refuses options nobody read.
+void check_options_are_used(const std::string& options) {
+  SparseMatrix A(2, 2);
+  A.insert(0, 0) = 2.0;
+  A.insert(1, 0) = 1.0;
+  A.insert(1, 1) = 3.0;
+  A.makeCompressed();
+  MumpsSolver probe(options);
+  probe.analyze_pattern(A);
+  Vector x;
+  if (!probe.factorize(A) || !probe.solve(Vector::Ones(2), x))
+    throw InputError(fmt::format("solver.petsc_options = '{}': a 2x2 test system failed with "
+                                 "these options: {}",
+                                 options, probe.failure().reason));
+  const std::string unused = petsc::take_unused_options();
+  if (!unused.empty())
+    throw InputError(fmt::format("solver.petsc_options = '{}': PETSc does not know or use {} "
+                                 "(with the mumps backend)",
+                                 options, unused));
+}
+
+} // namespace
+
+std::unique_ptr<LinearSolver> make_mumps_solver(const std::string& petsc_options) {
+  if (!petsc_options.empty())
+    check_options_are_used(petsc_options);
+  return std::make_unique<MumpsSolver>(petsc_options);
+}
+
+} // namespace trifem::linalg

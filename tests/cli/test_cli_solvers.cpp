@@ -1,0 +1,120 @@
+// SPDX-License-Identifier: MIT
+// The linear-solver backends give the same converged answers: every quasi-static example (but
+// the two-minute sliding_layers, whose coarse form runs in the verification suite) is run with
+// UMFPACK and with MUMPS (PETSc) and every history column must agree to 1e-8 of the largest
+// magnitude of its unit in the history (a column that is zero in exact arithmetic, a lateral
+// displacement, is compared with the displacements). Bad PETSc settings are input errors naming
+// the key.
+#include "cli_harness.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <sstream>
+
+namespace trifem::cli_test {
+namespace {
+
+const fs::path kExamples = fs::path(TRIFEM_SOURCE_DIR) / "examples";
+
+/// The numbers of a history.csv by column, and the column names.
+struct History {
+  std::vector<std::string> names;
+  std::vector<std::vector<double>> columns;
+};
+
+History read_history(const fs::path& file) {
+  History h;
+  const std::vector<std::string> lines = lines_of(read_text(file));
+  if (lines.empty())
+    return h;
+  std::stringstream header(lines[0]);
+  for (std::string name; std::getline(header, name, ',');)
+    h.names.push_back(name);
+  h.columns.resize(h.names.size());
+  for (std::size_t i = 1; i < lines.size(); ++i) {
+    std::stringstream row(lines[i]);
+    std::size_t c = 0;
+    for (std::string cell; std::getline(row, cell, ',') && c < h.columns.size(); ++c)
+      h.columns[c].push_back(std::stod(cell));
+  }
+  return h;
+}
+
+/// `text` (a case file) with [solver] linear_solver set to `backend`.
+std::string with_backend(std::string text, const std::string& backend) {
+  const std::string line = "linear_solver = \"" + backend + "\"\n";
+  const auto solver = text.find("\n[solver]\n");
+  if (solver == std::string::npos)
+    return text + "\n[solver]\n" + line;
+  const auto old = text.find("linear_solver", solver);
+  if (old != std::string::npos && old < text.find("\n[", solver + 1))
+    text.erase(old, text.find('\n', old) + 1 - old);
+  return text.insert(solver + 10, line);
+}
+
+class CliSolvers : public Cli {
+protected:
+  /// Runs the example `name` with `backend`; the history.csv path (empty on failure).
+  fs::path run_example(const std::string& name, const std::string& backend) const {
+    const std::string text = with_backend(read_text(kExamples / name / (name + ".toml")), backend);
+    const fs::path file = write_file(name + "_" + backend + ".toml", text);
+    const fs::path out = output() / backend;
+    const Result r = trifem({"-q", "run", file.string(), "-o", out.string()});
+    EXPECT_EQ(r.exit_code, kSuccess) << r;
+    return out / "history.csv";
+  }
+};
+
+/// The unit of a history column ("top.uz [mm]" -> "mm"; "" if none).
+std::string unit_of(const std::string& name) {
+  const auto open = name.rfind('[');
+  return open == std::string::npos ? "" : name.substr(open);
+}
+
+/// Largest magnitude of the columns of each unit.
+std::map<std::string, double> unit_scales(const History& h) {
+  std::map<std::string, double> scale;
+  for (std::size_t c = 0; c < h.names.size(); ++c)
+    for (const double v : h.columns[c])
+      scale[unit_of(h.names[c])] = std::max(scale[unit_of(h.names[c])], std::abs(v));
+  return scale;
+}
+
+TEST_F(CliSolvers, MumpsGivesTheUmfpackHistoryOnEveryExample) {
+  for (const std::string name : {"biphasic_creep", "cantilever", "confined_column",
+                                 "contact_column", "contact_patch", "free_swelling"}) {
+    SCOPED_TRACE(name);
+    const History umfpack = read_history(run_example(name, "umfpack"));
+    const History mumps = read_history(run_example(name, "mumps"));
+    ASSERT_EQ(umfpack.names, mumps.names);
+    ASSERT_GT(umfpack.names.size(), 1u);
+    const std::map<std::string, double> scale = unit_scales(umfpack);
+    for (std::size_t c = 0; c < umfpack.names.size(); ++c) {
+      const std::vector<double>& a = umfpack.columns[c];
+      const std::vector<double>& b = mumps.columns[c];
+      ASSERT_EQ(a.size(), b.size()) << umfpack.names[c] << ": the runs took other steps";
+      double diff = 0.0;
+      for (std::size_t i = 0; i < a.size(); ++i)
+        diff = std::max(diff, std::abs(a[i] - b[i]));
+      EXPECT_LE(diff, 1e-8 * scale.at(unit_of(umfpack.names[c]))) << umfpack.names[c];
+    }
+  }
+}
+
+TEST_F(CliSolvers, UnknownPetscOptionIsNamed) {
+  const std::string text = with_backend(read_text(kExamples / "cantilever" / "cantilever.toml"),
+                                        "mumps\"\npetsc_options = \"-mat_mumps_icntl_99x 3");
+  expect_invalid_input(write_file("typo.toml", text),
+                       {"solver.petsc_options", "-mat_mumps_icntl_99x 3", "does not know or use"});
+}
+
+TEST_F(CliSolvers, PetscOptionsOfANonPetscBackendAreRejected) {
+  const std::string text = with_backend(read_text(kExamples / "cantilever" / "cantilever.toml"),
+                                        "umfpack\"\npetsc_options = \"-ksp_type gmres");
+  expect_invalid_input(write_file("umfpack.toml", text),
+                       {"solver.petsc_options", "linear_solver = \"umfpack\"", "(line "});
+}
+
+} // namespace
+} // namespace trifem::cli_test

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
 // The linear-solver backends give the same converged answers: every quasi-static example (but
 // the two-minute sliding_layers, whose coarse form runs in the verification suite) is run with
-// UMFPACK and with MUMPS (PETSc) and every history column must agree to 1e-8 of the largest
-// magnitude of its unit in the history (a column that is zero in exact arithmetic, a lateral
-// displacement, is compared with the displacements). Bad PETSc settings are input errors naming
-// the key.
+// UMFPACK, with MUMPS and with the Krylov backend (PETSc): every history column must agree to
+// 1e-8 of the largest magnitude of its unit in the history (a column that is zero in exact
+// arithmetic, a lateral displacement, is compared with the displacements), and the Newton
+// iterations to within one per step. Bad PETSc settings are input errors naming the key.
 #include "cli_harness.hpp"
 
 #include <algorithm>
@@ -53,6 +53,13 @@ std::string with_backend(std::string text, const std::string& backend) {
   return text.insert(solver + 10, line);
 }
 
+/// The integer after `"key": ` in a summary.json (-1 if absent).
+long summary_integer(const fs::path& summary, const std::string& key) {
+  const std::string text = read_text(summary);
+  const auto at = text.find("\"" + key + "\": ");
+  return at == std::string::npos ? -1 : std::stol(text.substr(at + key.size() + 4));
+}
+
 class CliSolvers : public Cli {
 protected:
   /// Runs the example `name` with `backend`; the history.csv path (empty on failure).
@@ -81,23 +88,34 @@ std::map<std::string, double> unit_scales(const History& h) {
   return scale;
 }
 
-TEST_F(CliSolvers, MumpsGivesTheUmfpackHistoryOnEveryExample) {
+TEST_F(CliSolvers, PetscBackendsGiveTheUmfpackHistoryOnEveryExample) {
   for (const std::string name : {"biphasic_creep", "cantilever", "confined_column",
                                  "contact_column", "contact_patch", "free_swelling"}) {
     SCOPED_TRACE(name);
     const History umfpack = read_history(run_example(name, "umfpack"));
-    const History mumps = read_history(run_example(name, "mumps"));
-    ASSERT_EQ(umfpack.names, mumps.names);
     ASSERT_GT(umfpack.names.size(), 1u);
     const std::map<std::string, double> scale = unit_scales(umfpack);
-    for (std::size_t c = 0; c < umfpack.names.size(); ++c) {
-      const std::vector<double>& a = umfpack.columns[c];
-      const std::vector<double>& b = mumps.columns[c];
-      ASSERT_EQ(a.size(), b.size()) << umfpack.names[c] << ": the runs took other steps";
-      double diff = 0.0;
-      for (std::size_t i = 0; i < a.size(); ++i)
-        diff = std::max(diff, std::abs(a[i] - b[i]));
-      EXPECT_LE(diff, 1e-8 * scale.at(unit_of(umfpack.names[c]))) << umfpack.names[c];
+    for (const std::string backend : {"mumps", "krylov"}) {
+      SCOPED_TRACE(backend);
+      const History other = read_history(run_example(name, backend));
+      ASSERT_EQ(umfpack.names, other.names);
+      for (std::size_t c = 0; c < umfpack.names.size(); ++c) {
+        const std::vector<double>& a = umfpack.columns[c];
+        const std::vector<double>& b = other.columns[c];
+        ASSERT_EQ(a.size(), b.size()) << umfpack.names[c] << ": the runs took other steps";
+        double diff = 0.0;
+        for (std::size_t i = 0; i < a.size(); ++i)
+          diff = std::max(diff, std::abs(a[i] - b[i]));
+        EXPECT_LE(diff, 1e-8 * scale.at(unit_of(umfpack.names[c]))) << umfpack.names[c];
+      }
+      // the same Newton iterations per step, within one per step
+      const fs::path direct = output() / "umfpack" / "summary.json";
+      const fs::path summary = output() / backend / "summary.json";
+      const long steps = summary_integer(direct, "steps");
+      ASSERT_GT(steps, 0);
+      EXPECT_LE(std::abs(summary_integer(summary, "newton_iterations") -
+                         summary_integer(direct, "newton_iterations")),
+                steps);
     }
   }
 }

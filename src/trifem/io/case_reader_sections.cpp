@@ -200,8 +200,11 @@ void read_solver(const Table& root, CaseSpec& spec) {
     return;
   t->allow({"max_iterations", "residual_tolerance", "increment_tolerance", "line_search",
             "linear_solver", "petsc_options"});
-  static const Options<std::string_view> solvers = {
-      {"auto", "auto"}, {"umfpack", "umfpack"}, {"sparselu", "sparselu"}, {"mumps", "mumps"}};
+  static const Options<std::string_view> solvers = {{"auto", "auto"},
+                                                    {"umfpack", "umfpack"},
+                                                    {"sparselu", "sparselu"},
+                                                    {"mumps", "mumps"},
+                                                    {"krylov", "krylov"}};
   SolverSpec& s = spec.solver;
   s.max_iterations = t->integer("max_iterations", 1, s.max_iterations, kMaxNewtonIterations);
   s.residual_tolerance = t->number(
@@ -212,11 +215,12 @@ void read_solver(const Table& root, CaseSpec& spec) {
   s.linear_solver = std::string(
       t->choice("linear_solver", solvers, std::optional<std::string_view>(s.linear_solver)));
   s.petsc_options = t->get<std::string>("petsc_options").value_or("");
-  if (!s.petsc_options.empty() && s.linear_solver != "mumps")
+  if (!s.petsc_options.empty() && s.linear_solver != "mumps" && s.linear_solver != "krylov")
     fail(t->find("petsc_options"), t->path("petsc_options"),
-         fmt::format("applies to the PETSc backends (linear_solver = \"mumps\"), not to "
-                     "linear_solver = \"{}\"",
-                     s.linear_solver));
+         fmt::format(
+             "applies to the PETSc backends (linear_solver = \"mumps\" or \"krylov\"), not to "
+             "linear_solver = \"{}\"",
+             s.linear_solver));
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -3,6 +3,7 @@
 
 #include "trifem/core/error.hpp"
 #include "trifem/linalg/auto_solver.hpp"
+#include "trifem/linalg/krylov_solver.hpp"
 #include "trifem/linalg/petsc_solver.hpp"
 #include "trifem/linalg/sparse_lu_solver.hpp"
 #include "trifem/linalg/umfpack_solver.hpp"
@@ -10,15 +11,16 @@
 namespace trifem::linalg {
 
 std::vector<std::string> available_linear_solvers() {
-  return {"auto", "umfpack", "sparselu", "mumps"};
+  return {"auto", "umfpack", "sparselu", "mumps", "krylov"};
 }
 
 std::unique_ptr<LinearSolver> make_linear_solver(const std::string& name,
                                                  const std::string& petsc_options) {
-  if (!petsc_options.empty() && name != "mumps")
-    throw InputError(fmt::format("solver.petsc_options applies to the PETSc backends (mumps), "
-                                 "not to linear_solver = '{}'",
-                                 name));
+  if (!petsc_options.empty() && name != "mumps" && name != "krylov")
+    throw InputError(
+        fmt::format("solver.petsc_options applies to the PETSc backends (mumps, krylov), "
+                    "not to linear_solver = '{}'",
+                    name));
   if (name == "auto")
     return make_auto_solver();
   if (name == "umfpack")
@@ -27,8 +29,10 @@ std::unique_ptr<LinearSolver> make_linear_solver(const std::string& name,
     return make_sparse_lu_solver();
   if (name == "mumps")
     return make_mumps_solver(petsc_options);
-  throw InputError(
-      fmt::format("unknown linear solver '{}' (expected auto, umfpack, sparselu or mumps)", name));
+  if (name == "krylov")
+    return make_krylov_solver(petsc_options);
+  throw InputError(fmt::format(
+      "unknown linear solver '{}' (expected auto, umfpack, sparselu, mumps or krylov)", name));
 }
 
 } // namespace trifem::linalg

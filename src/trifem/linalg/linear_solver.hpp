@@ -27,6 +27,15 @@ public:
   virtual bool factorize(const SparseMatrix& A) = 0;
   /// Solves A x = b with the last factorization; false on failure.
   virtual bool solve(const Vector& b, Vector& x) = 0;
+  /// The field of every equation (an index into `field_names`), before analyze_pattern of a
+  /// new pattern. Block preconditioners split the system by field; direct solvers ignore it.
+  virtual void set_fields(const std::vector<int>& equation_fields,
+                          const std::vector<std::string>& field_names) {
+    (void)equation_fields;
+    (void)field_names;
+  }
+  /// Iterations of the last solve of an iterative backend (0 for a direct one).
+  virtual int last_iterations() const { return 0; }
   /// Backend name ("umfpack", "sparselu", "mumps", "auto (sparselu)", ...).
   virtual std::string name() const = 0;
   /// Why the last operation failed (empty reason if it succeeded).

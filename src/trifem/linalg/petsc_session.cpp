@@ -4,8 +4,10 @@
 #include <fmt/format.h>
 #include <petscsys.h>
 
+#include <cctype>
 #include <cstdlib>
 #include <mutex>
+#include <sstream>
 
 namespace trifem::linalg::petsc {
 namespace {
@@ -63,6 +65,16 @@ void check(int code, const char* what) {
 void insert_options(const std::string& options) {
   ensure_initialized();
   check(PetscOptionsInsertString(nullptr, options.c_str()), "the PETSc options could not be read");
+}
+
+void clear_options(const std::string& options) {
+  std::istringstream words(options);
+  for (std::string word; words >> word;) {
+    const bool key =
+        word.size() > 1 && word[0] == '-' && std::isalpha(static_cast<unsigned char>(word[1]));
+    if (key)
+      PetscOptionsClearValue(nullptr, word.c_str());
+  }
 }
 
 std::string take_unused_options() {

@@ -25,6 +25,9 @@ void check(int code, const char* what);
 /// cannot be parsed.
 void insert_options(const std::string& options);
 
+/// Removes the keys of `options` ("-key value ...") from the database again.
+void clear_options(const std::string& options);
+
 /// The options of the database that no PETSc object has read so far, as "-key value" items
 /// separated by ", " ("" if every option was used); they are removed from the database.
 std::string take_unused_options();

@@ -2,6 +2,7 @@
 #include "trifem/linalg/petsc_solver.hpp"
 
 #include "trifem/core/error.hpp"
+#include "trifem/linalg/petsc_matrix.hpp"
 #include "trifem/linalg/petsc_session.hpp"
 
 #include <fmt/format.h>
@@ -14,31 +15,6 @@ namespace trifem::linalg {
 namespace {
 
 using petsc::check;
-
-/// The pattern of a column-major matrix in compressed rows (PETSc's AIJ format) and, per CSR
-/// entry, the position of its value in the column-major storage.
-struct CsrPattern {
-  std::vector<PetscInt> row_start, column;
-  std::vector<Index> source; ///< csr entry k holds A.valuePtr()[source[k]]
-
-  explicit CsrPattern(const SparseMatrix& A) {
-    const Index n = static_cast<Index>(A.rows());
-    row_start.assign(n + 1, 0);
-    for (Index k = 0; k < A.nonZeros(); ++k)
-      ++row_start[A.innerIndexPtr()[k] + 1];
-    for (Index i = 0; i < n; ++i)
-      row_start[i + 1] += row_start[i];
-    column.resize(A.nonZeros());
-    source.resize(A.nonZeros());
-    std::vector<PetscInt> next(row_start.begin(), row_start.end() - 1);
-    for (Index j = 0; j < A.cols(); ++j) // columns in order: each row's columns come sorted
-      for (Index k = A.outerIndexPtr()[j]; k < A.outerIndexPtr()[j + 1]; ++k) {
-        const PetscInt at = next[A.innerIndexPtr()[k]]++;
-        column[at] = j;
-        source[at] = k;
-      }
-  }
-};
 
 /// Reason and permanence of a MUMPS failure from its INFOG(1), INFOG(2).
 LinearSolverFailure mumps_failure(PetscInt infog1, PetscInt infog2) {
@@ -84,7 +60,7 @@ const char* pc_failure_text(PCFailedReason reason) {
 /// MUMPS LU through a PETSc KSP of type preonly.
 class MumpsSolver final : public LinearSolver {
 public:
-  explicit MumpsSolver(const std::string& options) {
+  explicit MumpsSolver(const std::string& options) : options_(options) {
     petsc::ensure_initialized();
     if (!options.empty())
       try {
@@ -93,7 +69,10 @@ public:
         throw InputError(fmt::format("solver.petsc_options = '{}': {}", options, e.what()));
       }
   }
-  ~MumpsSolver() override { release(); }
+  ~MumpsSolver() override {
+    release();
+    petsc::clear_options(options_); // the database is global: leave it as found
+  }
   MumpsSolver(const MumpsSolver&) = delete;
   MumpsSolver& operator=(const MumpsSolver&) = delete;
 
@@ -104,15 +83,10 @@ public:
     if (n_ == 0)
       return;
     try {
-      pattern_ = std::make_unique<CsrPattern>(A);
-      values_.assign(A.nonZeros(), 0.0);
-      copy_values(A, values_.data());
-      check(MatCreateSeqAIJWithArrays(PETSC_COMM_SELF, n_, n_, pattern_->row_start.data(),
-                                      pattern_->column.data(), values_.data(), &matrix_),
-            "PETSc matrix");
-      check(MatCreateVecs(matrix_, &x_, &b_), "PETSc vectors");
+      matrix_ = std::make_unique<petsc::SeqAijMatrix>(A);
+      check(MatCreateVecs(matrix_->mat(), &x_, &b_), "PETSc vectors");
       check(KSPCreate(PETSC_COMM_SELF, &ksp_), "PETSc KSP");
-      check(KSPSetOperators(ksp_, matrix_, matrix_), "PETSc KSP operators");
+      check(KSPSetOperators(ksp_, matrix_->mat(), matrix_->mat()), "PETSc KSP operators");
       check(KSPSetType(ksp_, KSPPREONLY), "PETSc KSP type");
       PC pc = nullptr;
       check(KSPGetPC(ksp_, &pc), "PETSc PC");
@@ -133,14 +107,11 @@ public:
     failure_ = {};
     factored_ = false;
     try {
-      // through Get/RestoreArray, so PETSc sees new values (a numeric factorization only)
-      PetscScalar* values = nullptr;
-      check(MatSeqAIJGetArray(matrix_, &values), "PETSc matrix");
-      copy_values(A, values);
-      check(MatSeqAIJRestoreArray(matrix_, &values), "PETSc matrix");
-      check(KSPSetUp(ksp_), "MUMPS factorization");
+      matrix_->update(A); // same pattern: a numeric factorization only
+      check(KSPSetUp(ksp_), "PETSc KSP set-up");
       PC pc = nullptr;
       check(KSPGetPC(ksp_, &pc), "PETSc PC");
+      check(PCSetUp(pc), "MUMPS factorization"); // KSPSetUp runs it only the first time
       PCFailedReason reason = PC_NOERROR;
       check(PCGetFailedReason(pc, &reason), "PETSc PC");
       if (reason != PC_NOERROR) {
@@ -191,12 +162,6 @@ public:
   LinearSolverFailure failure() const override { return failure_; }
 
 private:
-  void copy_values(const SparseMatrix& A, PetscScalar* to) const {
-    const Real* v = A.valuePtr();
-    for (std::size_t k = 0; k < values_.size(); ++k)
-      to[k] = v[pattern_->source[k]];
-  }
-
   LinearSolverFailure factor_failure(PC pc, PCFailedReason reason) const {
     Mat factor = nullptr;
     PetscInt infog1 = 0, infog2 = 0;
@@ -214,22 +179,19 @@ private:
       VecDestroy(&x_);
     if (b_)
       VecDestroy(&b_);
-    if (matrix_)
-      MatDestroy(&matrix_);
+    matrix_.reset();
     ksp_ = nullptr;
     x_ = b_ = nullptr;
-    matrix_ = nullptr;
     factored_ = false;
   }
 
   Index n_ = 0;
-  std::unique_ptr<CsrPattern> pattern_;
-  std::vector<PetscScalar> values_; ///< CSR values; the PETSc matrix uses this storage
-  Mat matrix_ = nullptr;
+  std::unique_ptr<petsc::SeqAijMatrix> matrix_;
   Vec x_ = nullptr, b_ = nullptr;
   KSP ksp_ = nullptr;
   bool factored_ = false; ///< the symbolic analysis runs with the first factorization
   LinearSolverFailure failure_;
+  std::string options_;
 };
 
 /// Solves a 2×2 system with a solver made with `options`, then refuses options nobody read.

@@ -30,7 +30,7 @@ const char* to_string(SolveStatus status) {
   case SolveStatus::MaxIterations:
     return "maximum Newton iterations reached";
   case SolveStatus::FactorizationFailed:
-    return "linear solver failed (singular matrix?)";
+    return "linear solver failed";
   case SolveStatus::Rejected:
     return "converged state rejected";
   case SolveStatus::Unrecoverable:
@@ -115,6 +115,10 @@ SolveStatus NewtonSolver::factor_and_solve(NonlinearProblem& problem, Linearizat
   }
   auto start = Clock::now();
   if (analyzed_pattern_ != problem.pattern_id()) {
+    std::vector<std::string> names;
+    for (const FieldScale& f : problem.field_scales())
+      names.push_back(f.name);
+    linear_->set_fields(problem.equation_fields(), names);
     linear_->analyze_pattern(lin.jacobian);
     analyzed_pattern_ = problem.pattern_id();
   }

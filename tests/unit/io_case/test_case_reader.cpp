@@ -599,7 +599,7 @@ const std::vector<BadCase> kBadCases = {
     {"bad_linear_solver",
      kBase + "[solver]\nlinear_solver = \"pardiso\"\n",
      {"solver.linear_solver = 'pardiso': unknown value (expected one of: auto, umfpack, sparselu, "
-      "mumps)"}},
+      "mumps, krylov)"}},
     {"tolerance_out_of_range",
      kBase + "[solver]\nresidual_tolerance = 1.5\n",
      {"solver.residual_tolerance = 1.5: out of range, expected a value in (0, 1)"}},

@@ -1,0 +1,329 @@
+// SPDX-License-Identifier: MIT
+#include "trifem/linalg/krylov_solver.hpp"
+
+#include "trifem/core/error.hpp"
+#include "trifem/linalg/block_split.hpp"
+#include "trifem/linalg/petsc_matrix.hpp"
+#include "trifem/linalg/petsc_session.hpp"
+
+#include <fmt/format.h>
+#include <petscksp.h>
+
+#include <algorithm>
+
+namespace trifem::linalg {
+namespace {
+
+using petsc::check;
+
+/// An index set of `indices` (PETSc copies them).
+IS make_index_set(const std::vector<Index>& indices) {
+  std::vector<PetscInt> values(indices.begin(), indices.end());
+  IS is = nullptr;
+  check(ISCreateGeneral(PETSC_COMM_SELF, static_cast<PetscInt>(values.size()), values.data(),
+                        PETSC_COPY_VALUES, &is),
+        "PETSc index set");
+  return is;
+}
+
+/// Positions of `subset` within the ascending list `all`.
+std::vector<Index> positions_in(const std::vector<Index>& subset, const std::vector<Index>& all) {
+  std::vector<Index> at;
+  at.reserve(subset.size());
+  for (Index i : subset)
+    at.push_back(static_cast<Index>(std::lower_bound(all.begin(), all.end(), i) - all.begin()));
+  return at;
+}
+
+/// `ksp` applies the preconditioner `type` once (a direct solve for PCLU, with MUMPS).
+PC apply_once(KSP ksp, PCType type) {
+  PC pc = nullptr;
+  check(KSPSetType(ksp, KSPPREONLY), "PETSc KSP type");
+  check(KSPGetPC(ksp, &pc), "PETSc PC");
+  check(PCSetType(pc, type), "PETSc PC type");
+  if (std::string(type) == PCLU)
+    check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS), "MUMPS");
+  return pc;
+}
+
+/// FGMRES preconditioned by a Schur-complement fieldsplit (or by one preconditioner for a
+/// system of one kind).
+class KrylovSolver final : public LinearSolver {
+public:
+  KrylovSolver(const std::string& options, KrylovSettings settings)
+      : settings_(settings), options_(options) {
+    petsc::ensure_initialized();
+    if (!options.empty())
+      try {
+        petsc::insert_options(options);
+      } catch (const petsc::PetscError& e) {
+        throw InputError(fmt::format("solver.petsc_options = '{}': {}", options, e.what()));
+      }
+  }
+  ~KrylovSolver() override {
+    release();
+    petsc::clear_options(options_); // the database is global: leave it as found
+  }
+  KrylovSolver(const KrylovSolver&) = delete;
+  KrylovSolver& operator=(const KrylovSolver&) = delete;
+
+  void set_fields(const std::vector<int>& equation_fields,
+                  const std::vector<std::string>& field_names) override {
+    split_ = BlockSplit::from_fields(equation_fields, field_names);
+  }
+
+  void analyze_pattern(const SparseMatrix& A) override {
+    release();
+    failure_ = {};
+    n_ = static_cast<Index>(A.rows());
+    if (n_ == 0)
+      return;
+    if (split_.empty() || static_cast<Index>(split_.displacement.size() + split_.flux.size() +
+                                             split_.potential.size()) != n_)
+      split_ = BlockSplit{}; // no (matching) field information: one block
+    try {
+      set_up(A);
+    } catch (const petsc::PetscError& e) {
+      failure_ = {e.what(), true};
+      release();
+    }
+  }
+
+  bool factorize(const SparseMatrix& A) override {
+    if (n_ == 0)
+      return true;
+    if (!ksp_)
+      return false; // the set-up failed: failure_ says why
+    failure_ = {};
+    ready_ = false;
+    try {
+      matrix_->update(A, row_sign_);
+      check(KSPSetUp(ksp_), "PETSc KSP set-up");
+      PC pc = nullptr;
+      check(KSPGetPC(ksp_, &pc), "PETSc PC");
+      check(PCSetUp(pc), "preconditioner set-up");
+      if (!sub_solvers_configured_)
+        configure_sub_solvers(pc);
+      ready_ = true;
+      return true;
+    } catch (const petsc::PetscError& e) {
+      failure_ = {e.what(), false};
+      return false;
+    }
+  }
+
+  bool solve(const Vector& b, Vector& x) override {
+    x.resize(n_);
+    if (n_ == 0)
+      return true;
+    if (!ready_)
+      return false;
+    try {
+      PetscScalar* data = nullptr;
+      check(VecGetArray(b_, &data), "PETSc vector");
+      for (Index i = 0; i < n_; ++i)
+        data[i] = row_sign_.empty() ? b[i] : row_sign_[i] * b[i];
+      check(VecRestoreArray(b_, &data), "PETSc vector");
+      check(KSPSolve(ksp_, b_, x_), "Krylov solve");
+      KSPConvergedReason reason = KSP_CONVERGED_ITERATING;
+      check(KSPGetConvergedReason(ksp_, &reason), "PETSc KSP");
+      PetscInt iterations = 0;
+      check(KSPGetIterationNumber(ksp_, &iterations), "PETSc KSP");
+      iterations_ = static_cast<int>(iterations);
+      if (reason < 0) {
+        failure_ = {not_converged(reason), false};
+        return false;
+      }
+      const PetscScalar* result = nullptr;
+      check(VecGetArrayRead(x_, &result), "PETSc vector");
+      std::copy(result, result + n_, x.data());
+      check(VecRestoreArrayRead(x_, &result), "PETSc vector");
+    } catch (const petsc::PetscError& e) {
+      failure_ = {e.what(), false};
+      return false;
+    }
+    if (x.allFinite())
+      return true;
+    failure_ = {"the Krylov solve gave non-finite values", false};
+    return false;
+  }
+
+  std::string name() const override { return "krylov"; }
+  LinearSolverFailure failure() const override { return failure_; }
+  int last_iterations() const override { return iterations_; }
+
+private:
+  void set_up(const SparseMatrix& A) {
+    const bool blocks = !split_.potential.empty() && split_.potential.size() < std::size_t(n_);
+    row_sign_.clear();
+    if (blocks) { // potential rows negated: the Schur complement becomes positive
+      row_sign_.assign(n_, 1.0);
+      for (Index q : split_.potential)
+        row_sign_[q] = -1.0;
+    }
+    matrix_ = std::make_unique<petsc::SeqAijMatrix>(A);
+    check(MatCreateVecs(matrix_->mat(), &x_, &b_), "PETSc vectors");
+    check(KSPCreate(PETSC_COMM_SELF, &ksp_), "PETSc KSP");
+    check(KSPSetOperators(ksp_, matrix_->mat(), matrix_->mat()), "PETSc KSP operators");
+    check(KSPSetType(ksp_, KSPFGMRES), "PETSc KSP type");
+    check(KSPGMRESSetRestart(ksp_, 100), "PETSc GMRES restart");
+    check(KSPSetTolerances(ksp_, settings_.relative_tolerance, 0.0, PETSC_DEFAULT,
+                           settings_.max_iterations),
+          "PETSc KSP tolerances");
+    PC pc = nullptr;
+    check(KSPGetPC(ksp_, &pc), "PETSc PC");
+    if (blocks) {
+      check(PCSetType(pc, PCFIELDSPLIT), "PETSc fieldsplit");
+      primal_ = split_.primal();
+      IS primal = make_index_set(primal_), potential = make_index_set(split_.potential);
+      check(PCFieldSplitSetIS(pc, "primal", primal), "PETSc fieldsplit");
+      check(PCFieldSplitSetIS(pc, "potential", potential), "PETSc fieldsplit");
+      ISDestroy(&primal);
+      ISDestroy(&potential);
+      check(PCFieldSplitSetType(pc, PC_COMPOSITE_SCHUR), "PETSc fieldsplit");
+      check(PCFieldSplitSetSchurFactType(pc, PC_FIELDSPLIT_SCHUR_FACT_FULL), "PETSc fieldsplit");
+      check(PCFieldSplitSetSchurPre(pc, PC_FIELDSPLIT_SCHUR_PRE_SELFP, nullptr),
+            "PETSc fieldsplit");
+    } else {
+      check(PCSetType(pc, PCLU), "PETSc PC type");
+      check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS), "MUMPS");
+      sub_solvers_configured_ = true;
+    }
+    check(KSPSetFromOptions(ksp_), "PETSc options");
+  }
+
+  /// Defaults of the solvers inside the fieldsplit (they exist after its first set-up), then
+  /// the user's options over them.
+  void configure_sub_solvers(PC pc) {
+    sub_solvers_configured_ = true;
+    if (!has_type(pc, PCFIELDSPLIT))
+      return; // replaced through the options
+    const std::vector<KSP> solvers = sub_solvers(pc);
+    if (solvers.size() != 2)
+      return;
+    apply_once(solvers[0], PCLU);
+    check(KSPSetFromOptions(solvers[0]), "PETSc options");
+    PC primal = nullptr;
+    check(KSPGetPC(solvers[0], &primal), "PETSc PC");
+    if (has_type(primal, PCFIELDSPLIT))
+      split_primal(solvers[0], primal);
+    apply_once(solvers[1], PCLU);
+    check(KSPSetFromOptions(solvers[1]), "PETSc options");
+  }
+
+  /// A fieldsplit of the primal block chosen through the options: displacement, then fluxes
+  /// (the flux rows depend on the displacement but not conversely, so the multiplicative
+  /// split is exact with exact sub-solves); AMG on the displacement and ILU on the fluxes.
+  void split_primal(KSP ksp, PC pc) {
+    if (split_.flux.empty() || split_.displacement.empty())
+      return;
+    check(PCFieldSplitSetType(pc, PC_COMPOSITE_MULTIPLICATIVE), "PETSc fieldsplit");
+    IS displacement = make_index_set(positions_in(split_.displacement, primal_));
+    IS flux = make_index_set(positions_in(split_.flux, primal_));
+    check(PCFieldSplitSetIS(pc, "displacement", displacement), "PETSc fieldsplit");
+    check(PCFieldSplitSetIS(pc, "flux", flux), "PETSc fieldsplit");
+    ISDestroy(&displacement);
+    ISDestroy(&flux);
+    check(KSPSetFromOptions(ksp), "PETSc options");
+    check(PCSetUp(pc), "primal block set-up");
+    const std::vector<KSP> solvers = sub_solvers(pc);
+    if (solvers.size() != 2)
+      return;
+    apply_once(solvers[0], PCHYPRE);
+    apply_once(solvers[1], PCILU);
+    for (KSP s : solvers)
+      check(KSPSetFromOptions(s), "PETSc options");
+  }
+
+  static bool has_type(PC pc, PCType type) {
+    PCType current = nullptr;
+    check(PCGetType(pc, &current), "PETSc PC");
+    return current != nullptr && std::string(current) == type;
+  }
+
+  static std::vector<KSP> sub_solvers(PC pc) {
+    PetscInt count = 0;
+    KSP* sub = nullptr;
+    check(PCFieldSplitGetSubKSP(pc, &count, &sub), "PETSc fieldsplit");
+    std::vector<KSP> solvers(sub, sub + count);
+    PetscFree(sub);
+    return solvers;
+  }
+
+  std::string not_converged(KSPConvergedReason reason) const {
+    PetscReal residual = 0.0, initial = 0.0;
+    KSPGetResidualNorm(ksp_, &residual);
+    VecNorm(b_, NORM_2, &initial);
+    return fmt::format("the Krylov solver did not converge ({} after {} iterations; residual "
+                       "reduced to {:.3g} of the right-hand side, tolerance {:.3g})",
+                       KSPConvergedReasons[reason], iterations_,
+                       initial > 0.0 ? residual / initial : residual, settings_.relative_tolerance);
+  }
+
+  void release() {
+    if (ksp_)
+      KSPDestroy(&ksp_);
+    if (x_)
+      VecDestroy(&x_);
+    if (b_)
+      VecDestroy(&b_);
+    matrix_.reset();
+    ksp_ = nullptr;
+    x_ = b_ = nullptr;
+    ready_ = false;
+    sub_solvers_configured_ = false;
+  }
+
+  KrylovSettings settings_;
+  BlockSplit split_;
+  std::vector<Index> primal_;
+  std::vector<Real> row_sign_; ///< −1 on potential rows (empty: no negation)
+  Index n_ = 0;
+  std::unique_ptr<petsc::SeqAijMatrix> matrix_;
+  Vec x_ = nullptr, b_ = nullptr;
+  KSP ksp_ = nullptr;
+  bool ready_ = false;
+  bool sub_solvers_configured_ = false;
+  int iterations_ = 0;
+  LinearSolverFailure failure_;
+  std::string options_;
+};
+
+/// Solves a small system of every block kind with `options`, then refuses options nobody read
+/// (or a set-up that fails with them).
+void check_options_are_used(const std::string& options, KrylovSettings settings) {
+  // displacement (0, 1), fluid flux (2, 3), pressure (4)
+  const Real dense[5][5] = {
+      {4, 1, 0, 0, 1}, {1, 4, 0, 0, 0}, {0.5, 0, 3, 0, 1}, {0, 0, 0, 3, 1}, {1, 0, 1, 1, 0}};
+  SparseMatrix A(5, 5);
+  for (int i = 0; i < 5; ++i)
+    for (int j = 0; j < 5; ++j)
+      if (dense[i][j] != 0.0)
+        A.insert(i, j) = dense[i][j];
+  A.makeCompressed();
+  KrylovSolver probe(options, settings);
+  probe.set_fields({0, 0, 1, 1, 2}, {"displacement", "fluid_flux", "pressure"});
+  probe.analyze_pattern(A);
+  if (!probe.factorize(A))
+    throw InputError(fmt::format("solver.petsc_options = '{}': a 5x5 test system could not be "
+                                 "set up with these options: {}",
+                                 options, probe.failure().reason));
+  Vector x;
+  probe.solve(Vector::Ones(5), x); // reads the options of the solve; convergence is not asked
+  const std::string unused = petsc::take_unused_options();
+  if (!unused.empty())
+    throw InputError(fmt::format("solver.petsc_options = '{}': PETSc does not know or use {} "
+                                 "(with the krylov backend)",
+                                 options, unused));
+}
+
+} // namespace
+
+std::unique_ptr<LinearSolver> make_krylov_solver(const std::string& petsc_options,
+                                                 KrylovSettings settings) {
+  if (!petsc_options.empty())
+    check_options_are_used(petsc_options, settings);
+  return std::make_unique<KrylovSolver>(petsc_options, settings);
+}
+
+} // namespace trifem::linalg

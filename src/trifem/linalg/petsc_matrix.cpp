@@ -1,0 +1,55 @@
+// SPDX-License-Identifier: MIT
+#include "trifem/linalg/petsc_matrix.hpp"
+
+#include "trifem/linalg/petsc_session.hpp"
+
+namespace trifem::linalg::petsc {
+
+CsrPattern::CsrPattern(const SparseMatrix& A) {
+  const Index n = static_cast<Index>(A.rows());
+  row_start.assign(n + 1, 0);
+  for (Index k = 0; k < A.nonZeros(); ++k)
+    ++row_start[A.innerIndexPtr()[k] + 1];
+  for (Index i = 0; i < n; ++i)
+    row_start[i + 1] += row_start[i];
+  column.resize(A.nonZeros());
+  source.resize(A.nonZeros());
+  std::vector<PetscInt> next(row_start.begin(), row_start.end() - 1);
+  for (Index j = 0; j < A.cols(); ++j) // columns in order: each row's columns come sorted
+    for (Index k = A.outerIndexPtr()[j]; k < A.outerIndexPtr()[j + 1]; ++k) {
+      const PetscInt at = next[A.innerIndexPtr()[k]]++;
+      column[at] = j;
+      source[at] = k;
+    }
+}
+
+SeqAijMatrix::SeqAijMatrix(const SparseMatrix& A) : pattern_(A), values_(A.nonZeros(), 0.0) {
+  const Real* v = A.valuePtr();
+  for (std::size_t k = 0; k < values_.size(); ++k)
+    values_[k] = v[pattern_.source[k]];
+  check(MatCreateSeqAIJWithArrays(PETSC_COMM_SELF, static_cast<PetscInt>(A.rows()),
+                                  static_cast<PetscInt>(A.cols()), pattern_.row_start.data(),
+                                  pattern_.column.data(), values_.data(), &matrix_),
+        "PETSc matrix");
+}
+
+SeqAijMatrix::~SeqAijMatrix() {
+  if (matrix_)
+    MatDestroy(&matrix_);
+}
+
+void SeqAijMatrix::update(const SparseMatrix& A, const std::vector<Real>& row_sign) {
+  // through Get/RestoreArray, so PETSc knows the values changed
+  PetscScalar* to = nullptr;
+  check(MatSeqAIJGetArray(matrix_, &to), "PETSc matrix");
+  const Real* v = A.valuePtr();
+  const Index rows = static_cast<Index>(pattern_.row_start.size()) - 1;
+  for (Index i = 0; i < rows; ++i) {
+    const Real sign = row_sign.empty() ? 1.0 : row_sign[i];
+    for (PetscInt k = pattern_.row_start[i]; k < pattern_.row_start[i + 1]; ++k)
+      to[k] = sign * v[pattern_.source[k]];
+  }
+  check(MatSeqAIJRestoreArray(matrix_, &to), "PETSc matrix");
+}
+
+} // namespace trifem::linalg::petsc

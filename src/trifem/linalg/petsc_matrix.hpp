@@ -1,0 +1,43 @@
+// SPDX-License-Identifier: MIT
+// A sequential PETSc AIJ (compressed-row) copy of a column-major Eigen matrix whose values can
+// be refreshed in place while the pattern is unchanged.
+#pragma once
+
+#include "trifem/core/types.hpp"
+
+#include <petscmat.h>
+
+#include <vector>
+
+namespace trifem::linalg::petsc {
+
+/// The pattern of a column-major matrix in compressed rows and, per CSR entry, the position of
+/// its value in the column-major storage.
+struct CsrPattern {
+  std::vector<PetscInt> row_start, column;
+  std::vector<Index> source; ///< csr entry k holds A.valuePtr()[source[k]]
+
+  explicit CsrPattern(const SparseMatrix& A);
+};
+
+/// PETSc matrix sharing this object's value storage.
+class SeqAijMatrix {
+public:
+  /// Creates the matrix with the pattern and values of `A`.
+  explicit SeqAijMatrix(const SparseMatrix& A);
+  ~SeqAijMatrix();
+  SeqAijMatrix(const SeqAijMatrix&) = delete;
+  SeqAijMatrix& operator=(const SeqAijMatrix&) = delete;
+
+  /// Copies the values of `A` (the pattern given at construction), multiplying row i by
+  /// row_sign[i] when row_sign is not empty.
+  void update(const SparseMatrix& A, const std::vector<Real>& row_sign = {});
+  Mat mat() const { return matrix_; }
+
+private:
+  CsrPattern pattern_;
+  std::vector<PetscScalar> values_;
+  Mat matrix_ = nullptr;
+};
+
+} // namespace trifem::linalg::petsc

@@ -1,0 +1,135 @@
+// SPDX-License-Identifier: MIT
+// The "krylov" backend: the grouping of equations by field, FGMRES with the Schur-complement
+// fieldsplit on a mixed system (with its default direct block solves and with the displacement
+// / flux split and AMG chosen through PETSc options), and a solve that does not converge.
+#include "trifem/core/error.hpp"
+#include "trifem/linalg/block_split.hpp"
+#include "trifem/linalg/linear_solver.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+using namespace trifem;
+
+namespace {
+
+/// A mixed system of the triphasic kind: a displacement block K (1-D elasticity with a shift),
+/// a flux block F (mass-like, coupled to the displacement but not conversely), and potentials
+/// that constrain both through B (unsymmetric coupling) with a zero diagonal block.
+struct MixedSystem {
+  SparseMatrix A;
+  std::vector<int> fields; ///< 0 displacement, 1 fluid_flux, 2 pressure
+  std::vector<std::string> names{"displacement", "fluid_flux", "pressure"};
+};
+
+MixedSystem mixed_system(Index cells) {
+  const Index n = cells + 1; // nodes: displacement and flux per node, pressure per cell
+  std::vector<Eigen::Triplet<Real>> t;
+  const Index u = 0, w = n, p = 2 * n;
+  for (Index e = 0; e < cells; ++e) {
+    for (Index a = 0; a < 2; ++a)
+      for (Index b = 0; b < 2; ++b) {
+        t.emplace_back(u + e + a, u + e + b, (a == b ? 1.0 : -1.0) * cells);        // stiffness
+        t.emplace_back(w + e + a, w + e + b, (a == b ? 2.0 : 1.0) / (6.0 * cells)); // mass
+        t.emplace_back(w + e + a, u + e + b, 0.05 * (a == b ? 1.0 : -1.0)); // flux row sees u
+      }
+    for (Index a = 0; a < 2; ++a) {
+      const Real g = a == 0 ? -1.0 : 1.0;
+      t.emplace_back(u + e + a, p + e, -g);       // −g p in the displacement rows
+      t.emplace_back(w + e + a, p + e, -0.8 * g); // −Δt g p in the flux rows
+      t.emplace_back(p + e, u + e + a, -g);       // volume change
+      t.emplace_back(p + e, w + e + a, -0.7 * g); // outflow (not the transpose: unsymmetric)
+    }
+  }
+  for (Index i = 0; i < n; ++i)
+    t.emplace_back(u + i, u + i, 0.01 * cells); // supported: no rigid translation
+  MixedSystem s;
+  s.A.resize(2 * n + cells, 2 * n + cells);
+  s.A.setFromTriplets(t.begin(), t.end());
+  s.fields.assign(n, 0);
+  s.fields.insert(s.fields.end(), n, 1);
+  s.fields.insert(s.fields.end(), cells, 2);
+  return s;
+}
+
+Vector right_hand_side(Index size) {
+  Vector b(size);
+  for (Index i = 0; i < size; ++i)
+    b[i] = std::cos(0.21 * i) + 0.05;
+  return b;
+}
+
+/// Solves the mixed system with `solver` (fields given) and returns ‖A x − b‖ / ‖b‖.
+Real relative_residual(linalg::LinearSolver& solver, const MixedSystem& s) {
+  solver.set_fields(s.fields, s.names);
+  solver.analyze_pattern(s.A);
+  EXPECT_TRUE(solver.factorize(s.A)) << solver.failure().reason;
+  const Vector b = right_hand_side(s.A.rows());
+  Vector x;
+  EXPECT_TRUE(solver.solve(b, x)) << solver.failure().reason;
+  return x.size() == b.size() ? (s.A * x - b).norm() / b.norm() : 1.0;
+}
+
+} // namespace
+
+TEST(BlockSplit, GroupsEquationsIntoDisplacementFluxesAndPotentials) {
+  const std::vector<std::string> names{"displacement",         "fluid_flux", "cation_flux",
+                                       "anion_flux",           "pressure",   "electric_potential",
+                                       "contact_multipliers_2"};
+  const std::vector<int> fields{0, 1, 0, 2, 3, 4, 5, 6, 1};
+  const linalg::BlockSplit split = linalg::BlockSplit::from_fields(fields, names);
+  EXPECT_EQ(split.displacement, (std::vector<Index>{0, 2}));
+  EXPECT_EQ(split.flux, (std::vector<Index>{1, 3, 4, 8}));
+  EXPECT_EQ(split.potential, (std::vector<Index>{5, 6, 7}));
+  EXPECT_EQ(split.primal(), (std::vector<Index>{0, 1, 2, 3, 4, 8}));
+}
+
+TEST(KrylovSolver, SolvesAMixedSystemThroughTheSchurFieldsplit) {
+  const MixedSystem s = mixed_system(40);
+  auto solver = linalg::make_linear_solver("krylov");
+  // FGMRES stops at 1e-10 of the right-hand side: the true residual is below it
+  EXPECT_LT(relative_residual(*solver, s), 1e-9);
+  EXPECT_GE(solver->last_iterations(), 1);
+  EXPECT_LE(solver->last_iterations(), 30);
+  EXPECT_EQ(solver->name(), "krylov");
+}
+
+TEST(KrylovSolver, OptionsSplitThePrimalBlockIntoDisplacementAndFluxes) {
+  // the primal block as a fieldsplit: trifem supplies the displacement / flux index sets,
+  // BoomerAMG on the displacement and ILU on the fluxes; a wrong set would fail the solve
+  const MixedSystem s = mixed_system(40);
+  auto solver =
+      linalg::make_linear_solver("krylov", "-fieldsplit_primal_pc_type fieldsplit -ksp_rtol 1e-11");
+  EXPECT_LT(relative_residual(*solver, s), 1e-10);
+  EXPECT_GE(solver->last_iterations(), 1);
+}
+
+TEST(KrylovSolver, ASolveThatDoesNotConvergeSaysWhyAndIsCurable) {
+  const MixedSystem s = mixed_system(40);
+  auto solver = linalg::make_linear_solver(
+      "krylov", "-ksp_max_it 2 -fieldsplit_primal_pc_type jacobi -fieldsplit_potential_pc_type "
+                "jacobi");
+  solver->set_fields(s.fields, s.names);
+  solver->analyze_pattern(s.A);
+  ASSERT_TRUE(solver->factorize(s.A)) << solver->failure().reason;
+  Vector x;
+  EXPECT_FALSE(solver->solve(right_hand_side(s.A.rows()), x));
+  const std::string reason = solver->failure().reason;
+  EXPECT_NE(reason.find("did not converge"), std::string::npos) << reason;
+  EXPECT_NE(reason.find("after 2 iterations"), std::string::npos) << reason;
+  EXPECT_NE(reason.find("of the right-hand side"), std::string::npos) << reason;
+  EXPECT_FALSE(solver->failure().permanent); // a smaller step may converge
+}
+
+TEST(KrylovSolver, UnusedPetscOptionIsAnInputErrorNamingIt) {
+  try {
+    linalg::make_linear_solver("krylov", "-ksp_rtol 1e-9 -fieldsplit_primal_pc_typo lu");
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("-fieldsplit_primal_pc_typo lu"), std::string::npos) << what;
+    EXPECT_NE(what.find("krylov"), std::string::npos) << what;
+  }
+}

@@ -18,6 +18,13 @@ target_include_directories(trifem_umfpack SYSTEM INTERFACE ${UMFPACK_INCLUDE_DIR
 target_link_libraries(trifem_umfpack INTERFACE ${UMFPACK_LIBRARY} ${AMD_LIBRARY}
                       ${SUITESPARSECONFIG_LIBRARY})
 
+# METIS (nested-dissection orderings for the sparse direct solvers): Debian's libmetis-dev.
+find_path(METIS_INCLUDE_DIR metis.h REQUIRED)
+find_library(METIS_LIBRARY metis REQUIRED)
+add_library(trifem_metis INTERFACE)
+target_include_directories(trifem_metis SYSTEM INTERFACE ${METIS_INCLUDE_DIR})
+target_link_libraries(trifem_metis INTERFACE ${METIS_LIBRARY})
+
 # PETSc (MUMPS, hypre, PT-Scotch, SuperLU_dist) over OpenMPI: Debian's petsc-dev.
 find_package(PkgConfig REQUIRED)
 pkg_check_modules(PETSC REQUIRED IMPORTED_TARGET PETSc>=3.18)

@@ -5,25 +5,35 @@
 
 namespace trifem::linalg::petsc {
 
-CsrPattern::CsrPattern(const SparseMatrix& A) {
+CsrPattern::CsrPattern(const SparseMatrix& A, const std::vector<Index>& order) {
   const Index n = static_cast<Index>(A.rows());
+  std::vector<Index> position; // position[old] = new
+  if (!order.empty()) {
+    position.resize(n);
+    for (Index i = 0; i < n; ++i)
+      position[order[i]] = i;
+  }
+  auto to_new = [&](Index old) { return position.empty() ? old : position[old]; };
   row_start.assign(n + 1, 0);
   for (Index k = 0; k < A.nonZeros(); ++k)
-    ++row_start[A.innerIndexPtr()[k] + 1];
+    ++row_start[to_new(A.innerIndexPtr()[k]) + 1];
   for (Index i = 0; i < n; ++i)
     row_start[i + 1] += row_start[i];
   column.resize(A.nonZeros());
   source.resize(A.nonZeros());
   std::vector<PetscInt> next(row_start.begin(), row_start.end() - 1);
-  for (Index j = 0; j < A.cols(); ++j) // columns in order: each row's columns come sorted
-    for (Index k = A.outerIndexPtr()[j]; k < A.outerIndexPtr()[j + 1]; ++k) {
-      const PetscInt at = next[A.innerIndexPtr()[k]]++;
+  for (Index j = 0; j < A.cols(); ++j) { // new columns in order: each row's come sorted
+    const Index old = order.empty() ? j : order[j];
+    for (Index k = A.outerIndexPtr()[old]; k < A.outerIndexPtr()[old + 1]; ++k) {
+      const PetscInt at = next[to_new(A.innerIndexPtr()[k])]++;
       column[at] = j;
       source[at] = k;
     }
+  }
 }
 
-SeqAijMatrix::SeqAijMatrix(const SparseMatrix& A) : pattern_(A), values_(A.nonZeros(), 0.0) {
+SeqAijMatrix::SeqAijMatrix(const SparseMatrix& A, const std::vector<Index>& order)
+    : pattern_(A, order), values_(A.nonZeros(), 0.0) {
   const Real* v = A.valuePtr();
   for (std::size_t k = 0; k < values_.size(); ++k)
     values_[k] = v[pattern_.source[k]];

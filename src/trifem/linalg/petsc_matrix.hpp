@@ -11,28 +11,32 @@
 
 namespace trifem::linalg::petsc {
 
-/// The pattern of a column-major matrix in compressed rows and, per CSR entry, the position of
-/// its value in the column-major storage.
+/// The pattern of a column-major matrix in compressed rows, optionally symmetrically permuted
+/// (row and column `order[i]` of A become row and column i), and, per CSR entry, the position
+/// of its value in the column-major storage.
 struct CsrPattern {
   std::vector<PetscInt> row_start, column;
   std::vector<Index> source; ///< csr entry k holds A.valuePtr()[source[k]]
 
-  explicit CsrPattern(const SparseMatrix& A);
+  explicit CsrPattern(const SparseMatrix& A, const std::vector<Index>& order = {});
 };
 
 /// PETSc matrix sharing this object's value storage.
 class SeqAijMatrix {
 public:
-  /// Creates the matrix with the pattern and values of `A`.
-  explicit SeqAijMatrix(const SparseMatrix& A);
+  /// Creates the matrix with the pattern and values of `A`, permuted by `order` if given
+  /// (CsrPattern).
+  explicit SeqAijMatrix(const SparseMatrix& A, const std::vector<Index>& order = {});
   ~SeqAijMatrix();
   SeqAijMatrix(const SeqAijMatrix&) = delete;
   SeqAijMatrix& operator=(const SeqAijMatrix&) = delete;
 
-  /// Copies the values of `A` (the pattern given at construction), multiplying row i by
-  /// row_sign[i] when row_sign is not empty.
+  /// Copies the values of `A` (the pattern given at construction), multiplying row i (of the
+  /// PETSc matrix) by row_sign[i] when row_sign is not empty.
   void update(const SparseMatrix& A, const std::vector<Real>& row_sign = {});
   Mat mat() const { return matrix_; }
+  /// The CSR pattern of the PETSc matrix (for orderings).
+  const CsrPattern& pattern() const { return pattern_; }
 
 private:
   CsrPattern pattern_;

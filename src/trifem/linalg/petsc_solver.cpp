@@ -2,6 +2,7 @@
 #include "trifem/linalg/petsc_solver.hpp"
 
 #include "trifem/core/error.hpp"
+#include "trifem/linalg/nested_dissection.hpp"
 #include "trifem/linalg/petsc_matrix.hpp"
 #include "trifem/linalg/petsc_session.hpp"
 
@@ -83,7 +84,15 @@ public:
     if (n_ == 0)
       return;
     try {
-      matrix_ = std::make_unique<petsc::SeqAijMatrix>(A);
+      // METIS nested dissection unless the options choose a MUMPS ordering (ICNTL(7)); the
+      // matrix is handed over permuted, and MUMPS keeps that order (PETSc's "natural")
+      PetscBool mumps_orders = PETSC_FALSE;
+      check(PetscOptionsHasName(nullptr, nullptr, "-mat_mumps_icntl_7", &mumps_orders),
+            "PETSc options");
+      order_.clear();
+      if (!mumps_orders) // A's columns read as rows: the pattern of Aᵀ, the same graph
+        order_ = nested_dissection_order({n_, A.outerIndexPtr(), A.innerIndexPtr()});
+      matrix_ = std::make_unique<petsc::SeqAijMatrix>(A, order_);
       check(MatCreateVecs(matrix_->mat(), &x_, &b_), "PETSc vectors");
       check(KSPCreate(PETSC_COMM_SELF, &ksp_), "PETSc KSP");
       check(KSPSetOperators(ksp_, matrix_->mat(), matrix_->mat()), "PETSc KSP operators");
@@ -92,6 +101,8 @@ public:
       check(KSPGetPC(ksp_, &pc), "PETSc PC");
       check(PCSetType(pc, PCLU), "PETSc PC type");
       check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS), "MUMPS");
+      check(PCFactorSetMatOrderingType(pc, mumps_orders ? MATORDERINGEXTERNAL : MATORDERINGNATURAL),
+            "PETSc ordering");
       check(KSPSetFromOptions(ksp_), "PETSc options");
     } catch (const petsc::PetscError& e) {
       failure_ = {e.what(), true};
@@ -135,7 +146,8 @@ public:
     try {
       PetscScalar* data = nullptr;
       check(VecGetArray(b_, &data), "PETSc vector");
-      std::copy(b.data(), b.data() + n_, data);
+      for (Index i = 0; i < n_; ++i)
+        data[i] = order_.empty() ? b[i] : b[order_[i]];
       check(VecRestoreArray(b_, &data), "PETSc vector");
       check(KSPSolve(ksp_, b_, x_), "MUMPS solve");
       KSPConvergedReason reason = KSP_CONVERGED_ITERATING;
@@ -146,7 +158,8 @@ public:
       }
       const PetscScalar* result = nullptr;
       check(VecGetArrayRead(x_, &result), "PETSc vector");
-      std::copy(result, result + n_, x.data());
+      for (Index i = 0; i < n_; ++i)
+        x[order_.empty() ? i : order_[i]] = result[i];
       check(VecRestoreArrayRead(x_, &result), "PETSc vector");
     } catch (const petsc::PetscError& e) {
       failure_ = {e.what(), false};
@@ -186,6 +199,7 @@ private:
   }
 
   Index n_ = 0;
+  std::vector<Index> order_; ///< row and column order[i] of A is row and column i for MUMPS
   std::unique_ptr<petsc::SeqAijMatrix> matrix_;
   Vec x_ = nullptr, b_ = nullptr;
   KSP ksp_ = nullptr;

@@ -131,7 +131,8 @@ std::unique_ptr<Model> build_model_for(const io::CaseSpec& spec) {
 /// the case file.
 std::unique_ptr<linalg::LinearSolver> linear_solver_for(const io::CaseSpec& spec) {
   try {
-    return linalg::make_linear_solver(spec.solver.linear_solver, spec.solver.petsc_options);
+    return linalg::make_linear_solver(spec.solver.linear_solver, spec.solver.petsc_options,
+                                      spec.solver.reuse_factorization);
   } catch (const InputError& e) {
     throw InputError(fmt::format("{}: {}", spec.file.string(), e.what()));
   }

@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: MIT
 // The linear-solver backends give the same converged answers: every quasi-static example (but
 // the two-minute sliding_layers, whose coarse form runs in the verification suite) is run with
-// UMFPACK, with MUMPS and with the Krylov backend (PETSc): every history column must agree to
-// 1e-8 of the largest magnitude of its unit in the history (a column that is zero in exact
-// arithmetic, a lateral displacement, is compared with the displacements), and the Newton
-// iterations to within one per step. Bad PETSc settings are input errors naming the key.
+// UMFPACK, with MUMPS (also reusing factorizations) and with the Krylov backend (PETSc): every
+// history column must agree to 1e-8 of the largest magnitude of its unit in the history (a column
+// that is zero in exact arithmetic, a lateral displacement, is compared with the displacements),
+// and the Newton iterations to within one per step. Bad PETSc settings are input errors naming the
+// key.
 #include "cli_harness.hpp"
 
 #include <algorithm>
@@ -64,7 +65,12 @@ class CliSolvers : public Cli {
 protected:
   /// Runs the example `name` with `backend`; the history.csv path (empty on failure).
   fs::path run_example(const std::string& name, const std::string& backend) const {
-    const std::string text = with_backend(read_text(kExamples / name / (name + ".toml")), backend);
+    // "mumps+reuse": MUMPS with reuse_factorization
+    const bool reuse = backend == "mumps+reuse";
+    std::string text =
+        with_backend(read_text(kExamples / name / (name + ".toml")), reuse ? "mumps" : backend);
+    if (reuse)
+      text.insert(text.find("\n[solver]\n") + 10, "reuse_factorization = true\n");
     const fs::path file = write_file(name + "_" + backend + ".toml", text);
     const fs::path out = output() / backend;
     const Result r = trifem({"-q", "run", file.string(), "-o", out.string()});
@@ -95,7 +101,7 @@ TEST_F(CliSolvers, PetscBackendsGiveTheUmfpackHistoryOnEveryExample) {
     const History umfpack = read_history(run_example(name, "umfpack"));
     ASSERT_GT(umfpack.names.size(), 1u);
     const std::map<std::string, double> scale = unit_scales(umfpack);
-    for (const std::string backend : {"mumps", "krylov"}) {
+    for (const std::string backend : {"mumps", "mumps+reuse", "krylov"}) {
       SCOPED_TRACE(backend);
       const History other = read_history(run_example(name, backend));
       ASSERT_EQ(umfpack.names, other.names);

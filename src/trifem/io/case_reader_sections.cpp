@@ -199,7 +199,7 @@ void read_solver(const Table& root, CaseSpec& spec) {
   if (!t)
     return;
   t->allow({"max_iterations", "residual_tolerance", "increment_tolerance", "line_search",
-            "linear_solver", "petsc_options"});
+            "linear_solver", "petsc_options", "reuse_factorization"});
   static const Options<std::string_view> solvers = {{"auto", "auto"},
                                                     {"umfpack", "umfpack"},
                                                     {"sparselu", "sparselu"},
@@ -221,6 +221,11 @@ void read_solver(const Table& root, CaseSpec& spec) {
              "applies to the PETSc backends (linear_solver = \"mumps\" or \"krylov\"), not to "
              "linear_solver = \"{}\"",
              s.linear_solver));
+  s.reuse_factorization = t->get<bool>("reuse_factorization").value_or(false);
+  if (s.reuse_factorization && s.linear_solver != "mumps")
+    fail(t->find("reuse_factorization"), t->path("reuse_factorization"),
+         fmt::format("applies to linear_solver = \"mumps\", not to linear_solver = \"{}\"",
+                     s.linear_solver));
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -245,8 +245,9 @@ struct SolverSpec {
   Real residual_tolerance = 1e-8;  ///< relative to the characteristic residual of each field
   Real increment_tolerance = 1e-8; ///< relative to the characteristic size of each field
   bool line_search = true;
-  std::string linear_solver = "auto"; ///< "auto", "umfpack", "sparselu" or "mumps"
+  std::string linear_solver = "auto"; ///< "auto", "umfpack", "sparselu", "mumps", "krylov"
   std::string petsc_options;          ///< "-key value ..." for the PETSc backends
+  bool reuse_factorization = false;   ///< mumps: one factorization for several iterations
 };
 
 /// [[output.reaction]]: total reaction force on a node set, in history.csv.

@@ -15,7 +15,12 @@ std::vector<std::string> available_linear_solvers() {
 }
 
 std::unique_ptr<LinearSolver> make_linear_solver(const std::string& name,
-                                                 const std::string& petsc_options) {
+                                                 const std::string& petsc_options,
+                                                 bool reuse_factorization) {
+  if (reuse_factorization && name != "mumps")
+    throw InputError(fmt::format("solver.reuse_factorization applies to linear_solver = 'mumps', "
+                                 "not to '{}'",
+                                 name));
   if (!petsc_options.empty() && name != "mumps" && name != "krylov")
     throw InputError(
         fmt::format("solver.petsc_options applies to the PETSc backends (mumps, krylov), "
@@ -28,7 +33,7 @@ std::unique_ptr<LinearSolver> make_linear_solver(const std::string& name,
   if (name == "sparselu")
     return make_sparse_lu_solver();
   if (name == "mumps")
-    return make_mumps_solver(petsc_options);
+    return make_mumps_solver(petsc_options, reuse_factorization);
   if (name == "krylov")
     return make_krylov_solver(petsc_options);
   throw InputError(fmt::format(

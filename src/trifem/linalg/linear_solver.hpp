@@ -48,7 +48,10 @@ std::vector<std::string> available_linear_solvers();
 /// Creates the backend `name`; InputError listing the available ones otherwise. `petsc_options`
 /// ("-key value ...") are passed to the PETSc backends (InputError for the others, or when PETSc
 /// does not use one of them).
+/// `reuse_factorization` (mumps only) lets one factorization serve several Newton iterations
+/// (make_mumps_solver).
 std::unique_ptr<LinearSolver> make_linear_solver(const std::string& name,
-                                                 const std::string& petsc_options = "");
+                                                 const std::string& petsc_options = "",
+                                                 bool reuse_factorization = false);
 
 } // namespace trifem::linalg

@@ -3,6 +3,8 @@
 
 #include "trifem/linalg/petsc_session.hpp"
 
+#include <algorithm>
+
 namespace trifem::linalg::petsc {
 
 CsrPattern::CsrPattern(const SparseMatrix& A, const std::vector<Index>& order) {
@@ -59,6 +61,13 @@ void SeqAijMatrix::update(const SparseMatrix& A, const std::vector<Real>& row_si
     for (PetscInt k = pattern_.row_start[i]; k < pattern_.row_start[i + 1]; ++k)
       to[k] = sign * v[pattern_.source[k]];
   }
+  check(MatSeqAIJRestoreArray(matrix_, &to), "PETSc matrix");
+}
+
+void SeqAijMatrix::assign_values(const SeqAijMatrix& other) {
+  PetscScalar* to = nullptr;
+  check(MatSeqAIJGetArray(matrix_, &to), "PETSc matrix");
+  std::copy(other.values_.begin(), other.values_.end(), to);
   check(MatSeqAIJRestoreArray(matrix_, &to), "PETSc matrix");
 }
 

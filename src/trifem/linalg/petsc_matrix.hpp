@@ -34,6 +34,8 @@ public:
   /// Copies the values of `A` (the pattern given at construction), multiplying row i (of the
   /// PETSc matrix) by row_sign[i] when row_sign is not empty.
   void update(const SparseMatrix& A, const std::vector<Real>& row_sign = {});
+  /// Copies the values of `other`, a matrix of the same pattern.
+  void assign_values(const SeqAijMatrix& other);
   Mat mat() const { return matrix_; }
   /// The CSR pattern of the PETSc matrix (for orderings).
   const CsrPattern& pattern() const { return pattern_; }

@@ -17,6 +17,14 @@ namespace {
 
 using petsc::check;
 
+/// Factorization reuse: each solve reduces the residual to kReuseTolerance of the right-hand
+/// side with FGMRES preconditioned by the last factorization; more than kRefactorAfter
+/// iterations make the next Newton iteration factorize again, and a solve that has not
+/// converged after kMaxReuseIterations is repeated with a new factorization.
+constexpr double kReuseTolerance = 1e-10;
+constexpr int kRefactorAfter = 8;
+constexpr int kMaxReuseIterations = 15;
+
 /// Reason and permanence of a MUMPS failure from its INFOG(1), INFOG(2).
 LinearSolverFailure mumps_failure(PetscInt infog1, PetscInt infog2) {
   switch (infog1) {
@@ -61,7 +69,7 @@ const char* pc_failure_text(PCFailedReason reason) {
 /// MUMPS LU through a PETSc KSP of type preonly.
 class MumpsSolver final : public LinearSolver {
 public:
-  explicit MumpsSolver(const std::string& options) : options_(options) {
+  MumpsSolver(const std::string& options, bool reuse) : reuse_(reuse), options_(options) {
     petsc::ensure_initialized();
     if (!options.empty())
       try {
@@ -95,8 +103,19 @@ public:
       matrix_ = std::make_unique<petsc::SeqAijMatrix>(A, order_);
       check(MatCreateVecs(matrix_->mat(), &x_, &b_), "PETSc vectors");
       check(KSPCreate(PETSC_COMM_SELF, &ksp_), "PETSc KSP");
-      check(KSPSetOperators(ksp_, matrix_->mat(), matrix_->mat()), "PETSc KSP operators");
-      check(KSPSetType(ksp_, KSPPREONLY), "PETSc KSP type");
+      if (reuse_) { // FGMRES on the current matrix, preconditioned by the last factorization
+        factored_matrix_ = std::make_unique<petsc::SeqAijMatrix>(A, order_);
+        check(KSPSetOperators(ksp_, matrix_->mat(), factored_matrix_->mat()),
+              "PETSc KSP operators");
+        check(KSPSetType(ksp_, KSPFGMRES), "PETSc KSP type");
+        check(KSPGMRESSetRestart(ksp_, kMaxReuseIterations), "PETSc GMRES restart");
+        check(KSPSetTolerances(ksp_, kReuseTolerance, 0.0, PETSC_DEFAULT, kMaxReuseIterations),
+              "PETSc KSP tolerances");
+      } else {
+        check(KSPSetOperators(ksp_, matrix_->mat(), matrix_->mat()), "PETSc KSP operators");
+        check(KSPSetType(ksp_, KSPPREONLY), "PETSc KSP type");
+      }
+      refactor_ = true;
       PC pc = nullptr;
       check(KSPGetPC(ksp_, &pc), "PETSc PC");
       check(PCSetType(pc, PCLU), "PETSc PC type");
@@ -118,19 +137,14 @@ public:
     failure_ = {};
     factored_ = false;
     try {
-      matrix_->update(A); // same pattern: a numeric factorization only
-      check(KSPSetUp(ksp_), "PETSc KSP set-up");
-      PC pc = nullptr;
-      check(KSPGetPC(ksp_, &pc), "PETSc PC");
-      check(PCSetUp(pc), "MUMPS factorization"); // KSPSetUp runs it only the first time
-      PCFailedReason reason = PC_NOERROR;
-      check(PCGetFailedReason(pc, &reason), "PETSc PC");
-      if (reason != PC_NOERROR) {
-        failure_ = factor_failure(pc, reason);
-        return false;
+      matrix_->update(A);         // same pattern: a numeric factorization only
+      if (reuse_ && !refactor_) { // the last factorization preconditions this matrix
+        check(KSPSetReusePreconditioner(ksp_, PETSC_TRUE), "PETSc KSP");
+        stale_ = true;
+        factored_ = true;
+        return true;
       }
-      factored_ = true;
-      return true;
+      return refactorize();
     } catch (const petsc::PetscError& e) {
       failure_ = {e.what(), false};
       return false;
@@ -152,6 +166,20 @@ public:
       check(KSPSolve(ksp_, b_, x_), "MUMPS solve");
       KSPConvergedReason reason = KSP_CONVERGED_ITERATING;
       check(KSPGetConvergedReason(ksp_, &reason), "PETSc KSP");
+      if (reuse_) {
+        PetscInt iterations = 0;
+        check(KSPGetIterationNumber(ksp_, &iterations), "PETSc KSP");
+        iterations_ = static_cast<int>(iterations);
+        if (reason < 0 && stale_) { // the old factorization no longer serves: a new one
+          if (!refactorize())
+            return false;
+          check(KSPSolve(ksp_, b_, x_), "MUMPS solve");
+          check(KSPGetConvergedReason(ksp_, &reason), "PETSc KSP");
+          check(KSPGetIterationNumber(ksp_, &iterations), "PETSc KSP");
+          iterations_ += static_cast<int>(iterations);
+        }
+        refactor_ = iterations > kRefactorAfter; // cheaper to factorize again next time
+      }
       if (reason < 0) {
         failure_ = {fmt::format("MUMPS solve failed ({})", KSPConvergedReasons[reason]), false};
         return false;
@@ -172,9 +200,31 @@ public:
   }
 
   std::string name() const override { return "mumps"; }
+  int last_iterations() const override { return iterations_; }
   LinearSolverFailure failure() const override { return failure_; }
 
 private:
+  /// A new numeric factorization of the current matrix.
+  bool refactorize() {
+    if (reuse_) {
+      factored_matrix_->assign_values(*matrix_);
+      check(KSPSetReusePreconditioner(ksp_, PETSC_FALSE), "PETSc KSP");
+    }
+    check(KSPSetUp(ksp_), "PETSc KSP set-up");
+    PC pc = nullptr;
+    check(KSPGetPC(ksp_, &pc), "PETSc PC");
+    check(PCSetUp(pc), "MUMPS factorization"); // KSPSetUp runs it only the first time
+    PCFailedReason reason = PC_NOERROR;
+    check(PCGetFailedReason(pc, &reason), "PETSc PC");
+    if (reason != PC_NOERROR) {
+      failure_ = factor_failure(pc, reason);
+      return false;
+    }
+    refactor_ = stale_ = false;
+    factored_ = true;
+    return true;
+  }
+
   LinearSolverFailure factor_failure(PC pc, PCFailedReason reason) const {
     Mat factor = nullptr;
     PetscInt infog1 = 0, infog2 = 0;
@@ -193,6 +243,7 @@ private:
     if (b_)
       VecDestroy(&b_);
     matrix_.reset();
+    factored_matrix_.reset();
     ksp_ = nullptr;
     x_ = b_ = nullptr;
     factored_ = false;
@@ -201,6 +252,11 @@ private:
   Index n_ = 0;
   std::vector<Index> order_; ///< row and column order[i] of A is row and column i for MUMPS
   std::unique_ptr<petsc::SeqAijMatrix> matrix_;
+  std::unique_ptr<petsc::SeqAijMatrix> factored_matrix_; ///< values last factorized (reuse)
+  bool reuse_ = false;   ///< precondition later matrices with an earlier factorization
+  bool refactor_ = true; ///< the next factorize() factorizes
+  bool stale_ = false;   ///< the factorization in use is of an earlier matrix
+  int iterations_ = 0;
   Vec x_ = nullptr, b_ = nullptr;
   KSP ksp_ = nullptr;
   bool factored_ = false; ///< the symbolic analysis runs with the first factorization
@@ -215,7 +271,7 @@ void check_options_are_used(const std::string& options) {
   A.insert(1, 0) = 1.0;
   A.insert(1, 1) = 3.0;
   A.makeCompressed();
-  MumpsSolver probe(options);
+  MumpsSolver probe(options, false);
   probe.analyze_pattern(A);
   Vector x;
   if (!probe.factorize(A) || !probe.solve(Vector::Ones(2), x))
@@ -231,10 +287,11 @@ void check_options_are_used(const std::string& options) {
 
 } // namespace
 
-std::unique_ptr<LinearSolver> make_mumps_solver(const std::string& petsc_options) {
+std::unique_ptr<LinearSolver> make_mumps_solver(const std::string& petsc_options,
+                                                bool reuse_factorization) {
   if (!petsc_options.empty())
     check_options_are_used(petsc_options);
-  return std::make_unique<MumpsSolver>(petsc_options);
+  return std::make_unique<MumpsSolver>(petsc_options, reuse_factorization);
 }
 
 } // namespace trifem::linalg

@@ -11,7 +11,10 @@ namespace trifem::linalg {
 
 /// MUMPS through PETSc. `petsc_options` ("-mat_mumps_icntl_14 50 ...") go into PETSc's options
 /// database; an option that no PETSc object reads is an InputError (checked here on a small
-/// system, so a typo fails before the run).
-std::unique_ptr<LinearSolver> make_mumps_solver(const std::string& petsc_options = "");
+/// system, so a typo fails before the run). With `reuse_factorization`, a factorization
+/// preconditions FGMRES (to 1e-10) on the following matrices of the same pattern until a solve
+/// takes more than 8 iterations; one that does not converge is repeated with a new one.
+std::unique_ptr<LinearSolver> make_mumps_solver(const std::string& petsc_options = "",
+                                                bool reuse_factorization = false);
 
 } // namespace trifem::linalg

@@ -600,6 +600,9 @@ const std::vector<BadCase> kBadCases = {
      kBase + "[solver]\nlinear_solver = \"pardiso\"\n",
      {"solver.linear_solver = 'pardiso': unknown value (expected one of: auto, umfpack, sparselu, "
       "mumps, krylov)"}},
+    {"reuse_without_mumps",
+     kBase + "[solver]\nlinear_solver = \"umfpack\"\nreuse_factorization = true\n",
+     {"solver.reuse_factorization", "applies to linear_solver = \"mumps\"", "umfpack"}},
     {"tolerance_out_of_range",
      kBase + "[solver]\nresidual_tolerance = 1.5\n",
      {"solver.residual_tolerance = 1.5: out of range, expected a value in (0, 1)"}},

@@ -110,6 +110,37 @@ TEST(LinearSolver, MumpsReanalysesANewPatternAndTakesPetscOptions) {
   }
 }
 
+TEST(LinearSolver, MumpsReusingAFactorizationSolvesLaterMatricesToTheKrylovTolerance) {
+  // one factorization preconditions the next matrices of the pattern: a nearby one (a Newton
+  // iteration later) in a few FGMRES iterations; a far one (every value of the first block
+  // row scaled) through a new factorization when the old one does not serve
+  const SparseMatrix S = saddle_point(600, 3);
+  const Vector b = right_hand_side(S.rows());
+  auto solver = linalg::make_linear_solver("mumps", "", true);
+  solver->analyze_pattern(S);
+  Vector x;
+  ASSERT_TRUE(solver->factorize(S)) << solver->failure().reason;
+  ASSERT_TRUE(solver->solve(b, x));
+  EXPECT_LT((S * x - b).norm(), 1e-10 * b.norm());
+  EXPECT_EQ(solver->last_iterations(), 1); // a fresh factorization is exact
+
+  SparseMatrix near = S;
+  for (Index k = 0; k < near.nonZeros(); ++k)
+    near.valuePtr()[k] *= 1.0 + 0.01 * std::sin(1.7 * k);
+  ASSERT_TRUE(solver->factorize(near));
+  ASSERT_TRUE(solver->solve(b, x));
+  EXPECT_LT((near * x - b).norm(), 1e-9 * b.norm());
+  EXPECT_GT(solver->last_iterations(), 1); // the old factorization served
+  EXPECT_LE(solver->last_iterations(), 8);
+
+  SparseMatrix far = S;
+  for (Index k = 0; k < far.nonZeros(); ++k)
+    far.valuePtr()[k] *= 1.0 + 0.9 * std::sin(0.3 * k);
+  ASSERT_TRUE(solver->factorize(far));
+  ASSERT_TRUE(solver->solve(b, x)) << solver->failure().reason;
+  EXPECT_LT((far * x - b).norm(), 1e-9 * b.norm());
+}
+
 TEST(LinearSolver, MumpsReportsASingularMatrixAsCurable) {
   SparseMatrix S = saddle_point(60, 3);
   for (Index k = S.outerIndexPtr()[5]; k < S.outerIndexPtr()[6]; ++k)

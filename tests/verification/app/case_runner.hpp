@@ -30,9 +30,10 @@ run_case_text(std::string_view text, const std::filesystem::path& file,
   CaseRun run;
   run.spec = io::parse_case(text, file);
   run.model = app::build_model(run.spec);
-  solver::NewtonSolver newton(
-      app::newton_settings(run.spec.solver),
-      linalg::make_linear_solver(run.spec.solver.linear_solver, run.spec.solver.petsc_options));
+  solver::NewtonSolver newton(app::newton_settings(run.spec.solver),
+                              linalg::make_linear_solver(run.spec.solver.linear_solver,
+                                                         run.spec.solver.petsc_options,
+                                                         run.spec.solver.reuse_factorization));
   solver::StepController controller(app::step_settings(run.spec));
   solver::Linearization initial; // the state at t = 0 (reactions of the initial state)
   run.model->problem->linearize(initial, false);

@@ -4,6 +4,8 @@
 #include "trifem/core/error.hpp"
 #include "trifem/io/vtu_writer.hpp"
 
+#include <sys/resource.h>
+
 #include <regex>
 
 namespace trifem::app {
@@ -38,6 +40,13 @@ void write_summary_file(const fs::path& file, const nlohmann::json& summary) {
   io::write_file_atomically(file, [&](std::ostream& out) { out << summary.dump(2) << '\n'; });
 }
 
+double peak_memory_mb() {
+  rusage usage{};
+  if (getrusage(RUSAGE_SELF, &usage) != 0)
+    return 0.0;
+  return static_cast<double>(usage.ru_maxrss) / 1024.0; // Linux: kilobytes
+}
+
 nlohmann::json summary_header(const io::CaseSpec& spec, const std::string& status,
                               const std::string& failure) {
   nlohmann::json j;
@@ -45,6 +54,7 @@ nlohmann::json summary_header(const io::CaseSpec& spec, const std::string& statu
   j["case"] = spec.file.string();
   j["status"] = status;
   j["failure"] = failure;
+  j["peak_memory_mb"] = peak_memory_mb();
   return j;
 }
 

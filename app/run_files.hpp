@@ -23,7 +23,11 @@ bool is_result_file_name(const std::string& name);
 /// cannot be written.
 void write_summary_file(const std::filesystem::path& file, const nlohmann::json& summary);
 
-/// The status fields every summary.json starts with ("status": completed, failed, interrupted).
+/// Peak resident memory of the process so far [MB] (0 if the system does not say).
+double peak_memory_mb();
+
+/// The status fields every summary.json starts with ("status": completed, failed, interrupted)
+/// and the peak memory so far.
 nlohmann::json summary_header(const io::CaseSpec& spec, const std::string& status,
                               const std::string& failure);
 

@@ -119,6 +119,7 @@ TEST_F(CliSolvers, PetscBackendsGiveTheUmfpackHistoryOnEveryExample) {
       const fs::path summary = output() / backend / "summary.json";
       const long steps = summary_integer(direct, "steps");
       ASSERT_GT(steps, 0);
+      EXPECT_GT(summary_integer(summary, "peak_memory_mb"), 1); // the process's peak RSS
       EXPECT_LE(std::abs(summary_integer(summary, "newton_iterations") -
                          summary_integer(direct, "newton_iterations")),
                 steps);

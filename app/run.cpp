@@ -73,6 +73,7 @@ nlohmann::json summary(const io::CaseSpec& spec, const Model& model, const solve
   j["end_time_s"] = run.end_time;
   j["steps"] = run.steps;
   j["newton_iterations"] = run.iterations;
+  j["linear_iterations"] = run.linear_iterations;
   j["cutbacks"] = run.cutbacks;
   j["failed_attempts"] = run.failed_attempts;
   j["roundoff_floor_steps"] = run.roundoff_floor_steps;
@@ -257,9 +258,10 @@ int run_case(const io::CaseSpec& spec, const std::filesystem::path& output_dir) 
     auto observer = [&](const solver::StepInfo& info) {
       if (output.balance())
         output.balance()->record_step(info.dt);
-      log::info("step {:4d}  t = {:<10.5g} dt = {:<9.3g} iterations {:2d}  residual {:.2e}",
-                info.step, info.time, info.dt, info.newton->iterations,
-                info.newton->final_residual);
+      const int linear = info.newton->linear_iterations;
+      log::info("step {:4d}  t = {:<10.5g} dt = {:<9.3g} iterations {:2d}  residual {:.2e}{}",
+                info.step, info.time, info.dt, info.newton->iterations, info.newton->final_residual,
+                linear > 0 ? fmt::format("  linear iterations {}", linear) : "");
       note_roundoff_floor(*model, info, noted);
       output.write(info.time, info.step, info.dt, info.newton->iterations,
                    output.is_output_time(info.time) || controller.finished());

@@ -120,6 +120,12 @@ TEST_F(CliSolvers, PetscBackendsGiveTheUmfpackHistoryOnEveryExample) {
       const long steps = summary_integer(direct, "steps");
       ASSERT_GT(steps, 0);
       EXPECT_GT(summary_integer(summary, "peak_memory_mb"), 1); // the process's peak RSS
+      // an iterative solve counts its iterations (at least one per Newton iteration)
+      const long newton = summary_integer(summary, "newton_iterations");
+      if (backend == "mumps")
+        EXPECT_EQ(summary_integer(summary, "linear_iterations"), 0);
+      else
+        EXPECT_GE(summary_integer(summary, "linear_iterations"), newton);
       EXPECT_LE(std::abs(summary_integer(summary, "newton_iterations") -
                          summary_integer(direct, "newton_iterations")),
                 steps);

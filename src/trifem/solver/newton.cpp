@@ -234,6 +234,7 @@ NewtonReport NewtonSolver::solve(NonlinearProblem& problem) {
       return report;
     }
     const SolveStatus solved = factor_and_solve(problem, lin, dx);
+    report.linear_iterations += linear_->last_iterations();
     if (solved != SolveStatus::Converged) {
       report.status = solved;
       const std::string why = linear_->failure().reason;

@@ -33,6 +33,7 @@ struct PhaseTimes {
 struct NewtonReport {
   SolveStatus status = SolveStatus::MaxIterations;
   int iterations = 0;
+  int linear_iterations = 0; ///< iterations of an iterative linear solver, summed (0: direct)
   std::vector<Real> residual_history; ///< scaled residual norm at each evaluation
   Real final_residual = 0.0;
   std::string failure_reason;

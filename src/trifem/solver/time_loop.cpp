@@ -39,6 +39,7 @@ RunReport run_time_loop(TransientProblem& problem, NewtonSolver& newton, StepCon
       report.failure_reason = "out of memory (the model is too large for the memory available)";
     }
     run.iterations += report.iterations;
+    run.linear_iterations += report.linear_iterations;
     if (report.status == SolveStatus::Converged)
       if (std::string why = problem.step_rejection(); !why.empty()) {
         report.status = SolveStatus::Rejected;

@@ -23,6 +23,7 @@ struct RunReport {
   bool success = false;
   int steps = 0;
   int iterations = 0;
+  int linear_iterations = 0; ///< of an iterative linear solver, over every attempt (0: direct)
   int cutbacks = 0;
   int failed_attempts = 0;
   Real end_time = 0.0;

@@ -51,19 +51,8 @@ PC apply_once(KSP ksp, PCType type) {
 class KrylovSolver final : public LinearSolver {
 public:
   KrylovSolver(const std::string& options, KrylovSettings settings)
-      : settings_(settings), options_(options) {
-    petsc::ensure_initialized();
-    if (!options.empty())
-      try {
-        petsc::insert_options(options);
-      } catch (const petsc::PetscError& e) {
-        throw InputError(fmt::format("solver.petsc_options = '{}': {}", options, e.what()));
-      }
-  }
-  ~KrylovSolver() override {
-    release();
-    petsc::clear_options(options_); // the database is global: leave it as found
-  }
+      : options_(options), settings_(settings) {}
+  ~KrylovSolver() override { release(); }
   KrylovSolver(const KrylovSolver&) = delete;
   KrylovSolver& operator=(const KrylovSolver&) = delete;
 
@@ -119,11 +108,7 @@ public:
     if (!ready_)
       return false;
     try {
-      PetscScalar* data = nullptr;
-      check(VecGetArray(b_, &data), "PETSc vector");
-      for (Index i = 0; i < n_; ++i)
-        data[i] = row_sign_.empty() ? b[i] : row_sign_[i] * b[i];
-      check(VecRestoreArray(b_, &data), "PETSc vector");
+      petsc::set_vector(b_, b, {}, row_sign_);
       check(KSPSolve(ksp_, b_, x_), "Krylov solve");
       KSPConvergedReason reason = KSP_CONVERGED_ITERATING;
       check(KSPGetConvergedReason(ksp_, &reason), "PETSc KSP");
@@ -134,10 +119,7 @@ public:
         failure_ = {not_converged(reason), false};
         return false;
       }
-      const PetscScalar* result = nullptr;
-      check(VecGetArrayRead(x_, &result), "PETSc vector");
-      std::copy(result, result + n_, x.data());
-      check(VecRestoreArrayRead(x_, &result), "PETSc vector");
+      petsc::get_vector(x_, x);
     } catch (const petsc::PetscError& e) {
       failure_ = {e.what(), false};
       return false;
@@ -274,6 +256,7 @@ private:
     sub_solvers_configured_ = false;
   }
 
+  petsc::ScopedOptions options_; // first: the options outlive the PETSc objects
   KrylovSettings settings_;
   BlockSplit split_;
   std::vector<Index> primal_;
@@ -286,7 +269,6 @@ private:
   bool sub_solvers_configured_ = false;
   int iterations_ = 0;
   LinearSolverFailure failure_;
-  std::string options_;
 };
 
 /// Solves a small system of every block kind with `options`, then refuses options nobody read
@@ -310,11 +292,7 @@ void check_options_are_used(const std::string& options, KrylovSettings settings)
                                  options, probe.failure().reason));
   Vector x;
   probe.solve(Vector::Ones(5), x); // reads the options of the solve; convergence is not asked
-  const std::string unused = petsc::take_unused_options();
-  if (!unused.empty())
-    throw InputError(fmt::format("solver.petsc_options = '{}': PETSc does not know or use {} "
-                                 "(with the krylov backend)",
-                                 options, unused));
+  petsc::refuse_unused_options(options, "krylov");
 }
 
 } // namespace

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Sparse direct solver interface: analyze the pattern once, factorize per matrix, solve.
+// Linear solver interface (direct or iterative): analyze the pattern once, factorize (or set
+// up the preconditioner) per matrix, solve.
 #pragma once
 
 #include "trifem/core/types.hpp"
@@ -16,7 +17,7 @@ struct LinearSolverFailure {
   bool permanent = false; ///< a smaller time step cannot cure it (out of memory, size limits)
 };
 
-/// A sparse direct solver for general (unsymmetric) matrices.
+/// A linear solver for general (unsymmetric) sparse matrices.
 class LinearSolver {
 public:
   virtual ~LinearSolver() = default;

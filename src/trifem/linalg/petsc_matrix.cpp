@@ -64,6 +64,26 @@ void SeqAijMatrix::update(const SparseMatrix& A, const std::vector<Real>& row_si
   check(MatSeqAIJRestoreArray(matrix_, &to), "PETSc matrix");
 }
 
+void set_vector(Vec v, const Vector& b, const std::vector<Index>& order,
+                const std::vector<Real>& sign) {
+  PetscScalar* data = nullptr;
+  check(VecGetArray(v, &data), "PETSc vector");
+  for (Index i = 0; i < static_cast<Index>(b.size()); ++i)
+    data[i] = (sign.empty() ? 1.0 : sign[i]) * b[order.empty() ? i : order[i]];
+  check(VecRestoreArray(v, &data), "PETSc vector");
+}
+
+void get_vector(Vec v, Vector& x, const std::vector<Index>& order) {
+  PetscInt n = 0;
+  check(VecGetLocalSize(v, &n), "PETSc vector");
+  x.resize(n);
+  const PetscScalar* data = nullptr;
+  check(VecGetArrayRead(v, &data), "PETSc vector");
+  for (Index i = 0; i < static_cast<Index>(n); ++i)
+    x[order.empty() ? i : order[i]] = data[i];
+  check(VecRestoreArrayRead(v, &data), "PETSc vector");
+}
+
 void SeqAijMatrix::assign_values(const SeqAijMatrix& other) {
   PetscScalar* to = nullptr;
   check(MatSeqAIJGetArray(matrix_, &to), "PETSc matrix");

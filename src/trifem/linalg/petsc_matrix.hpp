@@ -21,6 +21,12 @@ struct CsrPattern {
   explicit CsrPattern(const SparseMatrix& A, const std::vector<Index>& order = {});
 };
 
+/// Writes sign[i] · b[order[i]] into `v` (an empty `order` is the identity, an empty `sign` 1).
+void set_vector(Vec v, const Vector& b, const std::vector<Index>& order = {},
+                const std::vector<Real>& sign = {});
+/// Reads `v` into x: x[order[i]] = v[i] (an empty `order` is the identity); x is resized.
+void get_vector(Vec v, Vector& x, const std::vector<Index>& order = {});
+
 /// PETSc matrix sharing this object's value storage.
 class SeqAijMatrix {
 public:

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "trifem/linalg/petsc_session.hpp"
 
+#include "trifem/core/error.hpp"
+
 #include <fmt/format.h>
 #include <petscsys.h>
 
@@ -8,6 +10,7 @@
 #include <cstdlib>
 #include <mutex>
 #include <sstream>
+#include <utility>
 
 namespace trifem::linalg::petsc {
 namespace {
@@ -75,6 +78,25 @@ void clear_options(const std::string& options) {
     if (key)
       PetscOptionsClearValue(nullptr, word.c_str());
   }
+}
+
+ScopedOptions::ScopedOptions(std::string options) : options_(std::move(options)) {
+  ensure_initialized();
+  if (options_.empty())
+    return;
+  try {
+    insert_options(options_);
+  } catch (const PetscError& e) {
+    throw InputError(fmt::format("solver.petsc_options = '{}': {}", options_, e.what()));
+  }
+}
+
+void refuse_unused_options(const std::string& options, const char* backend) {
+  const std::string unused = take_unused_options();
+  if (!unused.empty())
+    throw InputError(fmt::format("solver.petsc_options = '{}': PETSc does not know or use {} "
+                                 "(with the {} backend)",
+                                 options, unused, backend));
 }
 
 std::string take_unused_options() {

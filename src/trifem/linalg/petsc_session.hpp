@@ -28,6 +28,23 @@ void insert_options(const std::string& options);
 /// Removes the keys of `options` ("-key value ...") from the database again.
 void clear_options(const std::string& options);
 
+/// One solver's `solver.petsc_options` in the global database for the solver's lifetime:
+/// inserted on construction (InputError if PETSc cannot read them), removed on destruction.
+class ScopedOptions {
+public:
+  explicit ScopedOptions(std::string options);
+  ~ScopedOptions() { clear_options(options_); }
+  ScopedOptions(const ScopedOptions&) = delete;
+  ScopedOptions& operator=(const ScopedOptions&) = delete;
+
+private:
+  std::string options_;
+};
+
+/// InputError naming every option of the database that no PETSc object has read (after a
+/// probe solve with `options` by the backend `backend`); the unused ones are removed.
+void refuse_unused_options(const std::string& options, const char* backend);
+
 /// The options of the database that no PETSc object has read so far, as "-key value" items
 /// separated by ", " ("" if every option was used); they are removed from the database.
 std::string take_unused_options();

@@ -69,19 +69,8 @@ const char* pc_failure_text(PCFailedReason reason) {
 /// MUMPS LU through a PETSc KSP of type preonly.
 class MumpsSolver final : public LinearSolver {
 public:
-  MumpsSolver(const std::string& options, bool reuse) : reuse_(reuse), options_(options) {
-    petsc::ensure_initialized();
-    if (!options.empty())
-      try {
-        petsc::insert_options(options);
-      } catch (const petsc::PetscError& e) {
-        throw InputError(fmt::format("solver.petsc_options = '{}': {}", options, e.what()));
-      }
-  }
-  ~MumpsSolver() override {
-    release();
-    petsc::clear_options(options_); // the database is global: leave it as found
-  }
+  MumpsSolver(const std::string& options, bool reuse) : options_(options), reuse_(reuse) {}
+  ~MumpsSolver() override { release(); }
   MumpsSolver(const MumpsSolver&) = delete;
   MumpsSolver& operator=(const MumpsSolver&) = delete;
 
@@ -158,11 +147,7 @@ public:
     if (!factored_)
       return false;
     try {
-      PetscScalar* data = nullptr;
-      check(VecGetArray(b_, &data), "PETSc vector");
-      for (Index i = 0; i < n_; ++i)
-        data[i] = order_.empty() ? b[i] : b[order_[i]];
-      check(VecRestoreArray(b_, &data), "PETSc vector");
+      petsc::set_vector(b_, b, order_);
       check(KSPSolve(ksp_, b_, x_), "MUMPS solve");
       KSPConvergedReason reason = KSP_CONVERGED_ITERATING;
       check(KSPGetConvergedReason(ksp_, &reason), "PETSc KSP");
@@ -184,11 +169,7 @@ public:
         failure_ = {fmt::format("MUMPS solve failed ({})", KSPConvergedReasons[reason]), false};
         return false;
       }
-      const PetscScalar* result = nullptr;
-      check(VecGetArrayRead(x_, &result), "PETSc vector");
-      for (Index i = 0; i < n_; ++i)
-        x[order_.empty() ? i : order_[i]] = result[i];
-      check(VecRestoreArrayRead(x_, &result), "PETSc vector");
+      petsc::get_vector(x_, x, order_);
     } catch (const petsc::PetscError& e) {
       failure_ = {e.what(), false};
       return false;
@@ -249,6 +230,7 @@ private:
     factored_ = false;
   }
 
+  petsc::ScopedOptions options_; // first: the options outlive the PETSc objects
   Index n_ = 0;
   std::vector<Index> order_; ///< row and column order[i] of A is row and column i for MUMPS
   std::unique_ptr<petsc::SeqAijMatrix> matrix_;
@@ -261,7 +243,6 @@ private:
   KSP ksp_ = nullptr;
   bool factored_ = false; ///< the symbolic analysis runs with the first factorization
   LinearSolverFailure failure_;
-  std::string options_;
 };
 
 /// Solves a 2×2 system with a solver made with `options`, then refuses options nobody read.
@@ -278,11 +259,7 @@ void check_options_are_used(const std::string& options) {
     throw InputError(fmt::format("solver.petsc_options = '{}': a 2x2 test system failed with "
                                  "these options: {}",
                                  options, probe.failure().reason));
-  const std::string unused = petsc::take_unused_options();
-  if (!unused.empty())
-    throw InputError(fmt::format("solver.petsc_options = '{}': PETSc does not know or use {} "
-                                 "(with the mumps backend)",
-                                 options, unused));
+  petsc::refuse_unused_options(options, "mumps");
 }
 
 } // namespace

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // trifem command-line interface: run, check, --version.
-#include "run.hpp"
+#include "trifem/analysis/run.hpp"
 #include "trifem/core/error.hpp"
 #include "trifem/core/interrupt.hpp"
 #include "trifem/core/log.hpp"
@@ -21,13 +21,13 @@ int guarded(F&& action) {
     return action();
   } catch (const InputError& e) {
     std::cerr << "error: " << e.what() << '\n';
-    return app::kInvalidInput;
+    return analysis::kInvalidInput;
   } catch (const std::bad_alloc&) {
     std::cerr << "error: out of memory: the model is too large for the memory available\n";
-    return app::kAnalysisFailed;
+    return analysis::kAnalysisFailed;
   } catch (const std::exception& e) {
     std::cerr << "internal error: " << e.what() << '\n';
-    return app::kInternalError;
+    return analysis::kInternalError;
   }
 }
 
@@ -68,17 +68,17 @@ int main(int argc, char** argv) {
     return cli.exit(e);
   } catch (const CLI::ParseError& e) {
     std::cerr << "error: " << e.what() << " (see 'trifem --help')\n";
-    return app::kUsage;
+    return analysis::kUsage;
   }
   log::configure(quiet ? log::Level::Quiet : verbose ? log::Level::Verbose : log::Level::Normal);
   return guarded([&] {
     const io::CaseSpec spec = io::read_case(case_file);
     if (check->parsed())
-      return app::check_case(spec);
+      return analysis::check_case(spec);
     interrupt::install_handler(); // Ctrl-C ends the run cleanly, with its summary
     const std::filesystem::path out = output_dir.empty()
                                           ? std::filesystem::path("results") / spec.file.stem()
                                           : std::filesystem::path(output_dir);
-    return app::run_case(spec, out);
+    return analysis::run_case(spec, out);
   });
 }

@@ -28,7 +28,7 @@ namespace fs = std::filesystem;
 inline const fs::path kExe = TRIFEM_EXE;
 inline const fs::path kData = TRIFEM_TEST_DATA_DIR;
 
-/// Exit codes of trifem (mirrors app::ExitCode, documented in docs/cli.md).
+/// Exit codes of trifem (mirrors analysis::ExitCode, documented in docs/cli.md).
 enum ExitCode : int {
   kSuccess = 0,
   kUsage = 1,

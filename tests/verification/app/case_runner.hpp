@@ -2,10 +2,10 @@
 // Runs a case (TOML text) through the application's model building and a plain time loop.
 #pragma once
 
-#include "model.hpp"
-#include "run.hpp"
+#include "trifem/analysis/run.hpp"
 #include "trifem/io/case_reader.hpp"
 #include "trifem/linalg/linear_solver.hpp"
+#include "trifem/model/model.hpp"
 #include "trifem/solver/time_loop.hpp"
 
 #include <functional>
@@ -17,7 +17,7 @@ namespace trifem::test {
 /// A built model with the solver objects of a run.
 struct CaseRun {
   io::CaseSpec spec;
-  std::unique_ptr<app::Model> model;
+  std::unique_ptr<model::Model> model;
   solver::RunReport report;
 };
 
@@ -29,12 +29,12 @@ run_case_text(std::string_view text, const std::filesystem::path& file,
               const std::function<void(const CaseRun&, const solver::StepInfo&)>& observer = {}) {
   CaseRun run;
   run.spec = io::parse_case(text, file);
-  run.model = app::build_model(run.spec);
-  solver::NewtonSolver newton(app::newton_settings(run.spec.solver),
+  run.model = model::build_model(run.spec);
+  solver::NewtonSolver newton(analysis::newton_settings(run.spec.solver),
                               linalg::make_linear_solver(run.spec.solver.linear_solver,
                                                          run.spec.solver.petsc_options,
                                                          run.spec.solver.reuse_factorization));
-  solver::StepController controller(app::step_settings(run.spec));
+  solver::StepController controller(analysis::step_settings(run.spec));
   solver::Linearization initial; // the state at t = 0 (reactions of the initial state)
   run.model->problem->linearize(initial, false);
   run.report = solver::run_time_loop(*run.model->problem, newton, controller,

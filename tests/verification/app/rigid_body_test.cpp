@@ -3,7 +3,7 @@
 // node by node, the top as a displacement-driven rigid body and as a force-driven one. All
 // three are the same boundary value problem, so reactions and displacements must agree.
 #include "case_runner.hpp"
-#include "model_rigid.hpp"
+#include "trifem/model/rigid_bodies.hpp"
 
 #include <gtest/gtest.h>
 
@@ -41,7 +41,7 @@ increment_tolerance = 1e-12
 constexpr Real kStretch = 0.2; // top displacement [mm]
 
 /// Sum of the z residual over the top nodes: the force on the top [N].
-Real top_reaction(const app::Model& m) {
+Real top_reaction(const model::Model& m) {
   Real f = 0.0;
   for (Index n : m.mesh.node_set("cube.zmax"))
     f += m.problem->full_residual()[m.dofs.dof(m.fields.u, n, 2)];
@@ -76,11 +76,11 @@ z = { displacement = 0.2, curve = "ramp" }
 )"),
                                                    "driven.toml");
   ASSERT_TRUE(driven.report.success) << driven.report.failure;
-  const app::RigidBody& plate = driven.model->rigid_bodies.at(0);
-  const Vec3 f_driven = app::rigid_body_force(*driven.model, plate, 1.0);
+  const model::RigidBody& plate = driven.model->rigid_bodies.at(0);
+  const Vec3 f_driven = model::rigid_body_force(*driven.model, plate, 1.0);
   EXPECT_NEAR(f_driven.z(), force, 1e-10 * force);
   // tolerances on the scales of the problem: the stretch kStretch and the top force
-  EXPECT_NEAR(app::rigid_body_displacement(*driven.model, plate).z(), kStretch,
+  EXPECT_NEAR(model::rigid_body_displacement(*driven.model, plate).z(), kStretch,
               5e-15 * kStretch); // prescribed
   EXPECT_LT((driven.model->problem->state() - nodal.model->problem->state()).norm(),
             5e-10 * kStretch);
@@ -95,14 +95,14 @@ z = { force = )" + fmt::format("{:.17g}", force) +
                                 ", curve = \"ramp\" }\n";
   const test::CaseRun loaded = test::run_case_text(cube_case(force_top), "loaded.toml");
   ASSERT_TRUE(loaded.report.success) << loaded.report.failure;
-  const app::RigidBody& body = loaded.model->rigid_bodies.at(0);
-  const Vec3 u = app::rigid_body_displacement(*loaded.model, body);
+  const model::RigidBody& body = loaded.model->rigid_bodies.at(0);
+  const Vec3 u = model::rigid_body_displacement(*loaded.model, body);
   EXPECT_NEAR(u.z(), kStretch, 5e-9 * kStretch);
   // zero by symmetry: round-off of the solve, on the scale of the stretch and of the force (a
   // lateral coupling error would show at order 1e-2 of them)
   EXPECT_NEAR(u.x(), 0.0, 5e-12 * kStretch);
   EXPECT_NEAR(u.y(), 0.0, 5e-12 * kStretch);
-  const Vec3 f = app::rigid_body_force(*loaded.model, body, 1.0);
+  const Vec3 f = model::rigid_body_force(*loaded.model, body, 1.0);
   EXPECT_NEAR(f.z(), force, 1e-10 * force);
   EXPECT_NEAR(f.x(), 0.0, 5e-12 * force);
   // every top node moved by the same translation (the tie)

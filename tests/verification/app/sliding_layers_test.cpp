@@ -4,9 +4,9 @@
 // in the sliding steps, the contact force equals the applied load, and the water and ion
 // balances of each body close to round-off.
 #include "case_runner.hpp"
-#include "mass_balance.hpp"
-#include "model_rigid.hpp"
+#include "trifem/analysis/mass_balance.hpp"
 #include "trifem/core/log.hpp"
+#include "trifem/model/rigid_bodies.hpp"
 
 #include <gtest/gtest.h>
 
@@ -59,20 +59,20 @@ TEST(SlidingLayers, NewtonIsQuadraticAndForceAndMassBalancesHoldWhileSliding) {
   // 1 ms steps (the first one is cut back: the load ramps in 2 ms), then 0.05 mm per step
   const std::string text = shortened_case(
       "[time]\nend_time = 0.032\ndt = 0.001\ndt_max = 0.005\ntarget_iterations = 8\n");
-  std::unique_ptr<app::MassBalance> balance;
+  std::unique_ptr<analysis::MassBalance> balance;
   Real worst_constant = 0.0, worst_force = 0.0, worst_mismatch = 0.0;
   int sliding_steps = 0, measured_steps = 0;
   const test::CaseRun run =
       test::run_case_text(text, kCase, [&](const test::CaseRun& r, const solver::StepInfo& info) {
-        const app::Model& m = *r.model;
+        const model::Model& m = *r.model;
         if (!balance)
-          balance = std::make_unique<app::MassBalance>(m); // from the first converged state
+          balance = std::make_unique<analysis::MassBalance>(m); // from the first converged state
         else
           balance->record_step(info.dt);
         const Real load = 0.2 * std::min(1.0, info.time / 0.002); // curves.load
         const Vec3 slave = m.contacts.at(0)->slave_force(m.problem->state());
         const Vec3 master = m.contacts.at(0)->master_force(m.problem->state());
-        const Vec3 body = app::rigid_body_force(m, m.rigid_bodies.at(0), info.time);
+        const Vec3 body = model::rigid_body_force(m, m.rigid_bodies.at(0), info.time);
         worst_force = std::max(
             {worst_force, std::abs(slave.y() - load) / load, std::abs(-body.y() - load) / load});
         worst_mismatch = std::max(worst_mismatch, std::abs(master.y() + slave.y()) / load);
@@ -90,7 +90,7 @@ TEST(SlidingLayers, NewtonIsQuadraticAndForceAndMassBalancesHoldWhileSliding) {
   ASSERT_GE(measured_steps, 3) << "too few iterations in the asymptotic range to judge";
   EXPECT_LT(worst_constant, 10.0) << "Newton is not quadratic while sliding";
   EXPECT_LT(worst_force, 1e-8) << "contact force != applied load";
-  for (const app::BalanceRegion& r : balance->regions())
+  for (const analysis::BalanceRegion& r : balance->regions())
     for (int q = 0; q < 3; ++q)
       EXPECT_LT(r.worst[q], 1e-12) << "body '" << r.name << "', quantity " << q;
   EXPECT_EQ(balance->regions().size(), 3u); // the model, lower and upper

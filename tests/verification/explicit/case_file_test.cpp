@@ -3,9 +3,9 @@
 // application (`trifem run`) reproduces a direct library run of the same model, its defaults are
 // the library's, and a damped uniaxial case settles to the closed-form homogeneous state.
 #include "exact_uniaxial.hpp"
-#include "explicit_model.hpp"
-#include "explicit_run.hpp"
 #include "fixtures.hpp"
+#include "trifem/analysis/explicit_run.hpp"
+#include "trifem/model/explicit_case.hpp"
 
 #include "trifem/io/case_reader.hpp"
 #include "trifem/mesh/box.hpp"
@@ -74,7 +74,7 @@ private:
 /// Reads `toml` as the case file `dir`/case.toml and runs it; returns history.csv.
 Columns run_case_text(const std::string& toml, const fs::path& dir) {
   const io::CaseSpec spec = io::parse_case(toml, dir / "case.toml");
-  EXPECT_EQ(app::run_explicit_case(spec, dir / "out"), 0);
+  EXPECT_EQ(analysis::run_explicit_case(spec, dir / "out"), 0);
   return read_csv(dir / "out" / "history.csv");
 }
 
@@ -317,7 +317,7 @@ density = 1e-9
 end_time = 1.0
 )";
   const io::CaseSpec spec = io::parse_case(toml, "defaults.toml");
-  const ExplicitSettings got = app::explicit_settings(spec), want;
+  const ExplicitSettings got = model::explicit_settings(spec), want;
   EXPECT_EQ(got.reading, want.reading);
   EXPECT_EQ(got.constraint, want.constraint);
   EXPECT_EQ(got.multiplier, want.multiplier);
@@ -423,7 +423,7 @@ TEST(ExplicitCaseFile, DocumentedExampleBuilds) {
   const auto end = text.find("```", body + 8);
   ASSERT_NE(end, std::string::npos);
   const io::CaseSpec spec = io::parse_case(text.substr(body + 8, end - body - 8), doc);
-  const app::ExplicitCase c = app::build_explicit_case(spec);
+  const model::ExplicitCase c = model::build_explicit_case(spec);
   EXPECT_EQ(c.model->num_cells(), 270);
   EXPECT_EQ(c.model->density(0), 1.1e-9);
   EXPECT_EQ(c.settings.stable_step, StableStepMethod::PowerIteration);

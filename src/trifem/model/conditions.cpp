@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "model_conditions.hpp"
+#include "trifem/model/conditions.hpp"
 
 #include "trifem/core/error.hpp"
 #include "trifem/dofs/nodal_frames.hpp"
@@ -8,7 +8,7 @@
 
 #include <unordered_map>
 
-namespace trifem::app {
+namespace trifem::model {
 namespace {
 
 dofs::FieldId field_id(const Model& model, io::FieldKind kind) {
@@ -179,4 +179,4 @@ void add_outputs(const io::CaseSpec& spec, Model& model) {
   }
 }
 
-} // namespace trifem::app
+} // namespace trifem::model

@@ -9,7 +9,7 @@
 
 #include <filesystem>
 
-namespace trifem::app {
+namespace trifem::analysis {
 
 /// Process exit codes (documented in docs/cli.md).
 enum ExitCode : int {
@@ -40,4 +40,4 @@ int run_case(const io::CaseSpec& spec, const std::filesystem::path& output_dir);
 /// Validates a case (file, mesh, sets, materials) without solving; prints a summary.
 int check_case(const io::CaseSpec& spec);
 
-} // namespace trifem::app
+} // namespace trifem::analysis

@@ -1,16 +1,16 @@
 // SPDX-License-Identifier: MIT
-#include "mass_balance.hpp"
+#include "trifem/analysis/mass_balance.hpp"
 
 #include "trifem/physics/surface_flux.hpp"
 
 #include <cmath>
 
-namespace trifem::app {
+namespace trifem::analysis {
 namespace {
 
 /// The region of the mixture elements whose cells satisfy `inside`.
 template <class Inside>
-BalanceRegion make_region(const Model& model, std::string name, const Inside& inside,
+BalanceRegion make_region(const model::Model& model, std::string name, const Inside& inside,
                           const std::vector<mesh::Facet>& boundary) {
   BalanceRegion r{std::move(name), {}, {}, {}, {}};
   for (Index e = 0; e < model.mixture->num_elements(); ++e)
@@ -24,7 +24,7 @@ BalanceRegion make_region(const Model& model, std::string name, const Inside& in
 
 } // namespace
 
-MassBalance::MassBalance(const Model& model) : model_(model) {
+MassBalance::MassBalance(const model::Model& model) : model_(model) {
   if (!model.mixture) {
     regions_.push_back({});
     return;
@@ -90,4 +90,4 @@ void MassBalance::record_step(Real dt) {
   }
 }
 
-} // namespace trifem::app
+} // namespace trifem::analysis

@@ -2,16 +2,16 @@
 // Result files of a run: VTU series + .pvd, contact-surface files, history.csv, summary.json.
 #pragma once
 
-#include "mass_balance.hpp"
-#include "model.hpp"
+#include "trifem/analysis/mass_balance.hpp"
 #include "trifem/io/csv_writer.hpp"
 #include "trifem/io/pvd_writer.hpp"
+#include "trifem/model/model.hpp"
 #include "trifem/solver/time_loop.hpp"
 
 #include <filesystem>
 #include <memory>
 
-namespace trifem::app {
+namespace trifem::analysis {
 
 class ContactOutput;
 
@@ -19,7 +19,8 @@ class ContactOutput;
 class OutputWriter {
 public:
   /// Creates `directory` (InputError if impossible) and the history file.
-  OutputWriter(const Model& model, const io::OutputSpec& spec, std::filesystem::path directory);
+  OutputWriter(const model::Model& model, const io::OutputSpec& spec,
+               std::filesystem::path directory);
   ~OutputWriter();
 
   /// Water and ion balances (mixture models; null otherwise).
@@ -44,7 +45,7 @@ private:
   void write_state(Real time);
   std::vector<double> history_row(Real time, int step, Real dt, int iterations) const;
 
-  const Model& model_;
+  const model::Model& model_;
   io::OutputSpec spec_;
   std::filesystem::path directory_;
   std::unique_ptr<io::PvdWriter> pvd_;
@@ -57,4 +58,4 @@ private:
   double seconds_ = 0.0;
 };
 
-} // namespace trifem::app
+} // namespace trifem::analysis

@@ -2,9 +2,9 @@
 // Case -> contact pairs of a model (helpers of build_model).
 #pragma once
 
-#include "model.hpp"
+#include "trifem/model/model.hpp"
 
-namespace trifem::app {
+namespace trifem::model {
 
 /// Adds one contact-pressure field per [[contact]] pair (one entity per slave-surface node).
 void add_contact_fields(const io::CaseSpec& spec, Model& model);
@@ -16,4 +16,4 @@ void add_contact_fields(const io::CaseSpec& spec, Model& model);
 /// penetration tolerance; a warning if no slave node projects onto the master surface.
 std::vector<std::unique_ptr<physics::Term>> contact_terms(const io::CaseSpec& spec, Model& model);
 
-} // namespace trifem::app
+} // namespace trifem::model

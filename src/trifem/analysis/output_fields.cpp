@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
-#include "output_fields.hpp"
+#include "trifem/analysis/output_fields.hpp"
 
-namespace trifem::app {
+namespace trifem::analysis {
 namespace {
 
 /// mmol/mm^3 -> mM (mmol/L)
@@ -23,7 +23,8 @@ void set_tensor(io::DataArray& a, Index i, const Mat3& m) {
 }
 
 /// Nodal field values (physical units: ion fluxes are stored divided by c_ref).
-io::DataArray nodal_vector(const Model& model, dofs::FieldId f, std::string name, Real scale) {
+io::DataArray nodal_vector(const model::Model& model, dofs::FieldId f, std::string name,
+                           Real scale) {
   const Index n = model.mesh.num_nodes();
   io::DataArray a = array(std::move(name), 3, n);
   const Vector& x = model.problem->state();
@@ -34,7 +35,8 @@ io::DataArray nodal_vector(const Model& model, dofs::FieldId f, std::string name
 }
 
 /// Average of a cell array over the cells around each node.
-io::DataArray nodal_average(const Model& model, const io::DataArray& cells, std::string name) {
+io::DataArray nodal_average(const model::Model& model, const io::DataArray& cells,
+                            std::string name) {
   const Index n = model.mesh.num_nodes();
   io::DataArray a = array(std::move(name), 1, n);
   std::vector<int> count(n, 0);
@@ -49,7 +51,7 @@ io::DataArray nodal_average(const Model& model, const io::DataArray& cells, std:
   return a;
 }
 
-void add_mixture_cells(const Model& model, std::vector<io::DataArray>& out) {
+void add_mixture_cells(const model::Model& model, std::vector<io::DataArray>& out) {
   const physics::MixtureTerm& mix = *model.mixture;
   const Index cells = model.mesh.num_cells();
   io::DataArray p = array("fluid_pressure [MPa]", 1, cells);
@@ -94,7 +96,7 @@ void add_mixture_cells(const Model& model, std::vector<io::DataArray>& out) {
 
 } // namespace
 
-std::vector<io::DataArray> point_fields(const Model& model) {
+std::vector<io::DataArray> point_fields(const model::Model& model) {
   const Vector& x = model.problem->state();
   const Vector& R = model.problem->full_residual();
   std::vector<io::DataArray> out;
@@ -129,7 +131,7 @@ std::vector<io::DataArray> point_fields(const Model& model) {
   return out;
 }
 
-std::vector<io::DataArray> cell_fields(const Model& model) {
+std::vector<io::DataArray> cell_fields(const model::Model& model) {
   const Vector& x = model.problem->state();
   const Index cells = model.mesh.num_cells();
   io::DataArray stress = array("stress [MPa]", 6, cells);
@@ -160,4 +162,4 @@ std::vector<io::DataArray> cell_fields(const Model& model) {
   return out;
 }
 
-} // namespace trifem::app
+} // namespace trifem::analysis

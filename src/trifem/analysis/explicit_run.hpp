@@ -7,7 +7,7 @@
 
 #include <filesystem>
 
-namespace trifem::app {
+namespace trifem::analysis {
 
 /// Runs a dynamic-explicit case to time.end_time; results (VTU series, results.pvd,
 /// history.csv, summary.json, run.log) go to `output_dir`. Returns an ExitCode: kSuccess, or
@@ -20,4 +20,4 @@ int run_explicit_case(const io::CaseSpec& spec, const std::filesystem::path& out
 /// step estimate, without stepping.
 int check_explicit_case(const io::CaseSpec& spec);
 
-} // namespace trifem::app
+} // namespace trifem::analysis

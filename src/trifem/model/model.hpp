@@ -13,7 +13,7 @@
 
 #include <memory>
 
-namespace trifem::app {
+namespace trifem::model {
 
 /// A reaction output: displacement DOFs of a node set per component.
 struct ReactionSet {
@@ -71,4 +71,4 @@ mesh::Mesh build_mesh(const io::CaseSpec& spec, std::map<std::string, std::strin
 /// Builds the whole model, including its initial state. InputErrors name the case key.
 std::unique_ptr<Model> build_model(const io::CaseSpec& spec);
 
-} // namespace trifem::app
+} // namespace trifem::model

@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: MIT
-#include "model_support.hpp"
+#include "trifem/model/support_check.hpp"
 
 #include "trifem/core/error.hpp"
 
 #include <array>
 #include <numeric>
 
-namespace trifem::app {
+namespace trifem::model {
 namespace {
 
 /// Connected components of the mesh (cells sharing a node), as a component index per node.
@@ -65,4 +65,4 @@ void check_support(const io::CaseSpec& spec, const Model& model) {
   }
 }
 
-} // namespace trifem::app
+} // namespace trifem::model

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "contact_output.hpp"
+#include "trifem/analysis/contact_output.hpp"
 
 #include "trifem/core/log.hpp"
 #include "trifem/io/csv_writer.hpp"
@@ -9,7 +9,7 @@
 #include <limits>
 #include <numeric>
 
-namespace trifem::app {
+namespace trifem::analysis {
 namespace {
 
 using contact::SlaveNodeState;
@@ -25,7 +25,8 @@ io::DataArray scalar_array(std::string name, const std::vector<SlaveNodeState>& 
 
 /// Normal component `scale` f·n of the nodal vector field f at a slave node, n = the outward
 /// normal of the slave surface (positive: out of the slave body).
-Real normal_component(const Model& model, dofs::FieldId f, const SlaveNodeState& s, Real scale) {
+Real normal_component(const model::Model& model, dofs::FieldId f, const SlaveNodeState& s,
+                      Real scale) {
   const Vector& x = model.problem->state();
   Vec3 v;
   for (int k = 0; k < 3; ++k)
@@ -35,7 +36,7 @@ Real normal_component(const Model& model, dofs::FieldId f, const SlaveNodeState&
 
 /// Mixture arrays: the water potential, the ion potentials (stored as c_ref mū_±) and the normal
 /// fluxes at the slave nodes (ion flux DOFs hold j / c_ref).
-void add_mixture_arrays(const Model& model, const std::vector<SlaveNodeState>& states,
+void add_mixture_arrays(const model::Model& model, const std::vector<SlaveNodeState>& states,
                         std::vector<io::DataArray>& out) {
   const physics::MixtureFields& f = model.fields;
   const Real c_ref = model.chem.c_ref;
@@ -102,7 +103,7 @@ std::vector<std::string> csv_columns(const std::vector<io::DataArray>& arrays) {
 
 } // namespace
 
-std::vector<io::DataArray> contact_arrays(const Model& model,
+std::vector<io::DataArray> contact_arrays(const model::Model& model,
                                           const std::vector<SlaveNodeState>& states) {
   std::vector<io::DataArray> out;
   out.push_back(
@@ -148,7 +149,7 @@ std::vector<Index> surface_order(const mesh::Mesh& mesh, const std::vector<Index
   return order;
 }
 
-std::vector<std::string> contact_history_columns(const Model& model) {
+std::vector<std::string> contact_history_columns(const model::Model& model) {
   std::vector<std::string> cols;
   for (std::size_t i = 1; i <= model.contacts.size(); ++i) {
     for (const char* c : {"Fx", "Fy", "Fz"})
@@ -161,7 +162,7 @@ std::vector<std::string> contact_history_columns(const Model& model) {
   return cols;
 }
 
-void append_contact_history(const Model& model, std::vector<double>& row) {
+void append_contact_history(const model::Model& model, std::vector<double>& row) {
   const Vector& x = model.problem->state();
   for (const contact::ContactTerm* pair : model.contacts) {
     const Vec3 slave = pair->slave_force(x), master = pair->master_force(x);
@@ -171,7 +172,7 @@ void append_contact_history(const Model& model, std::vector<double>& row) {
   }
 }
 
-ContactOutput::ContactOutput(const Model& model, std::filesystem::path directory)
+ContactOutput::ContactOutput(const model::Model& model, std::filesystem::path directory)
     : model_(model), directory_(std::move(directory)) {
   for (std::size_t i = 1; i <= model.contacts.size(); ++i)
     pvd_.push_back(std::make_unique<io::PvdWriter>(directory_ / fmt::format("contact{}.pvd", i)));
@@ -213,4 +214,4 @@ void ContactOutput::write_csv(const std::filesystem::path& file, Real time,
   }
 }
 
-} // namespace trifem::app
+} // namespace trifem::analysis

@@ -1,14 +1,14 @@
 // SPDX-License-Identifier: MIT
-#include "explicit_model.hpp"
+#include "trifem/model/explicit_case.hpp"
 
-#include "model_conditions.hpp"
 #include "trifem/core/error.hpp"
 #include "trifem/material/registry.hpp"
+#include "trifem/model/conditions.hpp"
 
 #include <algorithm>
 #include <map>
 
-namespace trifem::app {
+namespace trifem::model {
 namespace {
 
 namespace ed = explicit_dynamics;
@@ -150,4 +150,4 @@ ExplicitCase build_explicit_case(const io::CaseSpec& spec) {
   return c;
 }
 
-} // namespace trifem::app
+} // namespace trifem::model

@@ -2,9 +2,9 @@
 // [[rigid_body]]: node sets that move with one rigid translation (helpers of build_model).
 #pragma once
 
-#include "model.hpp"
+#include "trifem/model/model.hpp"
 
-namespace trifem::app {
+namespace trifem::model {
 
 /// Ties the displacement DOFs of every [[rigid_body]] (free and force-driven components share
 /// one unknown, the body's translation), prescribes its displacement-driven components and
@@ -23,4 +23,4 @@ Vec3 rigid_body_force(const Model& model, const RigidBody& b, Real time);
 /// The translation of rigid body `b` [mm] (0 in the components it does not tie).
 Vec3 rigid_body_displacement(const Model& model, const RigidBody& b);
 
-} // namespace trifem::app
+} // namespace trifem::model

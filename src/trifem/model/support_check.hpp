@@ -4,12 +4,12 @@
 // stiffness, which a direct solver may not even notice; it is reported before the run.
 #pragma once
 
-#include "model.hpp"
+#include "trifem/model/model.hpp"
 
-namespace trifem::app {
+namespace trifem::model {
 
 /// InputError naming the first body (connected set of cells) and the translation component
 /// that no fixed or prescribed displacement, contact surface or rigid body holds.
 void check_support(const io::CaseSpec& spec, const Model& model);
 
-} // namespace trifem::app
+} // namespace trifem::model

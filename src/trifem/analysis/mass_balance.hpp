@@ -4,11 +4,11 @@
 // boundary (contact interfaces included), both computed independently.
 #pragma once
 
-#include "model.hpp"
+#include "trifem/model/model.hpp"
 
 #include <array>
 
-namespace trifem::app {
+namespace trifem::analysis {
 
 /// Totals and outflow of water [mm^3, mm^3/s], cations and anions [mmol, mmol/s].
 struct Balance {
@@ -28,7 +28,7 @@ struct BalanceRegion {
 /// Tracks the balance errors of a run.
 class MassBalance {
 public:
-  explicit MassBalance(const Model& model);
+  explicit MassBalance(const model::Model& model);
   /// Current totals (committed state) and boundary outflow (state x) of the whole model.
   Balance measure() const { return measure(regions_.front()); }
   /// Records a converged step of size dt: error = |delta total + dt outflow| / total, for the
@@ -44,8 +44,8 @@ public:
 private:
   Balance measure(const BalanceRegion& region) const;
 
-  const Model& model_;
+  const model::Model& model_;
   std::vector<BalanceRegion> regions_;
 };
 
-} // namespace trifem::app
+} // namespace trifem::analysis

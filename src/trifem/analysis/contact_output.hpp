@@ -4,20 +4,20 @@
 // at the same output times, and the pair's history.csv columns.
 #pragma once
 
-#include "model.hpp"
 #include "trifem/io/pvd_writer.hpp"
 #include "trifem/io/vtu_writer.hpp"
+#include "trifem/model/model.hpp"
 
 #include <filesystem>
 #include <memory>
 
-namespace trifem::app {
+namespace trifem::analysis {
 
 /// Nodal arrays of one contact pair in physical units, one value (or vector) per slave node in
 /// the order of `states` (= ContactTerm::slave_states of the model's state): gap, traction,
 /// potentials and normal fluxes (mixtures), active and projected flags, slave normal and nodal
 /// area (docs/input.md, "Contact output").
-std::vector<io::DataArray> contact_arrays(const Model& model,
+std::vector<io::DataArray> contact_arrays(const model::Model& model,
                                           const std::vector<contact::SlaveNodeState>& states);
 
 /// Positions in `nodes` (mesh nodes) ordered along the surface they form: by the reference
@@ -27,17 +27,17 @@ std::vector<Index> surface_order(const mesh::Mesh& mesh, const std::vector<Index
 
 /// history.csv columns of every pair i (from 1): slave force contact<i>.Fx/Fy/Fz [N], master
 /// force contact<i>.master_Fx/Fy/Fz [N], contact<i>.area [mm^2], contact<i>.active_nodes.
-std::vector<std::string> contact_history_columns(const Model& model);
+std::vector<std::string> contact_history_columns(const model::Model& model);
 
 /// Appends the values of contact_history_columns() in the model's current state to `row`.
-void append_contact_history(const Model& model, std::vector<double>& row);
+void append_contact_history(const model::Model& model, std::vector<double>& row);
 
 /// Writes the surface files of every contact pair i at the output states of a run:
 /// contact<i>_NNNN.vtu listed in contact<i>.pvd, and contact<i>_surface_NNNN.csv.
 class ContactOutput {
 public:
   /// Starts an empty contact<i>.pvd per pair in `directory` (which must exist).
-  ContactOutput(const Model& model, std::filesystem::path directory);
+  ContactOutput(const model::Model& model, std::filesystem::path directory);
 
   /// Writes the files numbered `number` of the model's current state at `time`; the VTU file
   /// only if `vtu` is set.
@@ -48,9 +48,9 @@ private:
                  const std::vector<contact::SlaveNodeState>& states,
                  const std::vector<io::DataArray>& arrays) const;
 
-  const Model& model_;
+  const model::Model& model_;
   std::filesystem::path directory_;
   std::vector<std::unique_ptr<io::PvdWriter>> pvd_;
 };
 
-} // namespace trifem::app
+} // namespace trifem::analysis

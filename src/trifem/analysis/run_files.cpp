@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "run_files.hpp"
+#include "trifem/analysis/run_files.hpp"
 
 #include "trifem/core/error.hpp"
 #include "trifem/io/vtu_writer.hpp"
@@ -8,7 +8,7 @@
 
 #include <regex>
 
-namespace trifem::app {
+namespace trifem::analysis {
 
 namespace fs = std::filesystem;
 
@@ -58,4 +58,4 @@ nlohmann::json summary_header(const io::CaseSpec& spec, const std::string& statu
   return j;
 }
 
-} // namespace trifem::app
+} // namespace trifem::analysis

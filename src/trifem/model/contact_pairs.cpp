@@ -1,14 +1,14 @@
 // SPDX-License-Identifier: MIT
-#include "model_contact.hpp"
+#include "trifem/model/contact_pairs.hpp"
 
-#include "model_conditions.hpp"
 #include "trifem/contact/contact_law.hpp"
 #include "trifem/contact/mixture_contact_law.hpp"
 #include "trifem/core/log.hpp"
+#include "trifem/model/conditions.hpp"
 
 #include <cmath>
 
-namespace trifem::app {
+namespace trifem::model {
 namespace {
 
 /// Mean facet size sqrt(area) of a surface in the reference configuration.
@@ -134,4 +134,4 @@ std::vector<std::unique_ptr<physics::Term>> contact_terms(const io::CaseSpec& sp
   return terms;
 }
 
-} // namespace trifem::app
+} // namespace trifem::model

@@ -1,17 +1,17 @@
 // SPDX-License-Identifier: MIT
-#include "model.hpp"
+#include "trifem/model/model.hpp"
 
-#include "model_conditions.hpp"
-#include "model_contact.hpp"
-#include "model_rigid.hpp"
-#include "model_support.hpp"
 #include "trifem/core/error.hpp"
 #include "trifem/material/registry.hpp"
 #include "trifem/mesh/gmsh_reader.hpp"
+#include "trifem/model/conditions.hpp"
+#include "trifem/model/contact_pairs.hpp"
+#include "trifem/model/rigid_bodies.hpp"
+#include "trifem/model/support_check.hpp"
 
 #include <set>
 
-namespace trifem::app {
+namespace trifem::model {
 namespace {
 
 std::vector<CellMaterial> cell_materials(const io::CaseSpec& spec, const mesh::Mesh& mesh,
@@ -221,4 +221,4 @@ std::unique_ptr<Model> build_model(const io::CaseSpec& spec) {
   return model;
 }
 
-} // namespace trifem::app
+} // namespace trifem::model

@@ -1,14 +1,14 @@
 // SPDX-License-Identifier: MIT
-#include "explicit_run.hpp"
+#include "trifem/analysis/explicit_run.hpp"
 
-#include "explicit_model.hpp"
-#include "explicit_output.hpp"
-#include "run.hpp"
-#include "run_files.hpp"
+#include "trifem/analysis/explicit_output.hpp"
+#include "trifem/analysis/run.hpp"
+#include "trifem/analysis/run_files.hpp"
 #include "trifem/core/error.hpp"
 #include "trifem/core/interrupt.hpp"
 #include "trifem/core/log.hpp"
 #include "trifem/explicit/energy_balance.hpp"
+#include "trifem/model/explicit_case.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -17,7 +17,7 @@
 #include <nlohmann/json.hpp>
 #include <omp.h>
 
-namespace trifem::app {
+namespace trifem::analysis {
 namespace {
 
 namespace ed = explicit_dynamics;
@@ -82,7 +82,7 @@ long fixed_dofs(const ed::ExplicitModel& m) {
 }
 
 /// The case, mesh, materials and scheme options, at the head of the log.
-void log_model(const io::CaseSpec& spec, const ExplicitCase& c) {
+void log_model(const io::CaseSpec& spec, const model::ExplicitCase& c) {
   const ed::ExplicitModel& m = *c.model;
   const ed::ExplicitSettings& s = c.settings;
   const long fixed = fixed_dofs(m);
@@ -132,7 +132,8 @@ void check_step_count(const io::CaseSpec& spec, const ed::TimeStepInfo& t) {
 }
 
 /// The solver (it estimates the stable step); InputErrors prefixed with the case file.
-std::unique_ptr<ed::ExplicitSolver> make_solver(const io::CaseSpec& spec, const ExplicitCase& c) {
+std::unique_ptr<ed::ExplicitSolver> make_solver(const io::CaseSpec& spec,
+                                                const model::ExplicitCase& c) {
   return for_case(spec, [&] {
     auto solver = std::make_unique<ed::ExplicitSolver>(*c.model, c.settings);
     check_step_count(spec, solver->time_step_info());
@@ -180,7 +181,7 @@ nlohmann::json time_step_json(const ed::TimeStepInfo& t) {
 }
 
 /// summary.json: status, counts, time step, final energies, sizes and wall times.
-nlohmann::json summary(const io::CaseSpec& spec, const ExplicitCase& c,
+nlohmann::json summary(const io::CaseSpec& spec, const model::ExplicitCase& c,
                        const ed::ExplicitSolver& solver, const RunStats& stats,
                        double output_seconds) {
   const ed::SolverTimings& w = solver.timings();
@@ -216,7 +217,7 @@ nlohmann::json summary(const io::CaseSpec& spec, const ExplicitCase& c,
 
 int run_explicit_case(const io::CaseSpec& spec, const std::filesystem::path& output_dir) {
   const auto start = Clock::now();
-  const ExplicitCase c = for_case(spec, [&] { return build_explicit_case(spec); });
+  const model::ExplicitCase c = for_case(spec, [&] { return model::build_explicit_case(spec); });
   // before the output directory: an invalid case creates no output
   const std::unique_ptr<ed::ExplicitSolver> solver = make_solver(spec, c);
   start_output_directory(output_dir, spec);
@@ -270,7 +271,7 @@ int run_explicit_case(const io::CaseSpec& spec, const std::filesystem::path& out
 }
 
 int check_explicit_case(const io::CaseSpec& spec) {
-  const ExplicitCase c = for_case(spec, [&] { return build_explicit_case(spec); });
+  const model::ExplicitCase c = for_case(spec, [&] { return model::build_explicit_case(spec); });
   log_model(spec, c);
   const std::unique_ptr<ed::ExplicitSolver> solver = make_solver(spec, c);
   log_time_step(*solver, spec);
@@ -278,4 +279,4 @@ int check_explicit_case(const io::CaseSpec& spec) {
   return kSuccess;
 }
 
-} // namespace trifem::app
+} // namespace trifem::analysis

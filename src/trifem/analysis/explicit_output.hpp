@@ -3,17 +3,17 @@
 // history.csv (step data, energies, reactions, probes) after every step.
 #pragma once
 
-#include "explicit_model.hpp"
 #include "trifem/explicit/explicit_solver.hpp"
 #include "trifem/explicit/history.hpp"
 #include "trifem/io/pvd_writer.hpp"
 #include "trifem/io/vtu_writer.hpp"
+#include "trifem/model/explicit_case.hpp"
 
 #include <filesystem>
 #include <memory>
 #include <vector>
 
-namespace trifem::app {
+namespace trifem::analysis {
 
 /// A time the run must land on.
 struct StepTarget {
@@ -33,7 +33,7 @@ std::vector<StepTarget> explicit_step_targets(const io::CaseSpec& spec);
 class ExplicitOutput {
 public:
   /// Creates `directory` (InputError if impossible), results.pvd and history.csv.
-  ExplicitOutput(const ExplicitCase& model, const io::OutputSpec& spec,
+  ExplicitOutput(const model::ExplicitCase& model, const io::OutputSpec& spec,
                  std::filesystem::path directory);
   ~ExplicitOutput();
 
@@ -51,7 +51,7 @@ public:
 private:
   void write_vtu(const explicit_dynamics::ExplicitSolver& solver);
 
-  const ExplicitCase& case_;
+  const model::ExplicitCase& case_;
   bool vtu_ = true;
   std::filesystem::path directory_;
   io::UnstructuredGrid grid_; ///< the mesh; the data arrays are replaced at every write
@@ -61,4 +61,4 @@ private:
   double seconds_ = 0.0;
 };
 
-} // namespace trifem::app
+} // namespace trifem::analysis

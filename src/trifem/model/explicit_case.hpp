@@ -4,17 +4,17 @@
 // the history outputs.
 #pragma once
 
-#include "model.hpp"
 #include "trifem/explicit/explicit_model.hpp"
 #include "trifem/explicit/settings.hpp"
 #include "trifem/io/case_spec.hpp"
+#include "trifem/model/model.hpp"
 
 #include <array>
 #include <memory>
 #include <string>
 #include <vector>
 
-namespace trifem::app {
+namespace trifem::model {
 
 /// An [[output.reaction]] of an explicit model: the DOFs 3 a + k of a node set, per component k.
 struct ExplicitReaction {
@@ -45,4 +45,4 @@ explicit_dynamics::ExplicitSettings explicit_settings(const io::CaseSpec& spec);
 /// surfaces, cell blocks); the case must have been read by io::read_case.
 ExplicitCase build_explicit_case(const io::CaseSpec& spec);
 
-} // namespace trifem::app
+} // namespace trifem::model

@@ -8,7 +8,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
-namespace trifem::app {
+namespace trifem::analysis {
 
 /// Creates `directory`, removes the result files an earlier run left there (only trifem's own
 /// file names: results.pvd, volume_NNNN.vtu, contact files, history.csv, summary.json, run.log)
@@ -31,4 +31,4 @@ double peak_memory_mb();
 nlohmann::json summary_header(const io::CaseSpec& spec, const std::string& status,
                               const std::string& failure);
 
-} // namespace trifem::app
+} // namespace trifem::analysis

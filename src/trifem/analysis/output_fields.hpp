@@ -2,17 +2,17 @@
 // The arrays written to the volume VTU files (names follow FEBio's vocabulary with units).
 #pragma once
 
-#include "model.hpp"
 #include "trifem/io/vtu_writer.hpp"
+#include "trifem/model/model.hpp"
 
-namespace trifem::app {
+namespace trifem::analysis {
 
 /// Nodal arrays: displacement, reaction forces; with mixtures the nodal fluxes and the
 /// nodal averages of pressure and electric potential.
-std::vector<io::DataArray> point_fields(const Model& model);
+std::vector<io::DataArray> point_fields(const model::Model& model);
 
 /// Cell arrays: total and solid Cauchy stress, relative volume; with mixtures the element
 /// chemistry (pressure, potentials, concentrations, fixed charge, porosity, current density).
-std::vector<io::DataArray> cell_fields(const Model& model);
+std::vector<io::DataArray> cell_fields(const model::Model& model);
 
-} // namespace trifem::app
+} // namespace trifem::analysis

@@ -1,16 +1,16 @@
 // SPDX-License-Identifier: MIT
-#include "run.hpp"
+#include "trifem/analysis/run.hpp"
 
-#include "explicit_run.hpp"
-#include "model.hpp"
-#include "output.hpp"
-#include "run_files.hpp"
+#include "trifem/analysis/explicit_run.hpp"
+#include "trifem/analysis/output_writer.hpp"
+#include "trifem/analysis/run_files.hpp"
 #include "trifem/core/error.hpp"
 #include "trifem/core/interrupt.hpp"
 #include "trifem/core/log.hpp"
 #include "trifem/linalg/auto_solver.hpp"
 #include "trifem/linalg/linear_solver.hpp"
 #include "trifem/mesh/mesh.hpp"
+#include "trifem/model/model.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -21,13 +21,13 @@
 #include <omp.h>
 #include <set>
 
-namespace trifem::app {
+namespace trifem::analysis {
 namespace {
 
 using Clock = std::chrono::steady_clock;
 
 /// Derived scales of mixture models: osmotic pressure scale, Donnan state, consolidation time.
-void log_mixture_scales(const Model& model) {
+void log_mixture_scales(const model::Model& model) {
   const material::Electrochemistry& c = model.chem;
   const Real L = model.length_scale;
   log::info("  consolidation time L^2/(H kappa) = {:.4g} s (L = model size)",
@@ -37,7 +37,7 @@ void log_mixture_scales(const Model& model) {
   log::info("  RT = {:.6g} mJ/mmol, RT c* = {:.6g} MPa (bath c* = {:.4g} mmol/mm^3)", c.RT(),
             c.RT() * c.c_ref, c.c_ref);
   std::set<const material::MixtureProperties*> seen;
-  for (const CellMaterial& m : model.materials) {
+  for (const model::CellMaterial& m : model.materials) {
     if (!m.mixture || !m.mixture->charged || !seen.insert(m.mixture.get()).second)
       continue;
     const Real cF = m.mixture->fixed_charge;
@@ -52,7 +52,7 @@ void log_mixture_scales(const Model& model) {
   }
 }
 
-void log_model(const io::CaseSpec& spec, const Model& model) {
+void log_model(const io::CaseSpec& spec, const model::Model& model) {
   log::info("trifem {}  case {}", TRIFEM_VERSION, spec.file.string());
   if (!spec.title.empty())
     log::info("  {}", spec.title);
@@ -66,9 +66,9 @@ void log_model(const io::CaseSpec& spec, const Model& model) {
 }
 
 /// summary.json of a quasi-static run.
-nlohmann::json summary(const io::CaseSpec& spec, const Model& model, const solver::RunReport& run,
-                       const solver::PhaseTimes& phases, double output_s, double wall_s,
-                       const MassBalance* balance) {
+nlohmann::json summary(const io::CaseSpec& spec, const model::Model& model,
+                       const solver::RunReport& run, const solver::PhaseTimes& phases,
+                       double output_s, double wall_s, const MassBalance* balance) {
   nlohmann::json j = summary_header(spec, run_status(run), run.failure);
   j["end_time_s"] = run.end_time;
   j["steps"] = run.steps;
@@ -106,7 +106,7 @@ nlohmann::json summary(const io::CaseSpec& spec, const Model& model, const solve
 }
 
 /// Says once that Newton reached the round-off floor, with the mesh grading that causes it.
-void note_roundoff_floor(const Model& model, const solver::StepInfo& info, bool& noted) {
+void note_roundoff_floor(const model::Model& model, const solver::StepInfo& info, bool& noted) {
   if (!info.newton->at_roundoff_floor || noted)
     return;
   noted = true;
@@ -120,9 +120,9 @@ void note_roundoff_floor(const Model& model, const solver::StepInfo& info, bool&
 }
 
 /// build_model with errors prefixed by the case file, like the reader's.
-std::unique_ptr<Model> build_model_for(const io::CaseSpec& spec) {
+std::unique_ptr<model::Model> build_model_for(const io::CaseSpec& spec) {
   try {
-    return build_model(spec);
+    return model::build_model(spec);
   } catch (const InputError& e) {
     throw InputError(fmt::format("{}: {}", spec.file.string(), e.what()));
   }
@@ -181,7 +181,7 @@ std::string write_initial_state(OutputWriter& output) {
 }
 
 /// After a run that stopped early: the last accepted state as a VTU file, if it is not one yet.
-void write_last_state(Model& model, OutputWriter& output, const solver::RunReport& run) {
+void write_last_state(model::Model& model, OutputWriter& output, const solver::RunReport& run) {
   solver::Linearization lin; // the reactions of the last accepted state, not the failed attempt
   if (model.problem->linearize(lin, false) != solver::SolveStatus::Converged)
     return;
@@ -236,7 +236,7 @@ int run_case(const io::CaseSpec& spec, const std::filesystem::path& output_dir) 
   if (spec.is_explicit())
     return run_explicit_case(spec, output_dir);
   const auto start = Clock::now();
-  std::unique_ptr<Model> model = build_model_for(spec);
+  std::unique_ptr<model::Model> model = build_model_for(spec);
   std::unique_ptr<linalg::LinearSolver> linear_solver = linear_solver_for(spec);
   start_output_directory(output_dir, spec);
   OutputWriter output(*model, spec.output, output_dir);
@@ -288,11 +288,11 @@ int run_case(const io::CaseSpec& spec, const std::filesystem::path& output_dir) 
 int check_case(const io::CaseSpec& spec) {
   if (spec.is_explicit())
     return check_explicit_case(spec);
-  std::unique_ptr<Model> model = build_model_for(spec);
+  std::unique_ptr<model::Model> model = build_model_for(spec);
   linear_solver_for(spec); // unknown or unused PETSc options
   log_model(spec, *model);
   log::info("check passed: the case is valid");
   return kSuccess;
 }
 
-} // namespace trifem::app
+} // namespace trifem::analysis

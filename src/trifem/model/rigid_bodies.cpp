@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: MIT
-#include "model_rigid.hpp"
+#include "trifem/model/rigid_bodies.hpp"
 
-#include "model_conditions.hpp"
+#include "trifem/model/conditions.hpp"
 
 #include <set>
 
-namespace trifem::app {
+namespace trifem::model {
 namespace {
 
 /// DOFs already constrained by `conditions`, for conflict messages.
@@ -94,4 +94,4 @@ Vec3 rigid_body_displacement(const Model& model, const RigidBody& b) {
   return u;
 }
 
-} // namespace trifem::app
+} // namespace trifem::model

@@ -2,10 +2,10 @@
 // Case -> boundary conditions, surface loads and outputs of a model (helpers of build_model).
 #pragma once
 
-#include "model.hpp"
 #include "trifem/core/error.hpp"
+#include "trifem/model/model.hpp"
 
-namespace trifem::app {
+namespace trifem::model {
 
 /// Runs f, prefixing any InputError with the case key it concerns.
 template <class F>
@@ -37,4 +37,4 @@ std::vector<std::unique_ptr<physics::Term>> load_terms(const io::CaseSpec& spec,
 /// Reaction sets and probes of the case.
 void add_outputs(const io::CaseSpec& spec, Model& model);
 
-} // namespace trifem::app
+} // namespace trifem::model

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
-#include "output.hpp"
+#include "trifem/analysis/output_writer.hpp"
 
-#include "contact_output.hpp"
-#include "model_rigid.hpp"
-#include "output_fields.hpp"
+#include "trifem/analysis/contact_output.hpp"
+#include "trifem/analysis/output_fields.hpp"
+#include "trifem/model/rigid_bodies.hpp"
 
 #include "trifem/core/error.hpp"
 #include "trifem/core/log.hpp"
@@ -12,10 +12,10 @@
 #include <chrono>
 #include <cmath>
 
-namespace trifem::app {
+namespace trifem::analysis {
 namespace {
 
-std::vector<std::string> history_columns(const Model& model) {
+std::vector<std::string> history_columns(const model::Model& model) {
   std::vector<std::string> cols = {"time [s]", "step", "dt [s]", "iterations"};
   for (const auto& r : model.reactions)
     for (const char* c : {"Rx", "Ry", "Rz"})
@@ -25,7 +25,7 @@ std::vector<std::string> history_columns(const Model& model) {
       cols.push_back(fmt::format("{}.{}{} [mm]", p.name, p.quantity == "position" ? "" : "u", c));
   for (std::string& c : contact_history_columns(model))
     cols.push_back(std::move(c));
-  for (const RigidBody& b : model.rigid_bodies) {
+  for (const model::RigidBody& b : model.rigid_bodies) {
     for (const char* c : {"ux", "uy", "uz"})
       cols.push_back(fmt::format("{}.{} [mm]", b.name, c));
     for (const char* c : {"Fx", "Fy", "Fz"})
@@ -50,7 +50,7 @@ void add_body_columns(const MassBalance& balance, std::vector<std::string>& cols
   }
 }
 
-io::UnstructuredGrid volume_grid(const Model& model) {
+io::UnstructuredGrid volume_grid(const model::Model& model) {
   io::UnstructuredGrid grid;
   grid.points = model.mesh.nodes();
   for (const auto& cell : model.mesh.cells())
@@ -60,7 +60,7 @@ io::UnstructuredGrid volume_grid(const Model& model) {
 
 } // namespace
 
-OutputWriter::OutputWriter(const Model& model, const io::OutputSpec& spec,
+OutputWriter::OutputWriter(const model::Model& model, const io::OutputSpec& spec,
                            std::filesystem::path directory)
     : model_(model), spec_(spec), directory_(std::move(directory)) {
   std::error_code ec;
@@ -106,8 +106,9 @@ std::vector<double> OutputWriter::history_row(Real time, int step, Real dt, int 
       row.push_back(p.quantity == "position" ? model_.mesh.node(p.node)[k] + u : u);
     }
   append_contact_history(model_, row);
-  for (const RigidBody& b : model_.rigid_bodies) {
-    const Vec3 u = rigid_body_displacement(model_, b), f = rigid_body_force(model_, b, time);
+  for (const model::RigidBody& b : model_.rigid_bodies) {
+    const Vec3 u = model::rigid_body_displacement(model_, b),
+               f = model::rigid_body_force(model_, b, time);
     row.insert(row.end(), {u.x(), u.y(), u.z(), f.x(), f.y(), f.z()});
   }
   if (balance_) {
@@ -162,4 +163,4 @@ void OutputWriter::write(Real time, int step, Real dt, int iterations, bool volu
   seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-} // namespace trifem::app
+} // namespace trifem::analysis

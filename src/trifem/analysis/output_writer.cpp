@@ -3,6 +3,7 @@
 
 #include "trifem/analysis/contact_output.hpp"
 #include "trifem/analysis/output_fields.hpp"
+#include "trifem/analysis/probes.hpp"
 #include "trifem/model/rigid_bodies.hpp"
 
 #include "trifem/core/error.hpp"
@@ -21,8 +22,8 @@ std::vector<std::string> history_columns(const model::Model& model) {
     for (const char* c : {"Rx", "Ry", "Rz"})
       cols.push_back(fmt::format("{}.{} [N]", r.name, c));
   for (const auto& p : model.probes)
-    for (const char* c : {"x", "y", "z"})
-      cols.push_back(fmt::format("{}.{}{} [mm]", p.name, p.quantity == "position" ? "" : "u", c));
+    for (std::string& c : probe_columns(p))
+      cols.push_back(std::move(c));
   for (std::string& c : contact_history_columns(model))
     cols.push_back(std::move(c));
   for (const model::RigidBody& b : model.rigid_bodies) {
@@ -67,6 +68,7 @@ OutputWriter::OutputWriter(const model::Model& model, const io::OutputSpec& spec
   std::filesystem::create_directories(directory_, ec);
   TRIFEM_CHECK(!ec, "cannot create the output directory {}: {}", directory_.string(), ec.message());
   pvd_ = std::make_unique<io::PvdWriter>(directory_ / "results.pvd");
+  cells_ = std::make_unique<CellEvaluator>(model);
   std::vector<std::string> columns = history_columns(model);
   if (model.mixture) {
     balance_ = std::make_unique<MassBalance>(model);
@@ -101,10 +103,7 @@ std::vector<double> OutputWriter::history_row(Real time, int step, Real dt, int 
       row.push_back(sum);
     }
   for (const auto& p : model_.probes)
-    for (int k = 0; k < 3; ++k) {
-      const Real u = x[model_.dofs.dof(model_.fields.u, p.node, k)];
-      row.push_back(p.quantity == "position" ? model_.mesh.node(p.node)[k] + u : u);
-    }
+    append_probe_values(model_, *cells_, p, x, row);
   append_contact_history(model_, row);
   for (const model::RigidBody& b : model_.rigid_bodies) {
     const Vec3 u = model::rigid_body_displacement(model_, b),

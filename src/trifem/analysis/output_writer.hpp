@@ -14,6 +14,7 @@
 namespace trifem::analysis {
 
 class ContactOutput;
+class CellEvaluator;
 
 /// Writes results as the run advances; everything written stays valid if the run stops.
 class OutputWriter {
@@ -52,6 +53,7 @@ private:
   std::unique_ptr<io::CsvWriter> history_;
   std::unique_ptr<MassBalance> balance_;
   std::unique_ptr<ContactOutput> contact_; ///< null without contact pairs
+  std::unique_ptr<CellEvaluator> cells_;   ///< for cell-quantity probes
   int state_count_ = 0;                    ///< output states written (the NNNN of the files)
   Real last_state_time_ = -1.0;            ///< time of the last output state written
   int vtu_count_ = 0;

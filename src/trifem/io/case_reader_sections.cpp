@@ -2,6 +2,7 @@
 // Case reader, part 2: [[mesh.*]], [materials.*], [curves.*], [time], [solver], [output], and the
 // order in which all sections are read. The typed access layer is in toml_table.hpp; boundary
 // conditions, loads and the mixture options are read in case_reader_physics.cpp.
+#include "trifem/io/probe_quantities.hpp"
 #include "trifem/io/toml_table.hpp"
 #include "trifem/material/mixture.hpp"
 #include "trifem/material/registry.hpp"
@@ -323,8 +324,12 @@ std::vector<Real> read_output_times(const Table& t, Real end_time) {
 
 ProbeSpec read_probe(const Table& t, const std::vector<ProbeSpec>& earlier) {
   t.allow({"name", "quantity", "point"});
-  static const Options<std::string_view> quantities = {{"displacement", "displacement"},
-                                                       {"position", "position"}};
+  static const Options<std::string_view> quantities = [] {
+    Options<std::string_view> o;
+    for (const ProbeQuantity& q : probe_quantities())
+      o.emplace_back(q.name, q.name);
+    return o;
+  }();
   ProbeSpec p;
   p.name = read_identifier(t, "name", false);
   for (std::size_t i = 0; i < earlier.size(); ++i)

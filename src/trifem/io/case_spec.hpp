@@ -255,10 +255,10 @@ struct ReactionSpec {
   std::string set;
 };
 
-/// [[output.probe]]: a nodal quantity at the node nearest to `point`, in history.csv.
+/// [[output.probe]]: a quantity at `point` (reference configuration), in history.csv.
 struct ProbeSpec {
   std::string name;
-  std::string quantity = "displacement"; ///< "displacement" or "position"
+  std::string quantity = "displacement"; ///< one of io::probe_quantities()
   Vec3 point = Vec3::Zero();
 };
 

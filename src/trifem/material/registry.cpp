@@ -2,16 +2,27 @@
 #include "trifem/material/registry.hpp"
 
 #include "trifem/core/error.hpp"
+#include "trifem/material/holmes_mow.hpp"
+#include "trifem/material/mooney_rivlin.hpp"
 #include "trifem/material/neo_hookean.hpp"
+#include "trifem/material/ogden.hpp"
 #include "trifem/material/saint_venant_kirchhoff.hpp"
 
 namespace trifem::material {
 namespace {
 
+/// The registry entry of `Law`, with its static `check(values, context)` if it has one.
 template <class Law>
-LawEntry entry(std::string type, std::string doc) {
-  return {std::move(type), std::move(doc), &Law::schema(),
-          [](const ParameterValues& p) { return std::make_unique<Law>(p); }};
+LawEntry entry(std::string type, std::string doc, ParameterValues example) {
+  LawEntry e;
+  e.type = std::move(type);
+  e.doc = std::move(doc);
+  e.parameters = &Law::schema();
+  e.make = [](const ParameterValues& p) { return std::make_unique<Law>(p); };
+  if constexpr (requires(const ParameterValues& p, const std::string& c) { Law::check(p, c); })
+    e.check = &Law::check;
+  e.example = std::move(example);
+  return e;
 }
 
 } // namespace
@@ -19,9 +30,19 @@ LawEntry entry(std::string type, std::string doc) {
 const std::vector<LawEntry>& registered_laws() {
   static const std::vector<LawEntry> laws = {
       entry<SaintVenantKirchhoff>("saint-venant-kirchhoff",
-                                  "S = lambda tr(E) I + 2 mu E (the paper's solid)"),
-      entry<NeoHookean>("neo-hookean", "compressible neo-Hookean, W = mu/2(I1-3) - mu lnJ + "
-                                       "lambda/2 (lnJ)^2"),
+                                  "S = lambda tr(E) I + 2 mu E (the paper's solid)",
+                                  {{"E", 1.0}, {"nu", 0.3}}),
+      entry<NeoHookean>("neo-hookean",
+                        "compressible neo-Hookean, W = mu/2(I1-3) - mu lnJ + lambda/2 (lnJ)^2",
+                        {{"E", 1.0}, {"nu", 0.3}}),
+      entry<HolmesMow>("holmes-mow",
+                       "Holmes-Mow, W = (lambda+2mu)/(4 beta) (e^Q - 1) (strain-stiffening)",
+                       {{"E", 1.0}, {"nu", 0.2}, {"beta", 0.5}}),
+      entry<MooneyRivlin>("mooney-rivlin",
+                          "uncoupled Mooney-Rivlin, W = c1 (I1~-3) + c2 (I2~-3) + k/2 (lnJ)^2",
+                          {{"c1", 0.3}, {"c2", 0.05}, {"k", 10.0}}),
+      entry<Ogden>("ogden", "uncoupled Ogden, W = sum c_i/m_i^2 (sum_a l~_a^m_i - 3) + k/2 (lnJ)^2",
+                   {{"c1", 0.4}, {"m1", 4.0}, {"c2", 0.2}, {"m2", -2.0}, {"k", 10.0}}),
   };
   return laws;
 }
@@ -40,7 +61,10 @@ const LawEntry& find_law(const std::string& type, const std::string& context) {
 std::unique_ptr<ElasticLaw> create_law(const std::string& type, const ParameterValues& values,
                                        const std::string& context) {
   const LawEntry& law = find_law(type, context);
-  return law.make(validate_parameters(*law.parameters, values, context));
+  const ParameterValues checked = validate_parameters(*law.parameters, values, context);
+  if (law.check)
+    law.check(checked, context);
+  return law.make(checked);
 }
 
 } // namespace trifem::material

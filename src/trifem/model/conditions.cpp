@@ -3,6 +3,7 @@
 
 #include "trifem/core/error.hpp"
 #include "trifem/dofs/nodal_frames.hpp"
+#include "trifem/fe/point_location.hpp"
 #include "trifem/physics/bath_term.hpp"
 #include "trifem/physics/surface_load_term.hpp"
 
@@ -159,6 +160,33 @@ std::vector<std::unique_ptr<physics::Term>> load_terms(const io::CaseSpec& spec,
   return terms;
 }
 
+namespace {
+
+/// The probe `p` (the i-th): InputError naming its key if its point lies outside the mesh or
+/// the material there does not have its quantity.
+Probe make_probe(const io::ProbeSpec& p, std::size_t i, const Model& model) {
+  const io::ProbeQuantity* q = io::find_probe_quantity(p.quantity);
+  TRIFEM_VERIFY(q, "unknown probe quantity {}", p.quantity); // the reader checked it
+  const auto where = fe::locate_point(model.mesh, p.point);
+  TRIFEM_CHECK(where,
+               "output.probe[{}].point = [{}, {}, {}]: outside the mesh (no cell contains "
+               "it in the reference configuration)",
+               i + 1, p.point.x(), p.point.y(), p.point.z());
+  const auto& mixture = model.materials[where->cell].mixture;
+  const bool has =
+      q->requirement == io::ProbeRequirement::None ||
+      (mixture && (q->requirement == io::ProbeRequirement::Mixture || mixture->charged));
+  TRIFEM_CHECK(has,
+               "output.probe[{}].quantity = '{}': the material at the probe's point (cell "
+               "{}) has no {} (it needs a {} material)",
+               i + 1, q->name, where->cell, q->name,
+               q->requirement == io::ProbeRequirement::Ions ? "triphasic"
+                                                            : "biphasic or triphasic");
+  return {p.name, q, where->cell, where->xi};
+}
+
+} // namespace
+
 void add_outputs(const io::CaseSpec& spec, Model& model) {
   for (std::size_t i = 0; i < spec.output.reactions.size(); ++i) {
     const auto& r = spec.output.reactions[i];
@@ -169,14 +197,8 @@ void add_outputs(const io::CaseSpec& spec, Model& model) {
         set.dofs[k].push_back(model.dofs.dof(model.fields.u, n, k));
     model.reactions.push_back(std::move(set));
   }
-  for (const auto& p : spec.output.probes) {
-    Index best = 0;
-    for (Index n = 1; n < model.mesh.num_nodes(); ++n)
-      if ((model.mesh.node(n) - p.point).squaredNorm() <
-          (model.mesh.node(best) - p.point).squaredNorm())
-        best = n;
-    model.probes.push_back({p.name, p.quantity, best});
-  }
+  for (std::size_t i = 0; i < spec.output.probes.size(); ++i)
+    model.probes.push_back(make_probe(spec.output.probes[i], i, model));
 }
 
 } // namespace trifem::model

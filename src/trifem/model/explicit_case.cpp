@@ -92,7 +92,12 @@ void add_history_outputs(const io::CaseSpec& spec, const mesh::Mesh& mesh, Expli
         set.dofs[k].push_back(3 * n + k);
     c.reactions.push_back(std::move(set));
   }
-  for (const io::ProbeSpec& p : spec.output.probes) {
+  for (std::size_t i = 0; i < spec.output.probes.size(); ++i) {
+    const io::ProbeSpec& p = spec.output.probes[i];
+    TRIFEM_CHECK(p.quantity == "displacement" || p.quantity == "position",
+                 "output.probe[{}].quantity = '{}': dynamic-explicit analyses probe only "
+                 "'displacement' and 'position'",
+                 i + 1, p.quantity);
     Index best = 0;
     for (Index n = 1; n < mesh.num_nodes(); ++n)
       if ((mesh.node(n) - p.point).squaredNorm() < (mesh.node(best) - p.point).squaredNorm())

@@ -5,6 +5,7 @@
 #include "trifem/assembly/fe_problem.hpp"
 #include "trifem/contact/contact_term.hpp"
 #include "trifem/io/case_spec.hpp"
+#include "trifem/io/probe_quantities.hpp"
 #include "trifem/material/mixture.hpp"
 #include "trifem/mesh/mesh.hpp"
 #include "trifem/physics/mixture_term.hpp"
@@ -22,11 +23,12 @@ struct ReactionSet {
   std::array<std::vector<Index>, 3> dofs;           ///< of the tied components
 };
 
-/// A probe output: one node.
+/// A probe output: a quantity at a point of a cell.
 struct Probe {
   std::string name;
-  std::string quantity;
-  Index node = -1;
+  const io::ProbeQuantity* quantity = nullptr;
+  Index cell = -1;        ///< the cell containing the point
+  Vec3 xi = Vec3::Zero(); ///< natural coordinates of the point in the cell
 };
 
 /// The law of one cell: a solid law, or a mixture (which has its own solid).

@@ -55,5 +55,21 @@ inline Mat3 from_strain(const Vec6& v) {
   return from_stress(w);
 }
 
+/// (A (x) B)_IJKL = A_IJ B_KL in Voigt form (stress-like rows, strain-like columns).
+inline Mat6 outer(const Mat3& A, const Mat3& B) {
+  return stress(A) * stress(B).transpose();
+}
+
+/// (A (.) A)_IJKL = (A_IK A_JL + A_IL A_JK)/2 in Voigt form.
+inline Mat6 symmetric_product(const Mat3& A) {
+  Mat6 D;
+  for (int r = 0; r < 6; ++r)
+    for (int c = 0; c < 6; ++c) {
+      const int I = kI[r], J = kJ[r], K = kI[c], L = kJ[c];
+      D(r, c) = 0.5 * (A(I, K) * A(J, L) + A(I, L) * A(J, K));
+    }
+  return D;
+}
+
 } // namespace voigt
 } // namespace trifem

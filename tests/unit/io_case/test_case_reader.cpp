@@ -539,9 +539,10 @@ const std::vector<BadCase> kBadCases = {
      kBase + "[[output.probe]]\nname = \"tip point\"\npoint = [1, 1, 1]\n",
      {"output.probe[1].name = 'tip point': invalid name"}},
     {"bad_probe_quantity",
-     kBase + "[[output.probe]]\nname = \"tip\"\nquantity = \"stress\"\npoint = [1, 1, 1]\n",
-     {"output.probe[1].quantity = 'stress': unknown quantity (expected one of: displacement, "
-      "position)"}},
+     kBase + "[[output.probe]]\nname = \"tip\"\nquantity = \"pressure\"\npoint = [1, 1, 1]\n",
+     {"output.probe[1].quantity = 'pressure': unknown quantity (expected one of: displacement, "
+      "position, fluid_flux,",
+      "fluid_pressure,", "current_density)"}},
     {"missing_required_key",
      replaced("size = [1, 1, 1]\n", ""),
      {"mesh.box[1].size: missing required key (expected an array of 3 numbers) (line 2)"}},

@@ -1,0 +1,74 @@
+// SPDX-License-Identifier: MIT
+#include "trifem/analysis/probes.hpp"
+
+#include "trifem/fe/hex8.hpp"
+
+#include <fmt/format.h>
+
+namespace trifem::analysis {
+namespace {
+
+/// The nodal field a nodal probe quantity interpolates and its factor to physical units (ion
+/// fluxes are stored divided by c_ref).
+std::pair<dofs::FieldId, Real> nodal_field(const model::Model& model, std::string_view name) {
+  const physics::MixtureFields& f = model.fields;
+  if (name == "fluid_flux")
+    return {f.w, 1.0};
+  if (name == "cation_flux")
+    return {f.j_plus, model.chem.c_ref};
+  if (name == "anion_flux")
+    return {f.j_minus, model.chem.c_ref};
+  return {f.u, 1.0}; // displacement, position
+}
+
+Vec3 interpolate(const model::Model& model, const model::Probe& probe, const Vector& x) {
+  const auto [field, scale] = nodal_field(model, probe.quantity->name);
+  const fe::HexShape N = fe::hex8_shape(probe.xi);
+  const mesh::Hex8& nodes = model.mesh.cell(probe.cell);
+  Vec3 value = Vec3::Zero();
+  for (int a = 0; a < 8; ++a) {
+    if (N[a] == 0.0)
+      continue; // a point on a node or an edge takes exactly the nodal values there
+    for (int k = 0; k < 3; ++k)
+      value[k] += N[a] * x[model.dofs.dof(field, nodes[a], k)];
+  }
+  value *= scale;
+  if (probe.quantity->name == "position") {
+    Vec3 X = Vec3::Zero();
+    for (int a = 0; a < 8; ++a)
+      X += N[a] * model.mesh.node(nodes[a]);
+    value += X;
+  }
+  return value;
+}
+
+} // namespace
+
+std::vector<std::string> probe_columns(const model::Probe& probe) {
+  const io::ProbeQuantity& q = *probe.quantity;
+  const std::string unit = q.unit.empty() ? "" : fmt::format(" [{}]", q.unit);
+  std::vector<std::string> cols;
+  if (q.components == 1)
+    cols.push_back(fmt::format("{}.{}{}", probe.name, q.name, unit));
+  // displacement and position keep their short names: top.ux, top.x
+  const std::string prefix = q.name == "displacement" ? "u"
+                             : q.name == "position"   ? ""
+                                                      : fmt::format("{}_", q.name);
+  if (q.components > 1)
+    for (int k = 0; k < q.components; ++k)
+      cols.push_back(fmt::format("{}.{}{}{}", probe.name, prefix,
+                                 io::component_suffix(q.components, k), unit));
+  return cols;
+}
+
+void append_probe_values(const model::Model& model, const CellEvaluator& cells,
+                         const model::Probe& probe, const Vector& x, std::vector<double>& row) {
+  if (probe.quantity->location == io::ProbeLocation::Node) {
+    const Vec3 v = interpolate(model, probe, x);
+    row.insert(row.end(), {v.x(), v.y(), v.z()});
+    return;
+  }
+  append_cell_quantity(cells.values(probe.cell, x), probe.quantity->name, row);
+}
+
+} // namespace trifem::analysis

@@ -1,0 +1,46 @@
+// SPDX-License-Identifier: MIT
+// The quantities an [[output.probe]] can record: nodal fields interpolated at the point, and
+// the cell quantities of the VTU output in the cell that contains it.
+#pragma once
+
+#include <span>
+#include <string>
+#include <string_view>
+
+namespace trifem::io {
+
+/// Where a probed quantity lives.
+enum class ProbeLocation {
+  Node, ///< a nodal field, interpolated with the cell's shape functions
+  Cell, ///< a cell quantity (constant per cell), the value of the containing cell
+};
+
+/// Which models have the quantity.
+enum class ProbeRequirement {
+  None,    ///< every model
+  Mixture, ///< a biphasic or triphasic material at the point
+  Ions,    ///< a triphasic material at the point
+};
+
+/// One probe quantity: its case-file name (also its history column prefix), unit (empty:
+/// dimensionless), number of components (1 scalar, 3 vector x y z, 6 symmetric tensor
+/// xx yy zz xy yz xz), location and requirement.
+struct ProbeQuantity {
+  std::string_view name;
+  std::string_view unit;
+  int components;
+  ProbeLocation location;
+  ProbeRequirement requirement;
+};
+
+/// Every probe quantity, in the order of docs/input.md.
+std::span<const ProbeQuantity> probe_quantities();
+
+/// The quantity called `name`, or null.
+const ProbeQuantity* find_probe_quantity(std::string_view name);
+
+/// Suffixes of the history columns of one component: "x" "y" "z" for vectors, "xx" "yy" "zz"
+/// "xy" "yz" "xz" for tensors, "" for scalars.
+std::string_view component_suffix(int components, int k);
+
+} // namespace trifem::io

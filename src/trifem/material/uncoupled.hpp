@@ -1,0 +1,38 @@
+// SPDX-License-Identifier: MIT
+// Building blocks of the uncoupled hyperelastic laws W = W~(C~) + k U(J): scalar functions of C
+// with their derivatives, the isochoric scaling and the volumetric energy.
+#pragma once
+
+#include "trifem/tensor/tensor.hpp"
+
+namespace trifem::material {
+
+/// Building blocks of the uncoupled laws W = W~(C~) + k U(J), C~ = J^(-2/3) C (FEBio theory
+/// manual, "uncoupled hyperelastic materials"); shared by MooneyRivlin and Ogden.
+namespace uncoupled {
+
+/// A scalar function f(C) and its derivatives df/dC and d2f/dC2; the second derivative in Voigt
+/// form holds the components IJKL (stress-like rows, strain-like columns), zero if not asked for.
+struct ScalarFunction {
+  Real value = 0.0;
+  Mat3 gradient = Mat3::Zero();
+  Mat6 hessian = Mat6::Zero();
+};
+
+/// sum += weight f (value and both derivatives).
+void accumulate(ScalarFunction& sum, Real weight, const ScalarFunction& f);
+
+/// The isochoric scaling g = I3^q f(C) of f, e.g. I1~ = I3^(-1/3) I1, I2~ = I3^(-2/3) I2:
+///   dg/dC   = I3^q (df/dC + q f C^-1),
+///   d2g/dC2 = I3^q [d2f/dC2 + q (df/dC (x) C^-1 + C^-1 (x) df/dC) + q^2 f C^-1 (x) C^-1
+///                   - q f C^-1 (.) C^-1],
+/// with (A (.) A)_IJKL = (A_IK A_JL + A_IL A_JK)/2. The hessian only if `with_hessian`.
+ScalarFunction isochoric(const ScalarFunction& f, Real q, const Mat3& C, bool with_hessian);
+
+/// U(J) = (ln J)^2 / 2, dU/dC = ln J C^-1 / 2,
+/// d2U/dC2 = C^-1 (x) C^-1 / 4 - ln J / 2 C^-1 (.) C^-1. The hessian only if `with_hessian`.
+ScalarFunction log_volumetric(const Mat3& C, bool with_hessian);
+
+} // namespace uncoupled
+
+} // namespace trifem::material

@@ -140,6 +140,32 @@ TEST_F(Cli, RunWritesAllResultFiles) {
   EXPECT_TRUE(contains(read_text(output() / "run.log"), "completed: 2 steps"));
 }
 
+/// Without output.interval a run of many steps writes about 100 VTU states (the first step at or
+/// after each hundredth of the run), with output.interval = 0 every step; history.csv always has
+/// every step.
+TEST_F(Cli, DefaultOutputWritesAboutAHundredVolumeFiles) {
+  std::string text = read_text(kData / "tiny.toml");
+  const std::string time = "end_time = 1.0\ndt = 0.5\n";
+  ASSERT_TRUE(contains(text, time));
+  text.replace(text.find(time), time.size(), "end_time = 1.0\ndt = 0.003\n");
+  const auto count_vtu = [&] {
+    int n = 0;
+    for (const auto& e : fs::directory_iterator(output()))
+      n += e.path().extension() == ".vtu";
+    return n;
+  };
+  ASSERT_EQ(
+      trifem({"run", write_file("many.toml", text).string(), "-o", output().string()}).exit_code,
+      kSuccess);
+  EXPECT_EQ(count_vtu(), 101) << "t = 0 and one per hundredth of the run";
+  EXPECT_EQ(lines_of(read_text(output() / "history.csv")).size(), 2u + 334u);
+  ASSERT_EQ(trifem({"run", write_file("every.toml", text + "[output]\ninterval = 0.0\n").string(),
+                    "-o", output().string()})
+                .exit_code,
+            kSuccess);
+  EXPECT_EQ(count_vtu(), 1 + 334) << "interval = 0: every step";
+}
+
 TEST_F(Cli, RunHistoryHasOneRowPerState) {
   ASSERT_EQ(trifem({"run", (kData / "tiny.toml").string(), "-o", output().string()}).exit_code,
             kSuccess);

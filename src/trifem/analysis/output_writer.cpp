@@ -62,8 +62,9 @@ io::UnstructuredGrid volume_grid(const model::Model& model) {
 } // namespace
 
 OutputWriter::OutputWriter(const model::Model& model, const io::OutputSpec& spec,
-                           std::filesystem::path directory)
-    : model_(model), spec_(spec), directory_(std::move(directory)) {
+                           std::filesystem::path directory, Real end_time)
+    : model_(model), spec_(spec), directory_(std::move(directory)), end_time_(end_time),
+      next_default_(end_time / io::kDefaultOutputCount) {
   std::error_code ec;
   std::filesystem::create_directories(directory_, ec);
   TRIFEM_CHECK(!ec, "cannot create the output directory {}: {}", directory_.string(), ec.message());
@@ -81,10 +82,18 @@ OutputWriter::OutputWriter(const model::Model& model, const io::OutputSpec& spec
 
 OutputWriter::~OutputWriter() = default;
 
-bool OutputWriter::is_output_time(Real time) const {
+bool OutputWriter::is_output_time(Real time) {
   for (Real t : spec_.times)
     if (std::abs(t - time) <= 1e-10 * std::max(1.0, std::abs(t)))
       return true;
+  if (!spec_.interval_given) {
+    const Real part = end_time_ / io::kDefaultOutputCount;
+    if (time < next_default_ - 1e-10 * end_time_)
+      return false;
+    while (next_default_ <= time + 1e-10 * end_time_)
+      next_default_ += part;
+    return true;
+  }
   if (spec_.interval <= 0.0)
     return true;
   const Real k = time / spec_.interval;

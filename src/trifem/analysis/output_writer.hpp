@@ -19,9 +19,10 @@ class CellEvaluator;
 /// Writes results as the run advances; everything written stays valid if the run stops.
 class OutputWriter {
 public:
-  /// Creates `directory` (InputError if impossible) and the history file.
+  /// Creates `directory` (InputError if impossible) and the history file. `end_time`: of the
+  /// run (for the default output times).
   OutputWriter(const model::Model& model, const io::OutputSpec& spec,
-               std::filesystem::path directory);
+               std::filesystem::path directory, Real end_time);
   ~OutputWriter();
 
   /// Water and ion balances (mixture models; null otherwise).
@@ -32,8 +33,10 @@ public:
   /// After a run that stopped early: the current (last accepted) state at `time` as a VTU file
   /// and contact-surface files, unless it was the last state written.
   void write_last_state(Real time);
-  /// True if `time` is an output time (interval multiple or listed time).
-  bool is_output_time(Real time) const;
+  /// True if the state at `time` is written as a VTU file: a listed time, a multiple of
+  /// output.interval (every step if it is 0), or without output.interval the first step at or
+  /// after each of io::kDefaultOutputCount equal parts of [0, end_time].
+  bool is_output_time(Real time);
 
   const std::filesystem::path& directory() const { return directory_; }
   std::filesystem::path pvd_file() const { return pvd_->file(); }
@@ -54,6 +57,8 @@ private:
   std::unique_ptr<MassBalance> balance_;
   std::unique_ptr<ContactOutput> contact_; ///< null without contact pairs
   std::unique_ptr<CellEvaluator> cells_;   ///< for cell-quantity probes
+  Real end_time_ = 0.0;                    ///< of the run (default output times)
+  Real next_default_ = 0.0;                ///< next default output time (no output.interval)
   int state_count_ = 0;                    ///< output states written (the NNNN of the files)
   Real last_state_time_ = -1.0;            ///< time of the last output state written
   int vtu_count_ = 0;

@@ -11,6 +11,7 @@
 #include "trifem/linalg/linear_solver.hpp"
 #include "trifem/mesh/mesh.hpp"
 #include "trifem/model/model.hpp"
+#include "trifem/model/steps.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -103,6 +104,20 @@ nlohmann::json summary(const io::CaseSpec& spec, const model::Model& model,
           errors(balance->regions()[i]);
   }
   return j;
+}
+
+/// "  37 % done, about 2 min 10 s left" once a run has taken more than 10 s (the time left is
+/// extrapolated from the simulated time reached so far), "" before.
+std::string progress(Real time, Real end_time, Clock::duration elapsed) {
+  const double seconds = std::chrono::duration<double>(elapsed).count();
+  const double done = end_time > 0.0 ? time / end_time : 1.0;
+  if (seconds < 10.0 || done <= 0.0)
+    return "";
+  const long left = std::lround(seconds * (1.0 - done) / done);
+  const std::string eta = left >= 3600 ? fmt::format("{} h {} min", left / 3600, left % 3600 / 60)
+                          : left >= 60 ? fmt::format("{} min {} s", left / 60, left % 60)
+                                       : fmt::format("{} s", left);
+  return fmt::format("  {:3.0f} % done, about {} left", 100.0 * done, eta);
 }
 
 /// Says once that Newton reached the round-off floor, with the mesh grading that causes it.
@@ -202,9 +217,12 @@ int interrupted_exit_code() {
   return 128 + (interrupt::signal_number() > 0 ? interrupt::signal_number() : SIGINT);
 }
 
-solver::StepSettings step_settings(const io::CaseSpec& spec) {
-  const io::TimeSpec& t = spec.time;
+namespace {
+
+/// Step settings from the time keys `t`, over (start, t.end_time].
+solver::StepSettings settings_over(const io::CaseSpec& spec, const io::TimeSpec& t, Real start) {
   solver::StepSettings s;
+  s.start_time = start;
   s.end_time = t.end_time;
   s.dt = t.dt;
   s.dt_min = t.dt_min > 0 ? t.dt_min : t.dt * 1e-6;
@@ -212,15 +230,73 @@ solver::StepSettings step_settings(const io::CaseSpec& spec) {
   s.growth = t.growth;
   s.cutback = t.cutback;
   s.target_iterations = t.target_iterations;
-  s.must_points = spec.output.times;
+  const auto inside = [&](Real time) { return time > start && time < t.end_time; };
+  for (Real time : spec.output.times)
+    if (inside(time))
+      s.must_points.push_back(time);
   if (spec.output.interval > 0)
     for (Real time = spec.output.interval; time < t.end_time; time += spec.output.interval)
-      s.must_points.push_back(time);
+      if (inside(time))
+        s.must_points.push_back(time);
   for (const auto& [name, curve] : spec.curves)
     for (const auto& p : curve.points)
-      if (p.first > 0 && p.first < t.end_time)
+      if (inside(p.first))
         s.must_points.push_back(p.first);
   return s;
+}
+
+/// Adds the totals of `part` (a later step) to `run`.
+void accumulate(solver::RunReport& run, const solver::RunReport& part) {
+  run.success = part.success;
+  run.steps += part.steps;
+  run.iterations += part.iterations;
+  run.linear_iterations += part.linear_iterations;
+  run.cutbacks += part.cutbacks;
+  run.failed_attempts += part.failed_attempts;
+  run.roundoff_floor_steps += part.roundoff_floor_steps;
+  run.end_time = part.end_time;
+  run.failure = part.failure;
+  run.interrupted = part.interrupted;
+}
+
+} // namespace
+
+solver::StepSettings step_settings(const io::CaseSpec& spec) {
+  return settings_over(spec, spec.time, 0.0);
+}
+
+solver::StepSettings step_settings(const io::CaseSpec& spec, std::size_t k) {
+  const Real start = k == 0 ? 0.0 : spec.steps.at(k - 1).time.end_time;
+  return settings_over(spec, spec.steps.at(k).time, start);
+}
+
+solver::RunReport run_steps(const io::CaseSpec& spec, model::Model& model,
+                            solver::NewtonSolver& newton, const solver::StepObserver& observer,
+                            const std::function<void(const solver::StepController&)>& on_start) {
+  if (model.steps.empty()) {
+    solver::StepController controller(step_settings(spec));
+    on_start(controller);
+    return solver::run_time_loop(*model.problem, newton, controller, observer);
+  }
+  solver::RunReport run;
+  run.success = true;
+  for (std::size_t k = 0; k < model.steps.size() && run.success; ++k) {
+    if (static_cast<int>(k) != model.active_step)
+      model::activate_step(model, k);
+    const model::ModelStep& step = model.steps[k];
+    log::info("analysis step {} '{}': t = {:.6g} to {:.6g} s, {} prescribed DOFs", k + 1, step.name,
+              step.start_time, step.end_time, model.dofs.num_constrained());
+    solver::StepController controller(step_settings(spec, k));
+    on_start(controller);
+    const int offset = run.steps;
+    accumulate(run, solver::run_time_loop(*model.problem, newton, controller,
+                                          [&](const solver::StepInfo& info) {
+                                            solver::StepInfo whole = info;
+                                            whole.step += offset;
+                                            observer(whole);
+                                          }));
+  }
+  return run;
 }
 
 solver::NewtonSettings newton_settings(const io::SolverSpec& s) {
@@ -239,13 +315,13 @@ int run_case(const io::CaseSpec& spec, const std::filesystem::path& output_dir) 
   std::unique_ptr<model::Model> model = build_model_for(spec);
   std::unique_ptr<linalg::LinearSolver> linear_solver = linear_solver_for(spec);
   start_output_directory(output_dir, spec);
-  OutputWriter output(*model, spec.output, output_dir);
+  OutputWriter output(*model, spec.output, output_dir, spec.time.end_time);
   log::add_file((output_dir / "run.log").string());
   log_model(spec, *model);
 
   solver::NewtonSolver newton(newton_settings(spec.solver), std::move(linear_solver));
   log_linear_solver(spec.solver.linear_solver, model->problem->num_equations());
-  solver::StepController controller(step_settings(spec));
+  const solver::StepController* controller = nullptr; // of the current analysis step
   solver::RunReport run;
   solver::Linearization initial;
   if (model->problem->linearize(initial, false) != solver::SolveStatus::Converged) {
@@ -259,14 +335,16 @@ int run_case(const io::CaseSpec& spec, const std::filesystem::path& output_dir) 
       if (output.balance())
         output.balance()->record_step(info.dt);
       const int linear = info.newton->linear_iterations;
-      log::info("step {:4d}  t = {:<10.5g} dt = {:<9.3g} iterations {:2d}  residual {:.2e}{}",
+      log::info("step {:4d}  t = {:<10.5g} dt = {:<9.3g} iterations {:2d}  residual {:.2e}{}{}",
                 info.step, info.time, info.dt, info.newton->iterations, info.newton->final_residual,
-                linear > 0 ? fmt::format("  linear iterations {}", linear) : "");
+                linear > 0 ? fmt::format("  linear iterations {}", linear) : "",
+                progress(info.time, spec.time.end_time, Clock::now() - start));
       note_roundoff_floor(*model, info, noted);
       output.write(info.time, info.step, info.dt, info.newton->iterations,
-                   output.is_output_time(info.time) || controller.finished());
+                   output.is_output_time(info.time) || controller->finished());
     };
-    run = solver::run_time_loop(*model->problem, newton, controller, observer);
+    run = run_steps(spec, *model, newton, observer,
+                    [&](const solver::StepController& c) { controller = &c; });
     if (!run.success)
       write_last_state(*model, output, run);
   }

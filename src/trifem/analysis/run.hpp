@@ -3,11 +3,13 @@
 #pragma once
 
 #include "trifem/io/case_spec.hpp"
+#include "trifem/model/model.hpp"
 #include "trifem/solver/newton.hpp"
 #include "trifem/solver/step_controller.hpp"
 #include "trifem/solver/time_loop.hpp"
 
 #include <filesystem>
+#include <functional>
 
 namespace trifem::analysis {
 
@@ -30,6 +32,17 @@ int interrupted_exit_code();
 /// Step control of a quasi-static case: [time], plus the output times and the kinks of every
 /// load curve as must points.
 solver::StepSettings step_settings(const io::CaseSpec& spec);
+
+/// Step control of [[step]] k: its time keys, from the end of step k - 1 (or 0) to its
+/// end_time, with the output times and load-curve kinks inside it as must points.
+solver::StepSettings step_settings(const io::CaseSpec& spec, std::size_t k);
+
+/// Runs every analysis step of `model` (one without [[step]] tables) from its current state,
+/// calling `observer` after every accepted step with the step count of the whole run.
+/// Returns the totals of the run; it stops at the first step that fails.
+solver::RunReport run_steps(const io::CaseSpec& spec, model::Model& model,
+                            solver::NewtonSolver& newton, const solver::StepObserver& observer,
+                            const std::function<void(const solver::StepController&)>& on_start);
 
 /// Newton settings of a case ([solver]).
 solver::NewtonSettings newton_settings(const io::SolverSpec& s);

@@ -14,19 +14,37 @@ FeProblem::FeProblem(const dofs::DofMap& map, std::vector<dofs::DirichletConditi
     : map_(map), conditions_(std::move(conditions)), terms_(std::move(terms)),
       scales_(std::move(scales)), frames_(std::move(frames)) {
   TRIFEM_VERIFY(static_cast<int>(scales_.size()) == map.num_fields(), "one scale per field");
-  equation_fields_.resize(map.num_equations());
-  for (Index eq = 0; eq < map.num_equations(); ++eq)
-    equation_fields_[eq] = map.field_of(map.dof_of_equation(eq)).index;
-  std::vector<const physics::Term*> views;
-  for (const auto& t : terms_)
-    views.push_back(t.get());
-  assembler_ = std::make_unique<Assembler>(map, std::move(views), &frames_);
-  system_ = assembler_->make_system();
+  build_assembler();
   x_ = x_old_ = saved_ = target_ = Vector::Zero(map.num_dofs());
   dofs::prescribed_values(conditions_, time_, x_);
   x_old_ = target_ = x_;
   sync();
   x_old_global_ = x_global_;
+}
+
+void FeProblem::build_assembler() {
+  equation_fields_.resize(map_.num_equations());
+  for (Index eq = 0; eq < map_.num_equations(); ++eq)
+    equation_fields_[eq] = map_.field_of(map_.dof_of_equation(eq)).index;
+  std::vector<const physics::Term*> views;
+  for (const auto& t : terms_)
+    views.push_back(t.get());
+  assembler_ = std::make_unique<Assembler>(map_, std::move(views), &frames_);
+  system_ = assembler_->make_system();
+  ++pattern_id_;
+}
+
+void FeProblem::set_conditions(std::vector<dofs::DirichletCondition> conditions) {
+  TRIFEM_VERIFY(map_.finalized(), "set_conditions: the DOF map is not finalized");
+  conditions_ = std::move(conditions);
+  build_assembler();
+  target_ = x_;
+  dofs::prescribed_values(conditions_, time_, target_);
+}
+
+void FeProblem::add_term(std::unique_ptr<physics::Term> term) {
+  terms_.push_back(std::move(term));
+  build_assembler();
 }
 
 void FeProblem::sync() {

@@ -87,6 +87,13 @@ public:
   Real time() const { return time_; }
   /// Sets the state (global components; e.g. initial conditions) at the current time.
   void set_state(const Vector& x);
+  /// Replaces the prescribed conditions (between steps). `map` must have been re-finalized with
+  /// their DOFs constrained (DofMap::reset_constraints); the equations and the pattern are
+  /// rebuilt and the state is kept.
+  void set_conditions(std::vector<dofs::DirichletCondition> conditions);
+  /// Adds a term (between steps), e.g. the loads that replace released conditions.
+  void add_term(std::unique_ptr<physics::Term> term);
+  const std::vector<dofs::DirichletCondition>& conditions() const { return conditions_; }
   /// Residual at every DOF of the last evaluation: reactions at constrained DOFs.
   const Vector& full_residual() const { return system_.residual; }
   const dofs::DofMap& dof_map() const { return map_; }
@@ -96,6 +103,8 @@ private:
   physics::EvalState eval_state() const { return {x_global_, x_old_global_, time_, dt_}; }
   /// Refreshes the global-component copy of the state after x_ changed.
   void sync();
+  /// Numbers the equations' fields and builds the assembler and its pattern.
+  void build_assembler();
 
   const dofs::DofMap& map_;
   std::vector<dofs::DirichletCondition> conditions_;

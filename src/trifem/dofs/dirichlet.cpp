@@ -12,8 +12,8 @@ void constrain_all(const std::vector<DirichletCondition>& conditions, DofMap& ma
 void prescribed_values(const std::vector<DirichletCondition>& conditions, Real t, Vector& target) {
   for (const auto& c : conditions) {
     const Real v = c.value(t);
-    for (Index d : c.dofs)
-      target[d] = v;
+    for (std::size_t i = 0; i < c.dofs.size(); ++i)
+      target[c.dofs[i]] = c.offsets.empty() ? v : v + c.offsets[i];
   }
 }
 

@@ -14,6 +14,9 @@ struct DirichletCondition {
   std::vector<Index> dofs;
   Real magnitude = 0.0;
   LoadCurve curve = LoadCurve::constant(1.0);
+  /// Per DOF (empty: none): added to the value, e.g. the state at the start of a step for a
+  /// condition relative to it.
+  std::vector<Real> offsets;
 
   Real value(Real t) const { return magnitude * curve(t); }
 };

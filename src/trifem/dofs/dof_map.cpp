@@ -3,6 +3,8 @@
 
 #include "trifem/core/error.hpp"
 
+#include <algorithm>
+
 namespace trifem::dofs {
 
 FieldId DofMap::add_field(std::string name, Index num_entities, int components) {
@@ -70,6 +72,11 @@ void DofMap::finalize() {
       equation_[d] = equation_[leader(d)];
   num_equations_ = static_cast<Index>(equation_dofs_.size());
   finalized_ = true;
+}
+
+void DofMap::reset_constraints() {
+  std::fill(constrained_.begin(), constrained_.end(), 0);
+  finalized_ = false;
 }
 
 } // namespace trifem::dofs

@@ -65,6 +65,9 @@ public:
   /// constrained DOFs.
   void finalize();
   bool finalized() const { return finalized_; }
+  /// Frees every DOF and reopens the map for constrain() and finalize() (fields and ties are
+  /// kept): the constraints of the next analysis step replace those of the last.
+  void reset_constraints();
 
   Index num_equations() const { return num_equations_; }
   Index num_constrained() const { return static_cast<Index>(constrained_dofs_.size()); }

@@ -151,8 +151,9 @@ void check_unconstrained(const Table& t, const PrescribedSpec& p, const CaseSpec
 
 PrescribedSpec read_prescribed(const Table& t, const CaseSpec& spec,
                                const std::vector<std::string>& fixed_keys) {
-  t.allow({"set", "field", "component", "value", "curve"});
+  t.allow({"set", "field", "component", "value", "curve", "relative"});
   PrescribedSpec p;
+  p.relative = t.get<bool>("relative").value_or(false);
   p.set = t.name("set");
   p.field = read_field(t, model_fields(spec), false).front();
   p.component = t.choice("component", component_options(), std::optional<Component>(), "component");

@@ -65,14 +65,59 @@ void reject_triphasic_keys(const Table& t) {
                      t.path("type")));
 }
 
-/// The mixture keys given in `t`, range-checked (fixed_charge_basis "water"/"tissue" as 0/1);
+/// The plausible magnitudes of a transport-law parameter of unit `unit`, if checked.
+const material::Plausibility* transport_plausibility(std::string_view unit) {
+  if (unit == "mm^4/(N s)")
+    return &material::plausible::permeability();
+  if (unit == "mm^2/s")
+    return &material::plausible::diffusivity();
+  return nullptr;
+}
+
+/// The law given as the table `key` of the mixture `t` ([<t>.<key>] or an inline table with
+/// `type` and the law's parameters), added to `values` as material::transport_law_key entries.
+void read_transport_law(const Table& t, std::string_view key, material::ParameterValues& values) {
+  const Table law_table = *t.table(key);
+  Options<const material::TransportLawInfo*> types;
+  for (const material::TransportLawInfo* law : material::transport_laws(key))
+    types.emplace_back(law->type, law);
+  const std::string noun = key == "permeability" ? "permeability law" : "diffusivity law";
+  const material::TransportLawInfo* law =
+      law_table.choice("type", types, std::optional<const material::TransportLawInfo*>(), noun);
+  std::vector<std::string_view> keys = {"type"};
+  for (const auto& p : *law->parameters)
+    keys.push_back(p.key);
+  law_table.allow(keys);
+  material::ParameterValues given;
+  for (const auto& p : *law->parameters)
+    if (law_table.find(p.key) != nullptr)
+      given[p.key] = law_table.number(
+          p.key, {.range = p.range, .unit = p.unit, .plausible = transport_plausibility(p.unit)});
+  // with the defaults filled in, the law is stored even if all its parameters were defaulted
+  for (const auto& [name, value] :
+       material::validate_parameters(*law->parameters, given, law_table.path()))
+    values[material::transport_law_key(key, law->type, name)] = value;
+}
+
+/// The mixture keys given in `t`, range-checked (fixed_charge_basis "water"/"tissue" as 0/1;
+/// permeability, d_plus and d_minus given as tables as material::transport_law_key entries);
 /// defaults are not filled in.
 material::ParameterValues read_mixture_values(const Table& t, bool charged) {
   static const Options<Real> bases = {{"water", 0.0}, {"tissue", 1.0}};
   material::ParameterValues values;
   for (const auto& p : material::mixture_schema(charged)) {
-    if (t.find(p.key) == nullptr)
+    const toml::node* n = t.find(p.key);
+    if (n == nullptr)
       continue;
+    if (!material::transport_laws(p.key).empty() && !n->is_number()) {
+      if (!n->is_table())
+        wrong_type(*n, t.path(p.key),
+                   fmt::format("a number in {} (constant) or a table with a type (a law of the "
+                               "deformation)",
+                               range_text(p.range, p.unit)));
+      read_transport_law(t, p.key, values);
+      continue;
+    }
     values[p.key] = p.key == "fixed_charge_basis"
                         ? t.choice(p.key, bases, std::optional<Real>(), "basis")
                         : t.number(p.key, {.range = p.range,
@@ -103,8 +148,7 @@ MaterialSpec read_mixture(const Table& t, const std::string& type) {
   t.allow(keys);
   const material::ParameterValues values = read_mixture_values(t, charged);
   SolidSpec solid = read_mixture_solid(t);
-  MaterialSpec m{type,
-                 material::validate_parameters(material::mixture_schema(charged), values, t.path()),
+  MaterialSpec m{type, material::validate_mixture_parameters(charged, values, t.path()),
                  std::move(solid), std::nullopt};
   material::make_mixture(charged,
                          material::create_law(m.solid->type, m.solid->parameters, t.path("solid")),
@@ -172,28 +216,63 @@ void read_time(const Table& root, CaseSpec& spec) {
   if (spec.is_explicit())
     return read_explicit_time(root, spec);
   const auto t = root.table("time");
+  if (root.find("step")) {
+    if (t)
+      fail(t->where(), "time",
+           "a case with [[step]] tables has its time control in each step (end_time or "
+           "duration, dt, ...), not in [time]");
+    return; // read_steps sets spec.time
+  }
   if (!t)
     fail(nullptr, "time", "missing required table [time] (with at least end_time and dt)");
-  t->allow({"end_time", "dt", "dt_min", "dt_max", "target_iterations", "growth", "cutback"});
-  TimeSpec& s = spec.time; // holds the defaults until overwritten
-  s.end_time = t->number("end_time", {.range = {kMinEndTime, kUnbounded, false, false},
-                                      .unit = "s",
-                                      .hint = "the step control resolves times to 1e-10 s"});
-  s.dt = t->number(
-      "dt",
-      {.range = {0.0, s.end_time, true, false}, .unit = "s", .hint = "at most time.end_time"});
-  s.dt_min = t->number("dt_min", {.range = {0.0, s.dt, true, false},
-                                  .fallback = s.dt * 1e-6,
-                                  .unit = "s",
-                                  .hint = "at most time.dt"});
-  s.dt_max = t->number("dt_max", {.range = {s.dt, kUnbounded, false, false},
-                                  .fallback = s.dt,
-                                  .unit = "s",
-                                  .hint = "at least time.dt"});
-  s.target_iterations = t->integer("target_iterations", 1, s.target_iterations);
-  s.growth = t->number("growth", {.range = {1.0, kUnbounded}, .fallback = s.growth});
-  s.cutback = t->number("cutback", {.range = Range::open(0.0, 1.0), .fallback = s.cutback});
+  read_time_keys(*t, spec.time, 0.0, false);
 }
+
+} // namespace
+
+void read_time_keys(const Table& t, TimeSpec& s, Real start, bool allow_duration) {
+  std::vector<std::string_view> keys = {"end_time",          "dt",     "dt_min", "dt_max",
+                                        "target_iterations", "growth", "cutback"};
+  if (allow_duration) {
+    keys.push_back("duration");
+    if (t.find("duration") && t.find("end_time"))
+      fail(t.find("duration"), t.path("duration"),
+           fmt::format("give either end_time or duration, not both (end_time is {})",
+                       t.path("end_time")));
+  }
+  if (allow_duration)
+    t.allow(keys, {"name", "boundary", "loads", "release_time"});
+  else
+    t.allow(keys);
+  const std::string after = start > 0.0 ? fmt::format("after the previous step's end, {} s", start)
+                                        : "the step control resolves times to 1e-10 s";
+  const bool duration = allow_duration && t.find("duration");
+  if (duration)
+    s.end_time = start + t.number("duration",
+                                  {.range = {kMinEndTime, kUnbounded, false, false}, .unit = "s"});
+  else
+    s.end_time = t.number(
+        "end_time",
+        {.range = {start + kMinEndTime, kUnbounded, false, false}, .unit = "s", .hint = after});
+  const std::string span = fmt::format("at most {}", t.path(duration ? "duration" : "end_time"));
+  const std::string at_most_dt = fmt::format("at most {}", t.path("dt"));
+  const std::string at_least_dt = fmt::format("at least {}", t.path("dt"));
+  s.dt =
+      t.number("dt", {.range = {0.0, s.end_time - start, true, false}, .unit = "s", .hint = span});
+  s.dt_min = t.number("dt_min", {.range = {0.0, s.dt, true, false},
+                                 .fallback = s.dt * 1e-6,
+                                 .unit = "s",
+                                 .hint = at_most_dt});
+  s.dt_max = t.number("dt_max", {.range = {s.dt, kUnbounded, false, false},
+                                 .fallback = s.dt,
+                                 .unit = "s",
+                                 .hint = at_least_dt});
+  s.target_iterations = t.integer("target_iterations", 1, s.target_iterations);
+  s.growth = t.number("growth", {.range = {1.0, kUnbounded}, .fallback = s.growth});
+  s.cutback = t.number("cutback", {.range = Range::open(0.0, 1.0), .fallback = s.cutback});
+}
+
+namespace {
 
 void read_solver(const Table& root, CaseSpec& spec) {
   const auto t = root.table("solver");
@@ -359,6 +438,7 @@ void read_output(const Table& root, CaseSpec& spec) {
     return;
   t->allow({"interval", "times", "vtu", "reaction", "probe"});
   OutputSpec& s = spec.output;
+  s.interval_given = t->find("interval") != nullptr;
   s.interval =
       t->number("interval", {.range = Range::non_negative(), .fallback = s.interval, .unit = "s"});
   s.times = read_output_times(*t, spec.time.end_time);
@@ -374,7 +454,7 @@ void read_output(const Table& root, CaseSpec& spec) {
 void read_sections(const toml::table& document, CaseSpec& spec) {
   const Table root(document, "", &spec.warnings);
   root.allow({"title", "mesh", "materials", "curves", "boundary", "loads", "contact", "rigid_body",
-              "analysis", "electrochemistry", "time", "solver", "explicit", "output"});
+              "analysis", "electrochemistry", "time", "step", "solver", "explicit", "output"});
   spec.title = root.get<std::string>("title").value_or("");
   read_analysis_type(root, spec); // the other sections depend on it
   check_analysis_sections(root, spec);
@@ -389,6 +469,7 @@ void read_sections(const toml::table& document, CaseSpec& spec) {
   read_electrochemistry(root, spec);
   read_solver(root, spec);
   read_explicit(root, spec);
+  read_steps(root, spec);
   read_output(root, spec);
   check_time_limits(root, spec);
   check_model_size(root, spec);

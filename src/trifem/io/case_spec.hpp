@@ -38,7 +38,10 @@ struct SolidSpec {
 
 /// [materials.<name>]: a solid law, or a "biphasic"/"triphasic" mixture whose solid matrix is
 /// the sub-table [materials.<name>.solid]. For mixtures, `parameters` holds the mixture keys of
-/// material::mixture_schema() (fixed_charge_basis "water"/"tissue" is stored as 0/1).
+/// material::mixture_schema() (fixed_charge_basis "water"/"tissue" is stored as 0/1), with the
+/// defaults filled in. permeability, d_plus and d_minus given as a number are stored under their
+/// key; given as a law table, their parameters are stored as material::transport_law_key()
+/// entries, e.g. "permeability.holmes-mow.k0" (see material::validate_mixture_parameters).
 struct MaterialSpec {
   std::string type;
   material::ParameterValues parameters;
@@ -92,6 +95,9 @@ struct PrescribedSpec {
   Real value = 0.0;
   std::string curve; ///< empty: constant 1
   FieldKind field = FieldKind::Displacement;
+  /// value * curve(t) is added to the DOF's value at the start of the condition's step (of the
+  /// run for a case-level condition), instead of replacing it.
+  bool relative = false;
 };
 
 /// [[loads.pressure]]: follower pressure on a surface (positive pushes into the body) [MPa].
@@ -262,13 +268,36 @@ struct ProbeSpec {
   Vec3 point = Vec3::Zero();
 };
 
+/// VTU states a quasi-static run without output.interval writes at most (plus the initial
+/// state, the step ends and output.times).
+inline constexpr int kDefaultOutputCount = 100;
+
 /// [output]
 struct OutputSpec {
-  Real interval = 0.0;     ///< VTU output every `interval` s (0: every step)
+  Real interval = 0.0; ///< VTU output every `interval` s (0: every step)
+  /// `interval` was given; without it a quasi-static run writes a VTU file at the first step at
+  /// or after each of kDefaultOutputCount equal parts of the run (and at every step end).
+  bool interval_given = false;
   std::vector<Real> times; ///< extra output times (must points)
   bool vtu = true;
   std::vector<ReactionSpec> reactions;
   std::vector<ProbeSpec> probes;
+};
+
+/// [[step]]: one stage of a quasi-static analysis, from the end of the previous step (or 0) to
+/// `time.end_time`, with its own time control and the conditions and loads that act during it
+/// only (in addition to the case's [boundary] and [loads], which act in every step).
+struct StepSpec {
+  std::string name;
+  std::string key; ///< "step[i]" (for messages)
+  TimeSpec time;   ///< end_time is absolute (a `duration` key is converted)
+  std::vector<FixedSpec> fixed;
+  std::vector<PrescribedSpec> prescribed;
+  std::vector<PressureSpec> pressures;
+  std::vector<TractionSpec> tractions;
+  /// Conditions of the previous step that this step does not repeat are released: their
+  /// reactions act as loads decreasing linearly to zero over this time [s] (0: at once).
+  Real release_time = 0.0;
 };
 
 /// A whole case file.
@@ -293,6 +322,8 @@ struct CaseSpec {
   SolverSpec solver;              ///< quasi-static analyses
   ExplicitSpec explicit_dynamics; ///< dynamic-explicit analyses ([explicit])
   OutputSpec output;
+  /// The [[step]]s in order; empty: one step with [time] and no step-level conditions.
+  std::vector<StepSpec> steps;
   /// Values far outside the range of soft tissues, most likely in another unit (the reader also
   /// logs them): "<key> = <value> <unit> is far outside ... (line N)".
   std::vector<std::string> warnings;

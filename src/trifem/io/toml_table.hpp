@@ -302,6 +302,12 @@ inline constexpr Real kMinEndTime = 1e-8;
 
 /// [[boundary.*]] (case_reader_physics.cpp).
 void read_boundary(const Table& root, CaseSpec& spec);
+/// [[step]] tables (after [boundary], [loads] and [output]); sets spec.time to the span of the
+/// steps (case_reader_steps.cpp).
+void read_steps(const Table& root, CaseSpec& spec);
+/// The time-control keys of `t` into `s` (end_time after `start`; with `allow_duration`,
+/// `duration` instead of end_time).
+void read_time_keys(const Table& t, TimeSpec& s, Real start, bool allow_duration);
 /// [[loads.*]] (case_reader_physics.cpp).
 void read_loads(const Table& root, CaseSpec& spec);
 /// [[contact]] pairs (after materials).

@@ -1,13 +1,16 @@
 // SPDX-License-Identifier: MIT
 // Mixture properties of a biphasic (solid + water) or triphasic (+ Na+, Cl-) tissue
-// (Lai, Hou & Mow 1991; Chen, Sunagawa & Hisada 2009, section 2). Composition: a solid law
-// plus the constant transport and electrochemical coefficients.
+// (Lai, Hou & Mow 1991; Chen, Sunagawa & Hisada 2009, section 2). Composition: a solid law,
+// a permeability law, two diffusivity laws and the constant electrochemical coefficients.
 #pragma once
 
+#include "trifem/material/diffusivity.hpp"
 #include "trifem/material/elastic_law.hpp"
+#include "trifem/material/permeability.hpp"
 #include "trifem/material/schema.hpp"
 
 #include <memory>
+#include <string_view>
 
 namespace trifem::material {
 
@@ -17,15 +20,22 @@ enum class FixedChargeBasis {
   Tissue ///< per unit reference tissue volume (converted: cF0_water = cF0_tissue / phi_w0)
 };
 
-/// Validated mixture coefficients (mm-N-s-mmol units).
+/// Validated mixture coefficients (mm-N-s-mmol units). The element evaluates the transport laws
+/// at its current state; the plain numbers `permeability`, `d_plus` and `d_minus` are their values
+/// in the reference state (characteristic scales and messages), set by make_mixture.
 struct MixtureProperties {
   std::shared_ptr<const ElasticLaw> solid;
-  bool charged = false;     ///< triphasic (true) or biphasic (false)
-  Real phi_s0 = 0.25;       ///< solid volume fraction in the reference state, (0, 1)
-  Real permeability = 1e-3; ///< kappa [mm^4/(N s)], > 0
+  bool charged = false; ///< triphasic (true) or biphasic (false)
+  Real phi_s0 = 0.25;   ///< solid volume fraction in the reference state, (0, 1)
+  /// kappa(J) [mm^4/(N s)] of the volume ratio J = V/V0.
+  std::shared_ptr<const PermeabilityLaw> permeability_law = constant_permeability(1e-3);
+  /// d+(phi_w), d-(phi_w) [mm^2/s] of the porosity (triphasic only).
+  std::shared_ptr<const DiffusivityLaw> d_plus_law = constant_diffusivity(5e-4);
+  std::shared_ptr<const DiffusivityLaw> d_minus_law = constant_diffusivity(8e-4);
+  Real permeability = 1e-3; ///< kappa(J = 1) [mm^4/(N s)], > 0
   Real fixed_charge = 0.0;  ///< cF0 per reference water volume [mEq/mm^3 = mmol/mm^3], >= 0
-  Real d_plus = 5e-4;       ///< cation diffusivity [mm^2/s], > 0
-  Real d_minus = 8e-4;      ///< anion diffusivity [mm^2/s], > 0
+  Real d_plus = 5e-4;       ///< cation diffusivity d+(phi_w0) [mm^2/s], > 0
+  Real d_minus = 8e-4;      ///< anion diffusivity d-(phi_w0) [mm^2/s], > 0
   Real gamma_plus = 1.0;    ///< cation activity coefficient, > 0
   Real gamma_minus = 1.0;   ///< anion activity coefficient, > 0
   Real osmotic = 1.0;       ///< osmotic coefficient Phi, > 0
@@ -35,8 +45,27 @@ struct MixtureProperties {
 
 /// Parameter schema of the mixture types ("biphasic": phi_s0, permeability; "triphasic": also
 /// fixed_charge, d_plus, d_minus, gamma_plus, gamma_minus, osmotic, fixed_charge_basis
-/// (0 = water, 1 = tissue)).
+/// (0 = water, 1 = tissue)). A number for permeability, d_plus or d_minus is the constant law;
+/// see transport_law_key() for a law of the state.
 const std::vector<ParameterSchema>& mixture_schema(bool charged);
+
+/// The laws that the mixture key `key` takes: the permeability laws for "permeability", the
+/// diffusivity laws for "d_plus" and "d_minus", none for other keys.
+std::vector<const TransportLawInfo*> transport_laws(std::string_view key);
+
+/// The key under which parameter `parameter` of the law `type` given for the mixture key `key`
+/// is stored in ParameterValues: "<key>.<type>.<parameter>", e.g. "permeability.holmes-mow.k0".
+/// The values of one key hold either the number "<key>" (constant law) or one law's parameters
+/// (every law has at least one parameter, so a law is never given by its type alone).
+std::string transport_law_key(std::string_view key, std::string_view type,
+                              std::string_view parameter);
+
+/// Validates mixture case values: the plain keys against mixture_schema(charged) and each law
+/// (transport_law_key) against its own schema. Unknown keys, types and parameters, missing and
+/// out-of-range values are InputErrors naming `context.key`. Returns the values with the
+/// defaults of the schema and of the laws filled in.
+ParameterValues validate_mixture_parameters(bool charged, const ParameterValues& values,
+                                            const std::string& context);
 
 /// Builds validated properties from case values (messages name `context.key`).
 MixtureProperties make_mixture(bool charged, std::shared_ptr<const ElasticLaw> solid,

@@ -675,6 +675,21 @@ void add_point_sets(const LineReader& in, GmshData& d) {
     });
 }
 
+/// Each physical volume also gives the node set of its cells' nodes, under its name (unless a
+/// physical surface, curve or point of that name gave one).
+void add_volume_node_sets(Mesh& mesh) {
+  for (const auto& [name, cells] : mesh.cell_blocks()) {
+    if (mesh.has_node_set(name))
+      continue;
+    std::vector<Index> nodes;
+    for (Index c : cells)
+      nodes.insert(nodes.end(), mesh.cell(c).begin(), mesh.cell(c).end());
+    std::sort(nodes.begin(), nodes.end());
+    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+    mesh.add_node_set(name, std::move(nodes));
+  }
+}
+
 Mesh finish(const LineReader& in, GmshData& d) {
   TRIFEM_CHECK(d.seen_nodes, "{}: the file has no $Nodes section", in.location());
   TRIFEM_CHECK(d.seen_elements, "{}: the file has no $Elements section", in.location());
@@ -683,6 +698,7 @@ Mesh finish(const LineReader& in, GmshData& d) {
   add_cell_blocks(in, d);
   add_surfaces(in, d);
   add_point_sets(in, d);
+  add_volume_node_sets(d.mesh);
   return std::move(d.mesh);
 }
 

@@ -69,13 +69,12 @@ dofs::LoadCurve make_curve(const io::CaseSpec& spec, const std::string& name) {
   return dofs::LoadCurve(c.points, c.interpolation, "curves." + name);
 }
 
-std::vector<dofs::DirichletCondition> boundary_conditions(const io::CaseSpec& spec,
-                                                          const Model& model) {
-  std::vector<dofs::DirichletCondition> out;
-  std::vector<std::string> keys;
-  for (std::size_t i = 0; i < spec.fixed.size(); ++i) {
-    const auto& f = spec.fixed[i];
-    keys.push_back(fmt::format("{}.set '{}'", f.key, f.set));
+ConditionSet conditions_of(const io::CaseSpec& spec, const std::vector<io::FixedSpec>& fixed,
+                           const std::vector<io::PrescribedSpec>& prescribed,
+                           const std::string& prescribed_key, const Model& model) {
+  ConditionSet out;
+  for (const auto& f : fixed) {
+    out.keys.push_back(fmt::format("{}.set '{}'", f.key, f.set));
     const auto& nodes = node_set(model, f.key + ".set", f.set);
     dofs::DirichletCondition c;
     for (io::FieldKind kind : f.fields) {
@@ -86,23 +85,30 @@ std::vector<dofs::DirichletCondition> boundary_conditions(const io::CaseSpec& sp
         for (int k : f.components)
           c.dofs.push_back(model.dofs.dof(id, n, k));
     }
-    out.push_back(std::move(c));
+    out.conditions.push_back(std::move(c));
+    out.relative.push_back(false);
   }
-  for (std::size_t i = 0; i < spec.prescribed.size(); ++i) {
-    const auto& p = spec.prescribed[i];
-    const std::string key = fmt::format("boundary.prescribed[{}]", i + 1);
-    keys.push_back(fmt::format("{}.set '{}'", key, p.set));
+  for (std::size_t i = 0; i < prescribed.size(); ++i) {
+    const auto& p = prescribed[i];
+    const std::string key = fmt::format("{}[{}]", prescribed_key, i + 1);
+    out.keys.push_back(fmt::format("{}.set '{}'", key, p.set));
     const auto& nodes = node_set(model, key + ".set", p.set);
     const dofs::FieldId id = field_id(model, p.field);
     TRIFEM_CHECK(id.valid(), "{}.field: the model has no such field", key);
     dofs::DirichletCondition c{
-        {}, stored_value(model, p.field, p.value), make_curve(spec, p.curve)};
+        {}, stored_value(model, p.field, p.value), make_curve(spec, p.curve), {}};
     for (Index n : nodes)
       c.dofs.push_back(model.dofs.dof(id, n, p.component));
-    out.push_back(std::move(c));
+    out.conditions.push_back(std::move(c));
+    out.relative.push_back(p.relative);
   }
-  check_single_value_per_dof(model, out, keys, spec.fixed.size());
+  check_single_value_per_dof(model, out.conditions, out.keys, fixed.size());
   return out;
+}
+
+std::vector<dofs::DirichletCondition> boundary_conditions(const io::CaseSpec& spec,
+                                                          const Model& model) {
+  return conditions_of(spec, spec.fixed, spec.prescribed, "boundary.prescribed", model).conditions;
 }
 
 dofs::NodalFrames impermeable_surfaces(const io::CaseSpec& spec, const Model& model,
@@ -130,25 +136,33 @@ dofs::NodalFrames impermeable_surfaces(const io::CaseSpec& spec, const Model& mo
   return frames;
 }
 
-std::vector<std::unique_ptr<physics::Term>> load_terms(const io::CaseSpec& spec,
-                                                       const Model& model) {
+std::vector<std::unique_ptr<physics::Term>>
+surface_load_terms(const io::CaseSpec& spec, const std::vector<io::PressureSpec>& pressures,
+                   const std::vector<io::TractionSpec>& tractions, const std::string& prefix,
+                   const Model& model) {
   std::vector<std::unique_ptr<physics::Term>> terms;
-  for (std::size_t i = 0; i < spec.pressures.size(); ++i) {
-    const auto& p = spec.pressures[i];
-    const auto& surface = with_context(fmt::format("loads.pressure[{}].surface", i + 1),
+  for (std::size_t i = 0; i < pressures.size(); ++i) {
+    const auto& p = pressures[i];
+    const auto& surface = with_context(fmt::format("{}loads.pressure[{}].surface", prefix, i + 1),
                                        [&] { return model.mesh.surface(p.surface); });
     terms.push_back(std::make_unique<physics::PressureTerm>(model.mesh, model.dofs, model.fields.u,
                                                             surface.facets, p.value,
                                                             make_curve(spec, p.curve)));
   }
-  for (std::size_t i = 0; i < spec.tractions.size(); ++i) {
-    const auto& t = spec.tractions[i];
-    const auto& surface = with_context(fmt::format("loads.traction[{}].surface", i + 1),
+  for (std::size_t i = 0; i < tractions.size(); ++i) {
+    const auto& t = tractions[i];
+    const auto& surface = with_context(fmt::format("{}loads.traction[{}].surface", prefix, i + 1),
                                        [&] { return model.mesh.surface(t.surface); });
     terms.push_back(std::make_unique<physics::TractionTerm>(model.mesh, model.dofs, model.fields.u,
                                                             surface.facets, t.value,
                                                             make_curve(spec, t.curve)));
   }
+  return terms;
+}
+
+std::vector<std::unique_ptr<physics::Term>> load_terms(const io::CaseSpec& spec,
+                                                       const Model& model) {
+  auto terms = surface_load_terms(spec, spec.pressures, spec.tractions, "", model);
   for (std::size_t i = 0; i < spec.baths.size(); ++i) {
     const auto& b = spec.baths[i];
     const auto& surface = with_context(fmt::format("boundary.bath[{}].surface", i + 1),

@@ -7,6 +7,7 @@
 #include "trifem/model/conditions.hpp"
 #include "trifem/model/contact_pairs.hpp"
 #include "trifem/model/rigid_bodies.hpp"
+#include "trifem/model/steps.hpp"
 #include "trifem/model/support_check.hpp"
 
 #include <set>
@@ -203,9 +204,11 @@ std::unique_ptr<Model> build_model(const io::CaseSpec& spec) {
   dofs::NodalFrames frames = impermeable_surfaces(spec, *model, bcs);
   if (auto forces = rigid_bodies(spec, *model, bcs))
     terms.push_back(std::move(forces));
+  model->case_conditions = bcs;
+  for (auto& t : step_terms(spec, *model))
+    terms.push_back(std::move(t));
   dofs::constrain_all(bcs, model->dofs);
   model->dofs.finalize();
-  check_support(spec, *model);
 
   model->problem = std::make_unique<assembly::FeProblem>(
       model->dofs, std::move(bcs), std::move(terms), field_scales(*model), std::move(frames));
@@ -217,6 +220,9 @@ std::unique_ptr<Model> build_model(const io::CaseSpec& spec) {
     model->mixture->initialize(kind, 0.0, x);
     model->problem->set_state(x);
   }
+  if (!model->steps.empty())
+    activate_step(*model, 0);
+  check_support(spec, *model);
   add_outputs(spec, *model);
   return model;
 }

@@ -45,6 +45,19 @@ struct RigidBody {
   std::array<physics::NodalForce, 3> force; ///< applied force per component (magnitude 0: none)
 };
 
+/// The conditions of one [[step]] (acting in addition to the case's own) and how the conditions
+/// it releases are unloaded. Its loads are terms of the problem active during the step only.
+struct ModelStep {
+  std::string name;
+  std::string key;                                  ///< "step[i]"
+  Real start_time = 0.0;                            ///< end of the previous step [s]
+  Real end_time = 0.0;                              ///< [s]
+  std::vector<dofs::DirichletCondition> conditions; ///< offsets set when the step begins
+  std::vector<std::string> keys;                    ///< case key of each condition
+  std::vector<bool> relative;                       ///< per condition
+  Real release_time = 0.0;                          ///< see io::StepSpec
+};
+
 /// Everything a run needs. Owns the mesh and DOF map the problem refers to.
 struct Model {
   mesh::Mesh mesh;
@@ -60,8 +73,11 @@ struct Model {
   std::vector<ReactionSet> reactions;
   std::vector<Probe> probes;
   std::vector<RigidBody> rigid_bodies;
-  Real length_scale = 1.0;       ///< bounding-box diagonal [mm]
-  Real modulus_scale = 1.0;      ///< largest P-wave modulus [MPa]
+  std::vector<ModelStep> steps; ///< empty: one step with the case's conditions only
+  std::vector<dofs::DirichletCondition> case_conditions; ///< the conditions of every step
+  int active_step = -1;                                  ///< index into steps (-1: none)
+  Real length_scale = 1.0;                               ///< bounding-box diagonal [mm]
+  Real modulus_scale = 1.0;                              ///< largest P-wave modulus [MPa]
   Real permeability_scale = 0.0; ///< largest permeability [mm^4/(N s)] (0: no mixture)
 
   dofs::FieldId displacement() const { return fields.u; }

@@ -75,9 +75,13 @@ MixtureChemistry chemistry(const Integrals& I, const MixtureUnknowns& x, const M
   c.V = I.V;
   c.Vw = I.V - mat.phi_s0 * h.V0;
   c.phi_w = c.Vw / c.V;
-  c.A_ww = 1.0 / mat.permeability;
   c.mu_w = x.p;
-  c.admissible = c.Vw > 0.0;
+  c.admissible = c.Vw > 0.0; // the transport laws are defined for J > phi_s0 only
+  if (!c.admissible)
+    return c;
+  c.kappa = mat.permeability_law->value(c.V / h.V0);
+  c.admissible = c.kappa > 0.0;
+  c.A_ww = 1.0 / c.kappa;
   if (!ions || !c.admissible)
     return c;
   const material::Electrochemistry& ch = *step.chem;
@@ -93,8 +97,10 @@ MixtureChemistry chemistry(const Integrals& I, const MixtureUnknowns& x, const M
   c.mu_w = x.p - RT * (mat.osmotic * (c.c_plus + c.c_minus) - 2.0 * ch.osmotic_bath * ch.c_ref);
   c.mu_plus = RT * std::log(mat.gamma_plus * c.c_plus / (ch.gamma_bath * ch.c_ref)) + x.eta;
   c.mu_minus = RT * std::log(mat.gamma_minus * c.c_minus / (ch.gamma_bath * ch.c_ref)) - x.eta;
-  c.A_wp = RT / (c.phi_w * mat.d_plus);
-  c.A_wm = RT / (c.phi_w * mat.d_minus);
+  c.d_plus = mat.d_plus_law->value(c.phi_w);
+  c.d_minus = mat.d_minus_law->value(c.phi_w);
+  c.A_wp = RT / (c.phi_w * c.d_plus);
+  c.A_wm = RT / (c.phi_w * c.d_minus);
   c.A_ww += c.A_wp * c.c_plus + c.A_wm * c.c_minus;
   c.A_pp = c.A_wp / c.c_plus;
   c.A_mm = c.A_wm / c.c_minus;
@@ -158,6 +164,10 @@ ChemistryGradients chemistry_gradients(const Integrals& I, const MixtureChemistr
   for (int a = 0; a < 8; ++a)
     d.V.segment<3>(L.u(a, 0)) = I.g.row(a).transpose();
   d.mu_w[L.p()] = 1.0;
+  // 1/kappa(J), J = V/V0 (skipped for a constant permeability: the same arithmetic as before)
+  const bool kappa_varies = !mat.permeability_law->is_constant();
+  if (kappa_varies)
+    d.A_ww = (-mat.permeability_law->derivative(c.V / h.V0) / (c.kappa * c.kappa * h.V0)) * d.V;
   if (!L.ions)
     return d;
   const Real RT = step.chem->RT();
@@ -179,9 +189,24 @@ ChemistryGradients chemistry_gradients(const Integrals& I, const MixtureChemistr
   d.mu_minus[L.eta()] -= 1.0;
   d.A_wp = (-c.A_wp / c.phi_w) * dphi;
   d.A_wm = (-c.A_wm / c.phi_w) * dphi;
-  d.A_ww = c.A_wp * dcp + c.c_plus * d.A_wp + c.A_wm * dcm + c.c_minus * d.A_wm;
   d.A_pp = -c.A_pp * (dcp / c.c_plus + dphi / c.phi_w);
   d.A_mm = -c.A_mm * (dcm / c.c_minus + dphi / c.phi_w);
+  // d±(phi_w): dA_w± and dA_±± gain -A (dd±/dphi_w / d±) dphi_w (skipped if d± is constant)
+  if (!mat.d_plus_law->is_constant()) {
+    const Real dlnd = mat.d_plus_law->derivative(c.phi_w) / c.d_plus;
+    d.A_wp -= (c.A_wp * dlnd) * dphi;
+    d.A_pp -= (c.A_pp * dlnd) * dphi;
+  }
+  if (!mat.d_minus_law->is_constant()) {
+    const Real dlnd = mat.d_minus_law->derivative(c.phi_w) / c.d_minus;
+    d.A_wm -= (c.A_wm * dlnd) * dphi;
+    d.A_mm -= (c.A_mm * dlnd) * dphi;
+  }
+  const Grad dA_ions = c.A_wp * dcp + c.c_plus * d.A_wp + c.A_wm * dcm + c.c_minus * d.A_wm;
+  if (kappa_varies)
+    d.A_ww += dA_ions;
+  else
+    d.A_ww = dA_ions;
   return d;
 }
 

@@ -48,6 +48,8 @@ struct MixtureStep {
 /// Element-constant chemistry derived from the unknowns (also used for output).
 struct MixtureChemistry {
   Real V = 0, Vw = 0, phi_w = 0;             ///< volume, water volume [mm^3], porosity
+  Real kappa = 0;                            ///< permeability kappa(V/V0) [mm^4/(N s)]
+  Real d_plus = 0, d_minus = 0;              ///< ion diffusivities d+-(phi_w) [mm^2/s]
   Real c_plus = 0, c_minus = 0, c_fixed = 0; ///< concentrations per water volume [mmol/mm^3]
   Real mu_w = 0;                             ///< bath-normalised water potential [MPa]
   Real mu_plus = 0, mu_minus = 0;            ///< bath-normalised ion potentials [mJ/mmol]

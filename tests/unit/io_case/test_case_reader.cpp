@@ -697,6 +697,41 @@ const std::vector<BadCase> kMixtureBadCases = {
     {"missing_mixture_parameter",
      cartilage_with("d_plus = 5e-4\n", ""),
      {"materials.cart.d_plus: missing required parameter (cation (Na+) diffusivity, mm^2/s)"}},
+    {"unknown_permeability_law",
+     cartilage_with("permeability = 1e-3", "permeability = { type = \"holmes_mow\", k0 = 1e-3 }"),
+     {"materials.cart.permeability.type = 'holmes_mow': unknown permeability law (expected one "
+      "of: constant, holmes-mow, exponential); did you mean 'holmes-mow'? (line 22)"}},
+    {"unknown_diffusivity_law",
+     cartilage_with("d_plus = 5e-4", "d_plus = { type = \"mackie\", d0 = 1.33e-3 }"),
+     {"materials.cart.d_plus.type = 'mackie': unknown diffusivity law (expected one of: "
+      "constant, mackie-meares)"}},
+    {"unknown_permeability_law_key",
+     cartilage_with("permeability = 1e-3",
+                    "permeability = { type = \"holmes-mow\", k0 = 1e-3, beta = 2 }"),
+     {"materials.cart.permeability.beta: unknown key (expected one of: type, k0, M, alpha) "
+      "(line 22)"}},
+    {"law_without_type",
+     cartilage_with("d_plus = 5e-4", "d_plus = { d0 = 1.33e-3 }"),
+     {"materials.cart.d_plus.type: missing required key (expected one of: constant, "
+      "mackie-meares)"}},
+    {"law_without_required_parameter",
+     cartilage_with("d_minus = 8e-4", "d_minus = { type = \"mackie-meares\" }"),
+     {"materials.cart.d_minus.d0: missing required parameter (diffusivity in free solution, "
+      "mm^2/s)"}},
+    {"law_parameter_out_of_range",
+     cartilage_with("permeability = 1e-3\n", "") +
+         "\n[materials.cart.permeability]\ntype = \"exponential\"\nk0 = 1e-3\nM = -1\n",
+     {"materials.cart.permeability.M = -1: out of range, expected a value in [0, inf) (line 33)"}},
+    {"law_given_as_string",
+     cartilage_with("permeability = 1e-3", "permeability = \"holmes-mow\""),
+     {"materials.cart.permeability: expected a number in (0, inf) mm^4/(N s) (constant) or a "
+      "table with a type (a law of the deformation), got a string (line 22)"}},
+    {"law_on_a_key_without_laws",
+     cartilage_with("phi_s0 = 0.2", "phi_s0 = { type = \"constant\", d = 0.2 }"),
+     {"materials.cart.phi_s0: expected a number, got a table"}},
+    {"diffusivity_law_on_biphasic",
+     gel_with("phi_s0 = 0.2", "phi_s0 = 0.2\nd_plus = { type = \"mackie-meares\", d0 = 1e-3 }"),
+     {"materials.gel.d_plus: only applies to triphasic materials"}},
     {"mixture_as_solid_law",
      cartilage_with(kSolidTable, replaced_in(kSolidTable, "neo-hookean", "biphasic")),
      {"materials.cart.solid.type = 'biphasic': unknown solid law (expected one of:", "(line 28)"}},
@@ -816,6 +851,29 @@ INSTANTIATE_TEST_SUITE_P(Mixture, BadInput, testing::ValuesIn(kMixtureBadCases),
                          [](const testing::TestParamInfo<BadCase>& info) {
                            return info.param.name;
                          });
+
+/// Strain-dependent laws: permeability as a sub-table, d_plus as an inline table (defaults of
+/// the laws filled in), d_minus as a number (constant law).
+TEST(CaseReader, TransportLawsAsTables) {
+  const std::string text =
+      cartilage_with("permeability = 1e-3\nfixed_charge = 2e-4\nd_plus = 5e-4",
+                     "fixed_charge = 2e-4\nd_plus = { type = \"mackie-meares\", d0 = 1.33e-3 }") +
+      "\n[materials.cart.permeability]\ntype = \"holmes-mow\"\nk0 = 1e-3\nM = 4.6\n";
+  const CaseSpec c = parse_case(text, kMemoryFile);
+  const MaterialSpec& cart = c.materials.at("cart");
+  EXPECT_EQ(cart.parameters.count("permeability"), 0u);
+  EXPECT_EQ(cart.parameters.count("d_plus"), 0u);
+  EXPECT_DOUBLE_EQ(cart.parameters.at("permeability.holmes-mow.k0"), 1e-3);
+  EXPECT_DOUBLE_EQ(cart.parameters.at("permeability.holmes-mow.M"), 4.6);
+  EXPECT_DOUBLE_EQ(cart.parameters.at("permeability.holmes-mow.alpha"), 0.0); // default
+  EXPECT_DOUBLE_EQ(cart.parameters.at("d_plus.mackie-meares.d0"), 1.33e-3);
+  EXPECT_DOUBLE_EQ(cart.parameters.at("d_minus"), 8e-4);
+  EXPECT_TRUE(c.warnings.empty());
+  const CaseSpec gel = parse_case(
+      gel_with("permeability = 1e-3", "permeability = { type = \"exponential\", k0 = 2e-3 }"),
+      kMemoryFile);
+  EXPECT_DOUBLE_EQ(gel.materials.at("gel").parameters.at("permeability.exponential.M"), 0.0);
+}
 
 TEST(CaseReader, SyntaxErrorQuotesTheLineWithACaret) {
   const std::string m = error_of("title = \"x\"\n[time]\nend_time = 1.0\ndt = \n");
@@ -978,6 +1036,12 @@ TEST(CaseReaderWarnings, MixtureParametersInOtherUnits) {
       {"materials.cart.permeability = 1e-15 mm^4/(N s)", "in m^4/(N s), write 0.001"});
   expect_one_warning(cartilage_with("d_plus = 5e-4", "d_plus = 5e-10"),
                      {"materials.cart.d_plus = 5e-10 mm^2/s", "in m^2/s, write 0.0005"});
+  expect_one_warning(
+      cartilage_with("permeability = 1e-3", "permeability = { type = \"holmes-mow\", k0 = 1e-15 }"),
+      {"materials.cart.permeability.k0 = 1e-15 mm^4/(N s)", "in m^4/(N s), write 0.001"});
+  expect_one_warning(cartilage_with("d_minus = 8e-4", "d_minus = { type = \"mackie-meares\", "
+                                                      "d0 = 2e-9 }"),
+                     {"materials.cart.d_minus.d0 = 2e-09 mm^2/s", "in m^2/s, write 0.002"});
 }
 
 TEST(CaseReaderWarnings, ModulusInPascalAndSizeInMetres) {

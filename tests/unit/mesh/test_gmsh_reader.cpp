@@ -104,7 +104,12 @@ void check_two_hex(const Mesh& mesh) {
   EXPECT_EQ(mesh.node_set("top"), (std::vector<Index>{0, 1, 2, 3, 4, 5}));
   EXPECT_EQ(mesh.node_set("edge"), (std::vector<Index>{0, 1}));
   EXPECT_EQ(mesh.node_set("corner"), (std::vector<Index>{6}));
-  EXPECT_EQ(mesh.node_sets().size(), 3u);
+  // the physical volume gives the node set of its cells' nodes
+  std::vector<Index> every(12);
+  for (Index n = 0; n < 12; ++n)
+    every[n] = n;
+  EXPECT_EQ(mesh.node_set("cartilage"), every);
+  EXPECT_EQ(mesh.node_sets().size(), 4u);
 }
 
 TEST(GmshReader, ReadsTwoHexFormat41) {
@@ -143,7 +148,8 @@ TEST(GmshReader, WithoutPhysicalGroupsAllHexesGoToBlockVolume) {
   ASSERT_EQ(mesh.cell_blocks().size(), 1u);
   EXPECT_EQ(mesh.cell_block("volume"), (std::vector<Index>{0, 1}));
   EXPECT_TRUE(mesh.surfaces().empty());
-  EXPECT_TRUE(mesh.node_sets().empty());
+  ASSERT_EQ(mesh.node_sets().size(), 1u);
+  EXPECT_EQ(mesh.node_set("volume").size(), 12u);
 }
 
 TEST(GmshReader, UnnamedGroupsAndUnassignedHexes) {

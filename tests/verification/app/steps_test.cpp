@@ -1,0 +1,301 @@
+// SPDX-License-Identifier: MIT
+// Analysis steps ([[step]]), through the case reader, the model and the analysis:
+// - the tr01 protocol in one case: free swelling of a confined triphasic column from its
+//   stress-free reference to equilibrium (step 1, top free), then a relative confined
+//   compression ramp and hold (step 2): the swollen height equals the closed-form swelling root,
+//   and the relaxation equals that of the run that prescribes the swelling analytically;
+// - a released condition: a biphasic column held compressed to equilibrium (step 1) and then
+//   released (step 2, no condition on the top) recovers as the Terzaghi series of the reverse
+//   load predicts.
+#include "case_runner.hpp"
+#include "exact_solutions.hpp"
+#include "trifem/core/error.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <map>
+
+using namespace trifem;
+
+namespace {
+
+/// Runs a case text through run_steps, calling `observer` after every accepted step.
+test::CaseRun run_stepped(const std::string& text,
+                          const std::function<void(const model::Model&, Real)>& observer = {}) {
+  test::CaseRun run;
+  run.spec = io::parse_case(text, "steps.toml");
+  run.model = model::build_model(run.spec);
+  solver::NewtonSolver newton(analysis::newton_settings(run.spec.solver),
+                              linalg::make_linear_solver(run.spec.solver.linear_solver));
+  solver::Linearization initial;
+  run.model->problem->linearize(initial, false);
+  run.report = analysis::run_steps(
+      run.spec, *run.model, newton,
+      [&](const solver::StepInfo& info) {
+        if (observer)
+          observer(*run.model, info.time);
+      },
+      [](const solver::StepController&) {});
+  return run;
+}
+
+/// Mean z displacement of the top nodes of the column.
+Real top_displacement(const model::Model& m) {
+  Real sum = 0.0;
+  const auto& top = m.mesh.node_set("layer.zmax");
+  for (Index n : top)
+    sum += m.problem->state()[m.dofs.dof(m.fields.u, n, 2)];
+  return sum / static_cast<Real>(top.size());
+}
+
+/// Total z reaction on the top nodes (residual at their z DOFs).
+Real top_reaction(const model::Model& m) {
+  Real sum = 0.0;
+  for (Index n : m.mesh.node_set("layer.zmax"))
+    sum += m.problem->full_residual()[m.dofs.dof(m.fields.u, n, 2)];
+  return sum;
+}
+
+// ---------------------------------------------------------------------------------------------
+// tr01: swell, then compress
+
+constexpr Real kSwellEnd = 1e5; ///< s: about 30 consolidation times of the 1 mm column
+
+/// The confined triphasic column of the paper (E = 0.3 MPa, cF0 = 0.2 M, 0.15 M bath), 1 x 1 x 6
+/// cells, bottom bonded, sides confined and impermeable, top draining to the bath; `swelling`
+/// is the first step's table body, the second step compresses the top by 0.1 mm in 200 s
+/// (relative to the swollen state) and holds to 2000 s.
+std::string tr01_case(const std::string& swelling) {
+  return fmt::format(R"(
+[[mesh.box]]
+name = "layer"
+size = [1.0, 1.0, 1.0]
+divisions = [1, 1, 6]
+material = "cartilage"
+
+[materials.cartilage]
+type = "triphasic"
+phi_s0 = 0.25
+permeability = 1.07e-3
+fixed_charge = 2.0e-4
+d_plus = 5.0e-4
+d_minus = 8.0e-4
+[materials.cartilage.solid]
+type = "saint-venant-kirchhoff"
+E = 0.3
+nu = 0.0
+
+[curves.squeeze]
+points = [[{0}, 0.0], [{1}, 1.0]]
+
+[[boundary.fixed]]
+set = "layer.all"
+components = ["x", "y"]
+[[boundary.fixed]]
+set = "layer.all"
+field = "fluxes"
+components = ["x", "y"]
+[[boundary.bonded]]
+set = "layer.zmin"
+
+[[step]]
+name = "swelling"
+end_time = {0}
+dt = 1.0
+dt_max = 1e4
+growth = 2.0
+{2}
+
+[[step]]
+name = "compression"
+duration = 2000.0
+dt = 10.0
+dt_max = 10.0
+[[step.boundary.prescribed]]
+set = "layer.zmax"
+component = "z"
+value = -0.1
+curve = "squeeze"
+relative = true
+)",
+                     kSwellEnd, kSwellEnd + 200.0, swelling);
+}
+
+TEST(Steps, Tr01SwellThenCompressMatchesPrescribedSwelling) {
+  const exact::SwellingState swollen =
+      exact::swelling_equilibrium(exact::SolidLaw::StVenantKirchhoff, exact::Deformation::Confined,
+                                  0.3, 0.0, exact::paper_medium());
+  // free swelling (top free in step 1)
+  Real swollen_top = 0.0;
+  std::map<long, Real> free_reaction, prescribed_reaction;
+  const auto free = run_stepped(tr01_case(""), [&](const model::Model& m, Real t) {
+    if (std::abs(t - kSwellEnd) < 1e-6)
+      swollen_top = top_displacement(m);
+    if (t > kSwellEnd)
+      free_reaction[std::lround(t - kSwellEnd)] = top_reaction(m);
+  });
+  ASSERT_TRUE(free.report.success) << free.report.failure;
+  EXPECT_NEAR(1.0 + swollen_top, swollen.stretch, 1e-6 * swollen.stretch);
+  EXPECT_NEAR(top_displacement(*free.model), swollen_top - 0.1, 1e-12);
+  // the same protocol with the swelling prescribed from the closed form (ramped over 1000 s)
+  const std::string prescribed = fmt::format(R"(
+[[step.boundary.prescribed]]
+set = "layer.zmax"
+component = "z"
+value = {}
+curve = "swell"
+[curves.swell]
+points = [[0.0, 0.0], [1000.0, 1.0]]
+)",
+                                             swollen.stretch - 1.0);
+  const auto ref = run_stepped(tr01_case(prescribed), [&](const model::Model& m, Real t) {
+    if (t > kSwellEnd)
+      prescribed_reaction[std::lround(t - kSwellEnd)] = top_reaction(m);
+  });
+  ASSERT_TRUE(ref.report.success) << ref.report.failure;
+  ASSERT_EQ(free_reaction.size(), 200u);
+  ASSERT_EQ(prescribed_reaction.size(), free_reaction.size());
+  Real peak = 0.0;
+  for (const auto& [t, r] : prescribed_reaction)
+    peak = std::max(peak, std::abs(r));
+  EXPECT_GT(peak, 1e-3); // N: the compression loads the layer
+  Real worst = 0.0;
+  for (const auto& [t, r] : free_reaction) {
+    EXPECT_NEAR(r, prescribed_reaction.at(t), 1e-6 * peak) << "t = t1 + " << t << " s";
+    worst = std::max(worst, std::abs(r - prescribed_reaction.at(t)));
+  }
+  std::printf("[tr01] swollen stretch %.10f (closed form %.10f, relative difference %.2e); "
+              "relaxation peak %.6e N, largest difference %.2e of it\n",
+              1.0 + swollen_top, swollen.stretch, (1.0 + swollen_top) / swollen.stretch - 1.0, peak,
+              worst / peak);
+}
+
+// ---------------------------------------------------------------------------------------------
+// release: compress to equilibrium, then let go
+
+constexpr Real kHold = 3e4;    ///< s: end of step 1 (about 10 consolidation times)
+constexpr Real kSquash = 3e-4; ///< mm: compression of the 1 mm layer (strain 3e-4)
+const exact::ConfinedLayer kLayer{1.0, 0.3, 1.07e-3};
+
+std::string release_case(Real release_time) {
+  return fmt::format(R"(
+[[mesh.box]]
+name = "layer"
+size = [1.0, 1.0, 1.0]
+divisions = [1, 1, 40]
+material = "tissue"
+
+[materials.tissue]
+type = "biphasic"
+phi_s0 = 0.25
+permeability = 1.07e-3
+[materials.tissue.solid]
+type = "saint-venant-kirchhoff"
+E = 0.3
+nu = 0.0
+
+[curves.squash]
+points = [[0.0, 0.0], [1e-3, 1.0]]
+
+[[boundary.fixed]]
+set = "layer.all"
+components = ["x", "y"]
+[[boundary.fixed]]
+set = "layer.all"
+field = "fluid_flux"
+components = ["x", "y"]
+[[boundary.bonded]]
+set = "layer.zmin"
+
+[[step]]
+name = "hold"
+end_time = {0}
+dt = 1e-3
+dt_max = 1e3
+growth = 2.0
+[[step.boundary.prescribed]]
+set = "layer.zmax"
+component = "z"
+value = {1}
+curve = "squash"
+
+[[step]]
+name = "release"
+duration = 600.0
+dt = 1.25
+dt_max = 10.0
+release_time = {2}
+)",
+                     kHold, -kSquash, release_time);
+}
+
+TEST(Steps, ReleasedPlatenRecoversAsTheReverseTerzaghiCreep) {
+  const Real sigma0 = kLayer.H_A * kSquash; // the equilibrium compressive stress released
+  int checked = 0;
+  const auto run = run_stepped(release_case(0.0), [&](const model::Model& m, Real t) {
+    if (t <= kHold + 20.0) // after the early transient, resolved only by finer steps
+      return;
+    // the reverse load: the held state minus the creep under sigma0
+    const Real exact = -kSquash - exact::creep_surface_displacement(kLayer, sigma0, t - kHold);
+    EXPECT_NEAR(top_displacement(m), exact, 5e-3 * kSquash) << "t = " << t;
+    ++checked;
+  });
+  ASSERT_TRUE(run.report.success) << run.report.failure;
+  EXPECT_GT(checked, 50);
+  // after 600 s (0.19 consolidation times) about half the squash is recovered
+  EXPECT_GT(top_displacement(*run.model), -0.6 * kSquash) << "the layer recovers";
+}
+
+TEST(Steps, ReleaseTimeCarriesTheReactionSoTheStateDoesNotJump) {
+  Real first = 0.0;
+  const auto run = run_stepped(release_case(100.0), [&](const model::Model& m, Real t) {
+    if (first == 0.0 && t > kHold)
+      first = top_displacement(m);
+  });
+  ASSERT_TRUE(run.report.success) << run.report.failure;
+  // one step of 1.25 s into a 100 s release: the load fell by 1.25 %, the top moved by
+  // less than that fraction of the squash (it cannot move faster than the load falls)
+  EXPECT_NEAR(first, -kSquash, 0.0125 * kSquash);
+  EXPECT_GT(top_displacement(*run.model), -0.6 * kSquash) << "the layer recovers";
+}
+
+/// The InputError of building the model of `text`.
+std::string build_error(const std::string& text) {
+  try {
+    model::build_model(io::parse_case(text, "steps.toml"));
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(Steps, AStepMayNotConstrainWhatTheCaseHolds) {
+  std::string text = release_case(0.0);
+  text += R"(
+[[step]]
+name = "bad"
+duration = 10.0
+dt = 1.0
+[[step.boundary.prescribed]]
+set = "layer.zmin"
+component = "z"
+value = 0.1
+)";
+  const std::string e = build_error(text);
+  EXPECT_NE(e.find("step[3].boundary.prescribed[1]"), std::string::npos) << e;
+  EXPECT_NE(e.find("already held in every step"), std::string::npos) << e;
+  const std::string set = build_error(release_case(0.0) + R"(
+[[step]]
+duration = 10.0
+dt = 1.0
+[[step.boundary.fixed]]
+set = "layer.top"
+components = ["z"]
+)");
+  EXPECT_NE(set.find("step[3].boundary.fixed[1].set"), std::string::npos) << set;
+  EXPECT_NE(set.find("layer.top"), std::string::npos) << set;
+}
+
+} // namespace

@@ -58,6 +58,11 @@ int main(int argc, char** argv) {
   auto* run = cli.add_subcommand("run", "run an analysis");
   run->add_option("case", case_file, "case file (.toml)")->required();
   run->add_option("-o,--output", output_dir, "output directory (default: results/<case name>)");
+  analysis::RunOptions options;
+  run->add_option("--restart", options.restart_file,
+                  "continue from a restart file (restart_NNNN.bin) written by a run of this case");
+  run->add_flag("--write-restart", options.write_restart,
+                "write a restart file with every VTU state (as [output] restart = true)");
   auto* check = cli.add_subcommand("check", "validate a case without solving");
   check->add_option("case", case_file, "case file (.toml)")->required();
 
@@ -79,6 +84,6 @@ int main(int argc, char** argv) {
     const std::filesystem::path out = output_dir.empty()
                                           ? std::filesystem::path("results") / spec.file.stem()
                                           : std::filesystem::path(output_dir);
-    return analysis::run_case(spec, out);
+    return analysis::run_case(spec, out, options);
   });
 }

@@ -8,12 +8,15 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <initializer_list>
 #include <iterator>
+#include <map>
 #include <ostream>
 #include <regex>
 #include <sstream>
@@ -97,6 +100,45 @@ inline std::size_t count_of(std::string_view text, std::string_view part) {
   for (auto at = text.find(part); at != std::string_view::npos; at = text.find(part, at + 1))
     ++n;
   return n;
+}
+
+/// The numbers of a history.csv by column, and the column names.
+struct History {
+  std::vector<std::string> names;
+  std::vector<std::vector<double>> columns;
+};
+
+inline History read_history(const fs::path& file) {
+  History h;
+  const std::vector<std::string> lines = lines_of(read_text(file));
+  if (lines.empty())
+    return h;
+  std::stringstream header(lines[0]);
+  for (std::string name; std::getline(header, name, ',');)
+    h.names.push_back(name);
+  h.columns.resize(h.names.size());
+  for (std::size_t i = 1; i < lines.size(); ++i) {
+    std::stringstream row(lines[i]);
+    std::size_t c = 0;
+    for (std::string cell; std::getline(row, cell, ',') && c < h.columns.size(); ++c)
+      h.columns[c].push_back(std::stod(cell));
+  }
+  return h;
+}
+
+/// The unit of a history column ("top.uz [mm]" -> "mm"; "" if none).
+inline std::string unit_of(const std::string& name) {
+  const auto open = name.rfind('[');
+  return open == std::string::npos ? "" : name.substr(open);
+}
+
+/// Largest magnitude of the columns of each unit.
+inline std::map<std::string, double> unit_scales(const History& h) {
+  std::map<std::string, double> scale;
+  for (std::size_t c = 0; c < h.names.size(); ++c)
+    for (const double v : h.columns[c])
+      scale[unit_of(h.names[c])] = std::max(scale[unit_of(h.names[c])], std::abs(v));
+  return scale;
 }
 
 /// Fixture: every test works in a fresh temporary directory, removed afterwards.

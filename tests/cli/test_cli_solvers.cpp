@@ -18,30 +18,6 @@ namespace {
 
 const fs::path kExamples = fs::path(TRIFEM_SOURCE_DIR) / "examples";
 
-/// The numbers of a history.csv by column, and the column names.
-struct History {
-  std::vector<std::string> names;
-  std::vector<std::vector<double>> columns;
-};
-
-History read_history(const fs::path& file) {
-  History h;
-  const std::vector<std::string> lines = lines_of(read_text(file));
-  if (lines.empty())
-    return h;
-  std::stringstream header(lines[0]);
-  for (std::string name; std::getline(header, name, ',');)
-    h.names.push_back(name);
-  h.columns.resize(h.names.size());
-  for (std::size_t i = 1; i < lines.size(); ++i) {
-    std::stringstream row(lines[i]);
-    std::size_t c = 0;
-    for (std::string cell; std::getline(row, cell, ',') && c < h.columns.size(); ++c)
-      h.columns[c].push_back(std::stod(cell));
-  }
-  return h;
-}
-
 /// `text` (a case file) with [solver] linear_solver set to `backend`.
 std::string with_backend(std::string text, const std::string& backend) {
   const std::string line = "linear_solver = \"" + backend + "\"\n";
@@ -78,21 +54,6 @@ protected:
     return out / "history.csv";
   }
 };
-
-/// The unit of a history column ("top.uz [mm]" -> "mm"; "" if none).
-std::string unit_of(const std::string& name) {
-  const auto open = name.rfind('[');
-  return open == std::string::npos ? "" : name.substr(open);
-}
-
-/// Largest magnitude of the columns of each unit.
-std::map<std::string, double> unit_scales(const History& h) {
-  std::map<std::string, double> scale;
-  for (std::size_t c = 0; c < h.names.size(); ++c)
-    for (const double v : h.columns[c])
-      scale[unit_of(h.names[c])] = std::max(scale[unit_of(h.names[c])], std::abs(v));
-  return scale;
-}
 
 TEST_F(CliSolvers, PetscBackendsGiveTheUmfpackHistoryOnEveryExample) {
   for (const std::string name : {"biphasic_creep", "cantilever", "confined_column",

@@ -42,6 +42,8 @@ public:
   std::filesystem::path pvd_file() const { return pvd_->file(); }
   std::filesystem::path history_file() const { return directory_ / "history.csv"; }
   int vtu_count() const { return vtu_count_; }
+  /// The NNNN of the last output state written (-1: none).
+  int last_state_index() const { return state_count_ - 1; }
   double seconds() const { return seconds_; }
 
 private:

@@ -20,6 +20,7 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <omp.h>
+#include <optional>
 #include <set>
 
 namespace trifem::analysis {
@@ -185,14 +186,29 @@ int finish_run(const io::CaseSpec& spec, const std::filesystem::path& output_dir
   return kSuccess;
 }
 
-/// The state at t = 0 with its reactions; the reason if it cannot be written.
-std::string write_initial_state(OutputWriter& output) {
+/// The state at t = 0 (or at the restart time) with its reactions; the reason if it cannot be
+/// written.
+std::string write_initial_state(OutputWriter& output, const std::optional<Resume>& resume) {
   try {
-    output.write(0.0, 0, 0.0, 0, true);
+    output.write(resume ? resume->time : 0.0, resume ? resume->steps : 0, 0.0, 0, true);
     return {};
   } catch (const OutputError& e) {
     return fmt::format("the initial state could not be written: {}", e.what());
   }
+}
+
+/// Reads the restart file into the model; InputError (naming the file) if it does not fit the
+/// case or holds the end of the run.
+Resume resume_from(const std::filesystem::path& file, const io::CaseSpec& spec,
+                   model::Model& model) {
+  const Resume resume = read_restart(file, model);
+  TRIFEM_CHECK(resume.time < spec.time.end_time * (1.0 - 1e-10),
+               "{}: the restart state is at t = {} s, the end of the run (time.end_time = {} s): "
+               "nothing is left to run",
+               file.string(), resume.time, spec.time.end_time);
+  log::info("continuing from {} at t = {} s (after {} steps)", file.string(), resume.time,
+            resume.steps);
+  return resume;
 }
 
 /// After a run that stopped early: the last accepted state as a VTU file, if it is not one yet.
@@ -272,29 +288,40 @@ solver::StepSettings step_settings(const io::CaseSpec& spec, std::size_t k) {
 
 solver::RunReport run_steps(const io::CaseSpec& spec, model::Model& model,
                             solver::NewtonSolver& newton, const solver::StepObserver& observer,
-                            const std::function<void(const solver::StepController&)>& on_start) {
-  if (model.steps.empty()) {
-    solver::StepController controller(step_settings(spec));
-    on_start(controller);
-    return solver::run_time_loop(*model.problem, newton, controller, observer);
-  }
+                            const std::function<void(const solver::StepController&)>& on_start,
+                            const Resume* resume) {
+  const Real tol = 1e-10 * std::max(1.0, spec.time.end_time);
+  const int before = resume ? resume->steps : 0; // steps of the run before the restart
   solver::RunReport run;
   run.success = true;
-  for (std::size_t k = 0; k < model.steps.size() && run.success; ++k) {
-    if (static_cast<int>(k) != model.active_step)
-      model::activate_step(model, k);
-    const model::ModelStep& step = model.steps[k];
-    log::info("analysis step {} '{}': t = {:.6g} to {:.6g} s, {} prescribed DOFs", k + 1, step.name,
-              step.start_time, step.end_time, model.dofs.num_constrained());
-    solver::StepController controller(step_settings(spec, k));
+  const auto run_over = [&](solver::StepSettings settings) {
+    if (resume && resume->time > settings.start_time + tol) { // continue inside this step
+      settings.start_time = resume->time;
+      settings.dt = std::max(resume->dt, settings.dt_min);
+    }
+    solver::StepController controller(settings);
     on_start(controller);
-    const int offset = run.steps;
+    const int offset = before + run.steps;
     accumulate(run, solver::run_time_loop(*model.problem, newton, controller,
                                           [&](const solver::StepInfo& info) {
                                             solver::StepInfo whole = info;
                                             whole.step += offset;
                                             observer(whole);
                                           }));
+  };
+  if (model.steps.empty()) {
+    run_over(step_settings(spec));
+    return run;
+  }
+  for (std::size_t k = 0; k < model.steps.size() && run.success; ++k) {
+    if (resume && model.steps[k].end_time <= resume->time + tol)
+      continue; // done before the restart
+    if (static_cast<int>(k) != model.active_step)
+      model::activate_step(model, k);
+    const model::ModelStep& step = model.steps[k];
+    log::info("analysis step {} '{}': t = {:.6g} to {:.6g} s, {} prescribed DOFs", k + 1, step.name,
+              step.start_time, step.end_time, model.dofs.num_constrained());
+    run_over(step_settings(spec, k));
   }
   return run;
 }
@@ -308,11 +335,20 @@ solver::NewtonSettings newton_settings(const io::SolverSpec& s) {
   return n;
 }
 
-int run_case(const io::CaseSpec& spec, const std::filesystem::path& output_dir) {
-  if (spec.is_explicit())
+int run_case(const io::CaseSpec& spec, const std::filesystem::path& output_dir,
+             const RunOptions& options) {
+  if (spec.is_explicit()) {
+    TRIFEM_CHECK(options.restart_file.empty() && !options.write_restart && !spec.output.restart,
+                 "{}: restart files are written and read by quasi-static analyses only",
+                 spec.file.string());
     return run_explicit_case(spec, output_dir);
+  }
   const auto start = Clock::now();
   std::unique_ptr<model::Model> model = build_model_for(spec);
+  std::optional<Resume> resume;
+  if (!options.restart_file.empty())
+    resume = resume_from(options.restart_file, spec, *model);
+  const bool write_restarts = options.write_restart || spec.output.restart;
   std::unique_ptr<linalg::LinearSolver> linear_solver = linear_solver_for(spec);
   start_output_directory(output_dir, spec);
   OutputWriter output(*model, spec.output, output_dir, spec.time.end_time);
@@ -327,7 +363,7 @@ int run_case(const io::CaseSpec& spec, const std::filesystem::path& output_dir) 
   if (model->problem->linearize(initial, false) != solver::SolveStatus::Converged) {
     run.failure = "the initial state (t = 0) inverts an element (J <= 0); prescribed values "
                   "without a load curve apply from t = 0";
-  } else if (std::string why = write_initial_state(output); !why.empty()) {
+  } else if (std::string why = write_initial_state(output, resume); !why.empty()) {
     run.failure = why;
   } else {
     bool noted = false;
@@ -340,11 +376,15 @@ int run_case(const io::CaseSpec& spec, const std::filesystem::path& output_dir) 
                 linear > 0 ? fmt::format("  linear iterations {}", linear) : "",
                 progress(info.time, spec.time.end_time, Clock::now() - start));
       note_roundoff_floor(*model, info, noted);
-      output.write(info.time, info.step, info.dt, info.newton->iterations,
-                   output.is_output_time(info.time) || controller->finished());
+      const bool volume = output.is_output_time(info.time) || controller->finished();
+      output.write(info.time, info.step, info.dt, info.newton->iterations, volume);
+      if (volume && write_restarts)
+        write_restart(output_dir / fmt::format("restart_{:04d}.bin", output.last_state_index()),
+                      *model, {controller->time(), controller->dt(), info.step});
     };
-    run = run_steps(spec, *model, newton, observer,
-                    [&](const solver::StepController& c) { controller = &c; });
+    run = run_steps(
+        spec, *model, newton, observer, [&](const solver::StepController& c) { controller = &c; },
+        resume ? &*resume : nullptr);
     if (!run.success)
       write_last_state(*model, output, run);
   }

@@ -2,6 +2,7 @@
 // The `run` and `check` commands.
 #pragma once
 
+#include "trifem/analysis/restart.hpp"
 #include "trifem/io/case_spec.hpp"
 #include "trifem/model/model.hpp"
 #include "trifem/solver/newton.hpp"
@@ -40,15 +41,24 @@ solver::StepSettings step_settings(const io::CaseSpec& spec, std::size_t k);
 /// Runs every analysis step of `model` (one without [[step]] tables) from its current state,
 /// calling `observer` after every accepted step with the step count of the whole run.
 /// Returns the totals of the run; it stops at the first step that fails.
+/// With `resume`, the run continues from a restart state already read into `model`.
 solver::RunReport run_steps(const io::CaseSpec& spec, model::Model& model,
                             solver::NewtonSolver& newton, const solver::StepObserver& observer,
-                            const std::function<void(const solver::StepController&)>& on_start);
+                            const std::function<void(const solver::StepController&)>& on_start,
+                            const Resume* resume = nullptr);
 
 /// Newton settings of a case ([solver]).
 solver::NewtonSettings newton_settings(const io::SolverSpec& s);
 
+/// Options of `trifem run` beyond the case file.
+struct RunOptions {
+  std::filesystem::path restart_file; ///< continue from this restart file (empty: from t = 0)
+  bool write_restart = false;         ///< write restart files (as [output] restart = true)
+};
+
 /// Runs a case; results go to `output_dir`. Returns an ExitCode.
-int run_case(const io::CaseSpec& spec, const std::filesystem::path& output_dir);
+int run_case(const io::CaseSpec& spec, const std::filesystem::path& output_dir,
+             const RunOptions& options = {});
 
 /// Validates a case (file, mesh, sets, materials) without solving; prints a summary.
 int check_case(const io::CaseSpec& spec);

@@ -85,6 +85,8 @@ public:
   /// Current state with rotated DOFs in their local frames (the solver's unknowns).
   const Vector& local_state() const { return x_; }
   Real time() const { return time_; }
+  /// Sets the current (and last converged) time, e.g. when a run continues from a restart file.
+  void set_time(Real time) { time_ = time_old_ = time; }
   /// Sets the state (global components; e.g. initial conditions) at the current time.
   void set_state(const Vector& x);
   /// Replaces the prescribed conditions (between steps). `map` must have been re-finalized with

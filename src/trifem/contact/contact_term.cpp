@@ -176,6 +176,35 @@ void ContactTerm::commit(const physics::EvalState& state) {
       committed_pressure_[k] = std::abs(state.x[multiplier_dof(k, 0)]);
 }
 
+std::vector<double> ContactTerm::history() const {
+  const Index n = slave_.num_nodes();
+  std::vector<double> out(3 * static_cast<std::size_t>(n), 0.0);
+  for (Index k = 0; k < n; ++k) {
+    out[3 * k] = committed_active_.flags()[k];
+    out[3 * k + 1] = k < static_cast<Index>(committed_projected_.size()) ? committed_projected_[k] : 0;
+    out[3 * k + 2] = k < static_cast<Index>(committed_pressure_.size()) ? committed_pressure_[k] : 0;
+  }
+  return out;
+}
+
+void ContactTerm::restore_history(const std::vector<double>& values) {
+  const Index n = slave_.num_nodes();
+  TRIFEM_CHECK(values.size() == 3 * static_cast<std::size_t>(n),
+               "the restart file holds {} contact history values, this contact pair needs {}",
+               values.size(), 3 * n);
+  std::vector<char> flags(n);
+  committed_projected_.assign(n, 0);
+  committed_pressure_.assign(n, 0.0);
+  for (Index k = 0; k < n; ++k) {
+    flags[k] = static_cast<char>(values[3 * k]);
+    committed_projected_[k] = static_cast<char>(values[3 * k + 1]);
+    committed_pressure_[k] = values[3 * k + 2];
+  }
+  active_.assign(flags);
+  active_.commit();
+  committed_active_ = active_;
+}
+
 std::string ContactTerm::step_rejection(const physics::EvalState& state) const {
   if (active_.pending() > 0)
     return fmt::format("the contact status of {} slave node(s) did not settle within the step",

@@ -103,6 +103,10 @@ public:
   /// carried a substantial pressure at the step start (more than kReleaseFraction of the peak)
   /// slid beyond the master surface: the step is cut back.
   std::string step_rejection(const physics::EvalState& state) const override;
+  /// The committed active set, admissible projections and contact pressures (3 numbers per
+  /// slave node).
+  std::vector<double> history() const override;
+  void restore_history(const std::vector<double>& values) override;
   /// Fraction of the peak contact pressure above which losing the projection rejects a step.
   static constexpr Real kReleaseFraction = 0.25;
 

@@ -436,13 +436,14 @@ void read_output(const Table& root, CaseSpec& spec) {
   const auto t = root.table("output");
   if (!t)
     return;
-  t->allow({"interval", "times", "vtu", "reaction", "probe"});
+  t->allow({"interval", "times", "vtu", "restart", "reaction", "probe"});
   OutputSpec& s = spec.output;
   s.interval_given = t->find("interval") != nullptr;
   s.interval =
       t->number("interval", {.range = Range::non_negative(), .fallback = s.interval, .unit = "s"});
   s.times = read_output_times(*t, spec.time.end_time);
   s.vtu = t->get<bool>("vtu").value_or(s.vtu);
+  s.restart = t->get<bool>("restart").value_or(s.restart);
   for (const Table& r : t->tables("reaction"))
     s.reactions.push_back(read_reaction(r, s.reactions));
   for (const Table& p : t->tables("probe"))

@@ -280,6 +280,7 @@ struct OutputSpec {
   bool interval_given = false;
   std::vector<Real> times; ///< extra output times (must points)
   bool vtu = true;
+  bool restart = false; ///< write a restart file with every VTU state (quasi-static runs)
   std::vector<ReactionSpec> reactions;
   std::vector<ProbeSpec> probes;
 };

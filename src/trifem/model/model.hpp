@@ -56,6 +56,10 @@ struct ModelStep {
   std::vector<std::string> keys;                    ///< case key of each condition
   std::vector<bool> relative;                       ///< per condition
   Real release_time = 0.0;                          ///< see io::StepSpec
+  /// Set when the step begins: the offsets of its relative conditions (per condition, per DOF)
+  /// and the released reactions (DOF, force at the step start).
+  std::vector<std::vector<Real>> offsets;
+  std::vector<std::pair<Index, Real>> released;
 };
 
 /// Everything a run needs. Owns the mesh and DOF map the problem refers to.

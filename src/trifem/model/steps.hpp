@@ -17,7 +17,8 @@ std::vector<std::unique_ptr<physics::Term>> step_terms(const io::CaseSpec& spec,
 /// case's plus the step's (relative ones offset by the current values), the DOF map and the
 /// problem are renumbered, and conditions of the previous step that step k does not repeat are
 /// released: their reactions at the current state become loads that fall linearly to zero over
-/// the step's release_time (none if 0).
-void activate_step(Model& model, std::size_t k);
+/// the step's release_time (none if 0). With `restored` (the step as written to a restart
+/// file), its offsets and released reactions are taken instead of computed from the state.
+void activate_step(Model& model, std::size_t k, const ModelStep* restored = nullptr);
 
 } // namespace trifem::model

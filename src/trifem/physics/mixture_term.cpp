@@ -144,6 +144,28 @@ MixtureCellOutput MixtureTerm::output(Index e, const Vector& x) const {
   return mixture_hex8_output(geometry_[e], unknowns(e, x), history_[e], *props_[e], s, ions(e));
 }
 
+namespace {
+constexpr std::size_t kHistoryValues = 6; ///< numbers per MixtureHistory
+} // namespace
+
+std::vector<double> MixtureTerm::history() const {
+  std::vector<double> out;
+  out.reserve(kHistoryValues * history_.size());
+  for (const MixtureHistory& h : history_)
+    out.insert(out.end(), {h.V0, h.V_old, h.N_plus, h.N_minus, h.N_fixed, h.N_fixed_old});
+  return out;
+}
+
+void MixtureTerm::restore_history(const std::vector<double>& values) {
+  TRIFEM_CHECK(values.size() == kHistoryValues * history_.size(),
+               "the restart file holds {} mixture history values, this model needs {}",
+               values.size(), kHistoryValues * history_.size());
+  for (std::size_t e = 0; e < history_.size(); ++e) {
+    const double* v = values.data() + kHistoryValues * e;
+    history_[e] = {v[0], v[1], v[2], v[3], v[4], v[5]};
+  }
+}
+
 void MixtureTerm::commit(const EvalState& state) {
   for (Index e = 0; e < num_elements(); ++e) {
     const MixtureHistory h = history_at(e, state.time);

@@ -43,6 +43,9 @@ public:
   void element_dofs(Index e, std::vector<Index>& dofs) const override;
   bool evaluate(Index e, const EvalState& state, LocalVector& r, LocalMatrix* K) const override;
   void commit(const EvalState& state) override;
+  /// The committed MixtureHistory of every element (6 numbers each).
+  std::vector<double> history() const override;
+  void restore_history(const std::vector<double>& values) override;
 
   /// Sets p, eta (and the ion moles) of every element to the Donnan equilibrium with the
   /// reference bath at the configuration in x, at time `time` (fixed charge from the curve).

@@ -46,6 +46,12 @@ public:
   /// (the time loop cuts it back and logs the reason), e.g. a contact status that has not
   /// settled. `state` is the converged state.
   virtual std::string step_rejection(const EvalState& /*state*/) const { return {}; }
+  /// The committed history the term keeps outside the state vectors (element histories, a
+  /// contact active set), as numbers: what a restart file stores. Empty for stateless terms.
+  virtual std::vector<double> history() const { return {}; }
+  /// Sets the committed history back from history() of a term of the same model; throws
+  /// InputError if `values` do not fit.
+  virtual void restore_history(const std::vector<double>& /*values*/) {}
 };
 
 } // namespace trifem::physics

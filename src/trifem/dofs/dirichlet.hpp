@@ -16,7 +16,7 @@ struct DirichletCondition {
   LoadCurve curve = LoadCurve::constant(1.0);
   /// Per DOF (empty: none): added to the value, e.g. the state at the start of a step for a
   /// condition relative to it.
-  std::vector<Real> offsets;
+  std::vector<Real> offsets = {};
 
   Real value(Real t) const { return magnitude * curve(t); }
 };

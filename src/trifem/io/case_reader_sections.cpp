@@ -6,6 +6,7 @@
 #include "trifem/io/toml_table.hpp"
 #include "trifem/material/mixture.hpp"
 #include "trifem/material/registry.hpp"
+#include "trifem/material/solid_mixture.hpp"
 
 #include <algorithm>
 #include <climits>
@@ -19,21 +20,70 @@ namespace {
 
 constexpr std::string_view kMixtureTypes[] = {"biphasic", "triphasic"};
 
-/// The `type` key of `t`: a registered solid law or, if `mixtures`, "biphasic"/"triphasic".
-std::string read_type(const Table& t, bool mixtures, std::string_view noun) {
+/// Where a solid law is read: a material ([materials.<name>], which may also be a biphasic or
+/// triphasic mixture), the solid matrix of such a mixture ([<material>.solid]), or a constituent
+/// of a solid mixture ([[<table>.constituent]]).
+enum class LawPlace { Material, Solid, Constituent };
+
+/// Fails on a `type` of `t` that names a law valid only elsewhere: a constituent-only law
+/// (fibre) outside a solid mixture, or a solid mixture inside one.
+void reject_misplaced_type(const Table& t, LawPlace place) {
+  const auto type = t.get<std::string>("type");
+  if (!type)
+    return;
+  const std::string where = fmt::format("{} = '{}'", t.path("type"), *type);
+  if (place == LawPlace::Constituent && *type == material::kSolidMixtureType)
+    fail(t.find("type"), where,
+         "nested solid mixtures are not supported (list the constituents of the inner mixture "
+         "in the outer one)");
+  const auto& only = material::constituent_laws();
+  if (place != LawPlace::Constituent &&
+      std::any_of(only.begin(), only.end(), [&](const auto& law) { return law.type == *type; }))
+    fail(t.find("type"), where,
+         fmt::format("a fibre family is valid only as a constituent of a solid mixture: give {} = "
+                     "\"{}\" with a ground matrix and this law as [[{}]] tables (alone it "
+                     "carries no load at zero strain and none across the fibre)",
+                     t.path("type"), material::kSolidMixtureType, t.path("constituent")));
+}
+
+/// The `type` key of `t`: a registered solid law; a "solid-mixture" except as a constituent; a
+/// constituent-only law (fibre) only as a constituent; "biphasic"/"triphasic" only as a
+/// material.
+std::string read_type(const Table& t, LawPlace place, std::string_view noun) {
+  reject_misplaced_type(t, place);
   Options<std::string_view> types;
   for (const auto& law : material::registered_laws())
     types.emplace_back(law.type, law.type);
-  if (mixtures)
+  if (place == LawPlace::Constituent)
+    for (const auto& law : material::constituent_laws())
+      types.emplace_back(law.type, law.type);
+  else
+    types.emplace_back(material::kSolidMixtureType, material::kSolidMixtureType);
+  if (place == LawPlace::Material)
     for (const std::string_view type : kMixtureTypes)
       types.emplace_back(type, type);
   return std::string(t.choice("type", types, std::optional<std::string_view>(), noun));
 }
 
-/// The solid law `type` read from `t`, which holds `type`, the law's parameters and the
-/// material-level `extra` keys (read by the caller) only.
+/// The parameter `p` of a solid law, read from `t` into `values` (a Vector as its components).
+void read_law_parameter(const Table& t, const material::ParameterSchema& p,
+                        material::ParameterValues& values) {
+  const NumberRule rule{
+      .range = p.range, .unit = p.unit, .plausible = material::parameter_plausibility(p.key)};
+  if (p.kind == material::ParameterKind::Vector)
+    material::set_vector(values, p.key, t.vec3(p.key, rule, std::nullopt));
+  else
+    values[p.key] = t.number(p.key, rule);
+}
+
+SolidSpec read_solid_mixture(const Table& t, const std::vector<std::string_view>& extra);
+
+/// The solid law `type` read from `t`, which holds `type`, the law's parameters (or, for a solid
+/// mixture, its constituents) and the material-level `extra` keys (read by the caller) only.
 SolidSpec read_solid_law(const Table& t, const std::string& type,
                          std::vector<std::string_view> extra = {}) {
+  if (type == material::kSolidMixtureType)
+    return read_solid_mixture(t, extra);
   const material::LawEntry& law = material::find_law(type, t.path());
   std::vector<std::string_view> keys = {"type"};
   for (const auto& p : *law.parameters)
@@ -42,11 +92,29 @@ SolidSpec read_solid_law(const Table& t, const std::string& type,
   material::ParameterValues values;
   for (const auto& p : *law.parameters)
     if (t.find(p.key) != nullptr)
-      values[p.key] = t.number(
-          p.key,
-          {.range = p.range, .unit = p.unit, .plausible = material::parameter_plausibility(p.key)});
-  SolidSpec s{law.type, material::validate_parameters(*law.parameters, values, t.path())};
+      read_law_parameter(t, p, values);
+  SolidSpec s{law.type, material::validate_parameters(*law.parameters, values, t.path()), {}};
   material::create_law(s.type, s.parameters, t.path()); // the law's own checks, if any
+  return s;
+}
+
+/// The solid mixture `t`: its [[<t>.constituent]] tables, each a law with its parameters.
+SolidSpec read_solid_mixture(const Table& t, const std::vector<std::string_view>& extra) {
+  t.allow({"type", "constituent"}, extra);
+  const std::vector<Table> parts = t.tables("constituent");
+  if (parts.empty()) {
+    const toml::node* given = t.find("constituent");
+    fail(given ? given : t.where(), t.path("constituent"),
+         fmt::format("{} (a solid mixture needs at least one constituent: a ground matrix, e.g. "
+                     "neo-hookean, and fibre families; one [[{}]] table each)",
+                     given ? "no constituent given" : "missing required array of tables",
+                     t.path("constituent")));
+  }
+  SolidSpec s{std::string(material::kSolidMixtureType), {}, {}};
+  for (const Table& part : parts)
+    s.constituents.push_back(
+        read_solid_law(part, read_type(part, LawPlace::Constituent, "constituent law")));
+  material::create_law(s, t.path()); // the mixture's own checks (stiffness at zero strain)
   return s;
 }
 
@@ -135,7 +203,7 @@ SolidSpec read_mixture_solid(const Table& t) {
          fmt::format("missing required table [{}] (the solid matrix of a {} material: its type "
                      "(a solid law) and parameters)",
                      t.path("solid"), t.get<std::string>("type").value_or("mixture")));
-  return read_solid_law(*solid, read_type(*solid, false, "solid law"));
+  return read_solid_law(*solid, read_type(*solid, LawPlace::Solid, "solid law"));
 }
 
 MaterialSpec read_mixture(const Table& t, const std::string& type) {
@@ -148,11 +216,13 @@ MaterialSpec read_mixture(const Table& t, const std::string& type) {
   t.allow(keys);
   const material::ParameterValues values = read_mixture_values(t, charged);
   SolidSpec solid = read_mixture_solid(t);
-  MaterialSpec m{type, material::validate_mixture_parameters(charged, values, t.path()),
-                 std::move(solid), std::nullopt};
-  material::make_mixture(charged,
-                         material::create_law(m.solid->type, m.solid->parameters, t.path("solid")),
-                         m.parameters, t.path()); // the mixture's own checks
+  MaterialSpec m{type,
+                 material::validate_mixture_parameters(charged, values, t.path()),
+                 std::move(solid),
+                 std::nullopt,
+                 {}};
+  material::make_mixture(charged, material::create_law(*m.solid, t.path("solid")), m.parameters,
+                         t.path()); // the mixture's own checks
   return m;
 }
 
@@ -171,7 +241,7 @@ std::optional<Real> read_density(const Table& t, const CaseSpec& spec) {
 }
 
 MaterialSpec read_material(const Table& t, const CaseSpec& spec) {
-  const std::string type = read_type(t, true, "material type");
+  const std::string type = read_type(t, LawPlace::Material, "material type");
   if (std::find(std::begin(kMixtureTypes), std::end(kMixtureTypes), type) !=
       std::end(kMixtureTypes)) {
     if (spec.is_explicit())
@@ -185,7 +255,8 @@ MaterialSpec read_material(const Table& t, const CaseSpec& spec) {
                      "is a solid law: give its parameters in [{}] itself)",
                      t.path("type"), type, t.path()));
   SolidSpec s = read_solid_law(t, type, {"density"});
-  return {std::move(s.type), std::move(s.parameters), std::nullopt, read_density(t, spec)};
+  return {std::move(s.type), std::move(s.parameters), std::nullopt, read_density(t, spec),
+          std::move(s.constituents)};
 }
 
 CurveSpec read_curve(const Table& t) {

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "trifem/dofs/load_curve.hpp"
+#include "trifem/material/registry.hpp"
 #include "trifem/material/schema.hpp"
 #include "trifem/mesh/box.hpp"
 
@@ -30,11 +31,10 @@ struct GmshMeshSpec {
   std::map<std::string, std::string> materials;
 };
 
-/// A solid law and its parameters ([materials.<name>] or [materials.<name>.solid]).
-struct SolidSpec {
-  std::string type;
-  material::ParameterValues parameters;
-};
+/// A solid law and its parameters ([materials.<name>] or [materials.<name>.solid]), or a
+/// "solid-mixture" and its constituents ([[<table>.constituent]], each a law with its
+/// parameters). material::create_law(spec, context) makes the law.
+using SolidSpec = material::LawSpec;
 
 /// [materials.<name>]: a solid law, or a "biphasic"/"triphasic" mixture whose solid matrix is
 /// the sub-table [materials.<name>.solid]. For mixtures, `parameters` holds the mixture keys of
@@ -49,7 +49,12 @@ struct MaterialSpec {
   /// Mass density ρ [t/mm³] of a solid-law material (optional key, > 0); required in
   /// dynamic-explicit analyses, unused by quasi-static ones.
   std::optional<Real> density;
+  /// The constituents of a solid-law material of type "solid-mixture" ([[<name>.constituent]]);
+  /// empty otherwise.
+  std::vector<SolidSpec> constituents;
   bool is_mixture() const { return type == "biphasic" || type == "triphasic"; }
+  /// The solid law of a material that is not a mixture (type, parameters, constituents).
+  SolidSpec solid_law() const { return {type, parameters, constituents}; }
 };
 
 /// [curves.<name>]

@@ -2,11 +2,13 @@
 #include "trifem/material/registry.hpp"
 
 #include "trifem/core/error.hpp"
+#include "trifem/material/fibre_exp_pow.hpp"
 #include "trifem/material/holmes_mow.hpp"
 #include "trifem/material/mooney_rivlin.hpp"
 #include "trifem/material/neo_hookean.hpp"
 #include "trifem/material/ogden.hpp"
 #include "trifem/material/saint_venant_kirchhoff.hpp"
+#include "trifem/material/solid_mixture.hpp"
 
 namespace trifem::material {
 namespace {
@@ -47,13 +49,27 @@ const std::vector<LawEntry>& registered_laws() {
   return laws;
 }
 
+const std::vector<LawEntry>& constituent_laws() {
+  static const std::vector<LawEntry> laws = [] {
+    ParameterValues fibre = {{"ksi", 5.0}, {"alpha", 1.0}, {"beta", 2.5}};
+    set_vector(fibre, "fibre", Vec3(1.0, 0.0, 0.0));
+    return std::vector<LawEntry>{
+        entry<FibreExpPow>("fibre-exp-pow",
+                           "tension-only fibre, W = ksi/(alpha beta) (exp(alpha (I_n-1)^beta) - 1)",
+                           fibre),
+    };
+  }();
+  return laws;
+}
+
 const LawEntry& find_law(const std::string& type, const std::string& context) {
   std::string known;
-  for (const auto& law : registered_laws()) {
-    if (law.type == type)
-      return law;
-    known += (known.empty() ? "" : ", ") + law.type;
-  }
+  for (const auto* laws : {&registered_laws(), &constituent_laws()})
+    for (const auto& law : *laws) {
+      if (law.type == type)
+        return law;
+      known += (known.empty() ? "" : ", ") + law.type;
+    }
   throw InputError(fmt::format("{}.type = '{}': unknown material type (expected one of: {})",
                                context, type, known));
 }
@@ -65,6 +81,28 @@ std::unique_ptr<ElasticLaw> create_law(const std::string& type, const ParameterV
   if (law.check)
     law.check(checked, context);
   return law.make(checked);
+}
+
+std::unique_ptr<ElasticLaw> create_law(const LawSpec& spec, const std::string& context) {
+  if (spec.type != kSolidMixtureType) {
+    TRIFEM_CHECK(spec.constituents.empty(),
+                 "{}.constituent: only a {} has constituents ({}.type = '{}')", context,
+                 kSolidMixtureType, context, spec.type);
+    return create_law(spec.type, spec.parameters, context);
+  }
+  TRIFEM_CHECK(spec.parameters.empty(), "{}.{}: unknown key (a {} has only constituents)", context,
+               spec.parameters.empty() ? "" : spec.parameters.begin()->first, kSolidMixtureType);
+  std::vector<std::shared_ptr<const ElasticLaw>> parts;
+  for (std::size_t i = 0; i < spec.constituents.size(); ++i) {
+    const LawSpec& part = spec.constituents[i];
+    const std::string where = fmt::format("{}.constituent[{}]", context, i + 1);
+    TRIFEM_CHECK(part.type != kSolidMixtureType,
+                 "{}.type = '{}': nested solid mixtures are not supported (list the inner "
+                 "mixture's constituents in the outer one)",
+                 where, part.type);
+    parts.push_back(create_law(part, where));
+  }
+  return std::make_unique<SolidMixture>(std::move(parts), context);
 }
 
 } // namespace trifem::material

@@ -3,8 +3,11 @@
 
 #include "trifem/core/error.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
+#include <set>
 
 namespace trifem::material {
 namespace {
@@ -15,6 +18,14 @@ std::string bound(Real v) {
   if (v <= -1e300)
     return "-inf";
   return fmt::format("{}", v);
+}
+
+/// The keys under which `p` is stored in ParameterValues: its key, or a Vector's three.
+std::set<std::string> stored_keys(const ParameterSchema& p) {
+  if (p.kind == ParameterKind::Scalar)
+    return {p.key};
+  const auto keys = vector_keys(p.key);
+  return {keys.begin(), keys.end()};
 }
 
 std::string known_keys(const std::vector<ParameterSchema>& schema) {
@@ -105,28 +116,56 @@ std::string Range::describe() const {
                      hi_open || hi_inf ? ")" : "]");
 }
 
+std::array<std::string, 3> vector_keys(std::string_view key) {
+  return {fmt::format("{}.x", key), fmt::format("{}.y", key), fmt::format("{}.z", key)};
+}
+
+void set_vector(ParameterValues& values, std::string_view key, const Vec3& v) {
+  const auto keys = vector_keys(key);
+  for (int d = 0; d < 3; ++d)
+    values[keys[d]] = v[d];
+}
+
+Vec3 vector_value(const ParameterValues& values, std::string_view key) {
+  const auto keys = vector_keys(key);
+  Vec3 v;
+  for (int d = 0; d < 3; ++d) {
+    const auto it = values.find(keys[d]);
+    TRIFEM_VERIFY(it != values.end(), "vector parameter '{}' has no component '{}'", key, keys[d]);
+    v[d] = it->second;
+  }
+  return v;
+}
+
 ParameterValues validate_parameters(const std::vector<ParameterSchema>& schema,
                                     const ParameterValues& values, const std::string& context) {
   for (const auto& [key, value] : values) {
     bool known = false;
     for (const auto& p : schema)
-      known = known || p.key == key;
+      known = known || stored_keys(p).contains(key);
     TRIFEM_CHECK(known, "{}.{}: unknown parameter (expected one of: {})", context, key,
                  known_keys(schema));
   }
   ParameterValues checked;
   for (const auto& p : schema) {
-    const auto it = values.find(p.key);
-    if (it == values.end()) {
-      TRIFEM_CHECK(p.default_value.has_value(), "{}.{}: missing required parameter ({}{}{})",
-                   context, p.key, p.doc, p.unit.empty() ? "" : ", ", p.unit);
+    const std::set<std::string> keys = stored_keys(p);
+    const auto given = static_cast<std::size_t>(
+        std::count_if(keys.begin(), keys.end(), [&](const auto& k) { return values.contains(k); }));
+    if (given == 0) {
+      TRIFEM_CHECK(p.default_value.has_value() && p.kind == ParameterKind::Scalar,
+                   "{}.{}: missing required parameter ({}{}{})", context, p.key, p.doc,
+                   p.unit.empty() ? "" : ", ", p.unit);
       checked[p.key] = *p.default_value;
       continue;
     }
-    TRIFEM_CHECK(p.range.contains(it->second), "{}.{} = {}: out of range, expected a value in {}{}",
-                 context, p.key, it->second, p.range.describe(),
-                 p.unit.empty() ? "" : " " + p.unit);
-    checked[p.key] = it->second;
+    TRIFEM_CHECK(given == keys.size(), "{}.{}: incomplete vector (expected the 3 components {})",
+                 context, p.key, fmt::join(keys, ", "));
+    for (const std::string& key : keys) {
+      const Real v = values.at(key);
+      TRIFEM_CHECK(p.range.contains(v), "{}.{} = {}: out of range, expected a value in {}{}",
+                   context, key, v, p.range.describe(), p.unit.empty() ? "" : " " + p.unit);
+      checked[key] = v;
+    }
   }
   return checked;
 }

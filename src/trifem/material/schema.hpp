@@ -3,7 +3,9 @@
 #pragma once
 
 #include "trifem/core/types.hpp"
+#include "trifem/tensor/tensor.hpp"
 
+#include <array>
 #include <map>
 #include <optional>
 #include <string>
@@ -31,13 +33,19 @@ struct Range {
   std::string describe() const;
 };
 
-/// Schema of one scalar parameter.
+/// What a parameter holds: one number, or a vector of three numbers (e.g. a fibre direction).
+enum class ParameterKind { Scalar, Vector };
+
+/// Schema of one parameter. A Vector parameter `key` is written `key = [x, y, z]` in a case
+/// file and stored in ParameterValues as the three numbers of vector_keys(key); `range` applies
+/// to each component, and it is always required (no default).
 struct ParameterSchema {
   std::string key;                   ///< key in the case file
   std::string unit;                  ///< unit in the mm-N-s-MPa system (empty: dimensionless)
   std::string doc;                   ///< one-line description
-  Range range;                       ///< valid values
-  std::optional<Real> default_value; ///< absent: required
+  Range range;                       ///< valid values (of each component of a Vector)
+  std::optional<Real> default_value; ///< absent: required (always absent for a Vector)
+  ParameterKind kind = ParameterKind::Scalar;
 };
 
 /// A unit in which values of a quantity are often written by mistake, and the factor that
@@ -77,11 +85,23 @@ const Plausibility* parameter_plausibility(std::string_view key);
 /// 0.01 mmol/mm^3); if it is in M (mol/L), write 0.00015".
 std::string implausibility(const Plausibility& p, Real value, std::string_view unit);
 
-/// Parameter values by key, as read from a case file.
+/// Parameter values by key, as read from a case file (a Vector parameter as its three
+/// component keys, see vector_keys).
 using ParameterValues = std::map<std::string, Real>;
 
-/// Validates `values` against `schema`: unknown keys, missing required keys and values outside
-/// their range are InputErrors naming `context.key`. Returns the values with defaults filled in.
+/// The keys under which the components of the Vector parameter `key` are stored:
+/// "<key>.x", "<key>.y", "<key>.z".
+std::array<std::string, 3> vector_keys(std::string_view key);
+
+/// Stores `v` as the Vector parameter `key` of `values`.
+void set_vector(ParameterValues& values, std::string_view key, const Vec3& v);
+
+/// The Vector parameter `key` of validated `values` (LogicError if a component is absent).
+Vec3 vector_value(const ParameterValues& values, std::string_view key);
+
+/// Validates `values` against `schema`: unknown keys, missing required keys (for a Vector, any
+/// of its three components) and values outside their range are InputErrors naming
+/// `context.key`. Returns the values with defaults filled in.
 ParameterValues validate_parameters(const std::vector<ParameterSchema>& schema,
                                     const ParameterValues& values, const std::string& context);
 

@@ -26,7 +26,7 @@ void add_materials(const io::CaseSpec& spec, const mesh::Mesh& mesh,
       const std::string key = "materials." + name;
       TRIFEM_CHECK(!m.is_mixture() && m.density.has_value(),
                    "{}: dynamic-explicit analyses need a solid law with a density", key);
-      model.materials.push_back({material::create_law(m.type, m.parameters, key), *m.density});
+      model.materials.push_back({material::create_law(m.solid_law(), key), *m.density});
       names.push_back(name);
     }
     for (Index c : with_context("mesh", [&] { return mesh.cell_block(block); }))

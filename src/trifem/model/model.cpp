@@ -22,10 +22,10 @@ std::vector<CellMaterial> cell_materials(const io::CaseSpec& spec, const mesh::M
     const std::string ctx = "materials." + name;
     CellMaterial cm;
     if (!m.is_mixture()) {
-      cm.solid = material::create_law(m.type, m.parameters, ctx);
+      cm.solid = material::create_law(m.solid_law(), ctx);
     } else {
       std::shared_ptr<const material::ElasticLaw> solid =
-          material::create_law(m.solid->type, m.solid->parameters, ctx + ".solid");
+          material::create_law(*m.solid, ctx + ".solid");
       cm.mixture = std::make_shared<material::MixtureProperties>(
           material::make_mixture(m.type == "triphasic", std::move(solid), m.parameters, ctx));
     }

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Tests of the TOML case reader: a complete case, defaults, and one test per kind of bad input.
+#include "bad_input.hpp"
 #include "trifem/core/error.hpp"
 #include "trifem/io/case_reader.hpp"
 
@@ -22,12 +23,12 @@ using trifem::io::MaterialSpec;
 using trifem::io::parse_case;
 using trifem::io::read_case;
 
+using namespace trifem::test;
+
 namespace {
 
 const fs::path kData = TRIFEM_TEST_DATA_DIR;
 const fs::path kInputDoc = fs::path(TRIFEM_SOURCE_DIR) / "docs" / "input.md";
-/// Name under which in-memory cases are parsed.
-const fs::path kMemoryFile = "memory/case.toml";
 
 /// A small valid case that the bad-input tests modify.
 const std::string kBase = R"(
@@ -76,28 +77,9 @@ type = "neo-hookean"
 E = 1.0
 )";
 
-/// `text` with the first occurrence of `from` replaced by `to` (which must exist).
-std::string replaced_in(std::string text, const std::string& from, const std::string& to) {
-  const auto at = text.find(from);
-  EXPECT_NE(at, std::string::npos) << "'" << from << "' is not in the case";
-  if (at != std::string::npos)
-    text.replace(at, from.size(), to);
-  return text;
-}
-
 /// kBase with the first occurrence of `from` replaced by `to` (which must exist).
 std::string replaced(const std::string& from, const std::string& to) {
   return replaced_in(kBase, from, to);
-}
-
-/// The message of the InputError that reading `text` throws ("" if none).
-std::string error_of(const std::string& text, const fs::path& file = kMemoryFile) {
-  try {
-    parse_case(text, file);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
 }
 
 /// Writes `bytes` to a fresh file in the temporary directory and returns its path.
@@ -452,25 +434,10 @@ TEST(CaseReader, BinaryFileWithInvalidUtf8) {
 // Bad input: each case must fail with a message that starts with the file name and contains
 // every listed fragment (the key path, the offending value, what was expected).
 
-struct BadCase {
-  std::string name;
-  std::string text;
-  std::vector<std::string> fragments;
-};
-
-void PrintTo(const BadCase& c, std::ostream* os) {
-  *os << c.name;
-}
-
 class BadInput : public testing::TestWithParam<BadCase> {};
 
 TEST_P(BadInput, FailsNamingFileAndKey) {
-  const BadCase& c = GetParam();
-  const std::string m = error_of(c.text);
-  ASSERT_FALSE(m.empty()) << "no InputError for " << c.name;
-  EXPECT_EQ(m.rfind(kMemoryFile.string() + ": ", 0), 0u) << m;
-  for (const auto& fragment : c.fragments)
-    EXPECT_NE(m.find(fragment), std::string::npos) << "'" << fragment << "' not in: " << m;
+  expect_fails_naming(GetParam());
 }
 
 const std::vector<BadCase> kBadCases = {
@@ -633,10 +600,7 @@ const std::vector<BadCase> kBadCases = {
      {"materials.hard: expected a table [materials.hard], got an integer"}},
 };
 
-INSTANTIATE_TEST_SUITE_P(CaseReader, BadInput, testing::ValuesIn(kBadCases),
-                         [](const testing::TestParamInfo<BadCase>& info) {
-                           return info.param.name;
-                         });
+INSTANTIATE_TEST_SUITE_P(CaseReader, BadInput, testing::ValuesIn(kBadCases), bad_case_name);
 
 /// kBase + kCartilage with `from` replaced by `to`.
 std::string cartilage_with(const std::string& from, const std::string& to) {
@@ -847,10 +811,7 @@ const std::vector<BadCase> kMixtureBadCases = {
       "bath_concentration, bath_activity, bath_osmotic)"}},
 };
 
-INSTANTIATE_TEST_SUITE_P(Mixture, BadInput, testing::ValuesIn(kMixtureBadCases),
-                         [](const testing::TestParamInfo<BadCase>& info) {
-                           return info.param.name;
-                         });
+INSTANTIATE_TEST_SUITE_P(Mixture, BadInput, testing::ValuesIn(kMixtureBadCases), bad_case_name);
 
 /// Strain-dependent laws: permeability as a sub-table, d_plus as an inline table (defaults of
 /// the laws filled in), d_minus as a number (constant law).
@@ -982,10 +943,7 @@ const std::vector<BadCase> kLimitCases = {
      {"2.727e+07 nodes and 2.7e+07 cells, about 3.813e+08 equations; a run needs at least"}},
 };
 
-INSTANTIATE_TEST_SUITE_P(Limits, BadInput, testing::ValuesIn(kLimitCases),
-                         [](const testing::TestParamInfo<BadCase>& info) {
-                           return info.param.name;
-                         });
+INSTANTIATE_TEST_SUITE_P(Limits, BadInput, testing::ValuesIn(kLimitCases), bad_case_name);
 
 TEST(CaseReader, LongRunsWithinTheLimitsAreAccepted) {
   const CaseSpec c =

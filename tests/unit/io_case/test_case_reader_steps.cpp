@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // [[step]] tables: time keys per step (end_time or duration), step-level conditions and loads
 // with their own key paths, and the errors of bad steps.
+#include "bad_input.hpp"
 #include "trifem/core/error.hpp"
 #include "trifem/io/case_reader.hpp"
 
@@ -9,6 +10,8 @@
 using trifem::InputError;
 using trifem::io::CaseSpec;
 using trifem::io::parse_case;
+
+using namespace trifem::test;
 
 namespace {
 
@@ -52,15 +55,6 @@ surface = "block.xmax"
 value = 0.01
 )";
 
-std::string error_of(const std::string& text) {
-  try {
-    parse_case(text, "memory/case.toml");
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
-
 TEST(CaseReaderSteps, ReadsTimeConditionsAndLoadsPerStep) {
   const CaseSpec c = parse_case(kTwoSteps, "memory/case.toml");
   ASSERT_EQ(c.steps.size(), 2u);
@@ -80,22 +74,13 @@ TEST(CaseReaderSteps, ReadsTimeConditionsAndLoadsPerStep) {
   EXPECT_EQ(c.time.end_time, 15.0) << "the run spans every step";
 }
 
-struct BadStep {
-  std::string name;
-  std::string text;
-  std::vector<std::string> fragments;
-};
-
-class BadSteps : public testing::TestWithParam<BadStep> {};
+class BadSteps : public testing::TestWithParam<BadCase> {};
 
 TEST_P(BadSteps, FailNamingTheStepKey) {
-  const std::string m = error_of(GetParam().text);
-  ASSERT_FALSE(m.empty()) << "no error for " << GetParam().name;
-  for (const auto& f : GetParam().fragments)
-    EXPECT_NE(m.find(f), std::string::npos) << "'" << f << "' not in: " << m;
+  expect_fails_naming(GetParam());
 }
 
-const std::vector<BadStep> kBadSteps = {
+const std::vector<BadCase> kBadSteps = {
     {"time_and_steps", kTwoSteps + "[time]\nend_time = 1.0\ndt = 0.1\n", {"time", "in each step"}},
     {"end_before_previous",
      kModel + "[[step]]\nend_time = 10.0\ndt = 1.0\n[[step]]\nend_time = 5.0\ndt = 1.0\n",
@@ -117,7 +102,6 @@ const std::vector<BadStep> kBadSteps = {
      {"step[2].name = 'a'", "duplicate step name"}},
 };
 
-INSTANTIATE_TEST_SUITE_P(Steps, BadSteps, testing::ValuesIn(kBadSteps),
-                         [](const auto& info) { return info.param.name; });
+INSTANTIATE_TEST_SUITE_P(Steps, BadSteps, testing::ValuesIn(kBadSteps), bad_case_name);
 
 } // namespace

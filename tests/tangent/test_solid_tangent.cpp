@@ -2,6 +2,7 @@
 // Finite-difference checks of element tangents at random deformed states on distorted cells.
 #include "trifem/material/registry.hpp"
 #include "trifem/mesh/box.hpp"
+#include "trifem/physics/mean_dilatation_kernel.hpp"
 #include "trifem/physics/solid_kernel.hpp"
 #include "trifem/physics/surface_load_term.hpp"
 
@@ -36,7 +37,97 @@ Eigen::MatrixXd fd_jacobian(F&& residual, Eigen::VectorXd u, Real h) {
   return K;
 }
 
+fe::HexCoords as_coords(const Eigen::VectorXd& u) {
+  fe::HexCoords U;
+  for (int a = 0; a < 8; ++a)
+    U.row(a) = u.segment<3>(3 * a).transpose();
+  return U;
+}
+
+/// Π(u) = Σ_q W(C̄_q) w_q of the mean-dilatation element, computed directly from its
+/// definition C̄ = (J̄/J)^(2/3) C, J̄ = v/V (independent of the kernel's force and tangent).
+Real mean_dilatation_energy(const fe::HexGeometry& geo, const fe::HexCoords& u,
+                            const material::ElasticLaw& law) {
+  Real V = 0.0, v = 0.0;
+  for (int q = 0; q < 8; ++q) {
+    V += geo.dV[q];
+    v += physics::deformation_gradient(geo.dN_dX[q], u).determinant() * geo.dV[q];
+  }
+  Real energy = 0.0;
+  for (int q = 0; q < 8; ++q) {
+    const Mat3 F = physics::deformation_gradient(geo.dN_dX[q], u);
+    const Real scale = std::pow(v / V / F.determinant(), 2.0 / 3.0);
+    energy += law.energy(scale * F.transpose() * F) * geo.dV[q];
+  }
+  return energy;
+}
+
 } // namespace
+
+TEST(MeanDilatationHex8, ForceIsTheGradientOfThePotentialAndTangentItsHessian) {
+  for (const auto& law : material::registered_laws()) {
+    auto m = material::create_law(law.type, law.example, "m");
+    for (unsigned seed : {21u, 22u, 23u}) {
+      const auto geo = fe::hex8_geometry(distorted_unit_cube(seed));
+      ASSERT_TRUE(geo.has_value());
+      std::srand(seed + 100);
+      const Eigen::VectorXd u0 = 0.12 * Eigen::VectorXd::Random(24);
+      auto force = [&](const Eigen::VectorXd& u) {
+        physics::HexVector f;
+        EXPECT_TRUE(physics::mean_dilatation_hex8(*geo, as_coords(u), *m, f, nullptr));
+        return Eigen::VectorXd(f);
+      };
+      physics::HexVector f;
+      physics::HexMatrix K;
+      ASSERT_TRUE(physics::mean_dilatation_hex8(*geo, as_coords(u0), *m, f, &K));
+      EXPECT_LE((f - force(u0)).norm(), 1e-13 * f.norm());
+      // f = dΠ/du by central differences of the independently computed potential
+      const Real h = 1e-6;
+      Eigen::VectorXd f_fd(24);
+      for (int j = 0; j < 24; ++j) {
+        Eigen::VectorXd up = u0, um = u0;
+        up[j] += h;
+        um[j] -= h;
+        f_fd[j] = (mean_dilatation_energy(*geo, as_coords(up), *m) -
+                   mean_dilatation_energy(*geo, as_coords(um), *m)) /
+                  (2 * h);
+      }
+      EXPECT_LE((f - f_fd).norm() / f.norm(), 1e-6) << law.type << " seed " << seed;
+      const Eigen::MatrixXd K_fd = fd_jacobian(force, u0, h);
+      EXPECT_LE((K - K_fd).norm() / K.norm(), 1e-6) << law.type << " seed " << seed;
+      EXPECT_LE((K - K.transpose()).norm() / K.norm(), 1e-12) << law.type << " seed " << seed;
+    }
+  }
+}
+
+TEST(MeanDilatationHex8, EqualsTheDisplacementElementUnderHomogeneousDeformation) {
+  // J is uniform, so J̄ = J, F̄ = F: force, tangent and stress equal the displacement element's.
+  auto m = material::create_law("neo-hookean", {{"E", 3.0}, {"nu", 0.45}}, "m");
+  const auto geo = fe::hex8_geometry(distorted_unit_cube(31));
+  ASSERT_TRUE(geo.has_value());
+  Mat3 H;
+  H << 0.10, 0.03, -0.02, 0.01, -0.08, 0.04, 0.02, 0.05, 0.06;
+  fe::HexCoords X = distorted_unit_cube(31), U;
+  for (int a = 0; a < 8; ++a)
+    U.row(a) = (H * X.row(a).transpose()).transpose();
+  physics::HexVector f1, f2;
+  physics::HexMatrix K1, K2;
+  ASSERT_TRUE(physics::solid_hex8(*geo, U, *m, f1, &K1));
+  ASSERT_TRUE(physics::mean_dilatation_hex8(*geo, U, *m, f2, &K2));
+  EXPECT_LE((f1 - f2).norm(), 1e-12 * f1.norm());
+  // the tangents differ by design (the mean-dilatation one is the Hessian of its own
+  // potential), but their action on a homogeneous increment is the same
+  Mat3 dH;
+  dH << 0.3, -0.1, 0.2, 0.05, 0.1, -0.2, 0.1, 0.0, -0.3;
+  Eigen::VectorXd du(24);
+  for (int a = 0; a < 8; ++a)
+    du.segment<3>(3 * a) = dH * X.row(a).transpose();
+  EXPECT_LE((K1 * du - K2 * du).norm(), 1e-12 * (K1 * du).norm());
+  const physics::CellStress s1 = physics::solid_hex8_stress(*geo, U, *m);
+  const physics::CellStress s2 = physics::mean_dilatation_hex8_stress(*geo, U, *m);
+  EXPECT_LE((s1.cauchy - s2.cauchy).norm(), 1e-12 * s1.cauchy.norm());
+  EXPECT_NEAR(s1.J, s2.J, 1e-14);
+}
 
 TEST(SolidHex8, TangentMatchesFiniteDifferences) {
   for (const auto& law : material::registered_laws()) {

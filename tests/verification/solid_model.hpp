@@ -21,6 +21,7 @@ struct SolidModel {
   std::shared_ptr<const material::ElasticLaw> law;
   std::vector<dofs::DirichletCondition> conditions;
   std::vector<std::unique_ptr<physics::Term>> loads;
+  physics::SolidElement element = physics::SolidElement::Displacement; ///< of every cell
   const physics::SolidTerm* solid = nullptr;
   std::unique_ptr<assembly::FeProblem> problem;
 
@@ -48,7 +49,8 @@ struct SolidModel {
     for (Index c = 0; c < mesh.num_cells(); ++c)
       cells[c] = c;
     std::vector<std::unique_ptr<physics::Term>> terms;
-    auto s = std::make_unique<physics::SolidTerm>(mesh, dofs, u, cells, laws);
+    auto s = std::make_unique<physics::SolidTerm>(
+        mesh, dofs, u, cells, laws, std::vector<physics::SolidElement>(cells.size(), element));
     solid = s.get();
     terms.push_back(std::move(s));
     for (auto& l : loads)

@@ -240,6 +240,19 @@ std::optional<Real> read_density(const Table& t, const CaseSpec& spec) {
   return std::nullopt;
 }
 
+/// The `element` key of the solid-law material `t` (quasi-static analyses only).
+SolidElementSpec read_solid_element(const Table& t, const CaseSpec& spec) {
+  static const Options<SolidElementSpec> kinds = {
+      {"auto", SolidElementSpec::Auto},
+      {"displacement", SolidElementSpec::Displacement},
+      {"mean-dilatation", SolidElementSpec::MeanDilatation}};
+  if (spec.is_explicit() && t.find("element"))
+    fail(t.find("element"), t.path("element"),
+         "not used in dynamic-explicit analyses (they enforce near-incompressibility with the "
+         "cell multipliers of [explicit]); remove the key");
+  return t.choice("element", kinds, std::optional(SolidElementSpec::Auto), "element");
+}
+
 MaterialSpec read_material(const Table& t, const CaseSpec& spec) {
   const std::string type = read_type(t, LawPlace::Material, "material type");
   if (std::find(std::begin(kMixtureTypes), std::end(kMixtureTypes), type) !=
@@ -254,9 +267,9 @@ MaterialSpec read_material(const Table& t, const CaseSpec& spec) {
          fmt::format("only biphasic and triphasic materials have a [solid] sub-table ({} = '{}' "
                      "is a solid law: give its parameters in [{}] itself)",
                      t.path("type"), type, t.path()));
-  SolidSpec s = read_solid_law(t, type, {"density"});
-  return {std::move(s.type), std::move(s.parameters), std::nullopt, read_density(t, spec),
-          std::move(s.constituents)};
+  SolidSpec s = read_solid_law(t, type, {"density", "element"});
+  return {std::move(s.type),     std::move(s.parameters),   std::nullopt,
+          read_density(t, spec), std::move(s.constituents), read_solid_element(t, spec)};
 }
 
 CurveSpec read_curve(const Table& t) {

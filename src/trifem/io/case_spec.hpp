@@ -36,6 +36,13 @@ struct GmshMeshSpec {
 /// parameters). material::create_law(spec, context) makes the law.
 using SolidSpec = material::LawSpec;
 
+/// The hex8 formulation of a solid-law material ([materials.X] element = ...).
+enum class SolidElementSpec {
+  Auto,           ///< mean dilatation if the law is nearly incompressible, else displacement
+  Displacement,   ///< "displacement"
+  MeanDilatation, ///< "mean-dilatation"
+};
+
 /// [materials.<name>]: a solid law, or a "biphasic"/"triphasic" mixture whose solid matrix is
 /// the sub-table [materials.<name>.solid]. For mixtures, `parameters` holds the mixture keys of
 /// material::mixture_schema() (fixed_charge_basis "water"/"tissue" is stored as 0/1), with the
@@ -52,6 +59,8 @@ struct MaterialSpec {
   /// The constituents of a solid-law material of type "solid-mixture" ([[<name>.constituent]]);
   /// empty otherwise.
   std::vector<SolidSpec> constituents;
+  /// The element of a solid-law material in quasi-static analyses (key `element`).
+  SolidElementSpec element = SolidElementSpec::Auto;
   bool is_mixture() const { return type == "biphasic" || type == "triphasic"; }
   /// The solid law of a material that is not a mixture (type, parameters, constituents).
   SolidSpec solid_law() const { return {type, parameters, constituents}; }

@@ -13,6 +13,23 @@
 #include <set>
 
 namespace trifem::model {
+
+physics::SolidElement solid_element(io::SolidElementSpec requested,
+                                    const material::ElasticLaw& law) {
+  switch (requested) {
+  case io::SolidElementSpec::Displacement:
+    return physics::SolidElement::Displacement;
+  case io::SolidElementSpec::MeanDilatation:
+    return physics::SolidElement::MeanDilatation;
+  case io::SolidElementSpec::Auto:
+    break;
+  }
+  const Real mu = law.shear_modulus();
+  const Real bulk = law.p_wave_modulus() - 4.0 / 3.0 * mu;
+  return bulk >= kNearlyIncompressible * mu ? physics::SolidElement::MeanDilatation
+                                            : physics::SolidElement::Displacement;
+}
+
 namespace {
 
 std::vector<CellMaterial> cell_materials(const io::CaseSpec& spec, const mesh::Mesh& mesh,
@@ -23,6 +40,7 @@ std::vector<CellMaterial> cell_materials(const io::CaseSpec& spec, const mesh::M
     CellMaterial cm;
     if (!m.is_mixture()) {
       cm.solid = material::create_law(m.solid_law(), ctx);
+      cm.element = solid_element(m.element, *cm.solid);
     } else {
       std::shared_ptr<const material::ElasticLaw> solid =
           material::create_law(*m.solid, ctx + ".solid");
@@ -67,6 +85,7 @@ std::vector<std::unique_ptr<physics::Term>>
 bulk_terms(const io::CaseSpec& spec, const std::vector<CellMaterial>& materials, Model& model) {
   std::vector<Index> solid_cells, mixture_cells;
   std::vector<std::shared_ptr<const material::ElasticLaw>> laws;
+  std::vector<physics::SolidElement> elements;
   std::vector<std::shared_ptr<const material::MixtureProperties>> mixtures;
   for (Index c = 0; c < model.mesh.num_cells(); ++c) {
     if (materials[c].mixture) {
@@ -75,12 +94,13 @@ bulk_terms(const io::CaseSpec& spec, const std::vector<CellMaterial>& materials,
     } else {
       solid_cells.push_back(c);
       laws.push_back(materials[c].solid);
+      elements.push_back(materials[c].element);
     }
   }
   std::vector<std::unique_ptr<physics::Term>> terms;
   if (!solid_cells.empty()) {
     auto t = std::make_unique<physics::SolidTerm>(model.mesh, model.dofs, model.fields.u,
-                                                  solid_cells, laws);
+                                                  solid_cells, laws, elements);
     model.solid = t.get();
     terms.push_back(std::move(t));
   }

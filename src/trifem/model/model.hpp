@@ -35,7 +35,15 @@ struct Probe {
 struct CellMaterial {
   std::shared_ptr<const material::ElasticLaw> solid;
   std::shared_ptr<const material::MixtureProperties> mixture;
+  physics::SolidElement element = physics::SolidElement::Displacement; ///< of a solid law
 };
+
+/// The element `auto` chooses for a solid law: mean dilatation when its small-strain bulk
+/// modulus is at least kNearlyIncompressible times its shear modulus (Poisson's ratio ≥ 0.452),
+/// where the displacement element locks; the displacement element otherwise.
+inline constexpr Real kNearlyIncompressible = 10.0;
+physics::SolidElement solid_element(io::SolidElementSpec requested,
+                                    const material::ElasticLaw& law);
 
 /// A [[rigid_body]]: the displacement DOFs of its nodes per component (the first one leads).
 struct RigidBody {
@@ -58,8 +66,8 @@ struct ModelStep {
   Real release_time = 0.0;                          ///< see io::StepSpec
   /// Set when the step begins: the offsets of its relative conditions (per condition, per DOF)
   /// and the released reactions (DOF, force at the step start).
-  std::vector<std::vector<Real>> offsets;
-  std::vector<std::pair<Index, Real>> released;
+  std::vector<std::vector<Real>> offsets = {};
+  std::vector<std::pair<Index, Real>> released = {};
 };
 
 /// Everything a run needs. Owns the mesh and DOF map the problem refers to.

@@ -4,12 +4,7 @@
 #include "trifem/tensor/kinematics.hpp"
 
 namespace trifem::physics {
-namespace {
-
-using BMatrix = Eigen::Matrix<Real, 6, 24>;
-
-/// Nonlinear strain-displacement matrix: {dE} = B {du} (strain-like Voigt rows).
-void fill_b(const Mat3& F, const fe::HexShapeGrad& g, BMatrix& B) {
+void strain_displacement(const Mat3& F, const fe::HexShapeGrad& g, BMatrix& B) {
   for (int a = 0; a < 8; ++a) {
     for (int k = 0; k < 3; ++k) {
       const int c = 3 * a + k;
@@ -23,7 +18,13 @@ void fill_b(const Mat3& F, const fe::HexShapeGrad& g, BMatrix& B) {
   }
 }
 
-} // namespace
+void add_geometric_stiffness(const fe::HexShapeGrad& g, const Mat3& S, Real dV, HexMatrix& K) {
+  const Eigen::Matrix<Real, 8, 8> G = g * S * g.transpose() * dV;
+  for (int a = 0; a < 8; ++a)
+    for (int b = 0; b < 8; ++b)
+      for (int k = 0; k < 3; ++k)
+        K(3 * a + k, 3 * b + k) += G(a, b);
+}
 
 bool solid_hex8(const fe::HexGeometry& geo, const fe::HexCoords& u, const material::ElasticLaw& law,
                 HexVector& f, HexMatrix* K) {
@@ -45,14 +46,10 @@ bool solid_hex8(const fe::HexGeometry& geo, const fe::HexCoords& u, const materi
       continue;
     }
     const material::StressTangent st = law.stress_tangent(C);
-    fill_b(F, g, B);
+    strain_displacement(F, g, B);
     f.noalias() += B.transpose() * voigt::stress(st.S) * dV;
     K->noalias() += B.transpose() * (st.D * dV) * B;
-    const Eigen::Matrix<Real, 8, 8> G = g * st.S * g.transpose() * dV;
-    for (int a = 0; a < 8; ++a)
-      for (int b = 0; b < 8; ++b)
-        for (int k = 0; k < 3; ++k)
-          (*K)(3 * a + k, 3 * b + k) += G(a, b);
+    add_geometric_stiffness(g, st.S, dV, *K);
   }
   return true;
 }

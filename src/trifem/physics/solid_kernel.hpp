@@ -9,11 +9,19 @@ namespace trifem::physics {
 
 using HexVector = Eigen::Matrix<Real, 24, 1>;
 using HexMatrix = Eigen::Matrix<Real, 24, 24>;
+using BMatrix = Eigen::Matrix<Real, 6, 24>;
 
 /// Deformation gradient F = I + sum_a u_a (x) dN_a/dX at one Gauss point.
 inline Mat3 deformation_gradient(const fe::HexShapeGrad& dN_dX, const fe::HexCoords& u) {
   return Mat3::Identity() + u.transpose() * dN_dX;
 }
+
+/// Nonlinear strain-displacement matrix at a point: {dE} = B {du} (strain-like Voigt rows,
+/// node-major DOF columns).
+void strain_displacement(const Mat3& F, const fe::HexShapeGrad& dN_dX, BMatrix& B);
+
+/// Adds the geometric stiffness of the stress S over dV: K_ab += (dN_a . S dN_b) dV I.
+void add_geometric_stiffness(const fe::HexShapeGrad& dN_dX, const Mat3& S, Real dV, HexMatrix& K);
 
 /// Internal force f_a = int F S dN_a/dX dV and, if K is given,
 /// K_ab = int [ (dN_a . S dN_b) I + B_a^T D B_b ] dV (Bonet & Wood eqs 9.13, 9.44).

@@ -2,14 +2,20 @@
 #include "trifem/physics/solid_term.hpp"
 
 #include "trifem/core/error.hpp"
+#include "trifem/physics/mean_dilatation_kernel.hpp"
 
 namespace trifem::physics {
 
 SolidTerm::SolidTerm(const mesh::Mesh& mesh, const dofs::DofMap& dofs, dofs::FieldId displacement,
                      std::vector<Index> cells,
-                     std::vector<std::shared_ptr<const material::ElasticLaw>> laws)
-    : mesh_(mesh), dofs_(dofs), u_(displacement), cells_(std::move(cells)), laws_(std::move(laws)) {
+                     std::vector<std::shared_ptr<const material::ElasticLaw>> laws,
+                     std::vector<SolidElement> elements)
+    : mesh_(mesh), dofs_(dofs), u_(displacement), cells_(std::move(cells)), laws_(std::move(laws)),
+      elements_(std::move(elements)) {
   TRIFEM_VERIFY(cells_.size() == laws_.size(), "one law per cell expected");
+  if (elements_.empty())
+    elements_.assign(cells_.size(), SolidElement::Displacement);
+  TRIFEM_VERIFY(elements_.size() == cells_.size(), "one formulation per cell expected");
   geometry_.reserve(cells_.size());
   for (Index c : cells_) {
     fe::HexCoords X;
@@ -44,8 +50,9 @@ fe::HexCoords SolidTerm::displacements(Index e, const Vector& x) const {
 bool SolidTerm::evaluate(Index e, const EvalState& state, LocalVector& r, LocalMatrix* K) const {
   HexVector f;
   HexMatrix Ke;
-  const bool ok =
-      solid_hex8(geometry_[e], displacements(e, state.x), *laws_[e], f, K ? &Ke : nullptr);
+  const auto kernel =
+      elements_[e] == SolidElement::MeanDilatation ? mean_dilatation_hex8 : solid_hex8;
+  const bool ok = kernel(geometry_[e], displacements(e, state.x), *laws_[e], f, K ? &Ke : nullptr);
   if (!ok)
     return false;
   r = f;
@@ -55,7 +62,9 @@ bool SolidTerm::evaluate(Index e, const EvalState& state, LocalVector& r, LocalM
 }
 
 CellStress SolidTerm::stress(Index e, const Vector& x) const {
-  return solid_hex8_stress(geometry_[e], displacements(e, x), *laws_[e]);
+  const auto stress = elements_[e] == SolidElement::MeanDilatation ? mean_dilatation_hex8_stress
+                                                                   : solid_hex8_stress;
+  return stress(geometry_[e], displacements(e, x), *laws_[e]);
 }
 
 } // namespace trifem::physics

@@ -13,14 +13,21 @@
 
 namespace trifem::physics {
 
+/// The hex8 formulation of a solid cell.
+enum class SolidElement {
+  Displacement,   ///< standard displacement element (locks when nearly incompressible)
+  MeanDilatation, ///< Q1/P0 mean dilatation (mean_dilatation_kernel.hpp)
+};
+
 /// Internal virtual work of hyperelastic hex8 cells. Each cell has a law (shared, immutable).
 class SolidTerm final : public Term {
 public:
-  /// `cells[i]` uses `laws[i]`; reference geometry is computed once here. Throws InputError
-  /// naming the cell if a cell is inverted or degenerate in the reference configuration.
+  /// `cells[i]` uses `laws[i]` and the formulation `elements[i]` (empty: all displacement);
+  /// reference geometry is computed once here. Throws InputError naming the cell if a cell is
+  /// inverted or degenerate in the reference configuration.
   SolidTerm(const mesh::Mesh& mesh, const dofs::DofMap& dofs, dofs::FieldId displacement,
-            std::vector<Index> cells,
-            std::vector<std::shared_ptr<const material::ElasticLaw>> laws);
+            std::vector<Index> cells, std::vector<std::shared_ptr<const material::ElasticLaw>> laws,
+            std::vector<SolidElement> elements = {});
 
   std::string name() const override { return "solid"; }
   Index num_elements() const override { return static_cast<Index>(cells_.size()); }
@@ -40,6 +47,7 @@ private:
   dofs::FieldId u_;
   std::vector<Index> cells_;
   std::vector<std::shared_ptr<const material::ElasticLaw>> laws_;
+  std::vector<SolidElement> elements_;
   std::vector<fe::HexGeometry> geometry_;
 };
 

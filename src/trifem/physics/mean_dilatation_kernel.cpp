@@ -1,0 +1,140 @@
+// SPDX-License-Identifier: MIT
+#include "trifem/physics/mean_dilatation_kernel.hpp"
+
+#include <array>
+#include <cmath>
+
+namespace trifem::physics {
+namespace {
+
+/// Kinematics and modified-deformation stress at one Gauss point.
+struct PointState {
+  Mat3 F, C, Ci;
+  Real J = 1.0, w = 0.0;
+  Real alpha = 1.0;           ///< (J̄/J)^(1/3)
+  material::StressTangent st; ///< S̄ and D̄ at C̄ = α² C
+  Real s = 0.0;               ///< S̄ : C̄
+};
+
+/// The cell's points and its volume averages.
+struct CellState {
+  std::array<PointState, 8> points;
+  Real V = 0.0;    ///< reference volume
+  Real v = 0.0;    ///< current volume
+  Real Jbar = 1.0; ///< v / V
+  Real pbar = 0.0; ///< Σ s w / (3 v): the mean Cauchy pressure-like stress of the cell
+};
+
+/// Fills `cell` at displacement u; false if J <= 0 somewhere. With `tangent` the laws'
+/// tangents are evaluated too.
+bool evaluate_state(const fe::HexGeometry& geo, const fe::HexCoords& u,
+                    const material::ElasticLaw& law, bool tangent, CellState& cell) {
+  for (int q = 0; q < 8; ++q) {
+    PointState& p = cell.points[q];
+    p.F = deformation_gradient(geo.dN_dX[q], u);
+    p.J = p.F.determinant();
+    if (!(p.J > 0.0))
+      return false;
+    p.C = p.F.transpose() * p.F;
+    p.Ci = p.C.inverse();
+    p.w = geo.dV[q];
+    cell.V += p.w;
+    cell.v += p.J * p.w;
+  }
+  cell.Jbar = cell.v / cell.V;
+  Real sum_s = 0.0;
+  for (PointState& p : cell.points) {
+    p.alpha = std::cbrt(cell.Jbar / p.J);
+    const Mat3 Cbar = p.alpha * p.alpha * p.C;
+    if (tangent)
+      p.st = law.stress_tangent(Cbar);
+    else
+      p.st.S = law.stress(Cbar);
+    p.s = (p.st.S.array() * Cbar.array()).sum();
+    sum_s += p.s * p.w;
+  }
+  cell.pbar = sum_s / (3.0 * cell.v);
+  return true;
+}
+
+/// Effective second Piola-Kirchhoff stress T = α² S̄ + (p̄ J − s/3) C⁻¹.
+Mat3 effective_stress(const PointState& p, Real pbar) {
+  return p.alpha * p.alpha * p.st.S + (pbar * p.J - p.s / 3.0) * p.Ci;
+}
+
+/// Adds the exact tangent of f = Σ B^T T w. Per point, ΔT = A ΔE + a ΔJ̄ + b Δp̄ with
+/// ΔJ̄ = Σ j·ΔE and Δp̄ = Σ π·ΔE (docs/theory/solid.md), so that
+/// K = Σ (Bᵀ A B + geometric) w + (Σ Bᵀ a w)(Σ Bᵀ j)ᵀ + (Σ Bᵀ b w)(Σ Bᵀ π)ᵀ.
+void add_tangent(const fe::HexGeometry& geo, const CellState& cell, HexMatrix& K) {
+  const Real Jbar = cell.Jbar, pbar = cell.pbar;
+  const Mat6 I6 = Mat6::Identity();
+  HexVector sum_a = HexVector::Zero(), sum_b = HexVector::Zero();
+  HexVector grad_Jbar = HexVector::Zero(), grad_pbar = HexVector::Zero();
+  Real dpbar_dJbar = 0.0;
+  BMatrix B;
+  for (int q = 0; q < 8; ++q) {
+    const PointState& p = cell.points[q];
+    const Real a2 = p.alpha * p.alpha;
+    const Vec6 c = voigt::stress(p.Ci);                 // C⁻¹ : ΔE = c · ΔE
+    const Vec6 Cv = voigt::strain(p.C);                 // c · Cv = 3
+    const Vec6 S = voigt::stress(p.st.S);               // S̄
+    const Mat6& D = p.st.D;                             // D̄
+    const Vec6 h = D.transpose() * (a2 * Cv) + 2.0 * S; // Δs = α² h · ΔĒ/α²
+    const Mat6 P = I6 - Cv * c.transpose() / 3.0;       // ΔĒ/α² = P ΔE + Cv ΔJ̄/(3 J̄)
+    const Mat3 T = effective_stress(p, pbar);
+    const Mat6 A = a2 * a2 * D * P - (2.0 / 3.0) * a2 * S * c.transpose() +
+                   pbar * p.J * c * c.transpose() - (a2 / 3.0) * c * (h.transpose() * P) -
+                   2.0 * (pbar * p.J - p.s / 3.0) * voigt::symmetric_product(p.Ci);
+    const Vec6 a = (2.0 * a2 * S + a2 * a2 * D * Cv - (a2 / 3.0) * h.dot(Cv) * c) / (3.0 * Jbar);
+    const Vec6 b = p.J * c;
+    const Vec6 j = p.J * p.w / cell.V * c;
+    const Vec6 pi = p.w * a2 / (3.0 * cell.v) * (P.transpose() * h) - pbar * p.w / cell.v * p.J * c;
+    dpbar_dJbar += p.w * a2 * h.dot(Cv) / (9.0 * cell.v * Jbar);
+
+    strain_displacement(p.F, geo.dN_dX[q], B);
+    K.noalias() += B.transpose() * (A * p.w) * B;
+    add_geometric_stiffness(geo.dN_dX[q], T, p.w, K);
+    sum_a.noalias() += B.transpose() * (a * p.w);
+    sum_b.noalias() += B.transpose() * (b * p.w);
+    grad_Jbar.noalias() += B.transpose() * j;
+    grad_pbar.noalias() += B.transpose() * pi;
+  }
+  grad_pbar += dpbar_dJbar * grad_Jbar;
+  K.noalias() += sum_a * grad_Jbar.transpose() + sum_b * grad_pbar.transpose();
+}
+
+} // namespace
+
+bool mean_dilatation_hex8(const fe::HexGeometry& geo, const fe::HexCoords& u,
+                          const material::ElasticLaw& law, HexVector& f, HexMatrix* K) {
+  f.setZero();
+  if (K)
+    K->setZero();
+  CellState cell;
+  if (!evaluate_state(geo, u, law, K != nullptr, cell))
+    return false;
+  BMatrix B;
+  for (int q = 0; q < 8; ++q) {
+    const PointState& p = cell.points[q];
+    strain_displacement(p.F, geo.dN_dX[q], B);
+    f.noalias() += B.transpose() * voigt::stress(effective_stress(p, cell.pbar)) * p.w;
+  }
+  if (K)
+    add_tangent(geo, cell, *K);
+  return true;
+}
+
+CellStress mean_dilatation_hex8_stress(const fe::HexGeometry& geo, const fe::HexCoords& u,
+                                       const material::ElasticLaw& law) {
+  CellState cell;
+  CellStress out;
+  if (!evaluate_state(geo, u, law, false, cell))
+    return {Mat3::Zero(), 0.0}; // inverted: no converged state is (the residual fails there)
+  for (const PointState& p : cell.points)
+    out.cauchy += p.F * effective_stress(p, cell.pbar) * p.F.transpose() * p.w;
+  out.cauchy /= cell.v;
+  out.J = cell.Jbar;
+  return out;
+}
+
+} // namespace trifem::physics

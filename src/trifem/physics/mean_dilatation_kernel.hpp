@@ -1,0 +1,28 @@
+// SPDX-License-Identifier: MIT
+// Locking-free hex8 solid for nearly incompressible materials: the mean-dilatation (Q1/P0
+// three-field) element, condensed per cell, for any hyperelastic law.
+#pragma once
+
+#include "trifem/physics/solid_kernel.hpp"
+
+namespace trifem::physics {
+
+/// Mean-dilatation hex8 (Simo, Taylor & Pister 1985; Q1/P0/P0 Hu-Washizu with the cell
+/// pressure and dilatation condensed). Every Gauss point sees the modified deformation
+///   F̄ = (J̄/J)^(1/3) F,   J̄ = v/V (current over reference cell volume),
+/// so that the volume change is constant over the cell while the isochoric part of F is the
+/// displacement element's. The element is the potential Π(u) = Σ_q W(C̄_q) w_q, hence its
+/// tangent is symmetric. For an uncoupled law W = W_iso(C̃) + U(J) this is W_iso(C̃) + U(J̄)
+/// exactly; for coupled laws it is the F̄ form of the same three-field principle.
+/// Internal force f = Σ_q B_q^T T_q w_q with the effective second Piola-Kirchhoff stress
+///   T = α² S̄ + (p̄ J − s/3) C⁻¹,  α = (J̄/J)^(1/3),  s = S̄ : C̄,  p̄ = Σ_q s_q w_q / (3 v),
+/// and K its exact derivative (docs/theory/solid.md). DOF order as solid_hex8. Returns false
+/// if J <= 0 at a Gauss point.
+bool mean_dilatation_hex8(const fe::HexGeometry& geo, const fe::HexCoords& u,
+                          const material::ElasticLaw& law, HexVector& f, HexMatrix* K);
+
+/// Volume-averaged Cauchy stress (1/v) Σ_q F T Fᵀ w_q and J̄ of a mean-dilatation hex8.
+CellStress mean_dilatation_hex8_stress(const fe::HexGeometry& geo, const fe::HexCoords& u,
+                                       const material::ElasticLaw& law);
+
+} // namespace trifem::physics

@@ -82,8 +82,13 @@ Vector multiplier_pressure(const ed::ExplicitSolver& s) {
 
 } // namespace
 
+Real explicit_output_interval(const io::CaseSpec& spec) {
+  return spec.output.interval_given ? spec.output.interval
+                                    : spec.time.end_time / io::kDefaultOutputCount;
+}
+
 std::vector<StepTarget> explicit_step_targets(const io::CaseSpec& spec) {
-  const Real end = spec.time.end_time, interval = spec.output.interval;
+  const Real end = spec.time.end_time, interval = explicit_output_interval(spec);
   std::vector<StepTarget> targets;
   if (interval > 0.0)
     for (long k = 1; static_cast<Real>(k) * interval < end; ++k)

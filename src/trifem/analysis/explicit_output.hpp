@@ -21,7 +21,11 @@ struct StepTarget {
   bool output = false; ///< an output time (VTU file); otherwise a point of a load curve
 };
 
-/// The times the run must land on, ascending, each > 0: the multiples of output.interval,
+/// The VTU output interval of an explicit run [s]: output.interval if given (0: every step),
+/// otherwise end_time / io::kDefaultOutputCount (about 100 files, the steps landing on them).
+Real explicit_output_interval(const io::CaseSpec& spec);
+
+/// The times the run must land on, ascending, each > 0: the multiples of the output interval,
 /// output.times and time.end_time (the last) as output times, and the points of the load curves
 /// in between (as the quasi-static must points).
 std::vector<StepTarget> explicit_step_targets(const io::CaseSpec& spec);

@@ -112,7 +112,7 @@ void log_time_step(const ed::ExplicitSolver& solver, const io::CaseSpec& spec) {
             t.requested > 0.0 && !t.reduced ? "time.dt" : "stability estimate",
             std::ceil(spec.time.end_time / t.used), spec.time.end_time);
   const double files = std::ceil(spec.time.end_time / t.used);
-  if (spec.output.vtu && spec.output.interval <= 0.0 && files > kManyFiles)
+  if (spec.output.vtu && explicit_output_interval(spec) <= 0.0 && files > kManyFiles)
     log::warn("  output.interval = 0 writes a VTU file every step: about {:.0f} files (set "
               "output.interval)",
               files);
@@ -142,10 +142,10 @@ std::unique_ptr<ed::ExplicitSolver> make_solver(const io::CaseSpec& spec,
 }
 
 /// Steps to every target time in turn; VTU files at the output times (every step if
-/// output.interval = 0), a history row after every step. Stops at the first fatal report.
+/// output.interval = 0 is given), a history row after every step. Stops at the first fatal report.
 void advance(const io::CaseSpec& spec, ed::ExplicitSolver& solver, ExplicitOutput& output,
              RunStats& stats) {
-  const bool every_step = spec.output.interval <= 0.0;
+  const bool every_step = explicit_output_interval(spec) <= 0.0;
   for (const StepTarget& target : explicit_step_targets(spec)) {
     const Real eps = 1e-12 * std::max(target.time, solver.time_step_info().used);
     while (solver.time() < target.time - eps) {

@@ -140,7 +140,8 @@ alpha = 0
 beta = 3
 fibre = [0.0, 0.0, 1.0]
 )";
-  const MaterialSpec& m = parse_case(text, "memory/case.toml").materials.at("cart");
+  const MaterialSpec m =
+      parse_case(text, "memory/case.toml").materials.at("cart"); // a copy: the case is a temporary
   ASSERT_EQ(m.constituents.size(), 2u);
   EXPECT_DOUBLE_EQ(m.constituents[0].parameters.at("nu"), 0.0); // schema default
   EXPECT_DOUBLE_EQ(m.constituents[1].parameters.at("beta"), 3.0);

@@ -181,8 +181,10 @@ std::vector<double> ContactTerm::history() const {
   std::vector<double> out(3 * static_cast<std::size_t>(n), 0.0);
   for (Index k = 0; k < n; ++k) {
     out[3 * k] = committed_active_.flags()[k];
-    out[3 * k + 1] = k < static_cast<Index>(committed_projected_.size()) ? committed_projected_[k] : 0;
-    out[3 * k + 2] = k < static_cast<Index>(committed_pressure_.size()) ? committed_pressure_[k] : 0;
+    out[3 * k + 1] =
+        k < static_cast<Index>(committed_projected_.size()) ? committed_projected_[k] : 0;
+    out[3 * k + 2] =
+        k < static_cast<Index>(committed_pressure_.size()) ? committed_pressure_[k] : 0;
   }
   return out;
 }

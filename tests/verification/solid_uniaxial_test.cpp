@@ -234,6 +234,45 @@ Uniaxial fibre_reinforced_uniaxial(const FibreParameters& f, int axis, Real l) {
   return {fibre_reinforced_principal_stress(f, axis, Vec3(l, t[0], t[1]))[0], t[0], t[1]};
 }
 
+// ---------------------------------------------------------------------------------------------
+// Continuous fibre distribution: neo-Hookean matrix (kE, kNu) + fibre-distribution
+
+/// The solid mixture of the neo-Hookean matrix and a fibre distribution with `parameters`.
+std::shared_ptr<const material::ElasticLaw>
+distribution_reinforced(const material::ParameterValues& parameters) {
+  const material::LawSpec spec{
+      "solid-mixture",
+      {},
+      {{"neo-hookean", {{"E", kE}, {"nu", kNu}}, {}}, {"fibre-distribution", parameters, {}}}};
+  return material::create_law(spec, "materials.cart");
+}
+
+/// Uniaxial stress along x of an orthotropic `law` (diagonal S at diagonal C) from the law
+/// itself: sigma = F S F^T / J at F = diag(l, t_y, t_z), with (t_y, t_z) solving
+/// sigma_yy = sigma_zz = 0 by Newton with central-difference slopes.
+Uniaxial law_uniaxial(const material::ElasticLaw& law, Real l) {
+  const auto principal = [&](const Vec2& t) {
+    const Vec3 stretch(l, t[0], t[1]);
+    const Mat3 S = law.stress(Mat3(stretch.array().square().matrix().asDiagonal()));
+    EXPECT_LE((S - Mat3(S.diagonal().asDiagonal())).norm(), 1e-14 * S.norm()) << "orthotropic";
+    return Vec3((S.diagonal().array() * stretch.array().square()).matrix() / stretch.prod());
+  };
+  const auto lateral = [&](const Vec2& t) { return Vec2(principal(t).tail<2>()); };
+  Vec2 t(1.0, 1.0);
+  for (int it = 0; it < 60; ++it) {
+    const Real h = 1e-7;
+    Mat2 slope;
+    for (int k = 0; k < 2; ++k)
+      slope.col(k) = (lateral(t + h * Vec2::Unit(k)) - lateral(t - h * Vec2::Unit(k))) / (2 * h);
+    const Vec2 step = slope.lu().solve(lateral(t));
+    t -= step;
+    if (step.norm() <= 1e-15)
+      break;
+  }
+  EXPECT_LE(lateral(t).norm(), 1e-14 * kE) << "lateral equilibrium";
+  return {principal(t)[0], t[0], t[1]};
+}
+
 /// max |a - b| / max |b|: the difference of two FE states relative to the displacements.
 Real relative_difference(const Vector& a, const Vector& b) {
   return (a - b).lpNorm<Eigen::Infinity>() / b.lpNorm<Eigen::Infinity>();
@@ -325,4 +364,31 @@ TEST(UniaxialFibreReinforced, AcrossTheFibreStretch0p8) {
     EXPECT_LT(exact.lateral, exact.lateral_z - 1e-3); // and restrains the expansion along y
     run_uniaxial(fibre_reinforced(f, 1), "fibre along y", 0.8, exact);
   }
+}
+
+// A continuous fibre distribution (spherical, and ellipsoidal with semi-axes 2, 1, 0.5 along x,
+// y, z) in a neo-Hookean matrix, stretched by 1.3 and 0.8 along x: the FE state is homogeneous
+// and its stress and lateral stretches are those of the law itself (the rule on the sphere is
+// orthotropic in x, y, z, so the lateral faces stay free of shear).
+TEST(UniaxialFibreReinforced, FibreDistribution) {
+  material::ParameterValues spherical = {{"ksi", 1.0}, {"alpha", 0.0}, {"beta", 2.0}};
+  material::set_vector(spherical, "semi_axes", Vec3(1.0, 1.0, 1.0));
+  material::ParameterValues ellipsoidal = {{"ksi", 2.0}, {"alpha", 0.5}, {"beta", 2.5}};
+  material::set_vector(ellipsoidal, "semi_axes", Vec3(2.0, 1.0, 0.5));
+  for (const auto& parameters : {spherical, ellipsoidal})
+    for (Real stretch : {1.3, 0.8}) {
+      const auto law = distribution_reinforced(parameters);
+      const Uniaxial exact = law_uniaxial(*law, stretch);
+      const Uniaxial matrix = neo_hookean_uniaxial(stretch);
+      // the fibres carry load: along x in tension; in compression they restrain the lateral
+      // expansion
+      EXPECT_GT(std::abs(exact.sigma - matrix.sigma), 0.02 * std::abs(matrix.sigma)) << stretch;
+      if (stretch < 1.0) {
+        EXPECT_LT(exact.lateral, matrix.lateral - 1e-3);
+      }
+      if (parameters.at("semi_axes.z") != 1.0) { // orthotropic: the lateral stretches differ
+        EXPECT_GT(std::abs(exact.lateral - exact.lateral_z), 1e-4) << stretch;
+      }
+      run_uniaxial(law, "fibre distribution", stretch, exact);
+    }
 }

@@ -2,6 +2,7 @@
 #include "trifem/material/registry.hpp"
 
 #include "trifem/core/error.hpp"
+#include "trifem/material/fibre_distribution.hpp"
 #include "trifem/material/fibre_exp_pow.hpp"
 #include "trifem/material/holmes_mow.hpp"
 #include "trifem/material/mooney_rivlin.hpp"
@@ -53,10 +54,16 @@ const std::vector<LawEntry>& constituent_laws() {
   static const std::vector<LawEntry> laws = [] {
     ParameterValues fibre = {{"ksi", 5.0}, {"alpha", 1.0}, {"beta", 2.5}};
     set_vector(fibre, "fibre", Vec3(1.0, 0.0, 0.0));
+    ParameterValues distribution = {{"ksi", 5.0}, {"alpha", 1.0}, {"beta", 2.5}};
+    set_vector(distribution, "semi_axes", Vec3(1.0, 1.0, 1.0));
     return std::vector<LawEntry>{
         entry<FibreExpPow>("fibre-exp-pow",
                            "tension-only fibre, W = ksi/(alpha beta) (exp(alpha (I_n-1)^beta) - 1)",
                            fibre),
+        entry<FibreDistribution>("fibre-distribution",
+                                 "fibre-exp-pow fibres in all directions, mean weighted by a "
+                                 "spherical or ellipsoidal density",
+                                 distribution),
     };
   }();
   return laws;

@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: MIT
-// Solid mixtures and fibre families in case files: [materials.<name>.solid] and top-level
-// "solid-mixture" materials with [[...constituent]] tables, and the errors of bad ones.
+// Solid mixtures, fibre families and fibre distributions in case files: [materials.<name>.solid]
+// and top-level "solid-mixture" materials with [[...constituent]] tables, and the errors of bad
+// ones.
 #include "bad_input.hpp"
 #include "trifem/core/error.hpp"
 #include "trifem/io/case_reader.hpp"
+#include "trifem/material/fibre_distribution.hpp"
 #include "trifem/material/fibre_exp_pow.hpp"
 #include "trifem/material/registry.hpp"
 #include "trifem/material/solid_mixture.hpp"
@@ -14,6 +16,7 @@
 #include <vector>
 
 using trifem::InputError;
+using trifem::Mat3;
 using trifem::Real;
 using trifem::Vec3;
 using trifem::io::CaseSpec;
@@ -60,6 +63,32 @@ fibre = [1, 0, 0]
 /// kModel + kCartilage with `from` replaced by `to` in the material.
 std::string cartilage_with(const std::string& from, const std::string& to) {
   return kModel + replaced_in(kCartilage, from, to);
+}
+
+/// A biphasic material whose solid is a neo-Hookean matrix and an ellipsoidal fibre
+/// distribution (the docs/input.md example).
+const std::string kDistributionCartilage = R"(
+[materials.cart]
+type = "biphasic"
+phi_s0 = 0.2
+permeability = 1e-3
+[materials.cart.solid]
+type = "solid-mixture"
+[[materials.cart.solid.constituent]]
+type = "neo-hookean"
+E = 0.5
+nu = 0.1
+[[materials.cart.solid.constituent]]
+type = "fibre-distribution"
+ksi = 2.0
+alpha = 0.0
+beta = 2.5
+semi_axes = [1, 1, 3]
+)";
+
+/// kModel + kDistributionCartilage with `from` replaced by `to` in the material.
+std::string distribution_with(const std::string& from, const std::string& to) {
+  return kModel + replaced_in(kDistributionCartilage, from, to);
 }
 
 } // namespace
@@ -275,3 +304,120 @@ E = 1.0
 
 INSTANTIATE_TEST_SUITE_P(SolidMixtures, BadFibreInput, testing::ValuesIn(kBadFibreCases),
                          bad_case_name);
+
+TEST(CaseReaderFibreDistribution, ConstituentOfABiphasicSolid) {
+  const CaseSpec c = parse_case(kModel + kDistributionCartilage, kMemoryFile);
+  const MaterialSpec& cart = c.materials.at("cart");
+  ASSERT_TRUE(cart.solid.has_value());
+  ASSERT_EQ(cart.solid->constituents.size(), 2u);
+  const material::LawSpec& fibres = cart.solid->constituents[1];
+  EXPECT_EQ(fibres.type, "fibre-distribution");
+  // ksi, alpha, beta, semi_axes.x, .y, .z and the default resolution
+  EXPECT_EQ(fibres.parameters.size(), 7u);
+  EXPECT_DOUBLE_EQ(fibres.parameters.at("ksi"), 2.0);
+  EXPECT_DOUBLE_EQ(fibres.parameters.at("beta"), 2.5);
+  EXPECT_EQ(material::vector_value(fibres.parameters, "semi_axes"), Vec3(1, 1, 3));
+  EXPECT_DOUBLE_EQ(fibres.parameters.at("resolution"), 12.0);
+
+  const auto law = material::create_law(*cart.solid, "materials.cart.solid");
+  const auto& mixture = dynamic_cast<const material::SolidMixture&>(*law);
+  const auto& distribution =
+      dynamic_cast<const material::FibreDistribution&>(*mixture.constituents()[1]);
+  EXPECT_EQ(distribution.directions().size(), 3u * 12u * 12u);
+  // denser along z: the same stretch along z loads the fibres more than along x
+  const Real l2 = 1.21;
+  EXPECT_GT(distribution.stress(Mat3(Vec3(1, 1, l2).asDiagonal()))(2, 2),
+            1.5 * distribution.stress(Mat3(Vec3(l2, 1, 1).asDiagonal()))(0, 0));
+}
+
+TEST(CaseReaderFibreDistribution, TopLevelSolidMixtureWithAResolution) {
+  const std::string text = kModel + R"(
+[materials.cart]
+type = "solid-mixture"
+constituent = [
+  { type = "neo-hookean", E = 0.5, nu = 0.1 },
+  { type = "fibre-distribution", ksi = 1, alpha = 0.5, beta = 2, semi_axes = [1, 1, 1], resolution = 20 },
+]
+)";
+  const CaseSpec c = parse_case(text, kMemoryFile);
+  const MaterialSpec& m = c.materials.at("cart");
+  ASSERT_EQ(m.constituents.size(), 2u);
+  EXPECT_DOUBLE_EQ(m.constituents[1].parameters.at("resolution"), 20.0);
+  const auto law = material::create_law(m.solid_law(), "materials.cart");
+  const auto& mixture = dynamic_cast<const material::SolidMixture&>(*law);
+  EXPECT_EQ(dynamic_cast<const material::FibreDistribution&>(*mixture.constituents()[1])
+                .directions()
+                .size(),
+            3u * 20u * 20u);
+}
+
+class BadFibreDistributionInput : public testing::TestWithParam<BadCase> {};
+
+TEST_P(BadFibreDistributionInput, FailsNamingTheKeyPath) {
+  expect_fails_naming(GetParam());
+}
+
+const std::vector<BadCase> kBadDistributionCases = {
+    {"fractional_resolution",
+     distribution_with("semi_axes = [1, 1, 3]", "semi_axes = [1, 1, 3]\nresolution = 12.5"),
+     {kConstituent2 + ".resolution = 12.5: must be an integer"}},
+    {"resolution_too_small",
+     distribution_with("semi_axes = [1, 1, 3]", "semi_axes = [1, 1, 3]\nresolution = 2"),
+     {kConstituent2 + ".resolution = 2: out of range, expected a value in [3, 64]"}},
+    {"zero_semi_axis",
+     distribution_with("semi_axes = [1, 1, 3]", "semi_axes = [1, 0, 3]"),
+     {kConstituent2 + ".semi_axes[2] = 0: out of range, expected a value in (0, inf)",
+      "(line 27)"}},
+    {"semi_axes_of_two_numbers",
+     distribution_with("semi_axes = [1, 1, 3]", "semi_axes = [1, 3]"),
+     {kConstituent2 + ".semi_axes: expected an array of 3 numbers, got an array of 2 element(s)"}},
+    {"missing_semi_axes",
+     distribution_with("semi_axes = [1, 1, 3]\n", ""),
+     {kConstituent2 + ".semi_axes: missing required parameter"}},
+    {"fibre_direction_given",
+     distribution_with("semi_axes = [1, 1, 3]", "semi_axes = [1, 1, 3]\nfibre = [1, 0, 0]"),
+     {kConstituent2 + ".fibre: unknown key (expected one of: type, ksi, alpha, beta, semi_axes, "
+                      "resolution)"}},
+    {"beta_below_2",
+     distribution_with("beta = 2.5", "beta = 1.5"),
+     {kConstituent2 + ".beta = 1.5: out of range, expected a value in [2, inf)"}},
+    {"misspelt_type",
+     distribution_with("\"fibre-distribution\"", "\"fiber-distribution\""),
+     {kConstituent2 + ".type = 'fiber-distribution': unknown constituent law",
+      "did you mean 'fibre-distribution'?"}},
+    {"distribution_alone_in_a_mixture",
+     distribution_with("type = \"neo-hookean\"\nE = 0.5\nnu = 0.1",
+                       "type = \"fibre-distribution\"\nksi = 1\nalpha = 0\nbeta = 2\nsemi_axes = "
+                       "[1, 1, 1]"),
+     {"materials.cart.solid: the solid mixture (fibre-distribution, fibre-distribution) has no "
+      "stiffness at zero strain"}},
+    {"distribution_as_the_biphasic_solid",
+     kModel + R"(
+[materials.cart]
+type = "biphasic"
+phi_s0 = 0.2
+permeability = 1e-3
+[materials.cart.solid]
+type = "fibre-distribution"
+ksi = 1.0
+alpha = 0.0
+beta = 2.0
+semi_axes = [1, 1, 1]
+)",
+     {"materials.cart.solid.type = 'fibre-distribution': a fibre family is valid only as a "
+      "constituent of a solid mixture"}},
+    {"distribution_as_a_material",
+     kModel + R"(
+[materials.cart]
+type = "fibre-distribution"
+ksi = 1.0
+alpha = 0.0
+beta = 2.0
+semi_axes = [1, 1, 1]
+)",
+     {"materials.cart.type = 'fibre-distribution': a fibre family is valid only as a constituent "
+      "of a solid mixture"}},
+};
+
+INSTANTIATE_TEST_SUITE_P(FibreDistribution, BadFibreDistributionInput,
+                         testing::ValuesIn(kBadDistributionCases), bad_case_name);

@@ -6,6 +6,7 @@
 #include "trifem/tensor/kinematics.hpp"
 
 #include "law_differences.hpp"
+#include "law_states.hpp"
 
 #include <gtest/gtest.h>
 
@@ -53,24 +54,11 @@ std::unique_ptr<material::ElasticLaw> make(const LawCase& c) {
   return material::create_law(c.type, c.params, "test");
 }
 
-/// A value in scientific notation, for RecordProperty.
-std::string scientific(Real v) {
-  std::ostringstream out;
-  out << std::scientific << v;
-  return out.str();
-}
-
 std::string describe(const LawCase& c) {
   std::string text = c.type;
   for (const auto& [key, value] : c.params)
     text += " " + key + "=" + std::to_string(value);
   return text;
-}
-
-/// Uniform number in [-1, 1] from a fixed-width generator (the same sequence on every platform).
-Real uniform(std::uint64_t& state) {
-  state = state * 6364136223846793005ULL + 1442695040888963407ULL;
-  return Real(state >> 11) / Real(1ULL << 53) * 2.0 - 1.0;
 }
 
 /// F = I + 0.25 R, R with entries in [-1, 1]: stretches of about 0.5 to 1.5, det F > 0.
@@ -82,10 +70,6 @@ Mat3 random_deformation(std::uint64_t seed) {
       F(i, j) += 0.25 * uniform(state);
   EXPECT_GT(F.determinant(), 0.1);
   return F;
-}
-
-Mat3 rotation(Real angle, Vec3 axis) {
-  return Eigen::AngleAxisd(angle, axis.normalized()).toRotationMatrix();
 }
 
 /// A symmetric matrix with entries in [-1, 1].

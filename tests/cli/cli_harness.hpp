@@ -3,6 +3,8 @@
 // exit code, stdout and stderr (shared by the CLI test files).
 #pragma once
 
+#include "history_csv.hpp"
+
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
@@ -25,6 +27,9 @@
 #include <vector>
 
 namespace trifem::cli_test {
+
+using test::History;
+using test::read_history;
 
 namespace fs = std::filesystem;
 
@@ -100,30 +105,6 @@ inline std::size_t count_of(std::string_view text, std::string_view part) {
   for (auto at = text.find(part); at != std::string_view::npos; at = text.find(part, at + 1))
     ++n;
   return n;
-}
-
-/// The numbers of a history.csv by column, and the column names.
-struct History {
-  std::vector<std::string> names;
-  std::vector<std::vector<double>> columns;
-};
-
-inline History read_history(const fs::path& file) {
-  History h;
-  const std::vector<std::string> lines = lines_of(read_text(file));
-  if (lines.empty())
-    return h;
-  std::stringstream header(lines[0]);
-  for (std::string name; std::getline(header, name, ',');)
-    h.names.push_back(name);
-  h.columns.resize(h.names.size());
-  for (std::size_t i = 1; i < lines.size(); ++i) {
-    std::stringstream row(lines[i]);
-    std::size_t c = 0;
-    for (std::string cell; std::getline(row, cell, ',') && c < h.columns.size(); ++c)
-      h.columns[c].push_back(std::stod(cell));
-  }
-  return h;
 }
 
 /// The unit of a history column ("top.uz [mm]" -> "mm"; "" if none).

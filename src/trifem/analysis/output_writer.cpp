@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "trifem/analysis/output_writer.hpp"
 
+#include "trifem/analysis/averages.hpp"
 #include "trifem/analysis/contact_output.hpp"
 #include "trifem/analysis/output_fields.hpp"
 #include "trifem/analysis/probes.hpp"
@@ -23,6 +24,9 @@ std::vector<std::string> history_columns(const model::Model& model) {
       cols.push_back(fmt::format("{}.{} [N]", r.name, c));
   for (const auto& p : model.probes)
     for (std::string& c : probe_columns(p))
+      cols.push_back(std::move(c));
+  for (const auto& a : model.averages)
+    for (std::string& c : average_columns(a))
       cols.push_back(std::move(c));
   for (std::string& c : contact_history_columns(model))
     cols.push_back(std::move(c));
@@ -113,6 +117,8 @@ std::vector<double> OutputWriter::history_row(Real time, int step, Real dt, int 
     }
   for (const auto& p : model_.probes)
     append_probe_values(model_, *cells_, p, x, row);
+  for (const auto& a : model_.averages)
+    append_average_values(model_, *cells_, a, x, row);
   append_contact_history(model_, row);
   for (const model::RigidBody& b : model_.rigid_bodies) {
     const Vec3 u = model::rigid_body_displacement(model_, b),

@@ -58,7 +58,7 @@ private:
   std::unique_ptr<io::CsvWriter> history_;
   std::unique_ptr<MassBalance> balance_;
   std::unique_ptr<ContactOutput> contact_; ///< null without contact pairs
-  std::unique_ptr<CellEvaluator> cells_;   ///< for cell-quantity probes
+  std::unique_ptr<CellEvaluator> cells_;   ///< for cell-quantity probes and averages
   Real end_time_ = 0.0;                    ///< of the run (default output times)
   Real next_default_ = 0.0;                ///< next default output time (no output.interval)
   int state_count_ = 0;                    ///< output states written (the NNNN of the files)

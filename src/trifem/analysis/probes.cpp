@@ -21,10 +21,13 @@ std::pair<dofs::FieldId, Real> nodal_field(const model::Model& model, std::strin
   return {f.u, 1.0}; // displacement, position
 }
 
-Vec3 interpolate(const model::Model& model, const model::Probe& probe, const Vector& x) {
-  const auto [field, scale] = nodal_field(model, probe.quantity->name);
-  const fe::HexShape N = fe::hex8_shape(probe.xi);
-  const mesh::Hex8& nodes = model.mesh.cell(probe.cell);
+} // namespace
+
+Vec3 nodal_quantity(const model::Model& model, const io::ProbeQuantity& q, Index cell,
+                    const Vec3& xi, const Vector& x) {
+  const auto [field, scale] = nodal_field(model, q.name);
+  const fe::HexShape N = fe::hex8_shape(xi);
+  const mesh::Hex8& nodes = model.mesh.cell(cell);
   Vec3 value = Vec3::Zero();
   for (int a = 0; a < 8; ++a) {
     if (N[a] == 0.0)
@@ -33,7 +36,7 @@ Vec3 interpolate(const model::Model& model, const model::Probe& probe, const Vec
       value[k] += N[a] * x[model.dofs.dof(field, nodes[a], k)];
   }
   value *= scale;
-  if (probe.quantity->name == "position") {
+  if (q.name == "position") {
     Vec3 X = Vec3::Zero();
     for (int a = 0; a < 8; ++a)
       X += N[a] * model.mesh.node(nodes[a]);
@@ -42,29 +45,30 @@ Vec3 interpolate(const model::Model& model, const model::Probe& probe, const Vec
   return value;
 }
 
-} // namespace
-
-std::vector<std::string> probe_columns(const model::Probe& probe) {
-  const io::ProbeQuantity& q = *probe.quantity;
+std::vector<std::string> quantity_columns(std::string_view name, const io::ProbeQuantity& q) {
   const std::string unit = q.unit.empty() ? "" : fmt::format(" [{}]", q.unit);
   std::vector<std::string> cols;
   if (q.components == 1)
-    cols.push_back(fmt::format("{}.{}{}", probe.name, q.name, unit));
+    cols.push_back(fmt::format("{}.{}{}", name, q.name, unit));
   // displacement and position keep their short names: top.ux, top.x
   const std::string prefix = q.name == "displacement" ? "u"
                              : q.name == "position"   ? ""
                                                       : fmt::format("{}_", q.name);
   if (q.components > 1)
     for (int k = 0; k < q.components; ++k)
-      cols.push_back(fmt::format("{}.{}{}{}", probe.name, prefix,
-                                 io::component_suffix(q.components, k), unit));
+      cols.push_back(
+          fmt::format("{}.{}{}{}", name, prefix, io::component_suffix(q.components, k), unit));
   return cols;
+}
+
+std::vector<std::string> probe_columns(const model::Probe& probe) {
+  return quantity_columns(probe.name, *probe.quantity);
 }
 
 void append_probe_values(const model::Model& model, const CellEvaluator& cells,
                          const model::Probe& probe, const Vector& x, std::vector<double>& row) {
   if (probe.quantity->location == io::ProbeLocation::Node) {
-    const Vec3 v = interpolate(model, probe, x);
+    const Vec3 v = nodal_quantity(model, *probe.quantity, probe.cell, probe.xi, x);
     row.insert(row.end(), {v.x(), v.y(), v.z()});
     return;
   }

@@ -6,9 +6,20 @@
 #include "trifem/analysis/cell_values.hpp"
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace trifem::analysis {
+
+/// History column names of the quantity `q` under the prefix `name` with their units, e.g.
+/// "top.uz [mm]", "centre.fluid_pressure [MPa]", "centre.stress_xy [MPa]": displacements are
+/// `<name>.ux`, positions `<name>.x`, other vectors and tensors `<name>.<quantity>_<component>`.
+std::vector<std::string> quantity_columns(std::string_view name, const io::ProbeQuantity& q);
+
+/// The nodal quantity `q` (an io::ProbeLocation::Node quantity) at the natural coordinates `xi`
+/// of `cell` at the state x, interpolated with the cell's shape functions, in physical units.
+Vec3 nodal_quantity(const model::Model& model, const io::ProbeQuantity& q, Index cell,
+                    const Vec3& xi, const Vector& x);
 
 /// History column names of a probe with their units, e.g. "top.uz [mm]",
 /// "centre.fluid_pressure [MPa]", "centre.stress_xy [MPa]".

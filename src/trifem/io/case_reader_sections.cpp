@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <climits>
 #include <cstdint>
+#include <map>
 
 namespace trifem::io::detail {
 namespace {
@@ -469,7 +470,7 @@ void read_mesh(const Table& root, CaseSpec& spec) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// [output], [[output.reaction]], [[output.probe]]
+// [output], [[output.reaction]], [[output.probe]], [[output.average]]
 
 std::vector<Real> read_output_times(const Table& t, Real end_time) {
   const toml::node* n = t.find("times");
@@ -485,14 +486,19 @@ std::vector<Real> read_output_times(const Table& t, Real end_time) {
   return times;
 }
 
-ProbeSpec read_probe(const Table& t, const std::vector<ProbeSpec>& earlier) {
-  t.allow({"name", "quantity", "point"});
+/// The `quantity` key: one of the probe quantities (`fallback` if absent; required if none).
+const ProbeQuantity& read_quantity(const Table& t, std::optional<std::string_view> fallback) {
   static const Options<std::string_view> quantities = [] {
     Options<std::string_view> o;
     for (const ProbeQuantity& q : probe_quantities())
       o.emplace_back(q.name, q.name);
     return o;
   }();
+  return *find_probe_quantity(t.choice("quantity", quantities, fallback, "quantity"));
+}
+
+ProbeSpec read_probe(const Table& t, const std::vector<ProbeSpec>& earlier) {
+  t.allow({"name", "quantity", "point"});
   ProbeSpec p;
   p.name = read_identifier(t, "name", false);
   for (std::size_t i = 0; i < earlier.size(); ++i)
@@ -500,10 +506,93 @@ ProbeSpec read_probe(const Table& t, const std::vector<ProbeSpec>& earlier) {
       fail(t.find("name"), fmt::format("{} = '{}'", t.path("name"), p.name),
            fmt::format("duplicate probe name (already used by {})",
                        element_path("output.probe", i)));
-  p.quantity = std::string(
-      t.choice("quantity", quantities, std::optional<std::string_view>(p.quantity), "quantity"));
+  p.quantity = std::string(read_quantity(t, p.quantity).name);
   p.point = t.vec3("point", {.unit = "mm"}, std::nullopt);
   return p;
+}
+
+/// The `name` of an average: an identifier that no probe and no earlier average uses (both
+/// prefix history columns).
+std::string read_average_name(const Table& t, const OutputSpec& s) {
+  const std::string name = read_identifier(t, "name", false);
+  const auto taken = [&](std::string_view array, std::size_t i) {
+    fail(t.find("name"), fmt::format("{} = '{}'", t.path("name"), name),
+         fmt::format("duplicate name (already used by {}; probes and averages share the column "
+                     "prefixes of history.csv)",
+                     element_path(array, i)));
+  };
+  for (std::size_t i = 0; i < s.probes.size(); ++i)
+    if (s.probes[i].name == name)
+      taken("output.probe", i);
+  for (std::size_t i = 0; i < s.averages.size(); ++i)
+    if (s.averages[i].name == name)
+      taken("output.average", i);
+  return name;
+}
+
+/// The cell blocks a case names itself, each with its material: the [[mesh.box]] names and the
+/// physical volumes the [[mesh.gmsh]] tables assign a material to.
+std::map<std::string, std::string> named_blocks(const CaseSpec& spec) {
+  std::map<std::string, std::string> blocks;
+  for (const BoxMeshSpec& b : spec.boxes)
+    blocks.emplace(b.box.name, b.material);
+  for (const GmshMeshSpec& g : spec.gmsh)
+    blocks.insert(g.materials.begin(), g.materials.end());
+  return blocks;
+}
+
+/// The `block` of an average: a block the case names. With Gmsh meshes it may also be another
+/// physical volume of their files, which the model checks against the mesh.
+std::string read_average_block(const Table& t, const std::map<std::string, std::string>& blocks,
+                               const CaseSpec& spec) {
+  const std::string block = t.name("block");
+  if (blocks.contains(block) || !spec.gmsh.empty())
+    return block;
+  std::vector<std::string> names;
+  for (const auto& entry : blocks)
+    names.push_back(entry.first);
+  fail(t.find("block"), fmt::format("{} = '{}'", t.path("block"), block),
+       fmt::format("unknown cell block (expected the name of a [[mesh.box]]: {}){}", join(names),
+                   did_you_mean(block, names)));
+}
+
+/// Fails if the material of `block` (when the case names it) does not have the quantity `q`.
+void check_block_material(const Table& t, const ProbeQuantity& q, const std::string& block,
+                          const std::map<std::string, std::string>& blocks, const CaseSpec& spec) {
+  const auto it = blocks.find(block);
+  if (it == blocks.end())
+    return; // a physical volume of a Gmsh file: the model checks its cells
+  const MaterialSpec& m = spec.materials.at(it->second);
+  if (material_has(q, m.is_mixture(), m.type == "triphasic"))
+    return;
+  fail(t.find("quantity"), fmt::format("{} = '{}'", t.path("quantity"), q.name),
+       fmt::format("cell block '{}' has the material '{}' ({}), which has no {} (it needs a {} "
+                   "material)",
+                   block, it->second, m.type, q.name, required_material(q)));
+}
+
+/// An [[output.average]]: its name, quantity and cell block.
+AverageSpec read_average(const Table& t, const CaseSpec& spec) {
+  t.allow({"name", "quantity", "block"});
+  AverageSpec a;
+  a.name = read_average_name(t, spec.output);
+  const ProbeQuantity& q = read_quantity(t, std::nullopt);
+  a.quantity = std::string(q.name);
+  const std::map<std::string, std::string> blocks = named_blocks(spec);
+  a.block = read_average_block(t, blocks, spec);
+  check_block_material(t, q, a.block, blocks, spec);
+  return a;
+}
+
+/// The history of a dynamic-explicit run has nodal probes only: [[output.average]] is refused
+/// there.
+void reject_explicit_averages(const Table& output, const CaseSpec& spec) {
+  const std::vector<Table> averages = output.tables("average");
+  if (!spec.is_explicit() || averages.empty())
+    return;
+  fail(averages.front().where(), averages.front().path(),
+       "[[output.average]] is not supported in dynamic-explicit analyses (analysis.type); use "
+       "[[output.probe]] with quantity 'displacement' or 'position'");
 }
 
 ReactionSpec read_reaction(const Table& t, const std::vector<ReactionSpec>& earlier) {
@@ -520,7 +609,7 @@ void read_output(const Table& root, CaseSpec& spec) {
   const auto t = root.table("output");
   if (!t)
     return;
-  t->allow({"interval", "times", "vtu", "restart", "reaction", "probe"});
+  t->allow({"interval", "times", "vtu", "restart", "reaction", "probe", "average"});
   OutputSpec& s = spec.output;
   s.interval_given = t->find("interval") != nullptr;
   s.interval =
@@ -532,6 +621,9 @@ void read_output(const Table& root, CaseSpec& spec) {
     s.reactions.push_back(read_reaction(r, s.reactions));
   for (const Table& p : t->tables("probe"))
     s.probes.push_back(read_probe(p, s.probes));
+  reject_explicit_averages(*t, spec);
+  for (const Table& a : t->tables("average"))
+    s.averages.push_back(read_average(a, spec));
 }
 
 } // namespace

@@ -282,6 +282,14 @@ struct ProbeSpec {
   Vec3 point = Vec3::Zero();
 };
 
+/// [[output.average]]: the volume average of a quantity over the cells of a cell block, in
+/// history.csv (weighted by the reference, current or water volume: io::AverageWeight).
+struct AverageSpec {
+  std::string name;     ///< column prefix, unique among probes and averages
+  std::string quantity; ///< one of io::probe_quantities()
+  std::string block;    ///< a cell block: a [[mesh.box]] name or a Gmsh physical volume
+};
+
 /// VTU states a quasi-static run without output.interval writes at most (plus the initial
 /// state, the step ends and output.times).
 inline constexpr int kDefaultOutputCount = 100;
@@ -297,6 +305,7 @@ struct OutputSpec {
   bool restart = false; ///< write a restart file with every VTU state (quasi-static runs)
   std::vector<ReactionSpec> reactions;
   std::vector<ProbeSpec> probes;
+  std::vector<AverageSpec> averages;
 };
 
 /// [[step]]: one stage of a quasi-static analysis, from the end of the previous step (or 0) to

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The quantities an [[output.probe]] can record: nodal fields interpolated at the point, and
-// the cell quantities of the VTU output in the cell that contains it.
+// the cell quantities of the VTU output in the cell that contains it. An [[output.average]]
+// records the same quantities averaged over a cell block.
 #pragma once
 
 #include <span>
@@ -22,15 +23,23 @@ enum class ProbeRequirement {
   Ions,    ///< a triphasic material at the point
 };
 
+/// The volume over which an [[output.average]] averages the quantity.
+enum class AverageWeight {
+  Reference, ///< the reference volume: material quantities (displacement, position, J)
+  Current,   ///< the current volume: spatial quantities (stresses, pressure, fluxes, ...)
+  Water,     ///< the current water volume: concentrations per water volume
+};
+
 /// One probe quantity: its case-file name (also its history column prefix), unit (empty:
 /// dimensionless), number of components (1 scalar, 3 vector x y z, 6 symmetric tensor
-/// xx yy zz xy yz xz), location and requirement.
+/// xx yy zz xy yz xz), location, requirement and the volume its block averages weight by.
 struct ProbeQuantity {
   std::string_view name;
   std::string_view unit;
   int components;
   ProbeLocation location;
   ProbeRequirement requirement;
+  AverageWeight weight;
 };
 
 /// Every probe quantity, in the order of docs/input.md.
@@ -38,6 +47,14 @@ std::span<const ProbeQuantity> probe_quantities();
 
 /// The quantity called `name`, or null.
 const ProbeQuantity* find_probe_quantity(std::string_view name);
+
+/// True if a material has the quantity: a mixture (biphasic or triphasic) if `mixture`, with
+/// ions (triphasic) if also `charged`.
+bool material_has(const ProbeQuantity& q, bool mixture, bool charged);
+
+/// The materials that have the quantity, for messages: "biphasic or triphasic", "triphasic" or
+/// "any".
+std::string_view required_material(const ProbeQuantity& q);
 
 /// Suffixes of the history columns of one component: "x" "y" "z" for vectors, "xx" "yy" "zz"
 /// "xy" "yz" "xz" for tensors, "" for scalars.

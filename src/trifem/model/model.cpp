@@ -4,6 +4,7 @@
 #include "trifem/core/error.hpp"
 #include "trifem/material/registry.hpp"
 #include "trifem/mesh/gmsh_reader.hpp"
+#include "trifem/model/averages.hpp"
 #include "trifem/model/conditions.hpp"
 #include "trifem/model/contact_pairs.hpp"
 #include "trifem/model/rigid_bodies.hpp"
@@ -244,6 +245,7 @@ std::unique_ptr<Model> build_model(const io::CaseSpec& spec) {
     activate_step(*model, 0);
   check_support(spec, *model);
   add_outputs(spec, *model);
+  model->averages = make_averages(spec, *model);
   return model;
 }
 

@@ -31,6 +31,14 @@ struct Probe {
   Vec3 xi = Vec3::Zero(); ///< natural coordinates of the point in the cell
 };
 
+/// An average output: a quantity averaged over the cells of a cell block.
+struct Average {
+  std::string name;
+  const io::ProbeQuantity* quantity = nullptr;
+  std::string block;
+  std::vector<Index> cells; ///< the cells of the block
+};
+
 /// The law of one cell: a solid law, or a mixture (which has its own solid).
 struct CellMaterial {
   std::shared_ptr<const material::ElasticLaw> solid;
@@ -84,6 +92,7 @@ struct Model {
   std::unique_ptr<assembly::FeProblem> problem;
   std::vector<ReactionSet> reactions;
   std::vector<Probe> probes;
+  std::vector<Average> averages;
   std::vector<RigidBody> rigid_bodies;
   std::vector<ModelStep> steps; ///< empty: one step with the case's conditions only
   std::vector<dofs::DirichletCondition> case_conditions; ///< the conditions of every step

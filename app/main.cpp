@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
 // trifem command-line interface: run, check, --version.
+#include "trifem/analysis/case_file.hpp"
 #include "trifem/analysis/run.hpp"
 #include "trifem/core/error.hpp"
 #include "trifem/core/interrupt.hpp"
 #include "trifem/core/log.hpp"
-#include "trifem/io/case_reader.hpp"
 
 #include <CLI/CLI.hpp>
 #include <iostream>
@@ -56,7 +56,7 @@ int main(int argc, char** argv) {
 
   std::string case_file, output_dir;
   auto* run = cli.add_subcommand("run", "run an analysis");
-  run->add_option("case", case_file, "case file (.toml)")->required();
+  run->add_option("case", case_file, "case file (.toml, or an FEBio .feb file)")->required();
   run->add_option("-o,--output", output_dir, "output directory (default: results/<case name>)");
   analysis::RunOptions options;
   run->add_option("--restart", options.restart_file,
@@ -64,7 +64,7 @@ int main(int argc, char** argv) {
   run->add_flag("--write-restart", options.write_restart,
                 "write a restart file with every VTU state (as [output] restart = true)");
   auto* check = cli.add_subcommand("check", "validate a case without solving");
-  check->add_option("case", case_file, "case file (.toml)")->required();
+  check->add_option("case", case_file, "case file (.toml, or an FEBio .feb file)")->required();
 
   try {
     check_command_name(argc, argv);
@@ -77,7 +77,7 @@ int main(int argc, char** argv) {
   }
   log::configure(quiet ? log::Level::Quiet : verbose ? log::Level::Verbose : log::Level::Normal);
   return guarded([&] {
-    const io::CaseSpec spec = io::read_case(case_file);
+    const io::CaseSpec spec = analysis::read_case_file(case_file);
     if (check->parsed())
       return analysis::check_case(spec);
     interrupt::install_handler(); // Ctrl-C ends the run cleanly, with its summary

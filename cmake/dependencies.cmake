@@ -7,6 +7,7 @@ find_package(spdlog REQUIRED)
 find_package(tomlplusplus REQUIRED)
 find_package(CLI11 REQUIRED)
 find_package(nlohmann_json 3.10 REQUIRED)
+find_package(pugixml 1.11 REQUIRED)
 
 # SuiteSparse (UMFPACK and its ordering libraries) has no CMake config in Debian 12.
 find_path(UMFPACK_INCLUDE_DIR umfpack.h PATH_SUFFIXES suitesparse REQUIRED)

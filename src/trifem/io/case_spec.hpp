@@ -7,6 +7,7 @@
 #include "trifem/material/registry.hpp"
 #include "trifem/material/schema.hpp"
 #include "trifem/mesh/box.hpp"
+#include "trifem/mesh/mesh.hpp"
 
 #include <array>
 #include <filesystem>
@@ -29,6 +30,14 @@ struct GmshMeshSpec {
   std::filesystem::path file;
   /// Physical volume name -> material name.
   std::map<std::string, std::string> materials;
+};
+
+/// A mesh given in full by a front end that reads its own mesh format (the FEBio reader):
+/// nodes, hex8 cells, named node sets, surfaces and cell blocks, with the material of each
+/// block it assigns.
+struct InlineMeshSpec {
+  mesh::Mesh mesh;
+  std::map<std::string, std::string> materials; ///< cell block -> material name
 };
 
 /// A solid law and its parameters ([materials.<name>] or [materials.<name>.solid]), or a
@@ -330,6 +339,7 @@ struct CaseSpec {
   std::string title;
   std::vector<BoxMeshSpec> boxes;
   std::vector<GmshMeshSpec> gmsh;
+  std::vector<InlineMeshSpec> meshes; ///< meshes read with the case (not from TOML)
   std::map<std::string, MaterialSpec> materials;
   std::map<std::string, CurveSpec> curves;
   std::vector<FixedSpec> fixed;

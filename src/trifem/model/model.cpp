@@ -200,6 +200,18 @@ mesh::Mesh build_mesh(const io::CaseSpec& spec, std::map<std::string, std::strin
       return 0;
     });
   }
+  for (std::size_t i = 0; i < spec.meshes.size(); ++i) {
+    const auto& m = spec.meshes[i];
+    for (const auto& [block, material] : m.materials) {
+      TRIFEM_CHECK(m.mesh.has_cell_block(block), "mesh[{}].materials: '{}' is not a cell block",
+                   i + 1, block);
+      materials[block] = material;
+    }
+    with_context(fmt::format("mesh[{}]", i + 1), [&] {
+      mesh.append(m.mesh);
+      return 0;
+    });
+  }
   TRIFEM_CHECK(mesh.num_cells() > 0, "mesh: the model has no cells");
   return mesh;
 }

@@ -104,7 +104,8 @@ struct Model {
   dofs::FieldId displacement() const { return fields.u; }
 };
 
-/// Builds the mesh of a case (boxes and Gmsh files) with their cell-block -> material map.
+/// Builds the mesh of a case (boxes, Gmsh files and inline meshes) with their cell-block ->
+/// material map.
 mesh::Mesh build_mesh(const io::CaseSpec& spec, std::map<std::string, std::string>& materials);
 
 /// Builds the whole model, including its initial state. InputErrors name the case key.

@@ -1,0 +1,278 @@
+// SPDX-License-Identifier: MIT
+// LoadData, Control and Step sections: load curves, time control and analysis steps.
+#include "trifem/feb/reader.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <fmt/format.h>
+
+namespace trifem::feb::detail {
+namespace {
+
+bool is_element(pugi::xml_node n) {
+  return n.type() == pugi::node_element;
+}
+
+std::string lower(std::string s) {
+  for (char& c : s)
+    c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
+/// The points of a load curve: <points><pt>t,v</pt>...</points> (4.0) or <point>t,v</point>
+/// children (3.0).
+std::vector<std::pair<Real, Real>> curve_points(const Reader& r, pugi::xml_node lc) {
+  std::vector<std::pair<Real, Real>> points;
+  const pugi::xml_node list = lc.child("points") ? lc.child("points") : lc;
+  for (pugi::xml_node p : list.children()) {
+    if (!is_element(p) ||
+        (std::string_view(p.name()) != "pt" && std::string_view(p.name()) != "point"))
+      continue;
+    const std::vector<Real> v = r.doc.numbers(p, 2);
+    if (!points.empty() && v[0] <= points.back().first)
+      r.doc.fail(p, "the times of the points must increase");
+    points.emplace_back(v[0], v[1]);
+  }
+  if (points.empty())
+    r.doc.fail(lc, "the load curve has no points");
+  return points;
+}
+
+/// The interpolation of a load curve; FEBio's SMOOTH is a blend of quadratics through
+/// neighbouring points, the same as linear only for two points, and its STEP takes the value of
+/// the next point: neither is trifem's, so both are refused.
+dofs::Interpolation interpolation(const Reader& r, pugi::xml_node node, const std::string& kind,
+                                  std::size_t points) {
+  const std::string k = lower(kind);
+  if (k == "linear" || (k == "smooth" && points == 2))
+    return dofs::Interpolation::Linear;
+  r.doc.fail(node, fmt::format("interpolation '{}' is not supported: trifem reproduces FEBio's "
+                               "LINEAR (and SMOOTH through two points) exactly; write the curve "
+                               "with LINEAR segments",
+                               kind));
+}
+
+void read_curve(Reader& r, pugi::xml_node lc) {
+  const std::string id = r.doc.attribute(lc, "id");
+  const std::string type = lc.attribute("type").value();
+  if (r.version == Version::V4 && type != "loadcurve")
+    r.doc.fail(lc, "type",
+               fmt::format("load controller type '{}' is not supported (expected "
+                           "loadcurve)",
+                           type));
+  std::string name = lc.attribute("name").value();
+  if (name.empty())
+    name = "lc" + id;
+  if (r.spec.curves.contains(name) || r.curve_by_id.contains(id))
+    r.doc.fail(lc, fmt::format("a second load controller with id {} or name '{}'", id, name));
+  io::CurveSpec curve;
+  curve.points = curve_points(r, lc);
+  CurveExtent extent{lc, false, curve.points.front().first, curve.points.back().first};
+  for (pugi::xml_node c : lc.children()) {
+    if (!is_element(c))
+      continue;
+    const std::string_view key = c.name();
+    if (key == "interpolate")
+      curve.interpolation = interpolation(r, c, r.doc.text(c), curve.points.size());
+    else if (key == "extend") {
+      const std::string mode = lower(r.doc.text(c));
+      if (mode == "extrapolate")
+        extent.extrapolate = true;
+      else if (mode != "constant")
+        r.doc.fail(c, fmt::format("extend '{}' is not supported (expected CONSTANT or "
+                                  "EXTRAPOLATE inside the points)",
+                                  r.doc.text(c)));
+    } else if (key != "points" && key != "point")
+      r.doc.fail(c, fmt::format("unknown parameter '{}' of a load curve", key));
+  }
+  if (r.version == Version::V3 && !type.empty() && type != "loadcurve") // 3.0: type="smooth"
+    curve.interpolation = interpolation(r, lc, type, curve.points.size());
+  r.spec.curves[name] = curve;
+  r.curve_by_id[id] = name;
+  r.curve_extents.push_back(extent);
+}
+
+/// The analysis type of a Control: transient mixtures, static solids.
+void check_analysis(const Reader& r, pugi::xml_node control) {
+  const pugi::xml_node node = control.child("analysis");
+  const std::string type = node ? lower(r.doc.text(node)) : std::string();
+  if (r.biphasic_module) {
+    if (type != "transient" && type != "dynamic")
+      r.doc.fail(node ? node : control,
+                 fmt::format("a {} biphasic analysis is not supported: trifem's mixtures are "
+                             "transient (use TRANSIENT; the steady state is its long-time limit)",
+                             type.empty() ? "steady-state (FEBio's default)" : type));
+  } else if (!type.empty() && type != "static") {
+    r.doc.fail(node, fmt::format("analysis '{}' is not supported (trifem's implicit analyses of "
+                                 "solids are quasi-static: STATIC)",
+                                 r.doc.text(node)));
+  }
+}
+
+/// The time stepper of a Control (FEBio's auto time stepper -> trifem's step control).
+void read_time_stepper(Reader& r, pugi::xml_node stepper, io::TimeSpec& t) {
+  t.growth = 1.5;
+  for (pugi::xml_node c : stepper.children()) {
+    if (!is_element(c))
+      continue;
+    const std::string_view key = c.name();
+    if (key == "dtmin") {
+      t.dt_min = std::max(0.0, r.doc.number(c));
+    } else if (key == "dtmax") {
+      const std::string curve = r.curve_of(c);
+      Real dtmax = r.doc.number(c);
+      if (!curve.empty()) // must points: the curve's points; its values are the largest step
+        for (const auto& p : r.spec.curves.at(curve).points)
+          dtmax = std::max(dtmax, p.second);
+      t.dt_max = dtmax;
+    } else if (key == "opt_iter") {
+      t.target_iterations = static_cast<int>(std::max(1L, r.doc.integer(c)));
+    } else if (key == "cutback") {
+      const Real f = r.doc.number(c);
+      if (f > 0.0 && f < 1.0)
+        t.cutback = f;
+    } else if (key != "max_retries" && key != "aggressiveness" && key != "dtforce") {
+      r.doc.fail(c, fmt::format("unknown parameter '{}' of the time stepper", key));
+    }
+  }
+}
+
+/// Control parameters that only concern FEBio's own output or solver.
+bool ignored_control(std::string_view key) {
+  for (std::string_view k : {"plot_zero_state",
+                             "plot_range",
+                             "plot_level",
+                             "output_level",
+                             "plot_stride",
+                             "output_stride",
+                             "adaptor_re_solve",
+                             "title",
+                             "solver",
+                             "max_refs",
+                             "max_ups",
+                             "dtol",
+                             "etol",
+                             "rtol",
+                             "ptol",
+                             "lstol",
+                             "min_residual",
+                             "qnmethod",
+                             "symmetric_biphasic",
+                             "reform_each_time_step",
+                             "diverge_reform",
+                             "integration",
+                             "output_stride",
+                             "must_point_plot"})
+    if (key == k)
+      return true;
+  return false;
+}
+
+/// The span of a step: time_steps * step_size, checked.
+void check_time(const Reader& r, pugi::xml_node control, io::TimeSpec& t, Real start) {
+  const Real span = t.end_time - start;
+  if (!(span >= 1e-8) || !(t.dt > 0.0))
+    r.doc.fail(control, fmt::format("time_steps x step_size = {}: the step must last at least "
+                                    "1e-8 s with step_size > 0",
+                                    span));
+  if (span / t.dt > io::kMaxSteps)
+    r.doc.fail(control, "more than 1e8 time steps");
+  t.dt = std::min(t.dt, span);
+  if (t.dt_max > 0.0)
+    t.dt_max = std::max(t.dt_max, t.dt);
+  if (t.dt_min > t.dt)
+    t.dt_min = t.dt;
+}
+
+/// A name trifem accepts for a step ([A-Za-z0-9_-]+).
+std::string step_name(std::string name, std::size_t k) {
+  for (char& c : name)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_' && c != '-')
+      c = '_';
+  return name.empty() ? fmt::format("step{}", k) : name;
+}
+
+} // namespace
+
+void read_load_data(Reader& r, pugi::xml_node section) {
+  for (pugi::xml_node lc : section.children()) {
+    if (!is_element(lc))
+      continue;
+    const std::string_view kind = lc.name();
+    if (kind != "load_controller" && kind != "loadcurve")
+      r.doc.fail(lc, fmt::format("<{}> is not supported in <LoadData>", kind));
+    read_curve(r, lc);
+  }
+}
+
+io::TimeSpec read_control(Reader& r, pugi::xml_node control, Real start) {
+  check_analysis(r, control);
+  io::TimeSpec t;
+  long steps = 0;
+  t.growth = 1.0; // without a time stepper FEBio keeps step_size
+  for (pugi::xml_node c : control.children()) {
+    if (!is_element(c))
+      continue;
+    const std::string_view key = c.name();
+    if (key == "time_steps")
+      steps = r.doc.integer(c);
+    else if (key == "step_size")
+      t.dt = r.doc.number(c);
+    else if (key == "time_stepper")
+      read_time_stepper(r, c, t);
+    else if (key != "analysis" && !ignored_control(key))
+      r.doc.fail(c, fmt::format("unknown or unsupported control parameter '{}'", key));
+  }
+  if (steps <= 0)
+    r.doc.fail(control, "<time_steps> must be given and positive");
+  t.end_time = start + static_cast<Real>(steps) * t.dt;
+  if (!control.child("time_stepper"))
+    t.dt_max = t.dt;
+  check_time(r, control, t, start);
+  return t;
+}
+
+void read_steps(Reader& r, pugi::xml_node root) {
+  const pugi::xml_node steps = root.child("Step");
+  const pugi::xml_node control = root.child("Control");
+  if (!steps) {
+    if (!control)
+      r.doc.fail(root, "the element <Control> is required");
+    r.spec.time = read_control(r, control, 0.0);
+    return;
+  }
+  Real start = 0.0;
+  for (pugi::xml_node s : steps.children()) {
+    if (!is_element(s))
+      continue;
+    if (std::string_view(s.name()) != "step")
+      r.doc.fail(s, "expected <step> elements");
+    const std::size_t k = r.spec.steps.size() + 1;
+    io::StepSpec step;
+    step.name = step_name(s.attribute("name").value(), k);
+    step.key = fmt::format("step[{}]", k);
+    const pugi::xml_node c = s.child("Control") ? s.child("Control") : control;
+    if (!c)
+      r.doc.fail(s, "the step has no <Control> (and there is no top-level one)");
+    step.time = read_control(r, c, start);
+    start = step.time.end_time;
+    for (pugi::xml_node part : s.children()) {
+      if (!is_element(part))
+        continue;
+      const std::string_view kind = part.name();
+      if (kind == "Boundary")
+        read_boundary(r, part, step.fixed, step.prescribed, true);
+      else if (kind == "Loads")
+        read_loads(r, part, step.pressures);
+      else if (kind != "Control")
+        r.doc.fail(part, fmt::format("<{}> in a step is not supported", kind));
+    }
+    r.spec.steps.push_back(std::move(step));
+  }
+  if (r.spec.steps.empty())
+    r.doc.fail(steps, "the <Step> section has no <step>");
+  r.spec.time = r.spec.steps.front().time;
+  r.spec.time.end_time = start;
+}
+
+} // namespace trifem::feb::detail

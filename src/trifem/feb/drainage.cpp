@@ -1,0 +1,130 @@
+// SPDX-License-Identifier: MIT
+// FEBio's natural boundary condition of mixtures written out: a face without a fluid pressure
+// condition is impermeable in FEBio and free-draining in trifem (docs/feb.md).
+#include "trifem/feb/reader.hpp"
+#include "trifem/mesh/hex_faces.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+#include <map>
+#include <numbers>
+
+namespace trifem::feb::detail {
+namespace {
+
+/// Facets of one smooth patch meet at less than this angle; a sharper edge (a box corner)
+/// separates two patches, whose normals are both constrained at the nodes they share.
+constexpr Real kFeatureAngleDegrees = 60.0;
+
+using FaceKey = std::array<Index, 4>;
+
+FaceKey key_of(std::array<Index, 4> nodes) {
+  std::sort(nodes.begin(), nodes.end());
+  return nodes;
+}
+
+/// The cells whose material is a mixture.
+std::vector<char> mixture_cells(const Reader& r) {
+  std::vector<char> mixture(r.mesh.mesh.num_cells(), 0);
+  for (const auto& [block, material] : r.mesh.materials)
+    if (r.spec.materials.at(material).is_mixture())
+      for (Index c : r.mesh.mesh.cell_block(block))
+        mixture[c] = 1;
+  return mixture;
+}
+
+/// Faces of mixture cells that no other mixture cell shares (the mesh boundary and interfaces
+/// with solid cells), outward-oriented.
+std::vector<mesh::Facet> mixture_boundary(const mesh::Mesh& mesh,
+                                          const std::vector<char>& mixture) {
+  std::map<FaceKey, std::pair<mesh::Facet, int>> faces;
+  for (Index c = 0; c < mesh.num_cells(); ++c) {
+    if (!mixture[c])
+      continue;
+    for (int f = 0; f < 6; ++f) {
+      mesh::Facet facet;
+      facet.cell = c;
+      facet.local_face = f;
+      for (int k = 0; k < 4; ++k)
+        facet.nodes[k] = mesh.cell(c)[mesh::kHexFaces[f][k]];
+      auto [it, inserted] = faces.try_emplace(key_of(facet.nodes), facet, 0);
+      ++it->second.second;
+    }
+  }
+  std::vector<mesh::Facet> boundary;
+  for (const auto& [key, entry] : faces)
+    if (entry.second == 1)
+      boundary.push_back(entry.first);
+  return boundary;
+}
+
+Vec3 unit_normal(const mesh::Mesh& mesh, const mesh::Facet& f) {
+  const Vec3 n = (mesh.node(f.nodes[2]) - mesh.node(f.nodes[0]))
+                     .cross(mesh.node(f.nodes[3]) - mesh.node(f.nodes[1]));
+  return n.normalized();
+}
+
+/// Splits facets into patches: facets sharing an edge belong to one patch if their normals meet
+/// at less than the feature angle.
+std::vector<std::vector<mesh::Facet>> patches(const mesh::Mesh& mesh,
+                                              const std::vector<mesh::Facet>& facets) {
+  const Real cos_limit = std::cos(kFeatureAngleDegrees * std::numbers::pi / 180.0);
+  std::vector<Vec3> normals;
+  std::map<std::pair<Index, Index>, std::vector<std::size_t>> by_edge;
+  for (std::size_t i = 0; i < facets.size(); ++i) {
+    normals.push_back(unit_normal(mesh, facets[i]));
+    for (int k = 0; k < 4; ++k) {
+      Index a = facets[i].nodes[k], b = facets[i].nodes[(k + 1) % 4];
+      by_edge[{std::min(a, b), std::max(a, b)}].push_back(i);
+    }
+  }
+  std::vector<int> patch(facets.size(), -1);
+  std::vector<std::vector<mesh::Facet>> out;
+  for (std::size_t seed = 0; seed < facets.size(); ++seed) {
+    if (patch[seed] >= 0)
+      continue;
+    const int p = static_cast<int>(out.size());
+    out.emplace_back();
+    std::vector<std::size_t> stack{seed};
+    patch[seed] = p;
+    while (!stack.empty()) {
+      const std::size_t i = stack.back();
+      stack.pop_back();
+      out[p].push_back(facets[i]);
+      for (int k = 0; k < 4; ++k) {
+        Index a = facets[i].nodes[k], b = facets[i].nodes[(k + 1) % 4];
+        for (std::size_t j : by_edge[{std::min(a, b), std::max(a, b)}])
+          if (patch[j] < 0 && normals[i].dot(normals[j]) > cos_limit) {
+            patch[j] = p;
+            stack.push_back(j);
+          }
+      }
+    }
+  }
+  return out;
+}
+
+} // namespace
+
+void add_impermeable_faces(Reader& r) {
+  const std::vector<char> mixture = mixture_cells(r);
+  if (std::none_of(mixture.begin(), mixture.end(), [](char m) { return m != 0; }))
+    return;
+  std::vector<mesh::Facet> closed;
+  for (const mesh::Facet& f : mixture_boundary(r.mesh.mesh, mixture))
+    if (!std::all_of(f.nodes.begin(), f.nodes.end(), [&](Index n) { return r.drained[n] != 0; }))
+      closed.push_back(f);
+  const auto groups = patches(r.mesh.mesh, closed);
+  for (std::size_t k = 0; k < groups.size(); ++k) {
+    const std::string name = fmt::format("impermeable#{}", k + 1);
+    r.mesh.mesh.add_surface(name, mesh::Surface{groups[k]});
+    r.spec.impermeable_surfaces.push_back(
+        {fmt::format("FEBio's natural condition (no flux), faces without zero fluid pressure, "
+                     "patch {}",
+                     k + 1),
+         name});
+  }
+}
+
+} // namespace trifem::feb::detail

@@ -1,0 +1,149 @@
+// SPDX-License-Identifier: MIT
+#include "trifem/feb/feb_reader.hpp"
+
+#include "trifem/core/error.hpp"
+#include "trifem/core/log.hpp"
+#include "trifem/feb/reader.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <fmt/format.h>
+#include <fstream>
+#include <sstream>
+#include <system_error>
+
+namespace trifem::feb {
+namespace {
+
+using detail::Reader;
+using detail::Version;
+
+std::string display_name(const std::filesystem::path& file) {
+  return file.empty() ? std::string("<feb>") : file.string();
+}
+
+std::string read_text(const std::filesystem::path& file) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(file, ec))
+    throw InputError(
+        fmt::format("{}: cannot open the FEBio file (it is a directory)", display_name(file)));
+  std::ifstream in(file, std::ios::binary);
+  if (!in)
+    throw InputError(
+        fmt::format("{}: cannot open the FEBio file ({})", display_name(file),
+                    std::error_code(errno ? errno : ENOENT, std::generic_category()).message()));
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+/// The format version of the root element: 4.0 or 3.0; older ones are refused.
+Version version(const Document& doc, pugi::xml_node root) {
+  if (std::string_view(root.name()) != "febio_spec")
+    doc.fail(root, "not an FEBio file: the root element must be <febio_spec>");
+  const std::string v = doc.attribute(root, "version");
+  if (v == "4.0")
+    return Version::V4;
+  if (v == "3.0")
+    return Version::V3;
+  doc.fail(root, "version",
+           fmt::format("FEBio format version '{}' is not supported (trifem reads 4.0 and 3.0; "
+                       "FEBio Studio converts older files: open it and save it as .feb 4.0)",
+                       v));
+}
+
+/// Module type: solid or biphasic.
+void read_module(Reader& r, pugi::xml_node root) {
+  const pugi::xml_node module = root.child("Module");
+  if (!module)
+    return; // FEBio's default: solid
+  const std::string type = r.doc.attribute(module, "type");
+  if (type == "biphasic")
+    r.biphasic_module = true;
+  else if (type != "solid")
+    r.doc.fail(module, "type",
+               fmt::format("module '{}' is not supported (supported: solid, biphasic)", type));
+}
+
+/// Sections that are refused with a reason (everything else unknown is refused too).
+void check_sections(const Reader& r, pugi::xml_node root) {
+  for (pugi::xml_node s : root.children()) {
+    if (s.type() != pugi::node_element)
+      continue;
+    const std::string_view name = s.name();
+    static constexpr std::string_view known[] = {"Module",   "Globals",     "Control",  "Material",
+                                                 "Mesh",     "MeshDomains", "Boundary", "Loads",
+                                                 "LoadData", "Output",      "Step"};
+    if (std::find(std::begin(known), std::end(known), name) == std::end(known))
+      r.doc.fail(s, fmt::format("the section <{}> is not supported (trifem reads Module, Globals, "
+                                "Control, Material, Mesh, MeshDomains, Boundary, Loads, LoadData, "
+                                "Output and Step)",
+                                name));
+  }
+  if (const pugi::xml_node globals = root.child("Globals"))
+    for (pugi::xml_node g : globals.children())
+      if (g.type() == pugi::node_element && std::string_view(g.name()) != "Constants")
+        r.doc.fail(g, fmt::format("<{}> is not supported (no solutes in this version)", g.name()));
+}
+
+/// Curves extended by EXTRAPOLATE must cover the run (then they equal CONSTANT ones).
+void check_curve_extents(const Reader& r) {
+  for (const auto& e : r.curve_extents)
+    if (e.extrapolate && (e.first > 0.0 || e.last < r.spec.time.end_time))
+      r.doc.fail(e.node, fmt::format("extend EXTRAPOLATE is used at times outside its points [{}, "
+                                     "{}] (the run lasts to {}): trifem holds curves constant "
+                                     "outside their points",
+                                     e.first, e.last, r.spec.time.end_time));
+}
+
+void read_sections(Reader& r) {
+  const pugi::xml_node root = r.doc.root();
+  r.version = version(r.doc, root);
+  check_sections(r, root);
+  read_module(r, root);
+  detail::read_materials(r, r.doc.child(root, "Material"));
+  detail::read_mesh(r, r.doc.child(root, "Mesh"), root.child("MeshDomains"));
+  if (r.version == Version::V4 && !root.child("MeshDomains"))
+    r.doc.fail(root, "the element <MeshDomains> is required");
+  if (const pugi::xml_node data = root.child("LoadData"))
+    detail::read_load_data(r, data);
+  if (const pugi::xml_node b = root.child("Boundary"))
+    detail::read_boundary(r, b, r.spec.fixed, r.spec.prescribed, false);
+  if (const pugi::xml_node l = root.child("Loads"))
+    detail::read_loads(r, l, r.spec.pressures);
+  detail::read_steps(r, root);
+  check_curve_extents(r);
+  if (const pugi::xml_node o = root.child("Output"))
+    detail::read_output(r, o);
+  detail::add_impermeable_faces(r);
+  r.spec.output.vtu = true;
+}
+
+} // namespace
+
+io::CaseSpec parse_feb(std::string_view text, const std::filesystem::path& file) {
+  const Document doc(std::string(text), file);
+  io::CaseSpec spec;
+  spec.file = file;
+  Reader r{doc, spec};
+  read_sections(r);
+  spec.title = doc.text(doc.root().child("Control").child("title"));
+  spec.meshes.push_back(std::move(r.mesh));
+  for (const std::string& warning : spec.warnings)
+    log::warn("warning: {}", warning);
+  return spec;
+}
+
+io::CaseSpec read_feb(const std::filesystem::path& file) {
+  return parse_feb(read_text(file), file);
+}
+
+bool is_feb_file(const std::filesystem::path& file) {
+  std::string ext = file.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext == ".feb";
+}
+
+} // namespace trifem::feb

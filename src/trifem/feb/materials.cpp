@@ -1,0 +1,213 @@
+// SPDX-License-Identifier: MIT
+// Material section: FEBio material types -> trifem laws with the same strain energy.
+#include "trifem/core/error.hpp"
+#include "trifem/feb/reader.hpp"
+#include "trifem/material/mixture.hpp"
+#include "trifem/material/registry.hpp"
+
+#include <algorithm>
+#include <fmt/format.h>
+
+namespace trifem::feb::detail {
+namespace {
+
+/// A FEBio solid law whose strain energy is that of a trifem law (docs/feb.md "Materials").
+struct LawMapping {
+  const char* febio;
+  const char* trifem;
+  std::vector<std::pair<const char*, const char*>> parameters; ///< FEBio name -> trifem name
+  std::vector<const char*> zero; ///< FEBio parameters accepted only at 0 (terms trifem lacks)
+};
+
+const std::vector<LawMapping>& law_mappings() {
+  static const std::vector<LawMapping> laws = {
+      {"neo-Hookean", "neo-hookean", {{"E", "E"}, {"v", "nu"}}, {}},
+      {"isotropic elastic", "saint-venant-kirchhoff", {{"E", "E"}, {"v", "nu"}}, {}},
+      {"Holmes-Mow", "holmes-mow", {{"E", "E"}, {"v", "nu"}, {"beta", "beta"}}, {}},
+      {"Mooney-Rivlin", "mooney-rivlin", {{"c1", "c1"}, {"c2", "c2"}, {"k", "k"}}, {}},
+      {"Ogden",
+       "ogden",
+       {{"c1", "c1"},
+        {"c2", "c2"},
+        {"c3", "c3"},
+        {"m1", "m1"},
+        {"m2", "m2"},
+        {"m3", "m3"},
+        {"k", "k"}},
+       {"c4", "c5", "c6"}},
+  };
+  return laws;
+}
+
+/// Parameters FEBio reads that do not change a quasi-static solution without body forces.
+bool ignored_parameter(std::string_view name) {
+  return name == "density" || name == "m4" || name == "m5" || name == "m6";
+}
+
+std::string known_types() {
+  std::string s;
+  for (const auto& m : law_mappings())
+    s += fmt::format("{}{}", s.empty() ? "" : ", ", m.febio);
+  return s + ", biphasic";
+}
+
+/// The value of a material parameter element (a plain number: no load curve, no map).
+Real parameter_value(const Reader& r, pugi::xml_node p) {
+  if (p.attribute("lc"))
+    r.doc.fail(p, "a load curve on a material parameter is not supported");
+  if (p.attribute("type"))
+    r.doc.fail(p, "only a constant material parameter is supported (no map or math)");
+  return r.doc.number(p);
+}
+
+/// The solid law of a FEBio solid material element (type attribute), validated.
+material::LawSpec solid_law(const Reader& r, pugi::xml_node node) {
+  const std::string type = r.doc.attribute(node, "type");
+  const LawMapping* law = nullptr;
+  for (const auto& m : law_mappings())
+    if (type == m.febio)
+      law = &m;
+  if (!law)
+    r.doc.fail(
+        node, "type",
+        fmt::format("material type '{}' is not supported (supported: {})", type, known_types()));
+  material::LawSpec spec{law->trifem, {}, {}};
+  for (pugi::xml_node p : node.children()) {
+    if (p.type() != pugi::node_element)
+      continue;
+    const std::string name = p.name();
+    if (name == "pressure_model") {
+      const std::string model = r.doc.text(p);
+      if (model != "default" && model != "0")
+        r.doc.fail(p, fmt::format("pressure_model '{}' is not supported (trifem's volumetric "
+                                  "energy is FEBio's default, U = k/2 (ln J)^2)",
+                                  model));
+      continue;
+    }
+    if (ignored_parameter(name))
+      continue;
+    if (std::find(law->zero.begin(), law->zero.end(), name) != law->zero.end()) {
+      if (parameter_value(r, p) != 0.0)
+        r.doc.fail(p, fmt::format("{} != 0: trifem's {} law has at most 3 terms", name, type));
+      continue;
+    }
+    const auto it = std::find_if(law->parameters.begin(), law->parameters.end(),
+                                 [&](const auto& q) { return name == q.first; });
+    if (it == law->parameters.end()) {
+      std::string known;
+      for (const auto& q : law->parameters)
+        known += fmt::format("{}{}", known.empty() ? "" : ", ", q.first);
+      r.doc.fail(p, fmt::format("unknown parameter '{}' of material type '{}' (expected one of: "
+                                "{}, density)",
+                                name, type, known));
+    }
+    spec.parameters[it->second] = parameter_value(r, p);
+  }
+  try {
+    material::create_law(spec, fmt::format("trifem {}", spec.type));
+  } catch (const InputError& e) {
+    r.doc.fail(node, e.what());
+  }
+  return spec;
+}
+
+/// The permeability element of a biphasic material as mixture parameters.
+void permeability(const Reader& r, pugi::xml_node node, material::ParameterValues& values) {
+  const std::string type = r.doc.attribute(node, "type");
+  std::string law;
+  std::vector<std::pair<const char*, const char*>> names;
+  if (type == "perm-const-iso") {
+    names = {{"perm", "k0"}};
+  } else if (type == "perm-Holmes-Mow") {
+    law = "holmes-mow";
+    names = {{"perm", "k0"}, {"M", "M"}, {"alpha", "alpha"}};
+  } else if (type == "perm-exp-iso") {
+    law = "exponential";
+    names = {{"perm", "k0"}, {"M", "M"}};
+  } else {
+    r.doc.fail(node, "type",
+               fmt::format("permeability type '{}' is not supported (supported: perm-const-iso, "
+                           "perm-Holmes-Mow, perm-exp-iso)",
+                           type));
+  }
+  for (pugi::xml_node p : node.children()) {
+    if (p.type() != pugi::node_element)
+      continue;
+    const auto it = std::find_if(names.begin(), names.end(), [&](const auto& q) {
+      return std::string_view(p.name()) == q.first;
+    });
+    if (it == names.end())
+      r.doc.fail(p,
+                 fmt::format("unknown parameter '{}' of permeability type '{}'", p.name(), type));
+    const std::string key = law.empty()
+                                ? std::string("permeability")
+                                : material::transport_law_key("permeability", law, it->second);
+    values[key] = parameter_value(r, p);
+  }
+}
+
+/// A biphasic material: solid, permeability and solid volume fraction.
+io::MaterialSpec biphasic(const Reader& r, pugi::xml_node node) {
+  io::MaterialSpec m;
+  m.type = "biphasic";
+  for (pugi::xml_node p : node.children()) {
+    if (p.type() != pugi::node_element)
+      continue;
+    const std::string name = p.name();
+    if (name == "solid")
+      m.solid = solid_law(r, p);
+    else if (name == "permeability")
+      permeability(r, p, m.parameters);
+    else if (name == "phi0")
+      m.parameters["phi_s0"] = parameter_value(r, p);
+    else if (name == "tau" && parameter_value(r, p) != 0.0)
+      r.doc.fail(p, "tau != 0 is not supported");
+    else if (name != "tau" && name != "fluid_density" && name != "solid_density")
+      r.doc.fail(p, fmt::format("unknown parameter '{}' of a biphasic material (expected one of: "
+                                "phi0, solid, permeability, fluid_density, tau)",
+                                name));
+  }
+  if (!m.solid)
+    r.doc.fail(node, "a biphasic material needs a <solid>");
+  if (!m.parameters.contains("phi_s0"))
+    r.doc.fail(node, "a biphasic material needs <phi0> (the solid volume fraction)");
+  try {
+    m.parameters = material::validate_mixture_parameters(false, m.parameters, "biphasic");
+  } catch (const InputError& e) {
+    r.doc.fail(node, e.what());
+  }
+  return m;
+}
+
+} // namespace
+
+void read_materials(Reader& r, pugi::xml_node section) {
+  for (pugi::xml_node node : section.children()) {
+    if (node.type() != pugi::node_element)
+      continue;
+    if (std::string_view(node.name()) != "material")
+      r.doc.fail(node, "expected <material> elements");
+    const std::string id = node.attribute("id").value();
+    std::string name = node.attribute("name").value();
+    if (name.empty())
+      name = "material" + id;
+    const std::string type = r.doc.attribute(node, "type");
+    io::MaterialSpec m;
+    if (type == "biphasic") {
+      m = biphasic(r, node);
+    } else {
+      const material::LawSpec law = solid_law(r, node);
+      m.type = law.type;
+      m.parameters = law.parameters;
+    }
+    if (r.spec.materials.contains(name))
+      r.doc.fail(node, "name", fmt::format("a second material named '{}'", name));
+    r.spec.materials[name] = std::move(m);
+    if (!id.empty())
+      r.material_by_id[id] = name;
+  }
+  if (r.spec.materials.empty())
+    r.doc.fail(section, "the file defines no material");
+}
+
+} // namespace trifem::feb::detail

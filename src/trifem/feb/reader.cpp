@@ -1,0 +1,84 @@
+// SPDX-License-Identifier: MIT
+#include "trifem/feb/reader.hpp"
+
+#include "trifem/core/log.hpp"
+
+#include <fmt/format.h>
+
+namespace trifem::feb::detail {
+namespace {
+
+/// "a, b, c" of the names of a map (at most 12, then "...").
+template <class Map>
+std::string names_of(const Map& map) {
+  std::string s;
+  int n = 0;
+  for (const auto& entry : map) {
+    if (++n > 12)
+      return s + ", ...";
+    s += fmt::format("{}{}", s.empty() ? "" : ", ", entry.first);
+  }
+  return s.empty() ? "none" : s;
+}
+
+} // namespace
+
+void Reader::warn(pugi::xml_node node, const std::string& what) {
+  spec.warnings.push_back(fmt::format("{}: {}", doc.where(node), what));
+}
+
+std::string Reader::curve_of(pugi::xml_node node) const {
+  const pugi::xml_attribute lc = node.attribute("lc");
+  if (!lc)
+    return "";
+  const auto it = curve_by_id.find(lc.value());
+  if (it == curve_by_id.end())
+    doc.fail(node, "lc",
+             fmt::format("load controller {} is not defined (defined: {})", lc.value(),
+                         names_of(curve_by_id)));
+  return it->second;
+}
+
+std::string Reader::node_set(pugi::xml_node node, const char* attribute) const {
+  std::string name = doc.attribute(node, attribute);
+  constexpr std::string_view kSurface = "@surface:";
+  if (name.starts_with(kSurface)) {
+    name.erase(0, kSurface.size());
+    if (!mesh.mesh.has_surface(name))
+      doc.fail(node, attribute,
+               fmt::format("surface '{}' is not defined (defined: {})", name,
+                           names_of(mesh.mesh.surfaces())));
+    return name; // the mesh registers a surface's nodes as a node set of the same name
+  }
+  if (name.starts_with("@"))
+    doc.fail(node, attribute,
+             fmt::format("'{}': only node sets and @surface: references are supported", name));
+  if (!mesh.mesh.has_node_set(name))
+    doc.fail(node, attribute,
+             fmt::format("node set '{}' is not defined (defined: {})", name,
+                         names_of(mesh.mesh.node_sets())));
+  return name;
+}
+
+std::string Reader::surface(pugi::xml_node node, const char* attribute) const {
+  const std::string name = doc.attribute(node, attribute);
+  if (!mesh.mesh.has_surface(name))
+    doc.fail(node, attribute,
+             fmt::format("surface '{}' is not defined (defined: {})", name,
+                         names_of(mesh.mesh.surfaces())));
+  return name;
+}
+
+std::vector<Index> Reader::nodes_of(pugi::xml_node node, const std::vector<long>& ids) const {
+  std::vector<Index> nodes;
+  nodes.reserve(ids.size());
+  for (long id : ids) {
+    const auto it = node_index.find(id);
+    if (it == node_index.end())
+      doc.fail(node, fmt::format("node id {} is not defined", id));
+    nodes.push_back(it->second);
+  }
+  return nodes;
+}
+
+} // namespace trifem::feb::detail

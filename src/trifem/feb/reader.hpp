@@ -1,0 +1,89 @@
+// SPDX-License-Identifier: MIT
+// Shared state of the .feb section readers (internal to the feb library).
+#pragma once
+
+#include "trifem/core/error.hpp"
+#include "trifem/feb/document.hpp"
+#include "trifem/io/case_spec.hpp"
+
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace trifem::feb::detail {
+
+/// The FEBio format versions read.
+enum class Version { V3, V4 };
+
+/// A load curve as FEBio extends it beyond its points; checked against the run's span once the
+/// steps are known.
+struct CurveExtent {
+  pugi::xml_node node;
+  bool extrapolate = false; ///< extend EXTRAPOLATE (the same as CONSTANT inside its points)
+  Real first = 0.0;         ///< time of the first point [s]
+  Real last = 0.0;          ///< time of the last point [s]
+};
+
+/// Everything the section readers share while a file is read.
+struct Reader {
+  Reader(const Document& d, io::CaseSpec& s) : doc(d), spec(s) {}
+
+  const Document& doc;
+  io::CaseSpec& spec;
+  Version version = Version::V4;
+  bool biphasic_module = false;
+  io::InlineMeshSpec mesh;
+  std::map<long, Index> node_index;                  ///< FEBio node id -> mesh node
+  std::map<long, Index> cell_index;                  ///< FEBio element id -> mesh cell
+  std::map<std::string, std::string> material_by_id; ///< FEBio material id -> name
+  std::map<std::string, pugi::xml_node> parts;       ///< Elements name -> its element
+  std::map<std::string, std::string> curve_by_id;    ///< load controller id -> curve name
+  std::vector<CurveExtent> curve_extents;
+  std::vector<char> drained; ///< per mesh node: in a "zero fluid pressure" node set
+
+  void warn(pugi::xml_node node, const std::string& what);
+  /// The curve name of the attribute lc of `node` ("" without one).
+  std::string curve_of(pugi::xml_node node) const;
+  /// The node set named by the attribute `attribute` ("@surface:S" names the nodes of S).
+  std::string node_set(pugi::xml_node node, const char* attribute = "node_set") const;
+  /// The surface named by the attribute `attribute`.
+  std::string surface(pugi::xml_node node, const char* attribute = "surface") const;
+  /// The mesh nodes of the FEBio node ids in the text of `node`.
+  std::vector<Index> nodes_of(pugi::xml_node node, const std::vector<long>& ids) const;
+};
+
+/// Runs `f` (a mesh operation), turning its InputError into one located at `node`.
+template <class F>
+void with_mesh_errors(const Reader& r, pugi::xml_node node, F&& f) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    r.doc.fail(node, e.what());
+  }
+}
+
+/// Materials (before the mesh: 3.0 files assign them by id in Elements).
+void read_materials(Reader& r, pugi::xml_node section);
+/// Mesh (Nodes, Elements, NodeSet, Surface, ElementSet) and MeshDomains.
+void read_mesh(Reader& r, pugi::xml_node mesh, pugi::xml_node domains);
+/// LoadData: the load controllers as curves.
+void read_load_data(Reader& r, pugi::xml_node section);
+/// The conditions of a Boundary section into `fixed` and `prescribed`; zero fluid pressure
+/// marks drained nodes (top level only: `step` false).
+void read_boundary(Reader& r, pugi::xml_node section, std::vector<io::FixedSpec>& fixed,
+                   std::vector<io::PrescribedSpec>& prescribed, bool step);
+/// The surface loads of a Loads section.
+void read_loads(Reader& r, pugi::xml_node section, std::vector<io::PressureSpec>& pressures);
+/// The time control of a Control section; `start` is the step's start time [s].
+io::TimeSpec read_control(Reader& r, pugi::xml_node control, Real start);
+/// Control or Step: the time of the run and its steps with their conditions.
+void read_steps(Reader& r, pugi::xml_node root);
+/// Output: logfile data as reactions and probes where they map directly.
+void read_output(Reader& r, pugi::xml_node section);
+/// FEBio's natural condition of mixtures (no flux through a face without a condition): every
+/// boundary face of the mixture cells whose nodes are not all drained becomes part of an
+/// impermeable surface (one per smooth patch).
+void add_impermeable_faces(Reader& r);
+
+} // namespace trifem::feb::detail

@@ -1,0 +1,170 @@
+// SPDX-License-Identifier: MIT
+// The FEBio reader refuses what it cannot map with one error line: file, line, XML path, what.
+#include "trifem/core/error.hpp"
+#include "trifem/feb/feb_reader.hpp"
+
+#include <gtest/gtest.h>
+
+using namespace trifem;
+
+namespace {
+
+/// A valid single-hex 4.0 file; `material`, `elements` and `boundary` replace its sections.
+std::string model_text(const std::string& material, const std::string& elements,
+                       const std::string& boundary) {
+  return R"(<?xml version="1.0"?>
+<febio_spec version="4.0">
+  <Module type="solid"/>
+  <Control><analysis>STATIC</analysis><time_steps>2</time_steps><step_size>0.5</step_size></Control>
+  <Material>
+)" + material +
+         R"(
+  </Material>
+  <Mesh>
+    <Nodes name="all">
+      <node id="1">0,0,0</node><node id="2">1,0,0</node><node id="3">1,1,0</node><node id="4">0,1,0</node>
+      <node id="5">0,0,1</node><node id="6">1,0,1</node><node id="7">1,1,1</node><node id="8">0,1,1</node>
+    </Nodes>
+)" + elements +
+         R"(
+    <NodeSet name="bottom">1, 2, 3, 4</NodeSet>
+  </Mesh>
+  <MeshDomains><SolidDomain name="P" mat="m"/></MeshDomains>
+  <Boundary>
+)" + boundary +
+         R"(
+  </Boundary>
+</febio_spec>
+)";
+}
+
+const std::string kMaterial =
+    R"(    <material id="1" name="m" type="neo-Hookean"><E>1</E><v>0.3</v></material>)";
+const std::string kHex =
+    R"(    <Elements type="hex8" name="P"><elem id="1">1,2,3,4,5,6,7,8</elem></Elements>)";
+const std::string kFixed =
+    R"(    <bc name="fix" node_set="bottom" type="zero displacement"><x_dof>1</x_dof><y_dof>1</y_dof><z_dof>1</z_dof></bc>)";
+
+/// The message of the InputError parse_feb throws for `text` (fails the test if none).
+std::string error_of(const std::string& text, const std::string& file = "bad.feb") {
+  try {
+    feb::parse_feb(text, file);
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_EQ(what.find('\n'), std::string::npos) << "one line: " << what;
+    return what;
+  }
+  ADD_FAILURE() << "no error for " << file;
+  return "";
+}
+
+void expect_contains(const std::string& message, const std::vector<std::string>& fragments) {
+  for (const std::string& f : fragments)
+    EXPECT_NE(message.find(f), std::string::npos) << "'" << f << "' not in: " << message;
+}
+
+} // namespace
+
+TEST(FebErrors, TheValidBaseFileReads) {
+  EXPECT_NO_THROW(feb::parse_feb(model_text(kMaterial, kHex, kFixed), "good.feb"));
+}
+
+TEST(FebErrors, Tet4Mesh) {
+  const std::string tet =
+      R"(    <Elements type="tet4" name="P"><elem id="1">1,2,3,5</elem></Elements>)";
+  expect_contains(error_of(model_text(kMaterial, tet, kFixed)),
+                  {"bad.feb:13: febio_spec/Mesh/Elements[@type='tet4'][@name='P']: ",
+                   "element type 'tet4' is not supported (trifem has hex8 only)"});
+}
+
+TEST(FebErrors, UnknownMaterialType) {
+  const std::string m =
+      R"(    <material id="1" name="m" type="Fung orthotropic"><E1>1</E1></material>)";
+  expect_contains(error_of(model_text(m, kHex, kFixed)),
+                  {"bad.feb:6: febio_spec/Material/material[@type='Fung orthotropic'][@name='m']"
+                   "/@type: ",
+                   "material type 'Fung orthotropic' is not supported", "neo-Hookean"});
+}
+
+TEST(FebErrors, UnknownMaterialParameter) {
+  const std::string m =
+      R"(    <material id="1" name="m" type="neo-Hookean"><E>1</E><nu>0.3</nu></material>)";
+  expect_contains(error_of(model_text(m, kHex, kFixed)),
+                  {"bad.feb:6: febio_spec/Material/material[@type='neo-Hookean'][@name='m']/nu: ",
+                   "unknown parameter 'nu' of material type 'neo-Hookean'", "E, v"});
+}
+
+TEST(FebErrors, OutOfRangeMaterialParameter) {
+  const std::string m =
+      R"(    <material id="1" name="m" type="neo-Hookean"><E>-1</E><v>0.3</v></material>)";
+  expect_contains(error_of(model_text(m, kHex, kFixed)), {"bad.feb:6: ", "E = -1: out of range"});
+}
+
+TEST(FebErrors, MissingNodeSet) {
+  const std::string bc =
+      R"(    <bc name="fix" node_set="botom" type="zero displacement"><z_dof>1</z_dof></bc>)";
+  expect_contains(error_of(model_text(kMaterial, kHex, bc)),
+                  {"bad.feb:18: febio_spec/Boundary/bc[@type='zero displacement'][@name='fix']"
+                   "/@node_set: ",
+                   "node set 'botom' is not defined (defined: bottom)"});
+}
+
+TEST(FebErrors, UndefinedNodeInAnElement) {
+  const std::string hex =
+      R"(    <Elements type="hex8" name="P"><elem id="1">1,2,3,4,5,6,7,9</elem></Elements>)";
+  expect_contains(error_of(model_text(kMaterial, hex, kFixed)),
+                  {"bad.feb:13: ", "elem[@id='1']: node id 9 is not defined"});
+}
+
+TEST(FebErrors, BrokenXmlGivesTheLine) {
+  std::string text = model_text(kMaterial, kHex, kFixed);
+  text.replace(text.find("</Material>"), 11, "</Materal>");
+  expect_contains(error_of(text), {"bad.feb:7: XML syntax error: ", "not well-formed"});
+}
+
+TEST(FebErrors, OldFormatVersions) {
+  for (const char* v : {"2.0", "2.5", "1.2"}) {
+    std::string text = model_text(kMaterial, kHex, kFixed);
+    text.replace(text.find("\"4.0\""), 5, fmt::format("\"{}\"", v));
+    expect_contains(error_of(text), {"bad.feb:2: febio_spec/@version: ",
+                                     fmt::format("FEBio format version '{}' is "
+                                                 "not supported",
+                                                 v),
+                                     "trifem reads 4.0 and 3.0"});
+  }
+}
+
+TEST(FebErrors, UnsupportedBoundaryAndSections) {
+  const std::string rigid =
+      R"(    <bc name="r" node_set="bottom" type="zero rotation"><x_dof>1</x_dof></bc>)";
+  expect_contains(error_of(model_text(kMaterial, kHex, rigid)),
+                  {"bad.feb:18: ", "boundary condition type 'zero rotation' is not supported"});
+  std::string contact = model_text(kMaterial, kHex, kFixed);
+  contact.replace(contact.find("</febio_spec>"), 13, "  <Contact/>\n</febio_spec>");
+  expect_contains(error_of(contact),
+                  {"bad.feb:20: febio_spec/Contact: ", "the section <Contact> is not supported"});
+}
+
+TEST(FebErrors, SteadyStateBiphasicAndStepCurves) {
+  std::string text = model_text(kMaterial, kHex, kFixed);
+  text.replace(text.find("\"solid\""), 7, "\"biphasic\"");
+  expect_contains(error_of(text), {"bad.feb:4: febio_spec/Control/analysis: ",
+                                   "a static biphasic analysis is not supported"});
+  text = model_text(kMaterial, kHex, kFixed);
+  text.replace(text.find("</febio_spec>"), 13,
+               R"(<LoadData><load_controller id="1" type="loadcurve"><interpolate>STEP</interpolate>
+<points><pt>0,0</pt><pt>1,1</pt></points></load_controller></LoadData></febio_spec>)");
+  expect_contains(error_of(text),
+                  {"bad.feb:20: ", "/interpolate: interpolation 'STEP' is not supported"});
+}
+
+TEST(FebErrors, MissingFile) {
+  try {
+    feb::read_feb("no/such/model.feb");
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("no/such/model.feb: cannot open the FEBio file"),
+              std::string::npos)
+        << e.what();
+  }
+}

@@ -1,0 +1,246 @@
+// SPDX-License-Identifier: MIT
+// FEBio test problems run from their unchanged .feb files (tests/data/feb, README.md there for
+// their sources) and compared with independent answers: closed forms of homogeneous uniaxial
+// states for the solids, the confined-compression ramp-relaxation series for a biphasic column.
+#include "exact_solutions.hpp"
+#include "trifem/analysis/case_file.hpp"
+#include "trifem/analysis/run.hpp"
+#include "trifem/feb/feb_reader.hpp"
+#include "trifem/linalg/linear_solver.hpp"
+#include "trifem/model/model.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+using namespace trifem;
+
+namespace {
+
+const std::filesystem::path kData = TRIFEM_FEB_DATA_DIR;
+
+struct FebRun {
+  io::CaseSpec spec;
+  std::unique_ptr<model::Model> model;
+  solver::RunReport report;
+};
+
+/// Builds the model of `spec` and runs all its steps, calling `observer` after every step.
+FebRun run(io::CaseSpec spec, const std::function<void(const model::Model&, Real)>& observer = {}) {
+  FebRun r;
+  r.spec = std::move(spec);
+  r.model = model::build_model(r.spec);
+  solver::NewtonSolver newton(analysis::newton_settings(r.spec.solver),
+                              linalg::make_linear_solver(r.spec.solver.linear_solver));
+  solver::Linearization initial;
+  r.model->problem->linearize(initial, false);
+  r.report = analysis::run_steps(
+      r.spec, *r.model, newton,
+      [&](const solver::StepInfo& info) {
+        if (observer)
+          observer(*r.model, info.time);
+      },
+      [](const solver::StepController&) {});
+  return r;
+}
+
+/// Sum of the residual (reaction) at one displacement component of a node set.
+Real reaction(const model::Model& m, const std::string& set, int component) {
+  Real sum = 0.0;
+  for (Index n : m.mesh.node_set(set))
+    sum += m.problem->full_residual()[m.dofs.dof(m.fields.u, n, component)];
+  return sum;
+}
+
+Real displacement(const model::Model& m, Index node, int component) {
+  return m.problem->state()[m.dofs.dof(m.fields.u, node, component)];
+}
+
+/// Principal Cauchy stresses of a homogeneous state with stretches (a, a, c).
+using StressLaw = std::function<std::array<Real, 2>(Real a, Real c)>;
+
+/// The lateral stretch a of uniaxial stress along z at axial stretch c (sigma_xx = 0), by
+/// Newton's method with a difference quotient (the laws are smooth).
+Real lateral_stretch(const StressLaw& law, Real c) {
+  Real a = 1.0;
+  for (int i = 0; i < 100; ++i) {
+    const Real f = law(a, c)[0], h = 1e-7;
+    const Real df = (law(a + h, c)[0] - law(a - h, c)[0]) / (2.0 * h);
+    const Real step = f / df;
+    a -= step;
+    if (std::abs(step) < 1e-14)
+      break;
+  }
+  return a;
+}
+
+/// Compressible neo-Hookean (W = mu/2 (I1 - 3) - mu ln J + lambda/2 (ln J)^2):
+/// sigma_i = [mu (l_i^2 - 1) + lambda ln J] / J.
+StressLaw neo_hookean(Real E, Real nu) {
+  const Real mu = E / (2.0 * (1.0 + nu)), lambda = E * nu / ((1.0 + nu) * (1.0 - 2.0 * nu));
+  return [=](Real a, Real c) {
+    const Real J = a * a * c;
+    return std::array<Real, 2>{(mu * (a * a - 1.0) + lambda * std::log(J)) / J,
+                               (mu * (c * c - 1.0) + lambda * std::log(J)) / J};
+  };
+}
+
+/// Uncoupled laws: Kirchhoff stress tau_i = dev(t~)_i + k ln J with t~_i = t~(l~_i, I1~) the
+/// isochoric principal Kirchhoff stress of the deviatoric stretches l~ = J^(-1/3) l.
+StressLaw uncoupled(std::function<Real(Real, Real)> isochoric_tau, Real k) {
+  return [=](Real a, Real c) {
+    const Real J = a * a * c, s = std::cbrt(J);
+    const Real I1 = (2.0 * a * a + c * c) / (s * s);
+    const Real ta = isochoric_tau(a / s, I1), tc = isochoric_tau(c / s, I1);
+    const Real mean = (2.0 * ta + tc) / 3.0;
+    return std::array<Real, 2>{(ta - mean + k * std::log(J)) / J,
+                               (tc - mean + k * std::log(J)) / J};
+  };
+}
+
+/// Mooney-Rivlin: t~_i = 2 c1 l~_i^2 + 2 c2 l~_i^2 (I1~ - l~_i^2).
+StressLaw mooney_rivlin(Real c1, Real c2, Real k) {
+  return uncoupled(
+      [=](Real l, Real I1) { return 2.0 * c1 * l * l + 2.0 * c2 * l * l * (I1 - l * l); }, k);
+}
+
+/// Ogden: t~_i = sum_p c_p/m_p l~_i^m_p.
+StressLaw ogden(std::vector<std::pair<Real, Real>> terms, Real k) {
+  return uncoupled(
+      [=](Real l, Real) {
+        Real t = 0.0;
+        for (const auto& [c, m] : terms)
+          t += c / m * std::pow(l, m);
+        return t;
+      },
+      k);
+}
+
+std::string read_file(const std::filesystem::path& p) {
+  std::ifstream in(p);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+} // namespace
+
+// The 2x2x2-point hex8 reproduces a homogeneous state exactly: the single-element problems
+// match their closed forms to the Newton tolerance.
+
+TEST(FebVerification, NeoHookeanUniaxialStretch) {
+  const auto law = neo_hookean(1.0, 0.3);
+  std::map<long, Real> force; // time in 1/100 s -> reaction
+  const FebRun r = run(
+      analysis::read_case_file(kData / "uniaxial_neo_hookean.feb"),
+      [&](const model::Model& m, Real t) { force[std::lround(t * 100)] = reaction(m, "Top", 2); });
+  ASSERT_TRUE(r.report.success);
+  ASSERT_EQ(force.size(), 10u);
+  for (const auto& [t, f] : force) {
+    const Real c = 1.0 + 0.2 * t / 100.0, a = lateral_stretch(law, c);
+    EXPECT_NEAR(f, law(a, c)[1] * a * a, 1e-8) << "t = " << t / 100.0;
+  }
+  const Real a = lateral_stretch(law, 1.2);
+  const Index corner = 6; // FEBio node 7 at (1, 1, 1)
+  EXPECT_NEAR(displacement(*r.model, corner, 0), a - 1.0, 1e-9);
+  EXPECT_NEAR(displacement(*r.model, corner, 2), 0.2, 1e-12);
+  EXPECT_NEAR(force.at(100), 0.174929, 1e-6); // the number itself, for the record
+}
+
+TEST(FebVerification, MooneyRivlinFollowerPressure) {
+  const Real p = 0.1;
+  const auto law = mooney_rivlin(0.2, 0.05, 20.0);
+  // Uniaxial stress sigma_zz = -p: solve for the axial stretch c by bisection on sigma_zz(c).
+  Real lo = 0.5, hi = 1.0;
+  for (int i = 0; i < 200; ++i) {
+    const Real c = 0.5 * (lo + hi);
+    (law(lateral_stretch(law, c), c)[1] > -p ? hi : lo) = c;
+  }
+  const Real c = 0.5 * (lo + hi), a = lateral_stretch(law, c);
+  std::vector<Real> times;
+  const FebRun r = run(analysis::read_case_file(kData / "uniaxial_mooney_rivlin_pressure.feb"),
+                       [&](const model::Model&, Real t) { times.push_back(t); });
+  ASSERT_TRUE(r.report.success);
+  EXPECT_TRUE(std::any_of(times.begin(), times.end(), [](Real t) {
+    return std::abs(t - 0.35) < 1e-9;
+  })) << "the must point of the dtmax curve";
+  const Index corner = 6;
+  EXPECT_NEAR(displacement(*r.model, corner, 2), c - 1.0, 1e-8);
+  EXPECT_NEAR(displacement(*r.model, corner, 0), a - 1.0, 1e-8);
+  EXPECT_LT(c, 0.94); // a real compression (about 6.6 %), not a trivial state
+}
+
+TEST(FebVerification, OgdenTwoSteps) {
+  const auto law = ogden({{0.4, 4.0}, {0.2, -2.0}}, 30.0);
+  std::map<long, Real> force;
+  const FebRun r = run(
+      analysis::read_case_file(kData / "ogden_two_steps.feb"),
+      [&](const model::Model& m, Real t) { force[std::lround(t * 100)] = reaction(m, "top", 2); });
+  ASSERT_TRUE(r.report.success);
+  for (const auto& [t, c] : {std::pair{100L, 1.3}, {200L, 1.1}, {150L, 1.2}}) {
+    const Real a = lateral_stretch(law, c);
+    EXPECT_NEAR(force.at(t), law(a, c)[1] * a * a, 1e-8) << "t = " << t / 100.0;
+  }
+}
+
+// The ramp-relaxation problem of FEBio's test suite (bp04), as a .feb file written for trifem:
+// a biphasic column of 10 elements, 1 x 1 x 1, confined
+// laterally, impermeable except at the top (FEBio's natural condition, here written out as
+// impermeable surfaces), compressed 0.1 in 100 s and held to 1000 s. Reference: the linear
+// ramp-relaxation series of Mow et al. (1980) (exact_solutions.hpp), H_A = 1, kappa = 1e-3,
+// tau = h^2/(H_A kappa) = 1000 s; at 10 % strain the neo-Hookean solid is nonlinear, so the
+// equilibrium is compared with its exact finite-strain value and the history with the series at
+// a 1000 times smaller strain (the same file with the load curve scaled).
+
+namespace {
+
+/// The top reaction history of the column with the load curve's end value replaced by `end`.
+std::map<long, Real> ramp_history(const std::string& end) {
+  std::string text = read_file(kData / "confined_biphasic_ramp.feb");
+  const std::string point = "<pt>100,-0.1</pt>";
+  text.replace(text.find(point), point.size(), "<pt>100," + end + "</pt>");
+  std::map<long, Real> history; // t [s] -> top reaction [N]
+  const FebRun r = run(
+      feb::parse_feb(text, kData / "confined_biphasic_ramp.feb"),
+      [&](const model::Model& m, Real t) { history[std::lround(t * 10)] = reaction(m, "Top", 2); });
+  EXPECT_TRUE(r.report.success);
+  return history;
+}
+
+const exact::ConfinedLayer kColumn{1.0, 1.0, 1e-3};
+
+} // namespace
+
+TEST(FebVerification, ConfinedRampEquilibriumAtFiniteStrain) {
+  const std::map<long, Real> h = ramp_history("-0.1");
+  ASSERT_EQ(h.size(), 400u);
+  // Neo-Hookean, nu = 0 (lambda = 0, mu = 0.5), confined stretch 0.9: sigma = mu (l - 1/l).
+  const Real equilibrium = 0.5 * (0.9 - 1.0 / 0.9);
+  // What remains of the relaxation at t = 1000 s in linear theory (relative).
+  const Real remaining = exact::ramp_relaxation_stress(kColumn, 0.1, 100.0, 1000.0) / -0.1 - 1.0;
+  EXPECT_NEAR(h.at(10000), equilibrium * (1.0 + remaining), 2e-3 * std::abs(equilibrium));
+  const Real peak = h.at(1000);
+  const Real linear_peak = exact::ramp_relaxation_stress(kColumn, 0.1, 100.0, 100.0);
+  EXPECT_LT(peak, 0.0);
+  EXPECT_NEAR(peak / linear_peak, 1.0, 0.15); // finite strain: a moderately larger peak
+  std::cout << "[ ramp     ] peak " << peak << " (linear theory " << linear_peak
+            << "), t = 1000 s: " << h.at(10000) << " (equilibrium " << equilibrium << ")\n";
+}
+
+TEST(FebVerification, ConfinedRampSmallStrainMatchesTheSeries) {
+  const Real eps = 1e-4;
+  const std::map<long, Real> h = ramp_history("-0.0001");
+  const Real peak = exact::ramp_relaxation_stress(kColumn, eps, 100.0, 100.0);
+  Real worst = 0.0;
+  for (const auto& [t10, f] : h) {
+    const Real t = t10 / 10.0;
+    const Real reference = exact::ramp_relaxation_stress(kColumn, eps, 100.0, t);
+    worst = std::max(worst, std::abs(f - reference) / std::abs(peak));
+  }
+  std::cout << "[ ramp     ] small strain: largest difference " << worst << " of the peak " << peak
+            << "\n";
+  EXPECT_LT(worst, 0.03);
+}

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Boundary and Loads sections: fixed and prescribed displacements, zero fluid pressure
-// (drained nodes), pressure loads.
+// (drained nodes), pressure and traction loads.
 #include "trifem/feb/reader.hpp"
 
 #include <fmt/format.h>
@@ -138,32 +138,79 @@ void read_boundary(Reader& r, pugi::xml_node section, std::vector<io::FixedSpec>
   }
 }
 
-void read_loads(Reader& r, pugi::xml_node section, std::vector<io::PressureSpec>& pressures) {
+namespace {
+
+/// <surface_load type="pressure">: a follower pressure on the deformed surface.
+io::PressureSpec pressure_load(const Reader& r, pugi::xml_node load) {
+  io::PressureSpec p;
+  p.surface = r.surface(load);
+  const pugi::xml_node value = r.doc.child(load, "pressure");
+  p.value = r.doc.number(value);
+  p.curve = r.curve_of(value);
+  for (pugi::xml_node c : load.children()) {
+    if (!is_element(c))
+      continue;
+    const std::string_view name = c.name();
+    if (name == "linear" && flag(r, c))
+      r.doc.fail(c, "a linear (non-follower) pressure is not supported: trifem's pressure "
+                    "follows the deformed surface");
+    if (name == "shell_bottom" && flag(r, c))
+      r.doc.fail(c, "shell_bottom is not supported (trifem has no shells)");
+    if (name != "pressure" && name != "linear" && name != "symmetric_stiffness" &&
+        name != "shell_bottom")
+      r.doc.fail(c, fmt::format("unknown parameter '{}' of a pressure load", name));
+  }
+  return p;
+}
+
+/// <surface_load type="traction">: scale x traction per reference area, a dead load (FEBio
+/// integrates it over the reference surface, as trifem's [[loads.traction]]); the load curve
+/// is that of <scale>.
+io::TractionSpec traction_load(const Reader& r, pugi::xml_node load) {
+  io::TractionSpec t;
+  t.surface = r.surface(load);
+  Real scale = 1.0;
+  for (pugi::xml_node c : load.children()) {
+    if (!is_element(c))
+      continue;
+    const std::string_view name = c.name();
+    if (name == "scale") {
+      scale = r.doc.number(c);
+      t.curve = r.curve_of(c);
+    } else if (name == "traction") {
+      if (c.attribute("lc"))
+        r.doc.fail(c, "a load curve on the traction vector is not supported (put it on <scale>)");
+      t.value = r.doc.vector(c);
+    } else if (name == "shell_bottom") {
+      if (flag(r, c))
+        r.doc.fail(c, "shell_bottom is not supported (trifem has no shells)");
+    } else {
+      r.doc.fail(c, fmt::format("unknown parameter '{}' of a traction load (expected one of: "
+                                "scale, traction, shell_bottom)",
+                                name));
+    }
+  }
+  r.doc.child(load, "traction"); // required: InputError if missing
+  t.value *= scale;
+  return t;
+}
+
+} // namespace
+
+void read_loads(Reader& r, pugi::xml_node section, std::vector<io::PressureSpec>& pressures,
+                std::vector<io::TractionSpec>& tractions) {
   for (pugi::xml_node load : section.children()) {
     if (!is_element(load))
       continue;
     const std::string type = load.attribute("type").value();
-    if (std::string_view(load.name()) != "surface_load" || type != "pressure")
-      r.doc.fail(load, "only <surface_load type=\"pressure\"> is supported in <Loads>");
-    io::PressureSpec p;
-    p.surface = r.surface(load);
-    const pugi::xml_node value = r.doc.child(load, "pressure");
-    p.value = r.doc.number(value);
-    p.curve = r.curve_of(value);
-    for (pugi::xml_node c : load.children()) {
-      if (!is_element(c))
-        continue;
-      const std::string_view name = c.name();
-      if (name == "linear" && flag(r, c))
-        r.doc.fail(c, "a linear (non-follower) pressure is not supported: trifem's pressure "
-                      "follows the deformed surface");
-      if (name == "shell_bottom" && flag(r, c))
-        r.doc.fail(c, "shell_bottom is not supported (trifem has no shells)");
-      if (name != "pressure" && name != "linear" && name != "symmetric_stiffness" &&
-          name != "shell_bottom")
-        r.doc.fail(c, fmt::format("unknown parameter '{}' of a pressure load", name));
-    }
-    pressures.push_back(std::move(p));
+    const bool surface_load = std::string_view(load.name()) == "surface_load";
+    if (surface_load && type == "pressure")
+      pressures.push_back(pressure_load(r, load));
+    else if (surface_load && type == "traction")
+      tractions.push_back(traction_load(r, load));
+    else
+      r.doc.fail(load, "only <surface_load type=\"pressure\"> and <surface_load "
+                       "type=\"traction\"> are supported in <Loads>");
   }
 }
 

@@ -73,8 +73,9 @@ void read_load_data(Reader& r, pugi::xml_node section);
 /// marks drained nodes (top level only: `step` false).
 void read_boundary(Reader& r, pugi::xml_node section, std::vector<io::FixedSpec>& fixed,
                    std::vector<io::PrescribedSpec>& prescribed, bool step);
-/// The surface loads of a Loads section.
-void read_loads(Reader& r, pugi::xml_node section, std::vector<io::PressureSpec>& pressures);
+/// The surface loads of a Loads section: follower pressures and dead tractions.
+void read_loads(Reader& r, pugi::xml_node section, std::vector<io::PressureSpec>& pressures,
+                std::vector<io::TractionSpec>& tractions);
 /// The time control of a Control section; `start` is the step's start time [s].
 io::TimeSpec read_control(Reader& r, pugi::xml_node control, Real start);
 /// Control or Step: the time of the run and its steps with their conditions.

@@ -168,3 +168,27 @@ TEST(FebErrors, MissingFile) {
         << e.what();
   }
 }
+
+TEST(FebErrors, UnsupportedSurfaceLoads) {
+  const std::string loads =
+      R"(<Loads><surface_load surface="top" type="{}">{}</surface_load></Loads>
+</febio_spec>)";
+  const auto with_load = [&](const std::string& type, const std::string& body) {
+    std::string text = model_text(kMaterial, kHex, kFixed);
+    text.replace(text.find("<NodeSet"), 0,
+                 "<Surface name=\"top\"><quad4 id=\"1\">5,6,7,8</quad4></Surface>\n    ");
+    std::string l = loads;
+    l.replace(l.find("{}"), 2, type);
+    l.replace(l.find("{}"), 2, body);
+    text.replace(text.find("</febio_spec>"), 13, l);
+    return text;
+  };
+  expect_contains(error_of(with_load("traction", "<scale>1</scale><trac>0,0,1</trac>")),
+                  {"bad.feb:21: ", "/trac: unknown parameter 'trac' of a traction load"});
+  expect_contains(
+      error_of(with_load("traction", "<scale>1</scale>")),
+      {"bad.feb:21: ", "surface_load[@type='traction']: the element <traction> is required"});
+  expect_contains(error_of(with_load("fluidflux", "<flux>1</flux>")),
+                  {"bad.feb:21: ", "only <surface_load type=\"pressure\"> and <surface_load "
+                                   "type=\"traction\"> are supported"});
+}

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "trifem/analysis/output_fields.hpp"
 
+#include "trifem/analysis/axis_fields.hpp"
 #include "trifem/analysis/cell_values.hpp"
 
 #include <fmt/format.h>
@@ -131,6 +132,8 @@ std::vector<io::DataArray> cell_fields(const model::Model& model) {
       std::copy(values.begin(), values.end(), out[i].values.begin() + c * written[i]->components);
     }
   }
+  for (io::DataArray& a : axis_fields(model, x))
+    out.push_back(std::move(a));
   return out;
 }
 

@@ -12,7 +12,8 @@ namespace trifem::analysis {
 std::vector<io::DataArray> point_fields(const model::Model& model);
 
 /// Cell arrays: total and solid Cauchy stress, relative volume; with mixtures the element
-/// chemistry (pressure, potentials, concentrations, fixed charge, porosity, current density).
+/// chemistry (pressure, potentials, concentrations, fixed charge, porosity, current density);
+/// with material axes their reference and current directions (axis_fields).
 std::vector<io::DataArray> cell_fields(const model::Model& model);
 
 } // namespace trifem::analysis

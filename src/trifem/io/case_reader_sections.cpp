@@ -204,7 +204,18 @@ SolidSpec read_mixture_solid(const Table& t) {
          fmt::format("missing required table [{}] (the solid matrix of a {} material: its type "
                      "(a solid law) and parameters)",
                      t.path("solid"), t.get<std::string>("type").value_or("mixture")));
+  if (const toml::node* axes = solid->find("axes"))
+    fail(axes, solid->path("axes"),
+         fmt::format("give the material axes of a mixture as [{}] (they orient its solid)",
+                     t.path("axes")));
   return read_solid_law(*solid, read_type(*solid, LawPlace::Solid, "solid law"));
+}
+
+/// The optional [<t>.axes] table of the material `t`.
+std::optional<material::AxesSpec> read_material_axes(const Table& t) {
+  if (const auto axes = t.table("axes"))
+    return read_axes(*axes);
+  return std::nullopt;
 }
 
 MaterialSpec read_mixture(const Table& t, const std::string& type) {
@@ -214,6 +225,7 @@ MaterialSpec read_mixture(const Table& t, const std::string& type) {
   std::vector<std::string_view> keys = {"type", "solid"};
   for (const auto& p : material::mixture_schema(charged))
     keys.push_back(p.key);
+  keys.push_back("axes");
   t.allow(keys);
   const material::ParameterValues values = read_mixture_values(t, charged);
   SolidSpec solid = read_mixture_solid(t);
@@ -221,7 +233,9 @@ MaterialSpec read_mixture(const Table& t, const std::string& type) {
                  material::validate_mixture_parameters(charged, values, t.path()),
                  std::move(solid),
                  std::nullopt,
-                 {}};
+                 {},
+                 SolidElementSpec::Auto,
+                 read_material_axes(t)};
   material::make_mixture(charged, material::create_law(*m.solid, t.path("solid")), m.parameters,
                          t.path()); // the mixture's own checks
   return m;
@@ -268,9 +282,13 @@ MaterialSpec read_material(const Table& t, const CaseSpec& spec) {
          fmt::format("only biphasic and triphasic materials have a [solid] sub-table ({} = '{}' "
                      "is a solid law: give its parameters in [{}] itself)",
                      t.path("type"), type, t.path()));
-  SolidSpec s = read_solid_law(t, type, {"density", "element"});
+  if (spec.is_explicit() && t.find("axes"))
+    fail(t.find("axes"), t.path("axes"),
+         "not supported in dynamic-explicit analyses yet (fibre directions are global there)");
+  SolidSpec s = read_solid_law(t, type, {"density", "element", "axes"});
   return {std::move(s.type),     std::move(s.parameters),   std::nullopt,
-          read_density(t, spec), std::move(s.constituents), read_solid_element(t, spec)};
+          read_density(t, spec), std::move(s.constituents), read_solid_element(t, spec),
+          read_material_axes(t)};
 }
 
 CurveSpec read_curve(const Table& t) {

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "trifem/dofs/load_curve.hpp"
+#include "trifem/material/material_axes.hpp"
 #include "trifem/material/registry.hpp"
 #include "trifem/material/schema.hpp"
 #include "trifem/mesh/box.hpp"
@@ -70,6 +71,9 @@ struct MaterialSpec {
   std::vector<SolidSpec> constituents;
   /// The element of a solid-law material in quasi-static analyses (key `element`).
   SolidElementSpec element = SolidElementSpec::Auto;
+  /// The material axes ([<name>.axes]): the local basis in which the directions of its solid
+  /// law (or of a mixture's solid) are given; absent: the global basis.
+  std::optional<material::AxesSpec> axes;
   bool is_mixture() const { return type == "biphasic" || type == "triphasic"; }
   /// The solid law of a material that is not a mixture (type, parameters, constituents).
   SolidSpec solid_law() const { return {type, parameters, constituents}; }

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "trifem/io/case_spec.hpp"
+#include "trifem/material/material_axes.hpp"
 #include "trifem/material/schema.hpp"
 
 #include <algorithm>
@@ -318,6 +319,9 @@ void read_rigid_bodies(const Table& root, CaseSpec& spec);
 void read_analysis(const Table& root, CaseSpec& spec);
 /// [electrochemistry] (case_reader_physics.cpp).
 void read_electrochemistry(const Table& root, CaseSpec& spec);
+
+/// The [<material>.axes] table `t` of a material (case_reader_axes.cpp).
+material::AxesSpec read_axes(const Table& t);
 
 /// [analysis] type, before every other section (case_reader_explicit.cpp).
 void read_analysis_type(const Table& root, CaseSpec& spec);

@@ -5,6 +5,7 @@
 #include "trifem/material/registry.hpp"
 #include "trifem/mesh/gmsh_reader.hpp"
 #include "trifem/model/averages.hpp"
+#include "trifem/model/cell_axes.hpp"
 #include "trifem/model/conditions.hpp"
 #include "trifem/model/contact_pairs.hpp"
 #include "trifem/model/rigid_bodies.hpp"
@@ -221,6 +222,7 @@ std::unique_ptr<Model> build_model(const io::CaseSpec& spec) {
   std::map<std::string, std::string> block_materials;
   model->mesh = build_mesh(spec, block_materials);
   model->materials = cell_materials(spec, model->mesh, block_materials);
+  model->axes = orient_cells(spec, model->mesh, block_materials, model->materials);
   const std::vector<CellMaterial>& materials = model->materials;
   model->chem = electrochemistry(spec.electrochemistry);
   add_fields(materials, *model);

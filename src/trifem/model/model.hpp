@@ -83,7 +83,10 @@ struct Model {
   mesh::Mesh mesh;
   dofs::DofMap dofs;
   std::vector<CellMaterial> materials; ///< per cell
-  physics::MixtureFields fields;       ///< u always; w, p with mixtures; j+-, eta with ions
+  /// The material basis Q = [e1 e2 e3] per cell (the identity for cells of materials without
+  /// [<name>.axes]); empty if no material has axes.
+  std::vector<Mat3> axes;
+  physics::MixtureFields fields; ///< u always; w, p with mixtures; j+-, eta with ions
   material::Electrochemistry chem;
   const physics::SolidTerm* solid = nullptr;   ///< pure-solid cells (owned by problem)
   physics::MixtureTerm* mixture = nullptr;     ///< mixture cells (owned by problem)

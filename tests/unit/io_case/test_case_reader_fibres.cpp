@@ -421,3 +421,108 @@ semi_axes = [1, 1, 1]
 
 INSTANTIATE_TEST_SUITE_P(FibreDistribution, BadFibreDistributionInput,
                          testing::ValuesIn(kBadDistributionCases), bad_case_name);
+
+// --- material axes ---------------------------------------------------------------------------
+
+TEST(CaseReaderMaterialAxes, EachTypeOnASolidAndOnAMixture) {
+  const CaseSpec none = parse_case(kModel + kCartilage, kMemoryFile);
+  EXPECT_FALSE(none.materials.at("cart").axes.has_value());
+
+  const CaseSpec v =
+      parse_case(kModel + kCartilage +
+                     "[materials.cart.axes]\ntype = \"vector\"\na = [0, 1, 0]\nd = [-1, 0, 0]\n",
+                 kMemoryFile);
+  const auto& axes = v.materials.at("cart").axes;
+  ASSERT_TRUE(axes.has_value());
+  EXPECT_EQ(axes->kind, material::AxesKind::Vector);
+  EXPECT_EQ(axes->a, Vec3(0, 1, 0));
+  EXPECT_EQ(axes->d, Vec3(-1, 0, 0));
+
+  const std::string solid = kModel + R"(
+[materials.cart]
+type = "neo-hookean"
+E = 1.0
+nu = 0.3
+[materials.cart.axes]
+)";
+  const CaseSpec c = parse_case(
+      solid + "type = \"cylindrical\"\ncenter = [1, 2, 3]\naxis = [0, 0, 2]\n", kMemoryFile);
+  EXPECT_EQ(c.materials.at("cart").axes->kind, material::AxesKind::Cylindrical);
+  EXPECT_EQ(c.materials.at("cart").axes->center, Vec3(1, 2, 3));
+  EXPECT_EQ(c.materials.at("cart").axes->axis, Vec3(0, 0, 2));
+
+  const CaseSpec s = parse_case(solid + "type = \"spherical\"\ncenter = [0, 0, -1]\n", kMemoryFile);
+  EXPECT_EQ(s.materials.at("cart").axes->kind, material::AxesKind::Spherical);
+  EXPECT_EQ(s.materials.at("cart").axes->axis, Vec3(0, 0, 1)); // the default pole axis
+}
+
+class BadAxesInput : public testing::TestWithParam<BadCase> {};
+
+TEST_P(BadAxesInput, FailsNamingTheKeyPath) {
+  expect_fails_naming(GetParam());
+}
+
+/// kModel + kCartilage with the axes table `axes` (its keys).
+std::string cartilage_axes(const std::string& axes) {
+  return kModel + kCartilage + "[materials.cart.axes]\n" + axes;
+}
+
+const std::vector<BadCase> kBadAxesCases = {
+    {"missing_type",
+     cartilage_axes("a = [1, 0, 0]\n"),
+     {"materials.cart.axes.type: missing required key"}},
+    {"unknown_type",
+     cartilage_axes("type = \"polar\"\n"),
+     {"materials.cart.axes.type = 'polar': unknown axes type (expected one of: vector, "
+      "cylindrical, spherical)"}},
+    {"parallel_vectors",
+     cartilage_axes("type = \"vector\"\na = [1, 2, 3]\nd = [2, 4, 6]\n"),
+     {"materials.cart.axes.d: must not be parallel to a", "(line 31)"}},
+    {"zero_a",
+     cartilage_axes("type = \"vector\"\na = [0, 0, 0]\nd = [0, 1, 0]\n"),
+     {"materials.cart.axes.a: must be a nonzero vector"}},
+    {"missing_d",
+     cartilage_axes("type = \"vector\"\na = [1, 0, 0]\n"),
+     {"materials.cart.axes.d: missing required key"}},
+    {"key_of_another_type",
+     cartilage_axes("type = \"vector\"\na = [1, 0, 0]\ncenter = [0, 0, 0]\n"),
+     {"materials.cart.axes.center: unknown key (expected one of: type, a, d)"}},
+    {"zero_cylinder_axis",
+     cartilage_axes("type = \"cylindrical\"\ncenter = [0, 0, 0]\naxis = [0, 0, 0]\n"),
+     {"materials.cart.axes.axis: must be a nonzero vector"}},
+    {"missing_center",
+     cartilage_axes("type = \"spherical\"\n"),
+     {"materials.cart.axes.center: missing required key"}},
+
+    {"axes_not_a_table",
+     kModel + replaced_in(kCartilage, "phi_s0 = 0.2", "phi_s0 = 0.2\naxes = 1"),
+     {"materials.cart.axes: expected a table"}},
+    {"axes_in_an_explicit_analysis",
+     R"(
+[analysis]
+type = "dynamic-explicit"
+[[mesh.box]]
+name = "beam"
+size = [4, 1, 1]
+divisions = [4, 1, 1]
+material = "rubber"
+[materials.rubber]
+type = "neo-hookean"
+E = 0.8
+density = 1.1e-9
+[materials.rubber.axes]
+type = "vector"
+a = [0, 1, 0]
+d = [1, 0, 0]
+[time]
+end_time = 0.01
+)",
+     {"materials.rubber.axes: not supported in dynamic-explicit analyses yet"}},
+    {"axes_in_the_mixture_solid",
+     kModel + replaced_in(kCartilage, "type = \"solid-mixture\"",
+                          "type = \"solid-mixture\"\naxes = { type = \"vector\" }"),
+     {"materials.cart.solid.axes: give the material axes of a mixture as [materials.cart.axes]"}},
+};
+
+INSTANTIATE_TEST_SUITE_P(MaterialAxes, BadAxesInput, testing::ValuesIn(kBadAxesCases),
+                         bad_case_name);

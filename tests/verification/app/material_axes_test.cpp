@@ -1,0 +1,277 @@
+// SPDX-License-Identifier: MIT
+// Material axes through the whole chain (case reader, model, solver, VTU arrays): a block of a
+// neo-Hookean matrix with one fibre family, compressed to a stretch of 0.8 along x with
+// symmetry planes.
+// - The fibre given in local axes (type "vector") is the fibre given globally along e1: the FE
+//   states agree to round-off, for e1 = y and for an off-axis e1; the global basis (a = x,
+//   d = y) gives the same bits as no axes.
+// - Cylindrical axes give each cell the basis at its centroid: two separate boxes with
+//   circumferential fibres equal two materials with the constant bases of their centroids;
+//   cells with the same basis share one law.
+// - A biphasic material's solid is rotated per cell (spherical axes), its mixture shared.
+// - The VTU arrays material_axis and fibre_direction.
+#include "case_runner.hpp"
+#include "trifem/analysis/axis_fields.hpp"
+#include "trifem/analysis/output_fields.hpp"
+#include "trifem/material/material_axes.hpp"
+#include "trifem/material/rotated_law.hpp"
+
+#include <gtest/gtest.h>
+
+#include <fmt/format.h>
+
+#include <string>
+
+using namespace trifem;
+
+namespace {
+
+const std::filesystem::path kFile = "memory/axes.toml";
+
+std::string text(const Vec3& v) {
+  return fmt::format("[{:.17g}, {:.17g}, {:.17g}]", v.x(), v.y(), v.z());
+}
+
+/// A box `name` at `origin` (unit cube, `divisions`) of `material`, with symmetry planes at its
+/// minimum faces and its xmax face moved by -0.2 mm (stretch 0.8: the lateral expansion
+/// stretches fibres across x, which then restrain it).
+std::string box(const std::string& name, const Vec3& origin, const std::string& divisions,
+                const std::string& material) {
+  return fmt::format(R"(
+[[mesh.box]]
+name = "{0}"
+origin = {1}
+size = [1, 1, 1]
+divisions = {2}
+material = "{3}"
+[[boundary.fixed]]
+set = "{0}.xmin"
+components = ["x"]
+[[boundary.fixed]]
+set = "{0}.ymin"
+components = ["y"]
+[[boundary.fixed]]
+set = "{0}.zmin"
+components = ["z"]
+[[boundary.prescribed]]
+set = "{0}.xmax"
+component = "x"
+value = -0.2
+curve = "ramp"
+)",
+                     name, text(origin), divisions, material);
+}
+
+/// The fibre-reinforced material `name` with the fibre `fibre` and the axes table `axes`
+/// ("" for none).
+std::string fibre_material(const std::string& name, const Vec3& fibre, const std::string& axes) {
+  std::string m = fmt::format(R"(
+[materials.{0}]
+type = "solid-mixture"
+[[materials.{0}.constituent]]
+type = "neo-hookean"
+E = 1.0
+nu = 0.3
+[[materials.{0}.constituent]]
+type = "fibre-exp-pow"
+ksi = 5.0
+alpha = 0.5
+beta = 2.5
+fibre = {1}
+)",
+                              name, text(fibre));
+  if (!axes.empty())
+    m += fmt::format("[materials.{}.axes]\n{}", name, axes);
+  return m;
+}
+
+const std::string kTime = R"(
+[curves.ramp]
+points = [[0, 0], [1, 1]]
+[time]
+end_time = 1.0
+dt = 0.25
+)";
+
+std::string vector_axes(const Vec3& a, const Vec3& d) {
+  return fmt::format("type = \"vector\"\na = {}\nd = {}\n", text(a), text(d));
+}
+
+/// max |a - b| / max |b| of two FE states.
+Real relative_difference(const Vector& a, const Vector& b) {
+  return (a - b).lpNorm<Eigen::Infinity>() / b.lpNorm<Eigen::Infinity>();
+}
+
+Vector solve(const std::string& case_text) {
+  test::CaseRun run = test::run_case_text(case_text, kFile);
+  EXPECT_TRUE(run.report.success) << case_text;
+  return run.model->problem->state();
+}
+
+void record(const char* key, Real value) {
+  std::ostringstream out;
+  out << std::scientific << value;
+  testing::Test::RecordProperty(key, out.str());
+}
+
+} // namespace
+
+TEST(MaterialAxesChain, LocalFibreEqualsTheGlobalFibreAlongE1) {
+  const std::string block = box("block", Vec3::Zero(), "[2, 2, 2]", "m");
+  struct Axes {
+    const char* name;
+    Vec3 a, d;
+  };
+  Real worst = 0.0;
+  for (const Axes& axes : {Axes{"e1 = y", Vec3(0, 1, 0), Vec3(0, 0, 1)},
+                           Axes{"off-axis", Vec3(0.4, 1.0, 0.7), Vec3(1.0, -0.2, 0.3)}}) {
+    const Mat3 Q = material::vector_basis(axes.a, axes.d, "test");
+    const Vector local =
+        solve(block + kTime + fibre_material("m", Vec3(1, 0, 0), vector_axes(axes.a, axes.d)));
+    const Vector global = solve(block + kTime + fibre_material("m", Q.col(0), ""));
+    const Real difference = relative_difference(local, global);
+    EXPECT_LE(difference, 1e-12) << axes.name;
+    worst = std::max(worst, difference);
+    // and the axes matter: the fibre along global x gives another answer
+    const Vector along_x = solve(block + kTime + fibre_material("m", Vec3(1, 0, 0), ""));
+    EXPECT_GT(relative_difference(along_x, global), 1e-2) << axes.name;
+  }
+  record("max_relative_difference", worst);
+}
+
+TEST(MaterialAxesChain, GlobalBasisGivesTheSameBitsAsNoAxes) {
+  const std::string block = box("block", Vec3::Zero(), "[2, 2, 2]", "m");
+  const Vec3 fibre(1.0, 0.7, 0.4);
+  const Vector with =
+      solve(block + kTime + fibre_material("m", fibre, vector_axes(Vec3(2, 0, 0), Vec3(1, 3, 0))));
+  const Vector without = solve(block + kTime + fibre_material("m", fibre, ""));
+  EXPECT_TRUE(with == without);
+}
+
+TEST(MaterialAxesChain, CylindricalAxesGiveEachCellTheBasisAtItsCentroid) {
+  // Two separate boxes, each two cells high (both cells of a box have the same radial
+  // direction), circumferential fibres (local e2).
+  const Vec3 origin_a(1.0, 0.5, 0.0), origin_b(-1.0, 2.0, 0.0);
+  const std::string cylindrical = "type = \"cylindrical\"\ncenter = [0, 0, -3]\naxis = [0, 0, 2]\n";
+  const std::string boxes =
+      box("a", origin_a, "[1, 1, 2]", "cyl") + box("b", origin_b, "[1, 1, 2]", "cyl") + kTime;
+  test::CaseRun run =
+      test::run_case_text(boxes + fibre_material("cyl", Vec3(0, 1, 0), cylindrical), kFile);
+  ASSERT_TRUE(run.report.success);
+  const model::Model& m = *run.model;
+  ASSERT_EQ(m.axes.size(), 4u);
+  // the bases at the centroids (1.5, 1, z) and (-0.5, 2.5, z)
+  const Mat3 Qa = material::cylindrical_basis(Vec3(0, 0, -3), Vec3(0, 0, 2), Vec3(1.5, 1, 0), "a");
+  const Mat3 Qb =
+      material::cylindrical_basis(Vec3(0, 0, -3), Vec3(0, 0, 2), Vec3(-0.5, 2.5, 0), "b");
+  EXPECT_LE((Qa.col(0) - Vec3(1.5, 1, 0).normalized()).norm(), 1e-16);
+  EXPECT_LE((Qa.col(1) - Vec3(-1, 1.5, 0).normalized()).norm(), 1e-16);
+  for (Index c : m.mesh.cell_block("a"))
+    EXPECT_TRUE(m.axes[c] == Qa) << c;
+  for (Index c : m.mesh.cell_block("b"))
+    EXPECT_TRUE(m.axes[c] == Qb) << c;
+  // the cells of a box share their law; the boxes do not
+  const auto& a = m.mesh.cell_block("a");
+  const auto& b = m.mesh.cell_block("b");
+  EXPECT_EQ(m.materials[a[0]].solid, m.materials[a[1]].solid);
+  EXPECT_NE(m.materials[a[0]].solid, m.materials[b[0]].solid);
+  const auto* rotated = dynamic_cast<const material::RotatedLaw*>(m.materials[b[1]].solid.get());
+  ASSERT_NE(rotated, nullptr);
+  EXPECT_TRUE(rotated->basis() == Qb);
+
+  // the same with a constant basis per box (two materials)
+  const std::string constant =
+      box("a", origin_a, "[1, 1, 2]", "ma") + box("b", origin_b, "[1, 1, 2]", "mb") + kTime +
+      fibre_material("ma", Vec3(0, 1, 0), vector_axes(Qa.col(0), Qa.col(1))) +
+      fibre_material("mb", Vec3(0, 1, 0), vector_axes(Qb.col(0), Qb.col(1)));
+  const Real difference = relative_difference(m.problem->state(), solve(constant));
+  EXPECT_LE(difference, 1e-12);
+  record("relative_difference_to_constant_bases", difference);
+}
+
+TEST(MaterialAxesChain, BiphasicSolidIsRotatedPerCell) {
+  const std::string text = box("block", Vec3(1, 1, 1), "[2, 1, 1]", "cart") + kTime + R"(
+[materials.cart]
+type = "biphasic"
+phi_s0 = 0.2
+permeability = 2e-3
+[materials.cart.axes]
+type = "spherical"
+center = [0, 0, 0]
+[materials.cart.solid]
+type = "solid-mixture"
+[[materials.cart.solid.constituent]]
+type = "neo-hookean"
+E = 0.5
+nu = 0.1
+[[materials.cart.solid.constituent]]
+type = "fibre-distribution"
+ksi = 2.0
+alpha = 0.0
+beta = 2.5
+semi_axes = [3, 1, 1]
+)";
+  const auto model = model::build_model(io::parse_case(text, kFile));
+  ASSERT_EQ(model->axes.size(), 2u);
+  for (Index c = 0; c < 2; ++c) {
+    const Vec3 centroid(1.25 + 0.5 * Real(c), 1.5, 1.5);
+    const Mat3 Q = material::spherical_basis(Vec3::Zero(), Vec3::UnitZ(), centroid, "s");
+    EXPECT_TRUE(model->axes[c] == Q) << c;
+    const auto& mixture = *model->materials[c].mixture;
+    EXPECT_EQ(mixture.permeability, 2e-3);
+    const auto* solid = dynamic_cast<const material::RotatedLaw*>(mixture.solid.get());
+    ASSERT_NE(solid, nullptr) << c;
+    EXPECT_TRUE(solid->basis() == Q) << c;
+    EXPECT_EQ(solid->type(), "solid-mixture");
+  }
+  EXPECT_NE(model->materials[0].mixture, model->materials[1].mixture);
+}
+
+TEST(MaterialAxesChain, NoAxesNoArraysAndPlainLaws) {
+  const auto model = model::build_model(io::parse_case(
+      box("block", Vec3::Zero(), "[1, 1, 1]", "m") + kTime + fibre_material("m", Vec3(1, 0, 0), ""),
+      kFile));
+  EXPECT_TRUE(model->axes.empty());
+  EXPECT_EQ(dynamic_cast<const material::RotatedLaw*>(model->materials[0].solid.get()), nullptr);
+  EXPECT_TRUE(analysis::axis_fields(*model, model->problem->state()).empty());
+  for (const auto& a : analysis::cell_fields(*model))
+    EXPECT_NE(a.name, "material_axis");
+}
+
+TEST(MaterialAxesChain, VtuArraysHoldTheReferenceAndCurrentFibreDirections) {
+  // fibre along local x = global y; the block is compressed along x: the state is homogeneous,
+  // F = diag(0.8, t_y, t_z), and the fibre stays along y.
+  const std::string block = box("block", Vec3::Zero(), "[2, 2, 2]", "m");
+  test::CaseRun run = test::run_case_text(
+      block + kTime + fibre_material("m", Vec3(1, 0, 0), vector_axes(Vec3(0, 1, 0), Vec3(0, 0, 1))),
+      kFile);
+  ASSERT_TRUE(run.report.success);
+  const model::Model& m = *run.model;
+  const auto arrays = analysis::cell_fields(m);
+  const io::DataArray* axis = nullptr;
+  const io::DataArray* fibre = nullptr;
+  for (const auto& a : arrays) {
+    if (a.name == "material_axis")
+      axis = &a;
+    if (a.name == "fibre_direction")
+      fibre = &a;
+  }
+  ASSERT_NE(axis, nullptr);
+  ASSERT_NE(fibre, nullptr);
+  ASSERT_EQ(axis->components, 3);
+  ASSERT_EQ(fibre->values.size(), 3u * 8u);
+  Real worst = 0.0;
+  for (std::size_t c = 0; c < 8; ++c) {
+    EXPECT_EQ(Vec3(axis->values[3 * c], axis->values[3 * c + 1], axis->values[3 * c + 2]),
+              Vec3(0, 1, 0));
+    const Vec3 f(fibre->values[3 * c], fibre->values[3 * c + 1], fibre->values[3 * c + 2]);
+    worst = std::max(worst, (f - Vec3(0, 1, 0)).norm());
+  }
+  EXPECT_LE(worst, 1e-12);
+  // the centre F of a cell: stretch 0.8 along x, the fibre stretched (t_y > 1)
+  const Mat3 F = analysis::centre_deformation_gradient(m, 0, m.problem->state());
+  EXPECT_NEAR(F(0, 0), 0.8, 1e-12);
+  EXPECT_GT(F(1, 1), 1.0);
+  EXPECT_LE(std::abs(F(0, 1)) + std::abs(F(1, 0)) + std::abs(F(0, 2)), 1e-12);
+  record("fibre_direction_error", worst);
+}

@@ -82,24 +82,26 @@ Vector multiplier_pressure(const ed::ExplicitSolver& s) {
 
 } // namespace
 
-Real explicit_output_interval(const io::CaseSpec& spec) {
+Real explicit_output_interval(const io::CaseSpec& spec, Real start) {
   return spec.output.interval_given ? spec.output.interval
-                                    : spec.time.end_time / io::kDefaultOutputCount;
+                                    : (spec.time.end_time - start) / io::kDefaultOutputCount;
 }
 
-std::vector<StepTarget> explicit_step_targets(const io::CaseSpec& spec) {
-  const Real end = spec.time.end_time, interval = explicit_output_interval(spec);
+std::vector<StepTarget> explicit_step_targets(const io::CaseSpec& spec, Real start) {
+  const Real end = spec.time.end_time, interval = explicit_output_interval(spec, start);
+  const Real origin = spec.output.interval_given ? 0.0 : start; // of the periodic output times
   std::vector<StepTarget> targets;
   if (interval > 0.0)
-    for (long k = 1; static_cast<Real>(k) * interval < end; ++k)
-      targets.push_back({static_cast<Real>(k) * interval, true});
+    for (long k = 1; origin + static_cast<Real>(k) * interval < end; ++k)
+      targets.push_back({origin + static_cast<Real>(k) * interval, true});
   for (const Real t : spec.output.times)
     targets.push_back({t, true});
   for (const auto& [name, curve] : spec.curves)
     for (const auto& point : curve.points)
       targets.push_back({point.first, false});
   const Real eps = 1e-12 * end;
-  std::erase_if(targets, [&](const StepTarget& t) { return t.time <= eps || t.time >= end - eps; });
+  std::erase_if(targets,
+                [&](const StepTarget& t) { return t.time <= start + eps || t.time >= end - eps; });
   targets.push_back({end, true});
   std::sort(targets.begin(), targets.end(),
             [](const StepTarget& a, const StepTarget& b) { return a.time < b.time; });
@@ -114,12 +116,21 @@ std::vector<StepTarget> explicit_step_targets(const io::CaseSpec& spec) {
 }
 
 ExplicitOutput::ExplicitOutput(const model::ExplicitCase& model, const io::OutputSpec& spec,
-                               std::filesystem::path directory)
+                               std::filesystem::path directory,
+                               const ExplicitContinuation* continuation)
     : case_(model), vtu_(spec.vtu), directory_(std::move(directory)) {
   std::error_code ec;
   std::filesystem::create_directories(directory_, ec);
   TRIFEM_CHECK(!ec, "cannot create the output directory {}: {}", directory_.string(), ec.message());
-  pvd_ = std::make_unique<io::PvdWriter>(directory_ / "results.pvd");
+  if (continuation) {
+    continued_ = true;
+    pvd_ = continuation->pvd;
+    first_index_ = continuation->first_index;
+    history_name_ = continuation->history_name;
+  } else {
+    own_pvd_ = std::make_unique<io::PvdWriter>(directory_ / "results.pvd");
+    pvd_ = own_pvd_.get();
+  }
   history_ = std::make_unique<ed::HistoryWriter>(history_file(), history_columns(model));
   const mesh::Mesh& mesh = model.model->mesh();
   grid_.points = mesh.nodes();
@@ -132,7 +143,7 @@ ExplicitOutput::~ExplicitOutput() = default;
 void ExplicitOutput::write_initial(const ed::ExplicitSolver& solver) {
   const auto start = Clock::now();
   history_->record_initial(solver);
-  if (vtu_)
+  if (vtu_ && !continued_) // a continued run wrote this state at the end of its last step
     write_vtu(solver);
   seconds_ += std::chrono::duration<double>(Clock::now() - start).count();
 }
@@ -152,7 +163,7 @@ void ExplicitOutput::write_vtu(const ed::ExplicitSolver& solver) {
   grid_.cell_data = {scalar_array("multiplier [MPa]", solver.multiplier()),
                      scalar_array("pressure [MPa]", multiplier_pressure(solver)),
                      scalar_array("Jbar-1", solver.fields().volume_change)};
-  const auto file = directory_ / fmt::format("volume_{:04d}.vtu", vtu_count_++);
+  const auto file = directory_ / fmt::format("volume_{:04d}.vtu", first_index_ + vtu_count_++);
   if (const auto bad = io::write_vtu(file, grid_); bad > 0)
     log::warn("  {} non-finite values written to {}", bad, file.string());
   pvd_->add(solver.time(), file);

@@ -2,6 +2,7 @@
 #include "trifem/analysis/explicit_run.hpp"
 
 #include "trifem/analysis/explicit_output.hpp"
+#include "trifem/analysis/output_writer.hpp"
 #include "trifem/analysis/run.hpp"
 #include "trifem/analysis/run_files.hpp"
 #include "trifem/core/error.hpp"
@@ -103,16 +104,16 @@ void log_model(const io::CaseSpec& spec, const model::ExplicitCase& c) {
 
 /// The step chosen by the solver (and why), with warnings for a reduced time.dt and for very many
 /// VTU files.
-void log_time_step(const ed::ExplicitSolver& solver, const io::CaseSpec& spec) {
+void log_time_step(const ed::ExplicitSolver& solver, const io::CaseSpec& spec, Real start = 0.0) {
   const ed::TimeStepInfo& t = solver.time_step_info();
   if (t.reduced)
     log::warn("  time.dt = {:.6g} s is above the stability estimate: reduced to {:.6g} s",
               t.requested, t.used);
+  const double files = std::ceil((spec.time.end_time - start) / t.used);
   log::info("  time step: {:.6g} s ({}), about {:.0f} steps to t = {:.6g} s", t.used,
-            t.requested > 0.0 && !t.reduced ? "time.dt" : "stability estimate",
-            std::ceil(spec.time.end_time / t.used), spec.time.end_time);
-  const double files = std::ceil(spec.time.end_time / t.used);
-  if (spec.output.vtu && explicit_output_interval(spec) <= 0.0 && files > kManyFiles)
+            t.requested > 0.0 && !t.reduced ? "time.dt" : "stability estimate", files,
+            spec.time.end_time);
+  if (spec.output.vtu && explicit_output_interval(spec, start) <= 0.0 && files > kManyFiles)
     log::warn("  output.interval = 0 writes a VTU file every step: about {:.0f} files (set "
               "output.interval)",
               files);
@@ -120,8 +121,8 @@ void log_time_step(const ed::ExplicitSolver& solver, const io::CaseSpec& spec) {
 
 /// Refuses a run whose steps, once the stable step is known, exceed io::kMaxSteps (the reader
 /// checks this only for a requested time.dt).
-void check_step_count(const io::CaseSpec& spec, const ed::TimeStepInfo& t) {
-  const double steps = spec.time.end_time / t.used;
+void check_step_count(const io::CaseSpec& spec, const ed::TimeStepInfo& t, Real start) {
+  const double steps = (spec.time.end_time - start) / t.used;
   if (steps <= io::kMaxSteps)
     return;
   throw InputError(fmt::format(
@@ -133,10 +134,11 @@ void check_step_count(const io::CaseSpec& spec, const ed::TimeStepInfo& t) {
 
 /// The solver (it estimates the stable step); InputErrors prefixed with the case file.
 std::unique_ptr<ed::ExplicitSolver> make_solver(const io::CaseSpec& spec,
-                                                const model::ExplicitCase& c) {
+                                                const model::ExplicitCase& c,
+                                                const ed::InitialState& initial = {}) {
   return for_case(spec, [&] {
-    auto solver = std::make_unique<ed::ExplicitSolver>(*c.model, c.settings);
-    check_step_count(spec, solver->time_step_info());
+    auto solver = std::make_unique<ed::ExplicitSolver>(*c.model, c.settings, initial);
+    check_step_count(spec, solver->time_step_info(), initial.time);
     return solver;
   });
 }
@@ -144,9 +146,9 @@ std::unique_ptr<ed::ExplicitSolver> make_solver(const io::CaseSpec& spec,
 /// Steps to every target time in turn; VTU files at the output times (every step if
 /// output.interval = 0 is given), a history row after every step. Stops at the first fatal report.
 void advance(const io::CaseSpec& spec, ed::ExplicitSolver& solver, ExplicitOutput& output,
-             RunStats& stats) {
-  const bool every_step = explicit_output_interval(spec) <= 0.0;
-  for (const StepTarget& target : explicit_step_targets(spec)) {
+             RunStats& stats, Real start = 0.0) {
+  const bool every_step = explicit_output_interval(spec, start) <= 0.0;
+  for (const StepTarget& target : explicit_step_targets(spec, start)) {
     const Real eps = 1e-12 * std::max(target.time, solver.time_step_info().used);
     while (solver.time() < target.time - eps) {
       if (interrupt::requested()) {
@@ -180,29 +182,36 @@ nlohmann::json time_step_json(const ed::TimeStepInfo& t) {
           {"requested", t.requested},   {"used", t.used},         {"reduced", t.reduced}};
 }
 
-/// summary.json: status, counts, time step, final energies, sizes and wall times.
-nlohmann::json summary(const io::CaseSpec& spec, const model::ExplicitCase& c,
-                       const ed::ExplicitSolver& solver, const RunStats& stats,
-                       double output_seconds) {
+/// The entries of summary.json that describe the explicit steps: counts, time step, final
+/// energies, the energy balance and the largest volume change.
+nlohmann::json explicit_entries(const ed::ExplicitSolver& solver, const RunStats& stats) {
   const ed::SolverTimings& w = solver.timings();
   const ed::Energies e = solver.energies();
-  nlohmann::json j = summary_header(spec, stats.status(), stats.message());
-  j["analysis"] = "dynamic-explicit";
+  nlohmann::json j;
   j["end_time_s"] = solver.time();
   j["steps"] = solver.step_count();
   j["multiplier_solves"] = solver.total_iterations();
   j["halvings"] = stats.halvings;
   j["factorizations"] = w.factorizations;
   j["time_step_s"] = time_step_json(solver.time_step_info());
-  j["energies_mJ"] = {{"kinetic", e.kinetic},
-                      {"strain", e.strain},
-                      {"external_work", e.external_work},
-                      {"damping_work", e.damping_work},
-                      {"total", e.total()}};
+  j["energies_mJ"] = {
+      {"kinetic", e.kinetic},           {"strain", e.strain}, {"external_work", e.external_work},
+      {"damping_work", e.damping_work}, {"total", e.total()}, {"initial", e.initial}};
   j["energy_balance"] = {{"max_relative_error", stats.balance.max_error()},
                          {"threshold", ed::EnergyBalance::kThreshold},
                          {"exceeded", stats.balance.exceeded()}};
   j["max_abs_Jbar_minus_1"] = solver.max_volume_change();
+  return j;
+}
+
+/// summary.json: status, counts, time step, final energies, sizes and wall times.
+nlohmann::json summary(const io::CaseSpec& spec, const model::ExplicitCase& c,
+                       const ed::ExplicitSolver& solver, const RunStats& stats,
+                       double output_seconds) {
+  const ed::SolverTimings& w = solver.timings();
+  nlohmann::json j = summary_header(spec, stats.status(), stats.message());
+  j["analysis"] = "dynamic-explicit";
+  j.update(explicit_entries(solver, stats));
   j["mesh"] = {{"nodes", c.model->mesh().num_nodes()}, {"cells", c.model->num_cells()}};
   j["dofs"] = {{"total", c.model->num_dofs()}, {"fixed", fixed_dofs(*c.model)}};
   j["threads"] = omp_get_max_threads();
@@ -213,7 +222,150 @@ nlohmann::json summary(const io::CaseSpec& spec, const model::ExplicitCase& c,
   return j;
 }
 
+/// The displacement of the quasi-static model as U0 of the explicit model (DOF 3 a + k). Both
+/// meshes come from model::build_mesh of the same case, so node a is the same point in both
+/// (checked: an internal error otherwise).
+Vector quasi_static_displacement(const model::Model& qs, const ed::ExplicitModel& ex) {
+  const mesh::Mesh& a = qs.mesh;
+  const mesh::Mesh& b = ex.mesh();
+  TRIFEM_VERIFY(a.num_nodes() == b.num_nodes(),
+                "mixed run: the quasi-static mesh has {} nodes, the explicit one {}", a.num_nodes(),
+                b.num_nodes());
+  const Real tolerance = 1e-12 * qs.length_scale;
+  const Vector& x = qs.problem->state();
+  Vector U(ex.num_dofs());
+  for (Index n = 0; n < a.num_nodes(); ++n) {
+    TRIFEM_VERIFY((a.node(n) - b.node(n)).norm() <= tolerance,
+                  "mixed run: node {} differs between the quasi-static and the explicit mesh", n);
+    for (int k = 0; k < 3; ++k)
+      U[3 * n + k] = x[qs.dofs.dof(qs.fields.u, n, k)];
+  }
+  return U;
+}
+
+/// summary.json "analysis_steps": name, analysis, time span and history file of every step.
+nlohmann::json analysis_steps_json(const io::CaseSpec& spec, const std::string& explicit_history) {
+  nlohmann::json steps = nlohmann::json::array();
+  Real start = 0.0;
+  for (const io::StepSpec& step : spec.steps) {
+    steps.push_back({{"name", step.name},
+                     {"analysis", step.is_explicit() ? "dynamic-explicit" : "quasi-static"},
+                     {"start_time_s", start},
+                     {"end_time_s", step.time.end_time},
+                     {"history", step.is_explicit() ? explicit_history : "history.csv"}});
+    start = step.time.end_time;
+  }
+  return steps;
+}
+
+/// A mixed case split in its quasi-static steps and its dynamic-explicit last step.
+struct MixedCase {
+  explicit MixedCase(const io::CaseSpec& spec)
+      : whole(spec), quasi_static(model::quasi_static_part(spec)),
+        dynamic(model::explicit_step_part(spec)),
+        history(fmt::format("history_step{}.csv", spec.steps.size())) {}
+  const io::CaseSpec& whole;
+  io::CaseSpec quasi_static; ///< the steps before the explicit one
+  io::CaseSpec dynamic;      ///< the explicit step as a dynamic-explicit case
+  std::string history;       ///< history file of the explicit step
+  const io::StepSpec& step() const { return whole.steps.back(); }
+  Real start() const { return quasi_static.time.end_time; }
+};
+
+/// The explicit case of the step; InputErrors name the case file and the step.
+model::ExplicitCase build_step_case(const MixedCase& mixed) {
+  try {
+    return model::build_explicit_case(mixed.dynamic);
+  } catch (const InputError& e) {
+    throw InputError(fmt::format("{}: {} (dynamic-explicit): {}", mixed.whole.file.string(),
+                                 mixed.step().key, e.what()));
+  }
+}
+
+/// The explicit step of a mixed run, from the final state of the quasi-static model `qs`: U0 its
+/// displacement, at rest, t0 its end time; results continue `qs_output`.
+FollowUpReport run_explicit_step(const MixedCase& mixed, const model::ExplicitCase& c,
+                                 const model::Model& qs, OutputWriter& qs_output) {
+  const auto start = Clock::now();
+  const io::StepSpec& step = mixed.step();
+  FollowUpReport report;
+  report.end_time = mixed.start();
+  log::info("analysis step {} '{}' (dynamic-explicit): t = {:.6g} to {:.6g} s, from the "
+            "quasi-static state at rest, {} fixed DOFs",
+            mixed.whole.steps.size(), step.name, mixed.start(), step.time.end_time,
+            fixed_dofs(*c.model));
+  std::unique_ptr<ed::ExplicitSolver> solver;
+  try {
+    const ed::InitialState initial{quasi_static_displacement(qs, *c.model), {}, mixed.start()};
+    solver = std::make_unique<ed::ExplicitSolver>(*c.model, c.settings, initial);
+    check_step_count(mixed.dynamic, solver->time_step_info(), mixed.start());
+  } catch (const InputError& e) {
+    report.success = false;
+    report.failure =
+        fmt::format("{} (dynamic-explicit, t = {:.6g} s): {}", step.key, mixed.start(), e.what());
+    return report;
+  }
+  log_time_step(*solver, mixed.dynamic, mixed.start());
+  log::info("  initial strain energy {:.6g} mJ", solver->initial_energy());
+  RunStats stats(*c.model);
+  const ExplicitContinuation continuation{&qs_output.pvd(), qs_output.state_count(), mixed.history};
+  double output_seconds = 0.0;
+  try {
+    ExplicitOutput output(c, mixed.dynamic.output, qs_output.directory(), &continuation);
+    output.write_initial(*solver);
+    advance(mixed.dynamic, *solver, output, stats, mixed.start());
+    output_seconds = output.seconds();
+    log::info("{} '{}': {} steps, {} multiplier solves, {} halvings; {} VTU files, {}",
+              stats.completed() ? "completed" : "STOPPED", step.name, solver->step_count(),
+              solver->total_iterations(), stats.halvings, output.vtu_count(),
+              output.history_file().string());
+  } catch (const OutputError& e) {
+    stats.output_failure =
+        fmt::format("the results at t = {:.6g} could not be written: {}", solver->time(), e.what());
+  }
+  if (stats.balance.exceeded())
+    log::warn("the energy balance error reached {:.3g} % of the largest energy: check the "
+              "results ({}, total_energy [mJ])",
+              100.0 * stats.balance.max_error(), mixed.history);
+  if (!stats.failure.ok())
+    log::info("run stopped: {} ({})", stats.failure.message, ed::to_string(stats.failure.status));
+  stats.wall_seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  report.success = stats.completed();
+  report.interrupted = stats.interrupted;
+  report.failure = stats.message();
+  report.end_time = solver->time();
+  nlohmann::json part = explicit_entries(*solver, stats);
+  part["step"] = step.name;
+  part["start_time_s"] = mixed.start();
+  part["history"] = mixed.history;
+  const ed::SolverTimings& w = solver->timings();
+  part["wall_time_s"] = {{"total", stats.wall_seconds},
+                         {"forces", w.forces},
+                         {"lambda", w.lambda},
+                         {"output", output_seconds}};
+  report.summary["analysis"] = "quasi-static, dynamic-explicit";
+  report.summary["analysis_steps"] = analysis_steps_json(mixed.whole, mixed.history);
+  report.summary["dynamic_explicit"] = std::move(part);
+  return report;
+}
+
 } // namespace
+
+int run_mixed_case(const io::CaseSpec& spec, const std::filesystem::path& output_dir) {
+  const MixedCase mixed(spec);
+  // built before anything runs: an invalid step creates no output
+  const model::ExplicitCase c = build_step_case(mixed);
+  const FollowUp follow_up = [&](const model::Model& qs, OutputWriter& output) {
+    return run_explicit_step(mixed, c, qs, output);
+  };
+  return run_quasi_static_case(mixed.quasi_static, output_dir, {}, follow_up);
+}
+
+int check_mixed_case(const io::CaseSpec& spec) {
+  const MixedCase mixed(spec);
+  build_step_case(mixed); // its stable step is estimated on the quasi-static state, at the run
+  return check_case(mixed.quasi_static);
+}
 
 int run_explicit_case(const io::CaseSpec& spec, const std::filesystem::path& output_dir) {
   const auto start = Clock::now();

@@ -40,6 +40,10 @@ public:
 
   const std::filesystem::path& directory() const { return directory_; }
   std::filesystem::path pvd_file() const { return pvd_->file(); }
+  /// The collection of the VTU files, for a later part of the run to continue (a mixed run).
+  io::PvdWriter& pvd() { return *pvd_; }
+  /// Output states written so far (the NNNN of the next file).
+  int state_count() const { return state_count_; }
   std::filesystem::path history_file() const { return directory_ / "history.csv"; }
   int vtu_count() const { return vtu_count_; }
   /// The NNNN of the last output state written (-1: none).

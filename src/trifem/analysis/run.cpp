@@ -337,12 +337,19 @@ solver::NewtonSettings newton_settings(const io::SolverSpec& s) {
 
 int run_case(const io::CaseSpec& spec, const std::filesystem::path& output_dir,
              const RunOptions& options) {
-  if (spec.is_explicit()) {
+  if (spec.is_explicit() || spec.has_explicit_step()) {
     TRIFEM_CHECK(options.restart_file.empty() && !options.write_restart && !spec.output.restart,
-                 "{}: restart files are written and read by quasi-static analyses only",
-                 spec.file.string());
-    return run_explicit_case(spec, output_dir);
+                 "{}: restart files are written and read by quasi-static analyses only{}",
+                 spec.file.string(),
+                 spec.has_explicit_step() ? " (not in a case with a dynamic-explicit step)" : "");
+    return spec.is_explicit() ? run_explicit_case(spec, output_dir)
+                              : run_mixed_case(spec, output_dir);
   }
+  return run_quasi_static_case(spec, output_dir, options);
+}
+
+int run_quasi_static_case(const io::CaseSpec& spec, const std::filesystem::path& output_dir,
+                          const RunOptions& options, const FollowUp& follow_up) {
   const auto start = Clock::now();
   std::unique_ptr<model::Model> model = build_model_for(spec);
   std::optional<Resume> resume;
@@ -388,9 +395,20 @@ int run_case(const io::CaseSpec& spec, const std::filesystem::path& output_dir,
     if (!run.success)
       write_last_state(*model, output, run);
   }
+  FollowUpReport later; // of the part after the quasi-static steps
+  if (run.success && follow_up) {
+    later = follow_up(*model, output);
+    run.success = later.success;
+    run.interrupted = later.interrupted;
+    run.failure = later.failure;
+  }
   const double wall = std::chrono::duration<double>(Clock::now() - start).count();
-  const nlohmann::json summary_json =
+  nlohmann::json summary_json =
       summary(spec, *model, run, newton.times(), output.seconds(), wall, output.balance());
+  if (follow_up && !later.summary.is_null()) {
+    summary_json["end_time_s"] = later.end_time;
+    summary_json.update(later.summary);
+  }
   log::info("{}: {} steps, {} Newton iterations, {} cutbacks, {:.2f} s (assembly {:.2f}, "
             "factorization {:.2f}, solve {:.2f}, output {:.2f})",
             run.success       ? "completed"
@@ -406,6 +424,8 @@ int run_case(const io::CaseSpec& spec, const std::filesystem::path& output_dir,
 int check_case(const io::CaseSpec& spec) {
   if (spec.is_explicit())
     return check_explicit_case(spec);
+  if (spec.has_explicit_step())
+    return check_mixed_case(spec);
   std::unique_ptr<model::Model> model = build_model_for(spec);
   linear_solver_for(spec); // unknown or unused PETSc options
   log_model(spec, *model);

@@ -11,6 +11,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <nlohmann/json.hpp>
 
 namespace trifem::analysis {
 
@@ -59,6 +60,27 @@ struct RunOptions {
 /// Runs a case; results go to `output_dir`. Returns an ExitCode.
 int run_case(const io::CaseSpec& spec, const std::filesystem::path& output_dir,
              const RunOptions& options = {});
+
+class OutputWriter;
+
+/// What the part of a run after its quasi-static steps reports (the dynamic-explicit step of a
+/// mixed case).
+struct FollowUpReport {
+  bool success = true;
+  bool interrupted = false;
+  std::string failure;    ///< why it stopped ("" if it completed)
+  Real end_time = 0.0;    ///< time reached [s]
+  nlohmann::json summary; ///< entries added to summary.json
+};
+
+/// Continues a run whose quasi-static steps completed, from their final state, writing into
+/// their output (results.pvd).
+using FollowUp = std::function<FollowUpReport(const model::Model&, OutputWriter&)>;
+
+/// run_case for a quasi-static case; `follow_up`, if given, continues the run once its steps
+/// completed, and its report decides the status and end time of summary.json.
+int run_quasi_static_case(const io::CaseSpec& spec, const std::filesystem::path& output_dir,
+                          const RunOptions& options, const FollowUp& follow_up = {});
 
 /// Validates a case (file, mesh, sets, materials) without solving; prints a summary.
 int check_case(const io::CaseSpec& spec);

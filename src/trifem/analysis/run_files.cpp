@@ -13,9 +13,10 @@ namespace trifem::analysis {
 namespace fs = std::filesystem;
 
 bool is_result_file_name(const std::string& name) {
-  static const std::regex pattern(R"((results\.pvd|history\.csv|summary\.json|run\.log|)"
-                                  R"(volume_\d{4,}\.vtu|contact\d+\.pvd|contact\d+_\d{4,}\.vtu|)"
-                                  R"(contact\d+_surface_\d{4,}\.csv|restart_\d{4,}\.bin)(\.tmp)?)");
+  static const std::regex pattern(
+      R"((results\.pvd|history\.csv|history_step\d+\.csv|summary\.json|run\.log|)"
+      R"(volume_\d{4,}\.vtu|contact\d+\.pvd|contact\d+_\d{4,}\.vtu|)"
+      R"(contact\d+_surface_\d{4,}\.csv|restart_\d{4,}\.bin)(\.tmp)?)");
   return std::regex_match(name, pattern);
 }
 

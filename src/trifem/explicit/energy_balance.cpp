@@ -15,9 +15,9 @@ EnergyBalance::EnergyBalance(const ExplicitModel& model) {
 }
 
 bool EnergyBalance::record(const Energies& e) {
-  scale_ =
-      std::max({scale_, std::abs(e.external_work), e.kinetic, std::abs(e.strain), e.damping_work});
-  last_ = scale_ > floor_ ? std::abs(e.total()) / scale_ : 0.0;
+  scale_ = std::max({scale_, std::abs(e.external_work), e.kinetic, std::abs(e.strain),
+                     e.damping_work, std::abs(e.initial)});
+  last_ = scale_ > floor_ ? std::abs(e.balance()) / scale_ : 0.0;
   if (!std::isfinite(last_))
     last_ = std::numeric_limits<Real>::infinity();
   max_ = std::max(max_, last_);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
-// Energy balance check of an explicit run: kinetic + strain − external work + damping work is 0
-// from rest up to the time-discretisation error; a large value means an unstable step.
+// Energy balance check of an explicit run: kinetic + strain − external work + damping work stays
+// at its initial value (0 from rest, the strain energy of a pre-strained start) up to the
+// time-discretisation error; a large deviation means an unstable step.
 #pragma once
 
 #include "trifem/explicit/explicit_model.hpp"
@@ -8,9 +9,10 @@
 
 namespace trifem::explicit_dynamics {
 
-/// Records the energies of a run and measures the balance error |total| against the largest
-/// energy met so far (external work, kinetic, strain or damping work). Energies below a
-/// round-off floor (10⁻¹⁰ Σ_e μ_e V_e: the rounding of W(C) near C = I) are not judged.
+/// Records the energies of a run and measures the balance error |total − initial| against the
+/// largest energy met so far (external work, kinetic, strain, damping work or initial energy).
+/// Energies below a round-off floor (10⁻¹⁰ Σ_e μ_e V_e: the rounding of W(C) near C = I) are not
+/// judged.
 class EnergyBalance {
 public:
   /// Errors above this fraction of the largest energy are reported.
@@ -20,7 +22,7 @@ public:
 
   /// Adds the energies at one time; true the first time the error exceeds kThreshold.
   bool record(const Energies& e);
-  /// |total| / scale of the last record (0 while the scale is below the floor).
+  /// |total − initial| / scale of the last record (0 while the scale is below the floor).
   Real last_error() const { return last_; }
   /// Largest error recorded so far.
   Real max_error() const { return max_; }

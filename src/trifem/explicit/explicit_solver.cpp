@@ -32,12 +32,13 @@ const char* to_string(StepStatus status) {
   return "?";
 }
 
-ExplicitSolver::ExplicitSolver(const ExplicitModel& model, ExplicitSettings settings)
+ExplicitSolver::ExplicitSolver(const ExplicitModel& model, ExplicitSettings settings,
+                               const InitialState& initial)
     : model_(model), settings_(std::move(settings)) {
   settings_.validate();
   if (settings_.multiplier)
     system_ = std::make_unique<LambdaSystem>(model_, settings_.cholesky);
-  initialize();
+  initialize(initial);
   choose_time_step();
 }
 
@@ -47,17 +48,61 @@ Real ExplicitSolver::inverse_penalty() const {
   return std::isinf(settings_.penalty) ? 0.0 : 1.0 / settings_.penalty;
 }
 
-void ExplicitSolver::initialize() {
+namespace {
+
+/// `v`, or zeros if it is empty; InputError naming `what` if its size is not `n`.
+Vector given_or_zero(const Vector& v, Index n, const char* what) {
+  if (v.size() == 0)
+    return Vector::Zero(n);
+  TRIFEM_CHECK(v.size() == n, "explicit: the initial {} has {} values, the model {} DOFs", what,
+               v.size(), n);
+  return v;
+}
+
+} // namespace
+
+void ExplicitSolver::initialize(const InitialState& initial) {
   const Index n = model_.num_dofs();
-  U_ = Vector::Zero(n);
-  V_ = Vector::Zero(n);
+  U_ = given_or_zero(initial.displacement, n, "displacement");
+  V_ = given_or_zero(initial.velocity, n, "velocity");
+  const Real largest = U_.lpNorm<Eigen::Infinity>();
+  for (Index d = 0; d < n; ++d) {
+    if (!model_.fixed()[d])
+      continue;
+    // a fixed DOF holds zero displacement: a displaced one would jump back in the first step
+    TRIFEM_CHECK(std::abs(U_[d]) <= 1e-12 * largest,
+                 "explicit: node {} is fixed in component {} but starts displaced by {:.6g} mm "
+                 "(fixed components hold zero displacement)",
+                 d / 3, "xyz"[d % 3], U_[d]);
+    U_[d] = 0.0;
+    V_[d] = 0.0;
+  }
+  time_ = initial.time;
   lambda_ = Vector::Zero(model_.num_cells());
-  lambda_old_ = lambda_;
   follower_ = has_follower_loads(model_);
   const CellStatus status =
       evaluate_cells(model_, settings_.constraint, U_, {true, true, true, false}, fields_);
-  TRIFEM_VERIFY(status.ok(), "initial state: {} in cell {}", status.quantity, status.cell);
+  TRIFEM_CHECK(status.ok(), "explicit: initial state: {} in cell {}", status.quantity, status.cell);
+  if (settings_.multiplier)
+    initial_multiplier();
+  lambda_old_ = lambda_;
   update_end_forces();
+  const Energies e = energies();
+  initial_energy_ = e.kinetic + e.strain;
+}
+
+void ExplicitSolver::initial_multiplier() {
+  const Vector& V = model_.volumes();
+  if (!std::isinf(settings_.penalty)) { // the penalty relation Ψ_e = V_e Λ_e/α holds at once
+    lambda_ = settings_.penalty * fields_.psi.cwiseQuotient(V);
+    return;
+  }
+  const Real violation = fields_.psi.cwiseQuotient(V).lpNorm<Eigen::Infinity>();
+  if (violation > settings_.constraint_tolerance)
+    log::warn("explicit: the initial state violates the volume constraint (max |Psi_e|/V_e = "
+              "{:.3g}); with explicit.penalty = inf the first step enforces it at once. Use "
+              "explicit.multiplier = false (the law's own bulk stiffness) or a finite penalty",
+              violation);
 }
 
 void ExplicitSolver::update_end_forces() {
@@ -203,6 +248,7 @@ Vector ExplicitSolver::velocity() const {
 
 Energies ExplicitSolver::energies() const {
   Energies e;
+  e.initial = initial_energy_;
   e.external_work = external_work_;
   e.damping_work = damping_work_;
   const Vector v = velocity();

@@ -37,13 +37,25 @@ struct StepReport {
   bool ok() const { return status == StepStatus::Converged; }
 };
 
-/// Energy bookkeeping [mJ]. Balance: kinetic + strain − external + damping ≈ const (= 0 from rest).
+/// Energy bookkeeping [mJ]. Balance: kinetic + strain − external + damping ≈ const = the kinetic
+/// + strain energy at the start (0 from rest), the external and damping work counted from there.
 struct Energies {
   Real kinetic = 0.0; ///< ½ vᵀ M v, v at t_n (half-step velocity plus half a kick)
   Real strain = 0.0; ///< Σ ∫ W dV + Σ ½ Λ_e Ψ_e (the penalty part λ²/(2α) at convergence)
   Real external_work = 0.0; ///< Σ ½ (F^n + F^{n+1})·ΔU (trapezoidal)
   Real damping_work = 0.0;  ///< dissipated by C = c M
+  Real initial = 0.0;       ///< kinetic + strain at the initial state (t0)
   Real total() const { return kinetic + strain - external_work + damping_work; }
+  /// The balance error total − initial (≈ 0 up to the time-discretisation error).
+  Real balance() const { return total() - initial; }
+};
+
+/// The state a run starts from; the default is at rest in the reference configuration at t = 0.
+/// A run that continues a quasi-static analysis starts from its final displacement.
+struct InitialState {
+  Vector displacement; ///< U0 per DOF 3 a + k [mm] (empty: 0); 0 on fixed DOFs
+  Vector velocity;     ///< v0 per DOF [mm/s] (empty: 0); set to 0 on fixed DOFs
+  Real time = 0.0;     ///< t0 [s]
 };
 
 /// How the step size was chosen.
@@ -67,8 +79,12 @@ struct SolverTimings {
 /// Explicit dynamics of one ExplicitModel. The model must outlive the solver.
 class ExplicitSolver {
 public:
-  /// Validates the settings, evaluates the initial state (U = 0, at rest, t = 0) and chooses Δt.
-  ExplicitSolver(const ExplicitModel& model, ExplicitSettings settings);
+  /// Validates the settings, evaluates the initial state (by default U = 0, at rest, t = 0) and
+  /// chooses Δt on it. With a multiplier, Λ0 = α Ψ_e(U0)/V_e (0 for α = inf: the first step then
+  /// enforces the constraint, with a warning if U0 violates it). InputError if `initial` does not
+  /// fit the model (sizes, a displaced fixed DOF).
+  ExplicitSolver(const ExplicitModel& model, ExplicitSettings settings,
+                 const InitialState& initial = {});
   ~ExplicitSolver();
 
   /// Advances one step (truncated at t_end), halving Δt on NotConverged/NegativeJacobian.
@@ -102,14 +118,17 @@ public:
   Real max_volume_change() const;
   /// max over cells and Gauss points of |J − 1| at U^n (Q1–P0 lets J vary inside a cell).
   Real max_gauss_volume_change() const;
-  /// Energies at t_n (evaluates the strain energy: one cell loop).
+  /// Energies at t_n (evaluates the strain energy: one cell loop); `initial` is that of t0.
   Energies energies() const;
+  /// Kinetic + strain energy at the initial state [mJ] (0 from rest).
+  Real initial_energy() const { return initial_energy_; }
   const SolverTimings& timings() const { return timings_; }
   /// Total multiplier solves so far.
   long total_iterations() const { return total_iterations_; }
 
 private:
-  void initialize();
+  void initialize(const InitialState& initial);
+  void initial_multiplier();
   void choose_time_step();
   void estimate_stable_step();
   StepReport try_step(Real dt);
@@ -145,6 +164,7 @@ private:
   long step_count_ = 0, total_iterations_ = 0;
   int successes_since_halving_ = 0;
   Real external_work_ = 0.0, damping_work_ = 0.0;
+  Real initial_energy_ = 0.0; ///< kinetic + strain at t0
   bool follower_ = false;
   TimeStepInfo dt_info_;
   SolverTimings timings_;

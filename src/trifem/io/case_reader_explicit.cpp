@@ -107,10 +107,10 @@ void read_analysis_type(const Table& root, CaseSpec& spec) {
 
 void check_analysis_sections(const Table& root, const CaseSpec& spec) {
   if (!spec.is_explicit()) {
-    if (const auto t = root.table("explicit"))
+    if (const auto t = root.table("explicit"); t && !declares_explicit_step(root))
       fail(t->where(), t->path(),
            "only applies to dynamic-explicit analyses (set [analysis] type = "
-           "\"dynamic-explicit\")");
+           "\"dynamic-explicit\", or analysis = \"dynamic-explicit\" in a [[step]])");
     return;
   }
   if (const auto boundary = root.table("boundary"))
@@ -153,7 +153,8 @@ void read_explicit(const Table& root, CaseSpec& spec) {
   ExplicitSpec& e = spec.explicit_dynamics; // holds the defaults until overwritten
   read_explicit_choices(*t, e);
   read_explicit_numbers(*t, e);
-  if (e.stable_step == StableStepEstimate::None && spec.time.dt <= 0.0)
+  // (a dynamic-explicit [[step]] checks its own dt)
+  if (spec.is_explicit() && e.stable_step == StableStepEstimate::None && spec.time.dt <= 0.0)
     fail(t->find("stable_step"), fmt::format("{} = 'none'", t->path("stable_step")),
          "needs time.dt (the step is not estimated)");
 }

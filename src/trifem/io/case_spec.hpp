@@ -335,6 +335,11 @@ struct StepSpec {
   /// Conditions of the previous step that this step does not repeat are released: their
   /// reactions act as loads decreasing linearly to zero over this time [s] (0: at once).
   Real release_time = 0.0;
+  /// The analysis of this step (default: the case's [analysis] type). A dynamic-explicit step
+  /// follows the quasi-static ones and starts from their final state; its time.dt is optional
+  /// (0: the stability estimate).
+  AnalysisType analysis = AnalysisType::QuasiStatic;
+  bool is_explicit() const { return analysis == AnalysisType::DynamicExplicit; }
 };
 
 /// A whole case file.
@@ -367,6 +372,8 @@ struct CaseSpec {
   std::vector<std::string> warnings;
 
   bool is_explicit() const { return analysis.type == AnalysisType::DynamicExplicit; }
+  /// A quasi-static case whose last [[step]] is dynamic-explicit (a mixed run).
+  bool has_explicit_step() const { return !steps.empty() && steps.back().is_explicit(); }
 };
 
 } // namespace trifem::io

@@ -306,6 +306,9 @@ void read_boundary(const Table& root, CaseSpec& spec);
 /// [[step]] tables (after [boundary], [loads] and [output]); sets spec.time to the span of the
 /// steps (case_reader_steps.cpp).
 void read_steps(const Table& root, CaseSpec& spec);
+/// True if a [[step]] table of `root` says analysis = "dynamic-explicit" (read before the steps:
+/// the [explicit] table is allowed then).
+bool declares_explicit_step(const Table& root);
 /// The time-control keys of `t` into `s` (end_time after `start`; with `allow_duration`,
 /// `duration` instead of end_time).
 void read_time_keys(const Table& t, TimeSpec& s, Real start, bool allow_duration);

@@ -140,6 +140,30 @@ ed::ExplicitSettings explicit_settings(const io::CaseSpec& spec) {
   return s;
 }
 
+io::CaseSpec quasi_static_part(const io::CaseSpec& spec) {
+  TRIFEM_CHECK(spec.has_explicit_step() && spec.steps.size() >= 2,
+               "step: no dynamic-explicit step after a quasi-static one");
+  io::CaseSpec part = spec;
+  part.steps.pop_back();
+  part.time.end_time = part.steps.back().time.end_time;
+  return part;
+}
+
+io::CaseSpec explicit_step_part(const io::CaseSpec& spec) {
+  TRIFEM_CHECK(spec.has_explicit_step(), "step: no dynamic-explicit step");
+  const io::StepSpec& step = spec.steps.back();
+  io::CaseSpec part = spec;
+  part.analysis.type = io::AnalysisType::DynamicExplicit;
+  part.steps.clear();
+  part.time = io::TimeSpec{};
+  part.time.end_time = step.time.end_time;
+  part.time.dt = step.time.dt;
+  part.fixed.insert(part.fixed.end(), step.fixed.begin(), step.fixed.end());
+  part.pressures.insert(part.pressures.end(), step.pressures.begin(), step.pressures.end());
+  part.tractions.insert(part.tractions.end(), step.tractions.begin(), step.tractions.end());
+  return part;
+}
+
 ExplicitCase build_explicit_case(const io::CaseSpec& spec) {
   TRIFEM_CHECK(spec.is_explicit(), "analysis.type: not a dynamic-explicit analysis");
   ExplicitCase c;

@@ -45,4 +45,13 @@ explicit_dynamics::ExplicitSettings explicit_settings(const io::CaseSpec& spec);
 /// surfaces, cell blocks); the case must have been read by io::read_case.
 ExplicitCase build_explicit_case(const io::CaseSpec& spec);
 
+/// The quasi-static part of a mixed case (spec.has_explicit_step()): its steps before the
+/// dynamic-explicit one, the run ending where that step starts.
+io::CaseSpec quasi_static_part(const io::CaseSpec& spec);
+
+/// The dynamic-explicit last step of a mixed case as a dynamic-explicit case: the case-level
+/// conditions and loads plus those of the step (the others are released), the step's end_time
+/// and dt. Its mesh is built like the quasi-static model's (build_mesh: same nodes, same order).
+io::CaseSpec explicit_step_part(const io::CaseSpec& spec);
+
 } // namespace trifem::model

@@ -74,6 +74,43 @@ TEST(CaseReaderSteps, ReadsTimeConditionsAndLoadsPerStep) {
   EXPECT_EQ(c.time.end_time, 15.0) << "the run spans every step";
 }
 
+/// kModel with a density: a quasi-static step and a dynamic-explicit one after it.
+const std::string kDenseModel = replaced_in(kModel, "E = 1.0\n", "E = 1.0\ndensity = 1e-9\n");
+const std::string kStretch = R"(
+[[step]]
+name = "stretch"
+end_time = 1.0
+dt = 0.5
+[[step.boundary.prescribed]]
+set = "block.zmax"
+component = "z"
+value = 0.01
+curve = "ramp"
+)";
+const std::string kRelease = R"(
+[[step]]
+name = "release"
+analysis = "dynamic-explicit"
+duration = 1e-3
+[[step.boundary.fixed]]
+set = "block.zmin"
+)";
+
+TEST(CaseReaderSteps, ReadsADynamicExplicitLastStep) {
+  const CaseSpec c = parse_case(
+      kDenseModel + "[explicit]\nmultiplier = false\n" + kStretch + kRelease, "memory/case.toml");
+  ASSERT_EQ(c.steps.size(), 2u);
+  EXPECT_FALSE(c.is_explicit()) << "the case stays quasi-static";
+  EXPECT_TRUE(c.has_explicit_step());
+  EXPECT_FALSE(c.steps[0].is_explicit()) << "the default is the case's analysis";
+  EXPECT_TRUE(c.steps[1].is_explicit());
+  EXPECT_EQ(c.steps[1].time.end_time, 1.001);
+  EXPECT_EQ(c.steps[1].time.dt, 0.0) << "no dt: the stability estimate";
+  EXPECT_EQ(c.steps[1].fixed.size(), 1u);
+  EXPECT_FALSE(c.explicit_dynamics.multiplier) << "[explicit] applies to the explicit step";
+  EXPECT_EQ(c.time.end_time, 1.001);
+}
+
 class BadSteps : public testing::TestWithParam<BadCase> {};
 
 TEST_P(BadSteps, FailNamingTheStepKey) {
@@ -100,6 +137,51 @@ const std::vector<BadCase> kBadSteps = {
      kModel + "[[step]]\nname = \"a\"\nend_time = 1.0\ndt = 1.0\n[[step]]\nname = \"a\"\n"
               "end_time = 2.0\ndt = 1.0\n",
      {"step[2].name = 'a'", "duplicate step name"}},
+    {"unknown_analysis",
+     kDenseModel + kStretch + replaced_in(kRelease, "dynamic-explicit", "implicit"),
+     {"step[2].analysis = 'implicit'", "unknown analysis type", "dynamic-explicit"}},
+    {"explicit_first",
+     kDenseModel + kRelease,
+     {"step[1].analysis = 'dynamic-explicit'", "follows at least one quasi-static step"}},
+    {"step_after_explicit",
+     kDenseModel + kStretch + kRelease + "[[step]]\nduration = 1.0\ndt = 1.0\n",
+     {"step[3]", "must be the last step", "step[2]"}},
+    {"explicit_with_material_axes",
+     replaced_in(kDenseModel, "density = 1e-9\n",
+                 "density = 1e-9\n[materials.soft.axes]\ntype = \"vector\"\na = [0, 1, 0]\n"
+                 "d = [1, 0, 0]\n") +
+         kStretch + kRelease,
+     {"step[2].analysis = 'dynamic-explicit'", "material 'soft' has material axes"}},
+    {"explicit_without_density",
+     kModel + kStretch + kRelease,
+     {"step[2].analysis = 'dynamic-explicit'", "material 'soft' has no density"}},
+    {"explicit_with_biphasic",
+     kDenseModel + kStretch + kRelease +
+         "[materials.gel]\ntype = \"biphasic\"\nphi_s0 = 0.2\npermeability = 1e-3\n"
+         "[materials.gel.solid]\ntype = \"neo-hookean\"\nE = 1.0\n",
+     {"step[2].analysis = 'dynamic-explicit'", "material 'gel' is biphasic", "solid models"}},
+    {"explicit_with_case_prescribed",
+     kDenseModel +
+         "[[boundary.prescribed]]\nset = \"block.zmax\"\ncomponent = \"z\"\n"
+         "value = 0.01\n" +
+         kStretch + kRelease,
+     {"step[2].analysis = 'dynamic-explicit'", "[[boundary.prescribed]]", "zero displacements"}},
+    {"explicit_step_prescribed",
+     kDenseModel + kStretch + kRelease +
+         "[[step.boundary.prescribed]]\nset = \"block.zmax\"\ncomponent = \"z\"\nvalue = 0.0\n",
+     {"step[2].boundary.prescribed[1]", "not supported in dynamic-explicit steps"}},
+    {"explicit_step_dt_max",
+     kDenseModel + kStretch + replaced_in(kRelease, "duration", "dt_max = 1e-5\nduration"),
+     {"step[2].dt_max", "quasi-static steps only"}},
+    {"explicit_step_release_time",
+     kDenseModel + kStretch + replaced_in(kRelease, "duration", "release_time = 1e-4\nduration"),
+     {"step[2].release_time", "released at once"}},
+    {"explicit_table_without_explicit_step",
+     kDenseModel + "[explicit]\nmultiplier = false\n" + kStretch,
+     {"explicit", "only applies to dynamic-explicit analyses"}},
+    {"stable_step_none_without_dt",
+     kDenseModel + "[explicit]\nstable_step = \"none\"\n" + kStretch + kRelease,
+     {"step[2].analysis = 'dynamic-explicit'", "needs the step's dt"}},
 };
 
 INSTANTIATE_TEST_SUITE_P(Steps, BadSteps, testing::ValuesIn(kBadSteps), bad_case_name);

@@ -23,7 +23,8 @@ Vec3 nonzero_vector(const Table& t, std::string_view key, std::optional<Vec3> fa
 material::AxesSpec read_axes(const Table& t) {
   static const Options<AxesKind> kinds = {{"vector", AxesKind::Vector},
                                           {"cylindrical", AxesKind::Cylindrical},
-                                          {"spherical", AxesKind::Spherical}};
+                                          {"spherical", AxesKind::Spherical},
+                                          {"mesh", AxesKind::Mesh}};
   material::AxesSpec axes;
   axes.kind = t.choice("type", kinds, std::optional<AxesKind>(), "axes type");
   switch (axes.kind) {
@@ -48,6 +49,15 @@ material::AxesSpec read_axes(const Table& t) {
     t.allow({"type", "center", "axis"});
     axes.center = t.vec3("center", NumberRule{}, std::nullopt);
     axes.axis = nonzero_vector(t, "axis", Vec3::UnitZ(), "the pole axis of the azimuthal e2");
+    break;
+  case AxesKind::Mesh:
+    t.allow({"type", "view", "d_view"});
+    axes.view = t.name("view");
+    axes.d_view = t.name("d_view", false);
+    if (axes.d_view == axes.view)
+      fail(t.find("d_view"), t.path("d_view"),
+           "must name another view than view (d_view fixes the local (e1, e2) plane; omit it "
+           "for the completed basis)");
     break;
   }
   return axes;

@@ -83,8 +83,10 @@ Mat3 axes_basis(const AxesSpec& axes, const Vec3& point, const std::string& cont
     return cylindrical_basis(axes.center, axes.axis, point, context);
   case AxesKind::Spherical:
     return spherical_basis(axes.center, axes.axis, point, context);
+  case AxesKind::Mesh:
+    break; // per cell from the mesh's cell data: model::orient_cells
   }
-  throw LogicError("axes_basis: unknown kind");
+  throw LogicError("axes_basis: no basis at a point for this kind of axes");
 }
 
 } // namespace trifem::material

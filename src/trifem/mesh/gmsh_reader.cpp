@@ -222,6 +222,15 @@ struct ElementHeader {
   std::span<const int> physicals;
 };
 
+/// The $ElementData sections of one view name, kept until all elements are known.
+struct PendingView {
+  int components = 0;
+  long line = 0;             ///< the line of its (first) view name
+  std::vector<Tag> elements; ///< element tags in file order
+  std::vector<long> lines;   ///< the line of each element's values
+  std::vector<Real> values;  ///< `components` values per element
+};
+
 /// Everything gathered from the sections.
 struct GmshData {
   int major_version = 0;
@@ -237,6 +246,8 @@ struct GmshData {
   std::vector<Index> unassigned_cells;
   std::vector<PendingQuad> quads;
   std::map<DimTag, std::vector<Index>> point_sets; ///< physical points/curves -> nodes
+  std::unordered_map<Tag, Index> element_cells;    ///< element tag -> cell (-1: not a hex)
+  std::map<std::string, PendingView> views;        ///< $ElementData by view name
 };
 
 Tag read_count(LineReader& in, std::string_view what) {
@@ -427,6 +438,7 @@ void read_hex(LineReader& in, GmshData& d, const ElementHeader& e) {
   read_element_nodes(in, d, e, cell);
   check_hex_orientation(in, d.mesh, e.tag, cell);
   const Index c = d.mesh.add_cell(cell);
+  d.element_cells[e.tag] = c;
   for (int p : e.physicals) {
     d.volume_cells[p].push_back(c);
     note_use(d, {3, p}, in.line());
@@ -469,6 +481,7 @@ void read_element(LineReader& in, GmshData& d, const ElementHeader& e) {
                "{}: element {} of type {} ({}, dimension {}) is in a block of dimension {}",
                in.location(), e.tag, e.type, type->name, type->dim, e.entity_dim);
   const int dim = type ? type->dim : e.entity_dim;
+  d.element_cells[e.tag] = -1; // a hex sets its cell below
   if (dim == 0 || dim == 1)
     return read_low_dim_element(in, d, e, dim);
   if (e.type == kGmshHex8)
@@ -536,6 +549,85 @@ void read_elements_v2(LineReader& in, GmshData& d) {
   expect_section_end(in);
 }
 
+/// The view name: the first string tag of an $ElementData section, without its quotes.
+std::string read_view_name(LineReader& in) {
+  in.require_line();
+  const Tag num_strings = read_count(in, "number of string tags");
+  TRIFEM_CHECK(num_strings >= 1, "{}: $ElementData needs a string tag (the view name)",
+               in.location());
+  std::string name;
+  for (Tag i = 0; i < num_strings; ++i) {
+    in.require_line();
+    std::string_view text = in.rest();
+    if (text.size() >= 2 && text.front() == '"' && text.back() == '"')
+      text = text.substr(1, text.size() - 2);
+    if (i == 0)
+      name = text;
+  }
+  TRIFEM_CHECK(!name.empty(), "{}: empty view name in $ElementData", in.location());
+  return name;
+}
+
+/// The integer tags of an $ElementData section: returns {number of components, number of
+/// elements}; the time step and a partition index are ignored.
+std::pair<int, Tag> read_view_counts(LineReader& in) {
+  in.require_line();
+  const Tag num_reals = read_count(in, "number of real tags");
+  for (Tag i = 0; i < num_reals; ++i) {
+    in.require_line();
+    in.number<double>("real tag (time)");
+  }
+  in.require_line();
+  const Tag num_ints = read_count(in, "number of integer tags");
+  TRIFEM_CHECK(num_ints >= 3,
+               "{}: $ElementData needs 3 integer tags (time step, number of components, number "
+               "of elements), found {}",
+               in.location(), num_ints);
+  std::array<Tag, 3> ints{};
+  for (Tag i = 0; i < num_ints; ++i) {
+    in.require_line();
+    const Tag value = in.number<Tag>("integer tag");
+    if (i < 3)
+      ints[static_cast<std::size_t>(i)] = value;
+    TRIFEM_CHECK(i != 1 || (value >= 1 && value <= 9),
+                 "{}: invalid number of components {} (1 to 9)", in.location(), value);
+    TRIFEM_CHECK(i != 2 || value >= 0, "{}: invalid number of elements {}", in.location(), value);
+  }
+  return {static_cast<int>(ints[1]), ints[2]};
+}
+
+/// One $ElementData section (a view at one time step): its values, per element tag, join the
+/// view of its name (sections of one name, e.g. partitions, must have the same components).
+void read_element_data(LineReader& in, GmshData& d) {
+  const std::string name = read_view_name(in);
+  const long name_line = in.line();
+  const auto [components, count] = read_view_counts(in);
+  auto [it, inserted] = d.views.try_emplace(name);
+  PendingView& view = it->second;
+  if (inserted) {
+    view.components = components;
+    view.line = name_line;
+  }
+  TRIFEM_CHECK(view.components == components,
+               "{}: view '{}' has {} components here but {} in its section at line {}",
+               in.location(), name, components, view.components, view.line);
+  for (Tag i = 0; i < count; ++i) {
+    in.require_line();
+    view.elements.push_back(in.number<Tag>("element tag"));
+    view.lines.push_back(in.line());
+    for (int k = 0; k < components; ++k) {
+      const Real value = in.number<double>(fmt::format(
+          "value {} of {} of view '{}' (its number of components)", k + 1, components, name));
+      TRIFEM_CHECK(std::isfinite(value), "{}: non-finite value in view '{}'", in.location(), name);
+      view.values.push_back(value);
+    }
+    TRIFEM_CHECK(in.at_line_end(),
+                 "{}: element {} has more than {} values in view '{}' (its number of components)",
+                 in.location(), view.elements.back(), components, name);
+  }
+  expect_section_end(in);
+}
+
 void read_section(LineReader& in, GmshData& d) {
   const std::string_view header = in.rest();
   TRIFEM_CHECK(header.size() > 1 && header.front() == '$' && !header.starts_with("$End"),
@@ -561,6 +653,8 @@ void read_section(LineReader& in, GmshData& d) {
       read_elements_v4(in, d);
     else
       read_elements_v2(in, d);
+  } else if (name == "ElementData") {
+    read_element_data(in, d);
   } else {
     TRIFEM_CHECK(name != "MeshFormat", "{}: second $MeshFormat section", in.location());
     skip_section(in);
@@ -690,6 +784,41 @@ void add_volume_node_sets(Mesh& mesh) {
   }
 }
 
+/// The values of a view on the hex cells; values on other elements (surface quads, lines,
+/// points) are ignored.
+CellData view_cell_data(const LineReader& in, const GmshData& d, const std::string& name,
+                        const PendingView& view) {
+  const auto n = static_cast<std::size_t>(view.components);
+  CellData data{.components = view.components,
+                .values = std::vector<Real>(static_cast<std::size_t>(d.mesh.num_cells()) * n,
+                                            std::numeric_limits<Real>::quiet_NaN())};
+  std::vector<long> given_at(static_cast<std::size_t>(d.mesh.num_cells()), 0);
+  for (std::size_t i = 0; i < view.elements.size(); ++i) {
+    const auto it = d.element_cells.find(view.elements[i]);
+    TRIFEM_CHECK(it != d.element_cells.end(),
+                 "{}: view '{}' gives a value to element {}, which is not in $Elements",
+                 in.at(view.lines[i]), name, view.elements[i]);
+    if (it->second < 0)
+      continue;
+    const auto c = static_cast<std::size_t>(it->second);
+    TRIFEM_CHECK(given_at[c] == 0,
+                 "{}: view '{}' gives element {} a second value (first at line {}); one value "
+                 "per element (views with several time steps are not supported)",
+                 in.at(view.lines[i]), name, view.elements[i], given_at[c]);
+    given_at[c] = view.lines[i];
+    std::copy_n(view.values.begin() + static_cast<std::ptrdiff_t>(i * n), n,
+                data.values.begin() + static_cast<std::ptrdiff_t>(c * n));
+  }
+  return data;
+}
+
+void add_cell_data(const LineReader& in, GmshData& d) {
+  for (const auto& [name, view] : d.views) {
+    CellData data = view_cell_data(in, d, name, view);
+    register_named(in, view.line, [&] { d.mesh.add_cell_data(name, std::move(data)); });
+  }
+}
+
 Mesh finish(const LineReader& in, GmshData& d) {
   TRIFEM_CHECK(d.seen_nodes, "{}: the file has no $Nodes section", in.location());
   TRIFEM_CHECK(d.seen_elements, "{}: the file has no $Elements section", in.location());
@@ -699,6 +828,7 @@ Mesh finish(const LineReader& in, GmshData& d) {
   add_surfaces(in, d);
   add_point_sets(in, d);
   add_volume_node_sets(d.mesh);
+  add_cell_data(in, d);
   return std::move(d.mesh);
 }
 

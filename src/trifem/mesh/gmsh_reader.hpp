@@ -21,11 +21,18 @@ namespace trifem::mesh {
 /// - Names come from $PhysicalNames; an unnamed physical group of dimension 0/1/2/3 is called
 ///   "point_<tag>", "curve_<tag>", "surface_<tag>" or "volume_<tag>".
 /// - Nodes are renumbered densely 0..n-1 in file order.
+/// - Each $ElementData view becomes cell data named by the view (its first string tag), with
+///   the view's number of components; cells the view does not list get NaN. Values on elements
+///   that are not hexes (e.g. the quads of a physical surface) are ignored. Sections with the
+///   same view name (e.g. partitions) are joined; the time value and step are ignored.
+///   $NodeData and $ElementNodeData are ignored.
 ///
 /// Throws InputError, with a message starting with "<file>:<line>: ", for a missing, empty,
 /// binary or truncated file, an unsupported version, an undefined node tag, any other volume or
 /// surface element type (tets, prisms, triangles, second order...), a hex with negative volume,
-/// or a quad of a physical surface that is not a face of any hex.
+/// a quad of a physical surface that is not a face of any hex, or, in $ElementData, a malformed
+/// header, a wrong number of values on a line, a non-finite value, an element tag not in
+/// $Elements, or a second value for one element.
 Mesh read_gmsh(const std::filesystem::path& file);
 
 } // namespace trifem::mesh

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <fmt/ranges.h>
 #include <limits>
 #include <unordered_map>
@@ -60,7 +61,23 @@ Facet make_facet(const Mesh& mesh, Index cell, int face) {
   return f;
 }
 
+constexpr Real kNoValue = std::numeric_limits<Real>::quiet_NaN();
+
+/// Pads every cell data to `num_cells` cells with NaN (cells without data).
+void pad_cell_data(std::map<std::string, CellData>& all, Index num_cells) {
+  for (auto& [name, data] : all)
+    data.values.resize(
+        static_cast<std::size_t>(num_cells) * static_cast<std::size_t>(data.components), kNoValue);
+}
+
 } // namespace
+
+bool CellData::covers(Index c) const {
+  for (int k = 0; k < components; ++k)
+    if (std::isnan(value(c, k)))
+      return false;
+  return true;
+}
 
 Index Mesh::add_node(const Vec3& x) {
   nodes_.push_back(x);
@@ -72,6 +89,8 @@ Index Mesh::add_cell(const Hex8& nodes) {
     TRIFEM_CHECK(n >= 0 && n < num_nodes(), "cell {} refers to node {} but the mesh has {} nodes",
                  num_cells(), n, num_nodes());
   cells_.push_back(nodes);
+  if (!cell_data_.empty())
+    pad_cell_data(cell_data_, num_cells());
   return static_cast<Index>(cells_.size()) - 1;
 }
 
@@ -94,6 +113,18 @@ void Mesh::add_cell_block(const std::string& name, std::vector<Index> cells) {
     TRIFEM_CHECK(c >= 0 && c < num_cells(), "cell block '{}' refers to cell {} outside 0..{}", name,
                  c, num_cells() - 1);
   insert_unique(cell_blocks_, "cell block", name, std::move(cells));
+}
+
+void Mesh::add_cell_data(const std::string& name, CellData data) {
+  TRIFEM_CHECK(data.components >= 1, "cell data '{}' needs at least one component", name);
+  TRIFEM_CHECK(std::ssize(data.values) == num_cells() * data.components,
+               "cell data '{}' holds {} numbers, expected {} cells x {} components", name,
+               data.values.size(), num_cells(), data.components);
+  insert_unique(cell_data_, "cell data", name, std::move(data));
+}
+
+const CellData& Mesh::cell_data(const std::string& name) const {
+  return find_named(cell_data_, "cell data", name);
 }
 
 const std::vector<Index>& Mesh::node_set(const std::string& name) const {
@@ -142,6 +173,26 @@ void Mesh::append(const Mesh& other) {
     for (Index& c : shifted)
       c += cell_offset;
     add_cell_block(name, std::move(shifted));
+  }
+  append_cell_data(other, cell_offset);
+}
+
+void Mesh::append_cell_data(const Mesh& other, Index cell_offset) {
+  pad_cell_data(cell_data_, num_cells());
+  for (const auto& [name, data] : other.cell_data_) {
+    auto [it, inserted] = cell_data_.try_emplace(name);
+    CellData& joined = it->second;
+    if (inserted) {
+      joined.components = data.components;
+      joined.values.assign(static_cast<std::size_t>(num_cells()) *
+                               static_cast<std::size_t>(data.components),
+                           kNoValue);
+    }
+    TRIFEM_CHECK(joined.components == data.components,
+                 "cell data '{}' has {} components here and {} in the appended mesh", name,
+                 joined.components, data.components);
+    std::copy(data.values.begin(), data.values.end(),
+              joined.values.begin() + static_cast<std::ptrdiff_t>(cell_offset) * data.components);
   }
 }
 

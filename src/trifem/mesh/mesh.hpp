@@ -29,12 +29,27 @@ struct Surface {
   std::vector<Facet> facets;
 };
 
+/// Named per-cell data (e.g. a Gmsh $ElementData view): `components` numbers per cell, NaN for
+/// the cells the data does not cover.
+struct CellData {
+  int components = 1;
+  std::vector<Real> values; ///< cell-major: component k of cell c is values[c * components + k]
+
+  /// True if cell c has a value (its components are not NaN).
+  bool covers(Index c) const;
+  /// Component k of cell c (NaN if the cell is not covered).
+  Real value(Index c, int k) const {
+    return values[static_cast<std::size_t>(c) * static_cast<std::size_t>(components) +
+                  static_cast<std::size_t>(k)];
+  }
+};
+
 /// Hex8 mesh with named sets. Names are unique per kind.
 class Mesh {
 public:
   /// Appends a node at reference position x; returns its index.
   Index add_node(const Vec3& x);
-  /// Appends a hex8 cell; returns its index. Nodes must exist.
+  /// Appends a hex8 cell; returns its index. Nodes must exist. The cell has no cell data (NaN).
   Index add_cell(const Hex8& nodes);
 
   Index num_nodes() const { return static_cast<Index>(nodes_.size()); }
@@ -64,11 +79,22 @@ public:
   const std::map<std::string, Surface>& surfaces() const { return surfaces_; }
   const std::map<std::string, std::vector<Index>>& cell_blocks() const { return cell_blocks_; }
 
-  /// Moves every node: x <- A x + b (e.g. to rotate or translate a part).
+  /// Registers named cell data; `data.values` holds num_cells() * components numbers
+  /// (components >= 1). Throws InputError on a name clash or a wrong size.
+  void add_cell_data(const std::string& name, CellData data);
+  bool has_cell_data(const std::string& name) const { return cell_data_.contains(name); }
+  /// Named lookup; throws InputError naming the missing data and listing the available ones.
+  const CellData& cell_data(const std::string& name) const;
+  const std::map<std::string, CellData>& cell_data() const { return cell_data_; }
+
+  /// Moves every node: x <- A x + b (e.g. to rotate or translate a part). Cell data is kept as
+  /// it is (it is not known to be a vector).
   void transform(const Mat3& A, const Vec3& b = Vec3::Zero());
 
   /// Appends another mesh (nodes and cells renumbered; names kept, clashes are errors).
   /// Nodes are not merged: separate bodies stay separate (contact later joins them).
+  /// Cell data of the same name in both meshes is joined (InputError if the numbers of
+  /// components differ); the cells of a mesh without some data get NaN in it.
   void append(const Mesh& other);
 
   /// For each quad (four node indices, any order), the outward-oriented facet of the cell face
@@ -79,11 +105,15 @@ public:
   std::vector<Facet> boundary_facets() const;
 
 private:
+  /// Joins the cell data of `other`, whose cells were appended from `cell_offset` on.
+  void append_cell_data(const Mesh& other, Index cell_offset);
+
   std::vector<Vec3> nodes_;
   std::vector<Hex8> cells_;
   std::map<std::string, std::vector<Index>> node_sets_;
   std::map<std::string, Surface> surfaces_;
   std::map<std::string, std::vector<Index>> cell_blocks_;
+  std::map<std::string, CellData> cell_data_;
 };
 
 /// Sorted, unique node indices of a surface.

@@ -8,6 +8,7 @@
 #include <array>
 #include <cstdint>
 #include <cstring>
+#include <fmt/ranges.h>
 #include <utility>
 
 namespace trifem::model {
@@ -30,9 +31,73 @@ Vec3 centroid(const mesh::Mesh& mesh, Index cell) {
   return x / 8.0;
 }
 
+std::string text(const Vec3& v) {
+  return fmt::format("[{}, {}, {}]", v.x(), v.y(), v.z());
+}
+
+/// The cell data `view` (the value of materials.<name>.axes.<key>): InputError listing the
+/// views of the mesh if there is none of this name, or if it is no vector (3 components).
+const mesh::CellData& direction_view(const mesh::Mesh& mesh, const std::string& view,
+                                     const std::string& name, const std::string& key) {
+  if (!mesh.has_cell_data(view)) {
+    std::vector<std::string> views;
+    for (const auto& [view_name, data] : mesh.cell_data())
+      views.push_back(view_name);
+    throw InputError(fmt::format(
+        "materials.{}.axes.{} = '{}': the mesh has no element data view of this name (views: "
+        "{}; a Gmsh $ElementData section names its view in its first string tag)",
+        name, key, view,
+        views.empty() ? std::string("none") : fmt::to_string(fmt::join(views, ", "))));
+  }
+  const mesh::CellData& data = mesh.cell_data(view);
+  TRIFEM_CHECK(data.components == 3,
+               "materials.{}.axes.{} = '{}': the view has {} components per element, a "
+               "direction needs 3",
+               name, key, view, data.components);
+  return data;
+}
+
+/// The vector of `cell` in the view `key` = `view`: InputError naming the cell if the view has
+/// no value there or a zero vector.
+Vec3 view_vector(const mesh::Mesh& mesh, Index cell, const std::string& name,
+                 const std::string& key, const std::string& view) {
+  const mesh::CellData& data = direction_view(mesh, view, name, key);
+  TRIFEM_CHECK(data.covers(cell),
+               "materials.{}.axes (cell {}, centroid {}): the view '{}' ({}) has no value for "
+               "this cell; every cell of the material needs one",
+               name, cell, text(centroid(mesh, cell)), view, key);
+  const Vec3 v(data.value(cell, 0), data.value(cell, 1), data.value(cell, 2));
+  TRIFEM_CHECK(v.norm() > 0.0,
+               "materials.{}.axes (cell {}, centroid {}): the view '{}' ({}) gives the zero "
+               "vector, which has no direction",
+               name, cell, text(centroid(mesh, cell)), view, key);
+  return v;
+}
+
+/// The basis of a cell from the views of axes of kind Mesh: e1 along the view `view`, completed
+/// by material::completed_basis or, with a `d_view`, e2 = the part of d normal to e1.
+Mat3 mesh_basis(const material::AxesSpec& axes, const mesh::Mesh& mesh, Index cell,
+                const std::string& name) {
+  const Vec3 a = view_vector(mesh, cell, name, "view", axes.view);
+  const std::string context = fmt::format("materials.{}.axes (cell {})", name, cell);
+  if (axes.d_view.empty())
+    return material::completed_basis(a, context);
+  const Vec3 d = view_vector(mesh, cell, name, "d_view", axes.d_view);
+  try {
+    return material::vector_basis(a, d, context);
+  } catch (const InputError&) {
+    throw InputError(fmt::format(
+        "{}: the direction {} of view '{}' (d_view) is parallel to the direction {} of view "
+        "'{}' (view), so it fixes no (e1, e2) plane",
+        context, text(d), axes.d_view, text(a), axes.view));
+  }
+}
+
 /// The basis of `cell` of the material `name` with `axes`.
 Mat3 cell_basis(const material::AxesSpec& axes, const mesh::Mesh& mesh, Index cell,
                 const std::string& name) {
+  if (axes.kind == material::AxesKind::Mesh)
+    return mesh_basis(axes, mesh, cell, name);
   const std::string context = fmt::format("materials.{}.axes (cell {})", name, cell);
   return material::axes_basis(axes, centroid(mesh, cell), context);
 }

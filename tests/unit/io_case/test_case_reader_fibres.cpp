@@ -454,6 +454,15 @@ nu = 0.3
   const CaseSpec s = parse_case(solid + "type = \"spherical\"\ncenter = [0, 0, -1]\n", kMemoryFile);
   EXPECT_EQ(s.materials.at("cart").axes->kind, material::AxesKind::Spherical);
   EXPECT_EQ(s.materials.at("cart").axes->axis, Vec3(0, 0, 1)); // the default pole axis
+
+  const CaseSpec m = parse_case(solid + "type = \"mesh\"\nview = \"fibre\"\n", kMemoryFile);
+  EXPECT_EQ(m.materials.at("cart").axes->kind, material::AxesKind::Mesh);
+  EXPECT_EQ(m.materials.at("cart").axes->view, "fibre");
+  EXPECT_EQ(m.materials.at("cart").axes->d_view, ""); // none: the completed basis
+  const CaseSpec md =
+      parse_case(solid + "type = \"mesh\"\nview = \"fibre\"\nd_view = \"sheet\"\n", kMemoryFile);
+  EXPECT_EQ(md.materials.at("cart").axes->view, "fibre");
+  EXPECT_EQ(md.materials.at("cart").axes->d_view, "sheet");
 }
 
 class BadAxesInput : public testing::TestWithParam<BadCase> {};
@@ -474,7 +483,7 @@ const std::vector<BadCase> kBadAxesCases = {
     {"unknown_type",
      cartilage_axes("type = \"polar\"\n"),
      {"materials.cart.axes.type = 'polar': unknown axes type (expected one of: vector, "
-      "cylindrical, spherical)"}},
+      "cylindrical, spherical, mesh)"}},
     {"parallel_vectors",
      cartilage_axes("type = \"vector\"\na = [1, 2, 3]\nd = [2, 4, 6]\n"),
      {"materials.cart.axes.d: must not be parallel to a", "(line 31)"}},
@@ -493,6 +502,24 @@ const std::vector<BadCase> kBadAxesCases = {
     {"missing_center",
      cartilage_axes("type = \"spherical\"\n"),
      {"materials.cart.axes.center: missing required key"}},
+    {"mesh_missing_view",
+     cartilage_axes("type = \"mesh\"\n"),
+     {"materials.cart.axes.view: missing required key"}},
+    {"mesh_empty_view",
+     cartilage_axes("type = \"mesh\"\nview = \"\"\n"),
+     {"materials.cart.axes.view", "expected a non-empty string"}},
+    {"mesh_view_not_a_string",
+     cartilage_axes("type = \"mesh\"\nview = [1, 0, 0]\n"),
+     {"materials.cart.axes.view"}},
+    {"mesh_d_view_is_view",
+     cartilage_axes("type = \"mesh\"\nview = \"fibre\"\nd_view = \"fibre\"\n"),
+     {"materials.cart.axes.d_view: must name another view than view", "(line 31)"}},
+    {"mesh_key_of_another_type",
+     cartilage_axes("type = \"mesh\"\nview = \"fibre\"\na = [1, 0, 0]\n"),
+     {"materials.cart.axes.a: unknown key (expected one of: type, view, d_view)"}},
+    {"vector_with_a_view",
+     cartilage_axes("type = \"vector\"\na = [1, 0, 0]\nd = [0, 1, 0]\nview = \"fibre\"\n"),
+     {"materials.cart.axes.view: unknown key (expected one of: type, a, d)"}},
 
     {"axes_not_a_table",
      kModel + replaced_in(kCartilage, "phi_s0 = 0.2", "phi_s0 = 0.2\naxes = 1"),

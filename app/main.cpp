@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// trifem command-line interface: run, check, --version.
+// trifem command-line interface: run, check, convert, --version.
 #include "trifem/analysis/case_file.hpp"
 #include "trifem/analysis/run.hpp"
 #include "trifem/core/error.hpp"
@@ -37,8 +37,8 @@ void check_command_name(int argc, char** argv) {
     const std::string arg = argv[i];
     if (arg.starts_with("-"))
       continue;
-    if (arg != "run" && arg != "check")
-      throw CLI::ParseError("unknown command '" + arg + "' (expected run or check)",
+    if (arg != "run" && arg != "check" && arg != "convert")
+      throw CLI::ParseError("unknown command '" + arg + "' (expected run, check or convert)",
                             CLI::ExitCodes::ExtrasError);
     return;
   }
@@ -65,6 +65,14 @@ int main(int argc, char** argv) {
                 "write a restart file with every VTU state (as [output] restart = true)");
   auto* check = cli.add_subcommand("check", "validate a case without solving");
   check->add_option("case", case_file, "case file (.toml, or an FEBio .feb file)")->required();
+  std::string converted;
+  auto* convert = cli.add_subcommand("convert", "write a case as a TOML case and a Gmsh mesh");
+  convert->add_option("case", case_file, "case file (an FEBio .feb file, or .toml)")->required();
+  convert
+      ->add_option("-o,--output", converted,
+                   "TOML case to write (its mesh: the same name "
+                   "with .msh)")
+      ->required();
 
   try {
     check_command_name(argc, argv);
@@ -77,6 +85,11 @@ int main(int argc, char** argv) {
   }
   log::configure(quiet ? log::Level::Quiet : verbose ? log::Level::Verbose : log::Level::Normal);
   return guarded([&] {
+    if (convert->parsed()) {
+      for (const auto& file : analysis::convert_case(case_file, converted))
+        log::info("wrote {}", file.string());
+      return static_cast<int>(analysis::kSuccess);
+    }
     const io::CaseSpec spec = analysis::read_case_file(case_file);
     if (check->parsed())
       return analysis::check_case(spec);

@@ -720,32 +720,51 @@ struct QuadKeyHash {
   }
 };
 
-/// The outward-oriented facet of each pending quad, taken from the first hex (lowest index)
-/// that has the quad as a face. Only the quads are hashed, so this stays cheap for large meshes.
+/// True if `b` lists the nodes of `a` in the same cyclic order (the same oriented quad).
+bool same_orientation(const std::array<Index, 4>& a, const std::array<Index, 4>& b) {
+  for (int shift = 0; shift < 4; ++shift)
+    if (a[0] == b[shift] && a[1] == b[(shift + 1) % 4] && a[2] == b[(shift + 2) % 4] &&
+        a[3] == b[(shift + 3) % 4])
+      return true;
+  return false;
+}
+
+/// The outward-oriented facet of each pending quad: of the hexes that have the quad as a face,
+/// the one whose face has the quad's node order (an interior face names its side by its
+/// orientation), else the first (lowest index). Only the quads are hashed, so this stays cheap
+/// for large meshes.
 std::vector<Facet> orient_quads(const LineReader& in, const GmshData& d) {
   std::unordered_map<QuadKey, std::size_t, QuadKeyHash> slot_of;
   std::vector<std::size_t> slot(d.quads.size());
   for (std::size_t i = 0; i < d.quads.size(); ++i)
     slot[i] = slot_of.try_emplace(sorted_key(d.quads[i].nodes), slot_of.size()).first->second;
-  std::vector<Facet> found(slot_of.size()); // cell -1: not found yet
+  std::vector<std::array<Facet, 2>> found(slot_of.size()); // cell -1: not found yet
   for (Index c = 0; c < d.mesh.num_cells(); ++c) {
     for (int f = 0; f < 6; ++f) {
       Facet facet{.nodes = {}, .cell = c, .local_face = f};
       for (int a = 0; a < 4; ++a)
         facet.nodes[a] = d.mesh.cell(c)[kHexFaces[f][a]];
       const auto it = slot_of.find(sorted_key(facet.nodes));
-      if (it != slot_of.end() && found[it->second].cell < 0)
-        found[it->second] = facet;
+      if (it == slot_of.end())
+        continue;
+      std::array<Facet, 2>& sides = found[it->second];
+      if (sides[0].cell < 0)
+        sides[0] = facet;
+      else if (sides[1].cell < 0)
+        sides[1] = facet;
     }
   }
   std::vector<Facet> facets;
   facets.reserve(d.quads.size());
   for (std::size_t i = 0; i < d.quads.size(); ++i) {
     const PendingQuad& q = d.quads[i];
-    TRIFEM_CHECK(found[slot[i]].cell >= 0,
+    const std::array<Facet, 2>& sides = found[slot[i]];
+    TRIFEM_CHECK(sides[0].cell >= 0,
                  "{}: quad4 element {} of physical surface '{}' is not a face of any hex8 element",
                  in.at(q.line), q.element, group_name(d, {2, q.physical}));
-    facets.push_back(found[slot[i]]);
+    const bool second = sides[1].cell >= 0 && !same_orientation(q.nodes, sides[0].nodes) &&
+                        same_orientation(q.nodes, sides[1].nodes);
+    facets.push_back(sides[second ? 1 : 0]);
   }
   return facets;
 }

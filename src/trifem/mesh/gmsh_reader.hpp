@@ -14,8 +14,10 @@ namespace trifem::mesh {
 ///   blocks. If the file defines no physical groups at all, every hex goes into block "volume";
 ///   otherwise hexes in no physical volume go into block "unassigned" (created only if needed).
 /// - Quad4 (type 3) elements in physical surface groups become named surfaces, oriented outward
-///   against the hex that owns the face (each also registers a node set of the same name).
-///   Quads in no physical group are ignored.
+///   against the hex that owns the face (each also registers a node set of the same name). A
+///   quad on a face between two hexes is oriented out of the hex whose face has the quad's node
+///   order (right-hand rule), else out of the hex with the lower index. Quads in no physical
+///   group are ignored.
 /// - Elements of dimension 0 or 1 in physical point/curve groups become node sets; otherwise
 ///   they are ignored.
 /// - Names come from $PhysicalNames; an unnamed physical group of dimension 0/1/2/3 is called

@@ -1,0 +1,308 @@
+// SPDX-License-Identifier: MIT
+// TOML case writer: meshes, curves, conditions, loads, time, solver and output. The materials
+// are written in case_writer_materials.cpp; the TOML text helpers are in case_writer_text.hpp.
+#include "trifem/io/case_writer.hpp"
+
+#include "trifem/core/error.hpp"
+#include "trifem/io/case_writer_text.hpp"
+#include "trifem/mesh/gmsh_writer.hpp"
+
+#include <fstream>
+
+namespace trifem::io {
+namespace {
+
+using detail::TomlText;
+
+/// Refuses the members of `spec` that the writer cannot express (or that no TOML case holds).
+void check_supported(const CaseSpec& spec) {
+  const auto refuse = [](bool unsupported, std::string_view what) {
+    TRIFEM_CHECK(!unsupported, "{}: writing this to a TOML case is not supported yet", what);
+  };
+  refuse(!spec.meshes.empty(), "inline meshes (write them with write_case)");
+  refuse(!spec.contacts.empty(), "contact pairs ([[contact]])");
+  refuse(!spec.rigid_bodies.empty(), "rigid bodies ([[rigid_body]])");
+  refuse(spec.is_explicit() || spec.has_explicit_step(), "dynamic-explicit analyses");
+  const AnalysisSpec defaults;
+  refuse(spec.analysis.initial_state != defaults.initial_state ||
+             !spec.analysis.fixed_charge_curve.empty(),
+         "[analysis] initial_state and fixed_charge_curve");
+}
+
+std::string_view interpolation_name(dofs::Interpolation i) {
+  switch (i) {
+  case dofs::Interpolation::Linear:
+    return "linear";
+  case dofs::Interpolation::Step:
+    return "step";
+  case dofs::Interpolation::Smooth:
+    return "smooth";
+  }
+  return "linear";
+}
+
+std::string_view field_name(FieldKind kind) {
+  switch (kind) {
+  case FieldKind::Displacement:
+    return "displacement";
+  case FieldKind::FluidFlux:
+    return "fluid_flux";
+  case FieldKind::CationFlux:
+    return "cation_flux";
+  case FieldKind::AnionFlux:
+    return "anion_flux";
+  }
+  return "displacement";
+}
+
+constexpr std::string_view kAxes[] = {"x", "y", "z"};
+
+void write_meshes(const CaseSpec& spec, TomlText& t) {
+  for (const BoxMeshSpec& b : spec.boxes) {
+    t.header("[[mesh.box]]");
+    t.string("name", b.box.name);
+    t.vector("origin", b.box.origin);
+    t.vector("size", b.box.size);
+    t.raw("divisions",
+          fmt::format("[{}, {}, {}]", b.box.divisions[0], b.box.divisions[1], b.box.divisions[2]));
+    t.vector("grading", b.box.grading);
+    t.string("material", b.material);
+  }
+  for (const GmshMeshSpec& g : spec.gmsh) {
+    t.header("[[mesh.gmsh]]");
+    t.string("file", g.file.generic_string());
+    std::vector<std::pair<std::string, std::string>> entries;
+    for (const auto& [block, material] : g.materials)
+      entries.emplace_back(TomlText::key(block), TomlText::quoted(material));
+    t.inline_table("materials", entries);
+  }
+}
+
+void write_curves(const CaseSpec& spec, TomlText& t) {
+  for (const auto& [name, c] : spec.curves) {
+    t.header(fmt::format("[curves.{}]", TomlText::key(name)));
+    t.string("interpolation", interpolation_name(c.interpolation));
+    std::string points = "[";
+    for (std::size_t i = 0; i < c.points.size(); ++i)
+      points += fmt::format("{}[{}, {}]", i ? ", " : "", TomlText::number(c.points[i].first),
+                            TomlText::number(c.points[i].second));
+    t.raw("points", points + "]");
+  }
+}
+
+std::string components(const std::vector<Component>& c) {
+  std::string s = "[";
+  for (std::size_t i = 0; i < c.size(); ++i)
+    s += fmt::format("{}\"{}\"", i ? ", " : "", kAxes[c[i]]);
+  return s + "]";
+}
+
+/// [[<prefix>.fixed]]: one table, or one per field unless the fields are all fluxes.
+void write_fixed(const FixedSpec& f, std::string_view prefix, TomlText& t) {
+  const std::vector<FieldKind> fluxes = {FieldKind::FluidFlux, FieldKind::CationFlux,
+                                         FieldKind::AnionFlux};
+  const auto table = [&](std::string_view field) {
+    t.header(fmt::format("[[{}.fixed]]", prefix));
+    t.string("set", f.set);
+    if (!field.empty())
+      t.string("field", field);
+    t.raw("components", components(f.components));
+  };
+  if (f.fields == fluxes)
+    return table("fluxes");
+  for (FieldKind k : f.fields)
+    table(k == FieldKind::Displacement ? "" : field_name(k));
+}
+
+void write_prescribed(const PrescribedSpec& p, std::string_view prefix, TomlText& t) {
+  t.header(fmt::format("[[{}.prescribed]]", prefix));
+  t.string("set", p.set);
+  if (p.field != FieldKind::Displacement)
+    t.string("field", field_name(p.field));
+  t.string("component", kAxes[p.component]);
+  t.number("value", p.value);
+  t.optional_string("curve", p.curve);
+  if (p.relative)
+    t.raw("relative", "true");
+}
+
+/// Fixed and prescribed conditions, pressures and tractions under `boundary` and `loads`.
+void write_conditions(const std::vector<FixedSpec>& fixed,
+                      const std::vector<PrescribedSpec>& prescribed,
+                      const std::vector<PressureSpec>& pressures,
+                      const std::vector<TractionSpec>& tractions, std::string_view boundary,
+                      std::string_view loads, TomlText& t) {
+  for (const FixedSpec& f : fixed)
+    write_fixed(f, boundary, t);
+  for (const PrescribedSpec& p : prescribed)
+    write_prescribed(p, boundary, t);
+  for (const PressureSpec& p : pressures) {
+    t.header(fmt::format("[[{}.pressure]]", loads));
+    t.string("surface", p.surface);
+    t.number("value", p.value);
+    t.optional_string("curve", p.curve);
+  }
+  for (const TractionSpec& p : tractions) {
+    t.header(fmt::format("[[{}.traction]]", loads));
+    t.string("surface", p.surface);
+    t.vector("value", p.value);
+    t.optional_string("curve", p.curve);
+  }
+}
+
+void write_boundary(const CaseSpec& spec, TomlText& t) {
+  write_conditions(spec.fixed, spec.prescribed, {}, {}, "boundary", "loads", t);
+  for (const ImpermeableSurfaceSpec& s : spec.impermeable_surfaces) {
+    t.header("[[boundary.impermeable]]");
+    t.string("surface", s.surface);
+  }
+  for (const BathSpec& b : spec.baths) {
+    t.header("[[boundary.bath]]");
+    t.string("surface", b.surface);
+    t.number("concentration", b.concentration);
+    t.optional_string("curve", b.curve);
+  }
+  write_conditions({}, {}, spec.pressures, spec.tractions, "boundary", "loads", t);
+}
+
+void write_electrochemistry(const CaseSpec& spec, TomlText& t) {
+  const ElectrochemistrySpec d;
+  const ElectrochemistrySpec& e = spec.electrochemistry;
+  if (e.R == d.R && e.T == d.T && e.faraday == d.faraday &&
+      e.bath_concentration == d.bath_concentration && e.bath_activity == d.bath_activity &&
+      e.bath_osmotic == d.bath_osmotic)
+    return;
+  t.header("[electrochemistry]");
+  t.number("R", e.R);
+  t.number("T", e.T);
+  t.number("faraday", e.faraday);
+  t.number("bath_concentration", e.bath_concentration);
+  t.number("bath_activity", e.bath_activity);
+  t.number("bath_osmotic", e.bath_osmotic);
+}
+
+/// The time keys of [time] or of a [[step]] (the current table).
+void write_time_keys(const TimeSpec& s, TomlText& t) {
+  t.number("end_time", s.end_time);
+  t.number("dt", s.dt);
+  if (s.dt_min > 0.0)
+    t.number("dt_min", s.dt_min);
+  if (s.dt_max > 0.0)
+    t.number("dt_max", s.dt_max);
+  t.raw("target_iterations", fmt::format("{}", s.target_iterations));
+  t.number("growth", s.growth);
+  t.number("cutback", s.cutback);
+}
+
+void write_time(const CaseSpec& spec, TomlText& t) {
+  if (spec.steps.empty()) {
+    t.header("[time]");
+    return write_time_keys(spec.time, t);
+  }
+  for (const StepSpec& s : spec.steps) {
+    t.header("[[step]]");
+    t.string("name", s.name);
+    write_time_keys(s.time, t);
+    if (s.release_time > 0.0)
+      t.number("release_time", s.release_time);
+    write_conditions(s.fixed, s.prescribed, s.pressures, s.tractions, "step.boundary", "step.loads",
+                     t);
+  }
+}
+
+void write_solver(const SolverSpec& s, TomlText& t) {
+  t.header("[solver]");
+  t.raw("max_iterations", fmt::format("{}", s.max_iterations));
+  t.number("residual_tolerance", s.residual_tolerance);
+  t.number("increment_tolerance", s.increment_tolerance);
+  t.raw("line_search", s.line_search ? "true" : "false");
+  t.string("linear_solver", s.linear_solver);
+  t.optional_string("petsc_options", s.petsc_options);
+  if (s.reuse_factorization)
+    t.raw("reuse_factorization", "true");
+}
+
+void write_output(const OutputSpec& o, TomlText& t) {
+  t.header("[output]");
+  if (o.interval_given)
+    t.number("interval", o.interval);
+  if (!o.times.empty()) {
+    std::string times = "[";
+    for (std::size_t i = 0; i < o.times.size(); ++i)
+      times += fmt::format("{}{}", i ? ", " : "", TomlText::number(o.times[i]));
+    t.raw("times", times + "]");
+  }
+  t.raw("vtu", o.vtu ? "true" : "false");
+  if (o.restart)
+    t.raw("restart", "true");
+  for (const ReactionSpec& r : o.reactions) {
+    t.header("[[output.reaction]]");
+    t.string("set", r.set);
+  }
+  for (const ProbeSpec& p : o.probes) {
+    t.header("[[output.probe]]");
+    t.string("name", p.name);
+    t.string("quantity", p.quantity);
+    t.vector("point", p.point);
+  }
+  for (const AverageSpec& a : o.averages) {
+    t.header("[[output.average]]");
+    t.string("name", a.name);
+    t.string("quantity", a.quantity);
+    t.string("block", a.block);
+  }
+}
+
+void write_preamble(const CaseSpec& spec, TomlText& t) {
+  t.comment("trifem case file (docs/input.md)");
+  if (!spec.file.empty())
+    t.comment(fmt::format("converted from {} by trifem convert", spec.file.filename().string()));
+  for (const std::string& w : spec.warnings)
+    t.comment(fmt::format("note: {}", w));
+  if (!spec.title.empty())
+    t.string("title", spec.title);
+}
+
+} // namespace
+
+std::string case_toml(const CaseSpec& spec) {
+  check_supported(spec);
+  TomlText t;
+  write_preamble(spec, t);
+  write_meshes(spec, t);
+  detail::write_materials(spec, t);
+  write_curves(spec, t);
+  write_boundary(spec, t);
+  write_electrochemistry(spec, t);
+  write_time(spec, t);
+  write_solver(spec.solver, t);
+  write_output(spec.output, t);
+  return t.text();
+}
+
+std::vector<std::filesystem::path> write_case(const CaseSpec& spec,
+                                              const std::filesystem::path& file) {
+  CaseSpec out = spec;
+  out.meshes.clear();
+  for (GmshMeshSpec& g : out.gmsh)
+    if (g.file.is_relative())
+      g.file = std::filesystem::absolute(spec.file.parent_path() / g.file);
+  std::vector<std::filesystem::path> written = {file};
+  for (std::size_t i = 0; i < spec.meshes.size(); ++i) {
+    const std::string suffix = spec.meshes.size() > 1 ? fmt::format("_{}", i + 1) : "";
+    const std::filesystem::path name = file.stem().string() + suffix + ".msh";
+    written.push_back(file.parent_path() / name);
+    out.gmsh.push_back({name, spec.meshes[i].materials});
+  }
+  const std::string text = case_toml(out); // refuses what it cannot write, before any file
+  for (std::size_t i = 0; i < spec.meshes.size(); ++i)
+    mesh::write_gmsh(spec.meshes[i].mesh, written[i + 1]);
+  std::ofstream stream(file, std::ios::binary);
+  TRIFEM_CHECK(stream.is_open(), "{}: cannot write the case file", file.string());
+  stream << text;
+  stream.close();
+  TRIFEM_CHECK(stream.good(), "{}: error while writing the case file", file.string());
+  return written;
+}
+
+} // namespace trifem::io

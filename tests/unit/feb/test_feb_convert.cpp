@@ -1,0 +1,104 @@
+// SPDX-License-Identifier: MIT
+// `trifem convert`: each .feb test file converted to a TOML case and its Gmsh mesh, the
+// converted case read back and run; its history.csv must equal that of the .feb run.
+#include "history_csv.hpp"
+#include "trifem/analysis/case_file.hpp"
+#include "trifem/analysis/run.hpp"
+#include "trifem/core/error.hpp"
+#include "trifem/io/case_writer.hpp"
+
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+using namespace trifem;
+
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kData = TRIFEM_FEB_DATA_DIR;
+
+/// A fresh directory of the test's temporary directory, unique per process and name.
+fs::path fresh_dir(const std::string& name) {
+  const fs::path dir =
+      fs::path(testing::TempDir()) / ("feb_convert_" + std::to_string(::getpid()) + "_" + name);
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+/// Runs `spec` (without VTU files) into `dir` and returns its history.
+test::History run(io::CaseSpec spec, const fs::path& dir) {
+  spec.output.vtu = false;
+  EXPECT_EQ(analysis::run_case(spec, dir), analysis::kSuccess);
+  return test::read_history(dir / "history.csv");
+}
+
+class FebConvert : public testing::TestWithParam<std::string> {};
+
+TEST_P(FebConvert, ConvertedCaseGivesTheSameHistory) {
+  const std::string name = GetParam();
+  const fs::path dir = fresh_dir(name);
+  const fs::path feb = kData / (name + ".feb");
+  const auto written = analysis::convert_case(feb, dir / "case.toml");
+  ASSERT_EQ(written.size(), 2u);
+  EXPECT_EQ(written[0], dir / "case.toml");
+  EXPECT_EQ(written[1], dir / "case.msh");
+  ASSERT_TRUE(fs::exists(dir / "case.msh"));
+
+  const test::History expected = run(analysis::read_case_file(feb), dir / "feb");
+  const test::History got = run(analysis::read_case_file(dir / "case.toml"), dir / "toml");
+  ASSERT_FALSE(expected.names.empty());
+  ASSERT_EQ(expected.names, got.names);
+  Real largest = 0.0; // relative difference over all columns
+  for (std::size_t c = 0; c < expected.names.size(); ++c) {
+    ASSERT_EQ(expected.columns[c].size(), got.columns[c].size()) << expected.names[c];
+    Real scale = 0.0;
+    for (Real v : expected.columns[c])
+      scale = std::max(scale, std::abs(v));
+    for (std::size_t i = 0; i < expected.columns[c].size(); ++i) {
+      const Real diff = std::abs(expected.columns[c][i] - got.columns[c][i]);
+      EXPECT_LE(diff, 1e-12 * scale) << expected.names[c] << " row " << i;
+      if (scale > 0.0)
+        largest = std::max(largest, diff / scale);
+    }
+  }
+  std::cout << name << ": " << expected.names.size() << " columns, " << expected.columns[0].size()
+            << " rows, largest relative difference " << largest << '\n';
+  fs::remove_all(dir);
+}
+
+INSTANTIATE_TEST_SUITE_P(TestFiles, FebConvert,
+                         testing::Values("confined_biphasic_ramp", "uniaxial_neo_hookean",
+                                         "uniaxial_mooney_rivlin_pressure", "ogden_two_steps"));
+
+TEST(FebConvertErrors, RefusesToOverwriteTheInput) {
+  const fs::path dir = fresh_dir("self");
+  const fs::path feb = dir / "model.feb";
+  fs::copy_file(kData / "uniaxial_neo_hookean.feb", feb);
+  EXPECT_THROW(analysis::convert_case(feb, feb), InputError);
+  fs::remove_all(dir);
+}
+
+TEST(FebConvertErrors, RefusesWhatTheWriterCannotExpress) {
+  io::CaseSpec spec = analysis::read_case_file(kData / "uniaxial_neo_hookean.feb");
+  spec.contacts.push_back({});
+  const fs::path dir = fresh_dir("contact");
+  try {
+    io::write_case(spec, dir / "case.toml");
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("contact"), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(fs::exists(dir / "case.toml"));
+  EXPECT_FALSE(fs::exists(dir / "case.msh"));
+  fs::remove_all(dir);
+}
+
+} // namespace

@@ -97,7 +97,10 @@ std::string components(const std::vector<Component>& c) {
   return s + "]";
 }
 
-/// [[<prefix>.fixed]]: one table, or one per field unless the fields are all fluxes.
+/// [[<prefix>.fixed]]: one table per field, except that all three fluxes together are one
+/// table with field = "fluxes" (which, like [[boundary.bonded]] and [[boundary.impermeable]],
+/// holds on a biphasic model too: its ion fluxes do not exist, and a table naming them would be
+/// an error).
 void write_fixed(const FixedSpec& f, std::string_view prefix, TomlText& t) {
   const std::vector<FieldKind> fluxes = {FieldKind::FluidFlux, FieldKind::CationFlux,
                                          FieldKind::AnionFlux};
@@ -108,10 +111,16 @@ void write_fixed(const FixedSpec& f, std::string_view prefix, TomlText& t) {
       t.string("field", field);
     t.raw("components", components(f.components));
   };
-  if (f.fields == fluxes)
-    return table("fluxes");
+  std::vector<FieldKind> flux_fields;
   for (FieldKind k : f.fields)
-    table(k == FieldKind::Displacement ? "" : field_name(k));
+    if (k == FieldKind::Displacement)
+      table("");
+    else
+      flux_fields.push_back(k);
+  if (flux_fields == fluxes)
+    return table("fluxes");
+  for (FieldKind k : flux_fields)
+    table(field_name(k));
 }
 
 void write_prescribed(const PrescribedSpec& p, std::string_view prefix, TomlText& t) {

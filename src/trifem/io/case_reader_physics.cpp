@@ -30,20 +30,6 @@ constexpr std::string_view kNoIonFields = "the model has no ion fields (no triph
 const std::vector<FieldKind> kAllFluxes = {FieldKind::FluidFlux, FieldKind::CationFlux,
                                            FieldKind::AnionFlux};
 
-std::string_view field_name(FieldKind kind) {
-  switch (kind) {
-  case FieldKind::Displacement:
-    return "displacement";
-  case FieldKind::FluidFlux:
-    return "fluid_flux";
-  case FieldKind::CationFlux:
-    return "cation_flux";
-  case FieldKind::AnionFlux:
-    return "anion_flux";
-  }
-  return "?";
-}
-
 /// The unit of a prescribed value of `kind`.
 std::string_view field_unit(FieldKind kind) {
   switch (kind) {

@@ -16,6 +16,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace trifem::io {
@@ -95,6 +96,21 @@ enum class FieldKind {
   CationFlux,   ///< j+ [mmol/(mm^2 s)]
   AnionFlux,    ///< j- [mmol/(mm^2 s)]
 };
+
+/// The case-file name of a field ([[boundary.fixed]] and [[boundary.prescribed]] `field`).
+constexpr std::string_view field_name(FieldKind kind) {
+  switch (kind) {
+  case FieldKind::Displacement:
+    return "displacement";
+  case FieldKind::FluidFlux:
+    return "fluid_flux";
+  case FieldKind::CationFlux:
+    return "cation_flux";
+  case FieldKind::AnionFlux:
+    return "anion_flux";
+  }
+  return "displacement";
+}
 
 /// [[boundary.fixed]]: zero components of one or more fields on a node set. Case keys:
 /// field = "displacement" (default) | "fluid_flux" | "cation_flux" | "anion_flux" |

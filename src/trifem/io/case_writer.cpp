@@ -41,20 +41,6 @@ std::string_view interpolation_name(dofs::Interpolation i) {
   return "linear";
 }
 
-std::string_view field_name(FieldKind kind) {
-  switch (kind) {
-  case FieldKind::Displacement:
-    return "displacement";
-  case FieldKind::FluidFlux:
-    return "fluid_flux";
-  case FieldKind::CationFlux:
-    return "cation_flux";
-  case FieldKind::AnionFlux:
-    return "anion_flux";
-  }
-  return "displacement";
-}
-
 constexpr std::string_view kAxes[] = {"x", "y", "z"};
 
 void write_meshes(const CaseSpec& spec, TomlText& t) {

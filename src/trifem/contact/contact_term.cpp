@@ -131,6 +131,7 @@ void ContactTerm::project_all(const Vector& x) {
   master_proj_.assign(master_.num_nodes(), std::nullopt);
   if (settings_.integration == Integration::BothSurfaces) {
     const BucketSearch on_slave(slave_, pos, settings_.search_distance);
+    options.xi_tolerance = settings_.master_xi_tolerance;
     master_proj_ = project_nodes(master_.nodes(), slave_, pos, on_slave, options);
   }
 }

@@ -38,6 +38,12 @@ struct ContactSettings {
   int max_active_set_resolves = 10; ///< updates of a frozen set once it has settled
   bool update_active_set = true;    ///< false: the set stays as initialised or assigned
   Real xi_tolerance = 1e-6;         ///< interior projections accepted in [-1-tol, 1+tol]²
+  /// The same for the projections of the master nodes onto the slave surface (BothSurfaces):
+  /// a master node just beyond an edge of the slave surface keeps the multiplier extrapolated
+  /// from the edge facet instead of being exposed (λ^m = 0). Such nodes are the rule where a
+  /// symmetry plane cuts both surfaces: master nodes on the plane lie off the slave surface by
+  /// |g| sin θ (g their gap, θ the tilt of the slave facet), far below 0.5 % of a facet.
+  Real master_xi_tolerance = 1e-2;
 };
 
 /// Interface state of one slave node k in a configuration x (ContactTerm::slave_states). A node

@@ -63,6 +63,7 @@ public:
 
   void analyze_pattern(const SparseMatrix& A) override {
     release();
+    broken_ = false;
     failure_ = {};
     n_ = static_cast<Index>(A.rows());
     if (n_ == 0)
@@ -81,6 +82,8 @@ public:
   bool factorize(const SparseMatrix& A) override {
     if (n_ == 0)
       return true;
+    if (broken_) // a PETSc error left the KSP in an unknown state: set it up anew
+      analyze_pattern(A);
     if (!ksp_)
       return false; // the set-up failed: failure_ says why
     failure_ = {};
@@ -97,6 +100,7 @@ public:
       return true;
     } catch (const petsc::PetscError& e) {
       failure_ = {e.what(), false};
+      broken_ = true;
       return false;
     }
   }
@@ -122,6 +126,7 @@ public:
       petsc::get_vector(x_, x);
     } catch (const petsc::PetscError& e) {
       failure_ = {e.what(), false};
+      broken_ = true;
       return false;
     }
     if (x.allFinite())
@@ -267,6 +272,7 @@ private:
   KSP ksp_ = nullptr;
   bool ready_ = false;
   bool sub_solvers_configured_ = false;
+  bool broken_ = false; ///< a PETSc error interrupted an operation: set up anew (as MUMPS)
   int iterations_ = 0;
   LinearSolverFailure failure_;
 };

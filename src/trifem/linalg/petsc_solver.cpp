@@ -76,6 +76,7 @@ public:
 
   void analyze_pattern(const SparseMatrix& A) override {
     release();
+    broken_ = false;
     failure_ = {};
     n_ = static_cast<Index>(A.rows());
     if (n_ == 0)
@@ -121,6 +122,8 @@ public:
   bool factorize(const SparseMatrix& A) override {
     if (n_ == 0)
       return true;
+    if (broken_) // a PETSc error left the KSP in an unknown state: set it up anew
+      analyze_pattern(A);
     if (!ksp_)
       return false; // the set-up failed: failure_ says why
     failure_ = {};
@@ -136,6 +139,7 @@ public:
       return refactorize();
     } catch (const petsc::PetscError& e) {
       failure_ = {e.what(), false};
+      broken_ = true;
       return false;
     }
   }
@@ -172,6 +176,7 @@ public:
       petsc::get_vector(x_, x, order_);
     } catch (const petsc::PetscError& e) {
       failure_ = {e.what(), false};
+      broken_ = true;
       return false;
     }
     if (x.allFinite())
@@ -199,6 +204,7 @@ private:
     check(PCGetFailedReason(pc, &reason), "PETSc PC");
     if (reason != PC_NOERROR) {
       failure_ = factor_failure(pc, reason);
+      broken_ = true; // MUMPS keeps the failed factors: set up anew before the next matrix
       return false;
     }
     refactor_ = stale_ = false;
@@ -242,6 +248,11 @@ private:
   Vec x_ = nullptr, b_ = nullptr;
   KSP ksp_ = nullptr;
   bool factored_ = false; ///< the symbolic analysis runs with the first factorization
+  /// A factorization failed or a PETSc error interrupted a solve: PETSc's objects may be left
+  /// mid-operation (a KSPSolve without its PCPostSolve, after which every later solve fails;
+  /// failed factors that a reused preconditioner would apply, INFOG(1) = -3), so the next
+  /// factorize() sets them up anew.
+  bool broken_ = false;
   LinearSolverFailure failure_;
 };
 

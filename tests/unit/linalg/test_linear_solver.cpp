@@ -153,6 +153,29 @@ TEST(LinearSolver, MumpsReportsASingularMatrixAsCurable) {
   EXPECT_FALSE(solver->failure().permanent); // a smaller step may give a regular matrix
 }
 
+TEST(LinearSolver, MumpsReusingFactorizationsRecoversFromASingularMatrix) {
+  // a Newton iteration meets a singular matrix (the old factorization cannot solve it, the new
+  // one fails), then the step is cut back and the next matrix is regular: it must be solved,
+  // not preconditioned by the failed factorization (MUMPS would refuse the solve, INFOG(1) = -3)
+  const SparseMatrix S = saddle_point(60, 3);
+  const Vector b = right_hand_side(S.rows());
+  SparseMatrix singular = S;
+  for (Index k = singular.outerIndexPtr()[5]; k < singular.outerIndexPtr()[6]; ++k)
+    singular.valuePtr()[k] = 0.0; // column 5 zero
+  auto solver = linalg::make_linear_solver("mumps", "", true);
+  solver->analyze_pattern(S);
+  Vector x;
+  ASSERT_TRUE(solver->factorize(S)) << solver->failure().reason;
+  ASSERT_TRUE(solver->solve(b, x));
+  EXPECT_TRUE(solver->factorize(singular)); // the old factorization is tried first
+  EXPECT_FALSE(solver->solve(b, x));        // it does not serve, and a new one fails
+  for (int retry = 0; retry < 3; ++retry) { // every later regular matrix is solved
+    ASSERT_TRUE(solver->factorize(S)) << solver->failure().reason;
+    ASSERT_TRUE(solver->solve(b, x)) << solver->failure().reason;
+    EXPECT_LT((S * x - b).norm(), 1e-10 * b.norm());
+  }
+}
+
 TEST(LinearSolver, UnusedPetscOptionIsAnInputErrorNamingIt) {
   try {
     linalg::make_linear_solver("mumps", "-mat_mumps_icntl_14 50 -mat_mumsp_icntl_7 5");

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 #include <map>
 #include <numbers>
+#include <set>
 
 namespace trifem::feb::detail {
 namespace {
@@ -111,9 +112,15 @@ void add_impermeable_faces(Reader& r) {
   const std::vector<char> mixture = mixture_cells(r);
   if (std::none_of(mixture.begin(), mixture.end(), [](char m) { return m != 0; }))
     return;
+  std::set<FaceKey> in_contact; // faces of contact surfaces: the contact law governs them
+  for (const io::ContactSpec& c : r.spec.contacts)
+    for (const std::string& name : {c.master, c.slave})
+      for (const mesh::Facet& f : r.mesh.mesh.surface(name).facets)
+        in_contact.insert(key_of(f.nodes));
   std::vector<mesh::Facet> closed;
   for (const mesh::Facet& f : mixture_boundary(r.mesh.mesh, mixture))
-    if (!std::all_of(f.nodes.begin(), f.nodes.end(), [&](Index n) { return r.drained[n] != 0; }))
+    if (!in_contact.contains(key_of(f.nodes)) &&
+        !std::all_of(f.nodes.begin(), f.nodes.end(), [&](Index n) { return r.drained[n] != 0; }))
       closed.push_back(f);
   const auto groups = patches(r.mesh.mesh, closed);
   for (std::size_t k = 0; k < groups.size(); ++k) {

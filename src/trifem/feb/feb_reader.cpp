@@ -72,13 +72,13 @@ void check_sections(const Reader& r, pugi::xml_node root) {
     if (s.type() != pugi::node_element)
       continue;
     const std::string_view name = s.name();
-    static constexpr std::string_view known[] = {"Module",   "Globals",     "Control",  "Material",
-                                                 "Mesh",     "MeshDomains", "Boundary", "Loads",
-                                                 "LoadData", "Output",      "Step"};
+    static constexpr std::string_view known[] = {"Module", "Globals",     "Control",  "Material",
+                                                 "Mesh",   "MeshDomains", "Boundary", "Contact",
+                                                 "Loads",  "LoadData",    "Output",   "Step"};
     if (std::find(std::begin(known), std::end(known), name) == std::end(known))
       r.doc.fail(s, fmt::format("the section <{}> is not supported (trifem reads Module, Globals, "
-                                "Control, Material, Mesh, MeshDomains, Boundary, Loads, LoadData, "
-                                "Output and Step)",
+                                "Control, Material, Mesh, MeshDomains, Boundary, Contact, Loads, "
+                                "LoadData, Output and Step)",
                                 name));
   }
   if (const pugi::xml_node globals = root.child("Globals"))
@@ -114,6 +114,8 @@ void read_sections(Reader& r) {
     detail::read_loads(r, l, r.spec.pressures, r.spec.tractions);
   detail::read_steps(r, root);
   check_curve_extents(r);
+  if (const pugi::xml_node c = root.child("Contact"))
+    detail::read_contact(r, c, root.child("Mesh"));
   if (const pugi::xml_node o = root.child("Output"))
     detail::read_output(r, o);
   detail::add_impermeable_faces(r);

@@ -193,9 +193,9 @@ void read_mesh(Reader& r, pugi::xml_node mesh, pugi::xml_node domains) {
       read_surface(r, n);
     else if (kind == "ElementSet")
       read_element_set(r, n);
-    else if (kind == "Edge" || kind == "SurfacePair")
+    else if (kind == "Edge")
       r.warn(n, fmt::format("<{}> is not used by the supported features (ignored)", kind));
-    else if (kind != "Nodes" && kind != "Elements")
+    else if (kind != "Nodes" && kind != "Elements" && kind != "SurfacePair") // pairs: Contact
       r.doc.fail(n, fmt::format("<{}> is not supported", kind));
   }
   if (domains)

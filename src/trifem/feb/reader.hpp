@@ -82,9 +82,13 @@ io::TimeSpec read_control(Reader& r, pugi::xml_node control, Real start);
 void read_steps(Reader& r, pugi::xml_node root);
 /// Output: logfile data as reactions and probes where they map directly.
 void read_output(Reader& r, pugi::xml_node section);
+/// Contact: each <contact> of a supported type as a contact pair of its <SurfacePair> (in
+/// `mesh`): slave = the primary surface, master = the secondary one.
+void read_contact(Reader& r, pugi::xml_node section, pugi::xml_node mesh);
 /// FEBio's natural condition of mixtures (no flux through a face without a condition): every
-/// boundary face of the mixture cells whose nodes are not all drained becomes part of an
-/// impermeable surface (one per smooth patch).
+/// boundary face of the mixture cells whose nodes are not all drained, and that is not a face
+/// of a contact surface (the contact couples the fluid there), becomes part of an impermeable
+/// surface (one per smooth patch).
 void add_impermeable_faces(Reader& r);
 
 } // namespace trifem::feb::detail

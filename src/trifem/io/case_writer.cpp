@@ -20,7 +20,6 @@ void check_supported(const CaseSpec& spec) {
     TRIFEM_CHECK(!unsupported, "{}: writing this to a TOML case is not supported yet", what);
   };
   refuse(!spec.meshes.empty(), "inline meshes (write them with write_case)");
-  refuse(!spec.contacts.empty(), "contact pairs ([[contact]])");
   refuse(!spec.rigid_bodies.empty(), "rigid bodies ([[rigid_body]])");
   refuse(spec.is_explicit() || spec.has_explicit_step(), "dynamic-explicit analyses");
   const AnalysisSpec defaults;
@@ -160,6 +159,21 @@ void write_boundary(const CaseSpec& spec, TomlText& t) {
   write_conditions({}, {}, spec.pressures, spec.tractions, "boundary", "loads", t);
 }
 
+void write_contacts(const CaseSpec& spec, TomlText& t) {
+  for (const ContactSpec& c : spec.contacts) {
+    t.header("[[contact]]");
+    t.string("master", c.master);
+    t.string("slave", c.slave);
+    t.string("integration", c.both_surfaces ? "both-surfaces" : "slave-nodes");
+    if (c.scale > 0.0)
+      t.number("scale", c.scale);
+    if (c.search_distance > 0.0)
+      t.number("search_distance", c.search_distance);
+    if (c.penetration_tolerance >= 0.0)
+      t.number("penetration_tolerance", c.penetration_tolerance);
+  }
+}
+
 void write_electrochemistry(const CaseSpec& spec, TomlText& t) {
   const ElectrochemistrySpec d;
   const ElectrochemistrySpec& e = spec.electrochemistry;
@@ -268,6 +282,7 @@ std::string case_toml(const CaseSpec& spec) {
   detail::write_materials(spec, t);
   write_curves(spec, t);
   write_boundary(spec, t);
+  write_contacts(spec, t);
   write_electrochemistry(spec, t);
   write_time(spec, t);
   write_solver(spec.solver, t);

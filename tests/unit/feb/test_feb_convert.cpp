@@ -95,11 +95,12 @@ TEST_P(TomlConvert, ConvertedExampleGivesTheSameHistory) {
 
 INSTANTIATE_TEST_SUITE_P(Examples, TomlConvert,
                          testing::Values("biphasic_creep", "free_swelling", "swell_then_compress",
-                                         "confined_column"));
+                                         "confined_column", "contact_patch", "contact_column"));
 
 INSTANTIATE_TEST_SUITE_P(TestFiles, FebConvert,
                          testing::Values("confined_biphasic_ramp", "uniaxial_neo_hookean",
-                                         "uniaxial_mooney_rivlin_pressure", "ogden_two_steps"));
+                                         "uniaxial_mooney_rivlin_pressure", "ogden_two_steps",
+                                         "stacked_blocks_contact"));
 
 TEST(FebConvertErrors, RefusesToOverwriteTheInput) {
   const fs::path dir = fresh_dir("self");
@@ -111,13 +112,13 @@ TEST(FebConvertErrors, RefusesToOverwriteTheInput) {
 
 TEST(FebConvertErrors, RefusesWhatTheWriterCannotExpress) {
   io::CaseSpec spec = analysis::read_case_file(kData / "uniaxial_neo_hookean.feb");
-  spec.contacts.push_back({});
-  const fs::path dir = fresh_dir("contact");
+  spec.rigid_bodies.push_back({});
+  const fs::path dir = fresh_dir("rigid");
   try {
     io::write_case(spec, dir / "case.toml");
     FAIL() << "expected an InputError";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("contact"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("rigid bodies"), std::string::npos) << e.what();
   }
   EXPECT_FALSE(fs::exists(dir / "case.toml"));
   EXPECT_FALSE(fs::exists(dir / "case.msh"));

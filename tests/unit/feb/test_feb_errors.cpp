@@ -5,6 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <sstream>
+
 using namespace trifem;
 
 namespace {
@@ -139,10 +142,10 @@ TEST(FebErrors, UnsupportedBoundaryAndSections) {
       R"(    <bc name="r" node_set="bottom" type="zero rotation"><x_dof>1</x_dof></bc>)";
   expect_contains(error_of(model_text(kMaterial, kHex, rigid)),
                   {"bad.feb:18: ", "boundary condition type 'zero rotation' is not supported"});
-  std::string contact = model_text(kMaterial, kHex, kFixed);
-  contact.replace(contact.find("</febio_spec>"), 13, "  <Contact/>\n</febio_spec>");
-  expect_contains(error_of(contact),
-                  {"bad.feb:20: febio_spec/Contact: ", "the section <Contact> is not supported"});
+  std::string rigid_section = model_text(kMaterial, kHex, kFixed);
+  rigid_section.replace(rigid_section.find("</febio_spec>"), 13, "  <Rigid/>\n</febio_spec>");
+  expect_contains(error_of(rigid_section),
+                  {"bad.feb:20: febio_spec/Rigid: ", "the section <Rigid> is not supported"});
 }
 
 TEST(FebErrors, SteadyStateBiphasicAndStepCurves) {
@@ -191,4 +194,54 @@ TEST(FebErrors, UnsupportedSurfaceLoads) {
   expect_contains(error_of(with_load("fluidflux", "<flux>1</flux>")),
                   {"bad.feb:21: ", "only <surface_load type=\"pressure\"> and <surface_load "
                                    "type=\"traction\"> are supported"});
+}
+
+namespace {
+
+/// The stacked-blocks contact file with each `from` replaced by its `to` (which must occur).
+std::string stacked_with(const std::vector<std::pair<std::string, std::string>>& edits) {
+  std::ifstream in(std::string(TRIFEM_FEB_DATA_DIR) + "/stacked_blocks_contact.feb");
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string s = text.str();
+  for (const auto& [from, to] : edits) {
+    const auto at = s.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    if (at != std::string::npos)
+      s.replace(at, from.size(), to);
+  }
+  return s;
+}
+
+std::string stacked_with(const std::string& from, const std::string& to) {
+  return stacked_with({{from, to}});
+}
+
+} // namespace
+
+TEST(FebErrors, UnsupportedContact) {
+  expect_contains(
+      error_of(stacked_with("<fric_coeff>0</fric_coeff>", "<fric_coeff>0.3</fric_coeff>")),
+      {"bad.feb:", "contact[@type='sliding-elastic'][@name='Stack']/fric_coeff",
+       "'fric_coeff' must be 0 (trifem's contact is frictionless"});
+  expect_contains(error_of(stacked_with("type=\"sliding-elastic\"", "type=\"tied-elastic\"")),
+                  {"@type: contact type 'tied-elastic' is not supported (trifem has no tied "
+                   "contact"});
+  expect_contains(error_of(stacked_with("surface_pair=\"Interface\"", "surface_pair=\"Gap\"")),
+                  {"@surface_pair: surface pair 'Gap' is not defined in <Mesh>"});
+  expect_contains(
+      error_of(stacked_with("<primary>UpperBottom</primary>", "<primary>UpperBotom</primary>")),
+      {"SurfacePair[@name='Interface']/primary: surface 'UpperBotom' is not defined"});
+  expect_contains(
+      error_of(stacked_with("<search_tol>", "<friction_angle>1</friction_angle><search_tol>")),
+      {"friction_angle: contact parameter 'friction_angle' is not supported"});
+  // a biphasic model needs the contact that couples the fluid
+  const std::string biphasic =
+      stacked_with({{"<Module type=\"solid\"/>", "<Module type=\"biphasic\"/>"},
+                    {"<analysis>STATIC</analysis>", "<analysis>TRANSIENT</analysis>"}});
+  expect_contains(error_of(biphasic),
+                  {"'sliding-elastic' in a biphasic model", "use "
+                                                            "'sliding-biphasic'"});
+  expect_contains(error_of(stacked_with("type=\"sliding-elastic\"", "type=\"sliding-biphasic\"")),
+                  {"'sliding-biphasic' needs the biphasic module"});
 }

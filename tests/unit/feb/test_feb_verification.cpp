@@ -149,6 +149,30 @@ TEST(FebVerification, NeoHookeanUniaxialStretch) {
   EXPECT_NEAR(displacement(*r.model, corner, 2), 0.2, 1e-12);
 }
 
+// Two blocks on non-matching meshes (2x2 below, 3x3 above) in frictionless sliding-elastic
+// contact, the stack compressed 10 % under uniaxial stress: the state is homogeneous, so the
+// contact patch test holds through the .feb reader (FEBio's primary surface is the slave).
+TEST(FebVerification, StackedBlocksInContactStayInUniaxialStress) {
+  const auto law = neo_hookean(1.0, 0.3);
+  std::map<long, std::pair<Real, Real>> force; // time in 1/100 s -> (top reaction, contact)
+  const FebRun r = run(analysis::read_case_file(kData / "stacked_blocks_contact.feb"),
+                       [&](const model::Model& m, Real t) {
+                         const Real contact = m.contacts.at(0)->slave_force(m.problem->state()).z();
+                         force[std::lround(t * 100)] = {reaction(m, "Top", 2), contact};
+                       });
+  ASSERT_TRUE(r.report.success) << r.report.failure;
+  ASSERT_EQ(force.size(), 5u);
+  for (const auto& [t, f] : force) {
+    const Real c = 1.0 - 0.1 * t / 100.0, a = lateral_stretch(law, c);
+    EXPECT_NEAR(f.first, law(a, c)[1] * a * a, 1e-8) << "t = " << t / 100.0;
+    EXPECT_NEAR(f.second, -f.first, 1e-8) << "t = " << t / 100.0; // pushes the upper block up
+  }
+  const Real a = lateral_stretch(law, 0.9);
+  const Index corner = 49; // FEBio node 132 at (1, 1, 1), the last of the 50 nodes
+  EXPECT_NEAR(displacement(*r.model, corner, 0), a - 1.0, 1e-9);
+  EXPECT_NEAR(displacement(*r.model, corner, 2), -0.1, 1e-12);
+}
+
 TEST(FebVerification, MooneyRivlinFollowerPressure) {
   const Real p = 0.1;
   const auto law = mooney_rivlin(0.2, 0.05, 20.0);

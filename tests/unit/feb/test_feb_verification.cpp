@@ -13,6 +13,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <iostream>
 #include <map>
 #include <sstream>
 
@@ -171,6 +172,37 @@ TEST(FebVerification, StackedBlocksInContactStayInUniaxialStress) {
   const Index corner = 49; // FEBio node 132 at (1, 1, 1), the last of the 50 nodes
   EXPECT_NEAR(displacement(*r.model, corner, 0), a - 1.0, 1e-9);
   EXPECT_NEAR(displacement(*r.model, corner, 2), -0.1, 1e-12);
+}
+
+// The confined biphasic column split at mid-height into two parts joined by sliding-biphasic
+// contact: the closed interface holds the fluid pressure and the normal flux continuous, so the
+// split column is the whole column (same file, one part) to round-off (first 150 s).
+TEST(FebVerification, SplitBiphasicColumnEqualsTheWholeColumn) {
+  const auto top_reactions = [](const std::string& name) {
+    std::string text = read_file(kData / name);
+    const std::string steps = "<time_steps>400</time_steps>";
+    EXPECT_NE(text.find(steps), std::string::npos);
+    text.replace(text.find(steps), steps.size(), "<time_steps>60</time_steps>");
+    std::map<long, Real> force; // time in 1/10 s -> top reaction
+    const FebRun r = run(feb::parse_feb(text, kData / name), [&](const model::Model& m, Real t) {
+      force[std::lround(t * 10)] = reaction(m, "Top", 2);
+    });
+    EXPECT_TRUE(r.report.success) << r.report.failure;
+    EXPECT_EQ(r.model->contacts.size(), name == "confined_biphasic_split.feb" ? 1u : 0u);
+    return force;
+  };
+  const std::map<long, Real> whole = top_reactions("confined_biphasic_ramp.feb");
+  const std::map<long, Real> split = top_reactions("confined_biphasic_split.feb");
+  ASSERT_EQ(whole.size(), 60u);
+  ASSERT_EQ(split.size(), whole.size());
+  Real peak = 0.0, worst = 0.0;
+  for (const auto& [t, f] : whole) {
+    peak = std::max(peak, std::abs(f));
+    worst = std::max(worst, std::abs(split.at(t) - f));
+  }
+  EXPECT_GT(peak, 0.1); // -0.35 N at the end of the ramp
+  EXPECT_LT(worst, 1e-8 * peak);
+  std::cout << "split - whole column: largest difference " << worst / peak << " of the peak\n";
 }
 
 TEST(FebVerification, MooneyRivlinFollowerPressure) {

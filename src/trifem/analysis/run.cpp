@@ -161,8 +161,8 @@ void log_linear_solver(const std::string& name, Index equations) {
     log::info("  linear solver: {}", name);
   else
     log::info("  linear solver: auto, {} for {} equations (sparselu below {})",
-              equations < linalg::kAutoSparseLuLimit ? "sparselu" : "umfpack", equations,
-              linalg::kAutoSparseLuLimit);
+              equations < linalg::kAutoSparseLuLimit ? "sparselu" : "mumps reusing factorizations",
+              equations, linalg::kAutoSparseLuLimit);
 }
 
 /// Writes the summary, the final report and the error line; returns the exit code.

@@ -71,13 +71,13 @@ TEST(LinearSolver, EveryDirectBackendSolvesAnUnsymmetricSaddlePointSystem) {
   }
 }
 
-TEST(LinearSolver, AutoTakesSparseLuForSmallAndUmfpackForLargeSystems) {
+TEST(LinearSolver, AutoTakesSparseLuForSmallAndMumpsForLargeSystems) {
   std::string chosen;
   const Index below = linalg::kAutoSparseLuLimit - 1000, above = linalg::kAutoSparseLuLimit;
   EXPECT_LT(solve_residual("auto", saddle_point(below - below / 5, 4), &chosen), 1e-13);
   EXPECT_EQ(chosen, "auto (sparselu)");
   EXPECT_LT(solve_residual("auto", saddle_point(above, 4), &chosen), 1e-13);
-  EXPECT_EQ(chosen, "auto (umfpack)");
+  EXPECT_EQ(chosen, "auto (mumps)");
 }
 
 TEST(LinearSolver, UnknownBackendIsNamedWithTheChoices) {

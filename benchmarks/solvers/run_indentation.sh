@@ -1,0 +1,57 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
+# The indentation benchmark (docs/performance.md): examples/indentation at several mesh sizes,
+# one load step (the first second of the ramp: 0.015 mm of indentation, the contact zone
+# forming), for each backend. One table row per run, from the run's summary.json: cells,
+# backend, equations, Newton and linear iterations, wall time [s], peak memory [MB],
+# factorization and solve time [s]; with REPEATS > 1 the row of the run with the median wall
+# time.
+#   run_indentation.sh [TRIFEM] ["N:NZ ..."] [BACKENDS] [REPEATS]
+# defaults: build/bin/trifem, "8:4 16:4 24:6", "umfpack mumps mumps+reuse", 1
+# (python3 writes the meshes with examples/indentation/make_mesh.py)
+set -euo pipefail
+here=$(cd "$(dirname "$0")" && pwd)
+example="$here/../../examples/indentation"
+trifem=${1:-$here/../../build/bin/trifem}
+sizes=${2:-"8:4 16:4 24:6"}
+backends=${3:-"umfpack mumps mumps+reuse"}
+repeats=${4:-1}
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+
+value() { # value KEY FILE: the number after "KEY": in a summary.json
+  sed -n "s/.*\"$1\": \([0-9.e+-]*\).*/\1/p" "$2" | head -1
+}
+
+# case FILE SOLVER REUSE: the example on the mesh FILE, its first step only, no VTU output
+write_case() {
+  sed -e "s|^file = .*|file = \"$1\"|" -e '/^\[solver\]/,/^$/d' -e '/^# MUMPS reusing/,/^# 8 000/d' \
+    "$example/indentation.toml" |
+    awk '/^\[\[step\]\]/ && seen++ { exit } { print }' |
+    sed -e 's/^end_time = 10.0/end_time = 1.0/'
+  printf '\n[output]\nvtu = false\n\n[solver]\nlinear_solver = "%s"\nreuse_factorization = %s\n' "$2" "$3"
+}
+
+printf '| cells (N×N×NZ) | backend | equations | Newton its | linear its | wall [s] | peak memory [MB] | factorization [s] | solve [s] |\n'
+printf '|---|---|---|---|---|---|---|---|---|\n'
+for size in $sizes; do
+  n=${size%:*}
+  nz=${size#*:}
+  python3 "$example/make_mesh.py" --cells "$n" --layers "$nz" -o "$work/mesh.msh" > /dev/null
+  for backend in $backends; do
+    solver=${backend%+reuse}
+    reuse=false
+    [ "$backend" != "$solver" ] && reuse=true
+    write_case "$work/mesh.msh" "$solver" "$reuse" > "$work/case.toml"
+    for r in $(seq "$repeats"); do
+      "$trifem" -q run "$work/case.toml" -o "$work/out$r" > /dev/null 2>&1 || true
+      echo "$(value total "$work/out$r/summary.json") $r"
+    done | sort -g > "$work/times"
+    median=$(sed -n "$(((repeats + 1) / 2))p" "$work/times" | cut -d' ' -f2)
+    s="$work/out$median/summary.json"
+    printf '| %s×%s×%s | %s | %s | %s | %s | %.2f | %.0f | %.2f | %.2f |\n' "$n" "$n" "$nz" \
+      "$backend" "$(value equations "$s")" "$(value newton_iterations "$s")" \
+      "$(value linear_iterations "$s")" "$(value total "$s")" \
+      "$(value peak_memory_mb "$s")" "$(value factorization "$s")" "$(value solve "$s")"
+  done
+done

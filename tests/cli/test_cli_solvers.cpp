@@ -109,6 +109,41 @@ TEST_F(CliSolvers, PetscBackendsGiveTheUmfpackHistoryOnTheIndentationExample) {
   expect_petsc_backends_give_the_umfpack_history("indentation"); // 3-D, contact, rigid body
 }
 
+TEST_F(CliSolvers, MumpsFactorizesAgainWhenItsWorkspaceEstimateIsTooSmall) {
+  // the confined column as a 6 x 6 x 24 block (6 383 equations): MUMPS's first factorization
+  // runs out of its estimated workspace (INFOG(1) = -9, pivots delayed on the saddle-point
+  // rows); the backend must factorize again with a larger ICNTL(14), not fail the run
+  std::string text = read_text(kExamples / "confined_column" / "confined_column.toml");
+  for (const auto& [from, to] : std::vector<std::pair<std::string, std::string>>{
+           {"divisions = [1, 1, 10]", "divisions = [6, 6, 24]"},
+           {"end_time = 1000.0", "end_time = 12.5"}}) {
+    ASSERT_NE(text.find(from), std::string::npos) << from;
+    text.replace(text.find(from), from.size(), to);
+  }
+  text.erase(text.find("\ntimes = "),
+             text.find('\n', text.find("\ntimes = ") + 1) - text.find("\ntimes = "));
+  std::map<std::string, History> histories;
+  for (const std::string backend : {"mumps", "sparselu"}) {
+    const fs::path out = output() / backend;
+    const Result r = trifem(
+        {"run", write_file("block_" + backend + ".toml", with_backend(text, backend)).string(),
+         "-o", out.string()});
+    ASSERT_EQ(r.exit_code, kSuccess) << r;
+    if (backend == "mumps") {
+      EXPECT_NE(r.out.find("factorizing again with ICNTL(14)"), std::string::npos) << r.out;
+    }
+    histories[backend] = read_history(out / "history.csv");
+  }
+  const History& direct = histories.at("sparselu");
+  const std::map<std::string, double> scale = unit_scales(direct);
+  ASSERT_EQ(histories.at("mumps").names, direct.names);
+  for (std::size_t c = 0; c < direct.names.size(); ++c)
+    for (std::size_t i = 0; i < direct.columns[c].size(); ++i)
+      EXPECT_NEAR(histories.at("mumps").columns[c].at(i), direct.columns[c][i],
+                  1e-8 * scale.at(unit_of(direct.names[c])))
+          << direct.names[c];
+}
+
 TEST_F(CliSolvers, UnknownPetscOptionIsNamed) {
   const std::string text = with_backend(read_text(kExamples / "cantilever" / "cantilever.toml"),
                                         "mumps\"\npetsc_options = \"-mat_mumps_icntl_99x 3");

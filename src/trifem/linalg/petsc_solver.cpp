@@ -2,6 +2,7 @@
 #include "trifem/linalg/petsc_solver.hpp"
 
 #include "trifem/core/error.hpp"
+#include "trifem/core/log.hpp"
 #include "trifem/linalg/nested_dissection.hpp"
 #include "trifem/linalg/petsc_matrix.hpp"
 #include "trifem/linalg/petsc_session.hpp"
@@ -25,6 +26,18 @@ constexpr double kReuseTolerance = 1e-10;
 constexpr int kRefactorAfter = 8;
 constexpr int kMaxReuseIterations = 15;
 
+/// A factorization whose workspace estimate was too small (INFOG(1) = -8, -9, -14, -15, -17,
+/// -20: pivots delayed by the numerical pivoting of the saddle-point rows need more room than
+/// the analysis foresaw) is repeated with the relaxation ICNTL(14) doubled (at least
+/// kMinWorkspacePercent), up to kMaxWorkspaceRetries times.
+constexpr int kMaxWorkspaceRetries = 4;
+constexpr PetscInt kMinWorkspacePercent = 50;
+
+bool workspace_too_small(PetscInt infog1) {
+  return infog1 == -8 || infog1 == -9 || infog1 == -14 || infog1 == -15 || infog1 == -17 ||
+         infog1 == -20;
+}
+
 /// Reason and permanence of a MUMPS failure from its INFOG(1), INFOG(2).
 LinearSolverFailure mumps_failure(PetscInt infog1, PetscInt infog2) {
   switch (infog1) {
@@ -41,9 +54,10 @@ LinearSolverFailure mumps_failure(PetscInt infog1, PetscInt infog2) {
   case -15:
   case -17:
   case -20:
-    return {fmt::format("MUMPS: its workspace estimate was too small (INFOG(1) = {}); raise "
-                        "the relaxation with petsc_options = \"-mat_mumps_icntl_14 100\"",
-                        infog1),
+    return {fmt::format("MUMPS: its workspace estimate was too small (INFOG(1) = {}) even after "
+                        "{} retries with a doubled relaxation; raise it with petsc_options = "
+                        "\"-mat_mumps_icntl_14 1000\"",
+                        infog1, kMaxWorkspaceRetries),
             true};
   default:
     return {fmt::format("MUMPS failed with INFOG(1) = {}, INFOG(2) = {} (see the MUMPS users' "
@@ -78,6 +92,7 @@ public:
     release();
     broken_ = false;
     failure_ = {};
+    matrix_values_ = &A;
     n_ = static_cast<Index>(A.rows());
     if (n_ == 0)
       return;
@@ -113,6 +128,12 @@ public:
       check(PCFactorSetMatOrderingType(pc, mumps_orders ? MATORDERINGEXTERNAL : MATORDERINGNATURAL),
             "PETSc ordering");
       check(KSPSetFromOptions(ksp_), "PETSc options");
+      if (workspace_percent_ > 0) { // a retry after a too small workspace
+        Mat factor = nullptr;
+        check(PCFactorSetUpMatSolverType(pc), "MUMPS");
+        check(PCFactorGetMatrix(pc, &factor), "MUMPS");
+        check(MatMumpsSetIcntl(factor, 14, workspace_percent_), "MUMPS ICNTL(14)");
+      }
     } catch (const petsc::PetscError& e) {
       failure_ = {e.what(), true};
       release();
@@ -122,6 +143,7 @@ public:
   bool factorize(const SparseMatrix& A) override {
     if (n_ == 0)
       return true;
+    matrix_values_ = &A;
     if (broken_) // a PETSc error left the KSP in an unknown state: set it up anew
       analyze_pattern(A);
     if (!ksp_)
@@ -162,6 +184,7 @@ public:
         if (reason < 0 && stale_) { // the old factorization no longer serves: a new one
           if (!refactorize())
             return false;
+          petsc::set_vector(b_, b, order_); // a workspace retry sets the vectors up anew
           check(KSPSolve(ksp_, b_, x_), "MUMPS solve");
           check(KSPGetConvergedReason(ksp_, &reason), "PETSc KSP");
           check(KSPGetIterationNumber(ksp_, &iterations), "PETSc KSP");
@@ -190,8 +213,29 @@ public:
   LinearSolverFailure failure() const override { return failure_; }
 
 private:
-  /// A new numeric factorization of the current matrix.
+  /// A new numeric factorization of the current matrix, repeated with a larger workspace while
+  /// MUMPS reports its estimate too small.
   bool refactorize() {
+    for (int retry = 0;; ++retry) {
+      if (factorize_once())
+        return true;
+      if (!workspace_failed_ || retry == kMaxWorkspaceRetries || matrix_values_ == nullptr)
+        return false;
+      workspace_percent_ = std::max(kMinWorkspacePercent, 2 * workspace_used_);
+      log::info("  MUMPS: workspace estimate too small (INFOG(1) = {}); factorizing again with "
+                "ICNTL(14) = {} %",
+                workspace_infog_, workspace_percent_);
+      const PetscInt percent = workspace_percent_;
+      analyze_pattern(*matrix_values_); // a new analysis: MUMPS keeps a failed state otherwise
+      workspace_percent_ = percent;
+      if (!ksp_)
+        return false;
+    }
+  }
+
+  /// One numeric factorization of the current matrix.
+  bool factorize_once() {
+    workspace_failed_ = false;
     if (reuse_) {
       factored_matrix_->assign_values(*matrix_);
       check(KSPSetReusePreconditioner(ksp_, PETSC_FALSE), "PETSc KSP");
@@ -207,18 +251,24 @@ private:
       broken_ = true; // MUMPS keeps the failed factors: set up anew before the next matrix
       return false;
     }
+    workspace_percent_ = 0; // later analyses start from MUMPS's own estimate again
     refactor_ = stale_ = false;
     factored_ = true;
     return true;
   }
 
-  LinearSolverFailure factor_failure(PC pc, PCFailedReason reason) const {
+  LinearSolverFailure factor_failure(PC pc, PCFailedReason reason) {
     Mat factor = nullptr;
     PetscInt infog1 = 0, infog2 = 0;
     if (PCFactorGetMatrix(pc, &factor) == 0 && factor != nullptr &&
         MatMumpsGetInfog(factor, 1, &infog1) == 0 && MatMumpsGetInfog(factor, 2, &infog2) == 0 &&
-        infog1 < 0)
+        infog1 < 0) {
+      workspace_failed_ = workspace_too_small(infog1);
+      workspace_infog_ = infog1;
+      if (MatMumpsGetIcntl(factor, 14, &workspace_used_) != 0)
+        workspace_used_ = 20;
       return mumps_failure(infog1, infog2);
+    }
     return {fmt::format("MUMPS: {}", pc_failure_text(reason)), reason == PC_FACTOR_OUTMEMORY};
   }
 
@@ -253,6 +303,11 @@ private:
   /// failed factors that a reused preconditioner would apply, INFOG(1) = -3), so the next
   /// factorize() sets them up anew.
   bool broken_ = false;
+  const SparseMatrix* matrix_values_ = nullptr; ///< the last matrix given (alive while in use)
+  PetscInt workspace_percent_ = 0; ///< ICNTL(14) of the next set-up (0: MUMPS's default)
+  bool workspace_failed_ = false;  ///< the last factorization ran out of its estimated workspace
+  PetscInt workspace_infog_ = 0;   ///< its INFOG(1)
+  PetscInt workspace_used_ = 20;   ///< the ICNTL(14) it had
   LinearSolverFailure failure_;
 };
 

@@ -78,12 +78,44 @@ void prescribed_displacement(const Reader& r, pugi::xml_node bc,
   prescribed.push_back(std::move(p));
 }
 
-void drain(Reader& r, pugi::xml_node bc, bool step) {
+/// A prescribed effective fluid pressure (charge 0) or concentration: a face drained to a bath,
+/// mapped once every condition is known (map_baths).
+void effective_condition(Reader& r, pugi::xml_node bc, bool step, int charge, Real value,
+                         const std::string& curve) {
   if (step)
-    r.doc.fail(bc, "zero fluid pressure inside a <step> is not supported (give it in the "
-                   "top-level <Boundary>: trifem's drained faces hold for the whole run)");
-  for (Index n : r.mesh.mesh.node_set(r.node_set(bc)))
-    r.drained[n] = 1;
+    r.doc.fail(bc, "a fluid pressure or concentration condition inside a <step> is not supported "
+                   "(give it in the top-level <Boundary>: trifem's drained faces and their bath "
+                   "hold for the whole run)");
+  r.effective.push_back({bc, r.node_set(bc), charge, value, curve});
+}
+
+void drain(Reader& r, pugi::xml_node bc, bool step) {
+  effective_condition(r, bc, step, 0, 0.0, "");
+}
+
+/// 4.0 "prescribed fluid pressure" and "prescribed concentration": value (with lc), relative
+/// (0 only), and dof c<id> for a concentration.
+void prescribed_effective(Reader& r, pugi::xml_node bc, bool step, bool concentration) {
+  int charge = 0;
+  if (concentration) {
+    const pugi::xml_node dof = r.doc.child(bc, "dof");
+    const std::string name = r.doc.text(dof);
+    if (!name.starts_with("c"))
+      r.doc.fail(dof, fmt::format("dof '{}': expected c<solute id>", name));
+    charge = r.chem.charge(r.doc, dof, name.substr(1));
+  }
+  const pugi::xml_node value = r.doc.child(bc, "value");
+  for (pugi::xml_node c : bc.children()) {
+    if (!is_element(c))
+      continue;
+    const std::string_view name = c.name();
+    if (name == "relative" && flag(r, c))
+      r.doc.fail(c, "a relative fluid pressure or concentration is not supported");
+    if (name != "relative" && name != "value" && !(concentration && name == "dof"))
+      r.doc.fail(c, fmt::format("unknown parameter '{}' (expected {}value, relative)", name,
+                                concentration ? "dof, " : ""));
+  }
+  effective_condition(r, bc, step, charge, r.doc.number(value), r.curve_of(value, true));
 }
 
 /// 3.0 "fix": <dofs>x,y,z,p</dofs>.
@@ -125,6 +157,10 @@ void read_boundary(Reader& r, pugi::xml_node section, std::vector<io::FixedSpec>
       prescribed_displacement(r, bc, prescribed);
     else if (type == "zero fluid pressure" && r.version == Version::V4)
       drain(r, bc, step);
+    else if (type == "prescribed fluid pressure" && r.version == Version::V4)
+      prescribed_effective(r, bc, step, false);
+    else if (type == "prescribed concentration" && r.version == Version::V4)
+      prescribed_effective(r, bc, step, true);
     else if (type == "fix" && r.version == Version::V3)
       fix(r, bc, fixed, step);
     else if (type == "prescribe" && r.version == Version::V3)
@@ -133,7 +169,8 @@ void read_boundary(Reader& r, pugi::xml_node section, std::vector<io::FixedSpec>
       r.doc.fail(bc, "type",
                  fmt::format("boundary condition type '{}' is not supported (supported: {})", type,
                              r.version == Version::V4
-                                 ? "zero displacement, prescribed displacement, zero fluid pressure"
+                                 ? "zero displacement, prescribed displacement, zero fluid "
+                                   "pressure, prescribed fluid pressure, prescribed concentration"
                                  : "fix, prescribe"));
   }
 }

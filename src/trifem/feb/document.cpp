@@ -40,9 +40,9 @@ bool parse_real(std::string_view s, Real& value) {
   return ec == std::errc() && end == s.data() + s.size() && std::isfinite(value);
 }
 
-/// The attribute of `node` that names it in a path: name, then id.
+/// The attribute of `node` that names it in a path: name, then id (sol: a material's solute).
 pugi::xml_attribute identity(pugi::xml_node node) {
-  for (const char* key : {"name", "id", "lid"})
+  for (const char* key : {"name", "id", "lid", "sol"})
     if (auto a = node.attribute(key))
       return a;
   return {};

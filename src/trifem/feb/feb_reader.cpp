@@ -59,11 +59,17 @@ void read_module(Reader& r, pugi::xml_node root) {
   if (!module)
     return; // FEBio's default: solid
   const std::string type = r.doc.attribute(module, "type");
-  if (type == "biphasic")
+  if (type == "biphasic") {
     r.biphasic_module = true;
-  else if (type != "solid")
+  } else if (type == "multiphasic") {
+    r.biphasic_module = true;
+    r.multiphasic_module = true;
+  } else if (type != "solid") {
     r.doc.fail(module, "type",
-               fmt::format("module '{}' is not supported (supported: solid, biphasic)", type));
+               fmt::format("module '{}' is not supported (supported: solid, biphasic, "
+                           "multiphasic with the triphasic material)",
+                           type));
+  }
 }
 
 /// Sections that are refused with a reason (everything else unknown is refused too).
@@ -72,19 +78,15 @@ void check_sections(const Reader& r, pugi::xml_node root) {
     if (s.type() != pugi::node_element)
       continue;
     const std::string_view name = s.name();
-    static constexpr std::string_view known[] = {"Module", "Globals",     "Control",  "Material",
-                                                 "Mesh",   "MeshDomains", "Boundary", "Contact",
-                                                 "Loads",  "LoadData",    "Output",   "Step"};
+    static constexpr std::string_view known[] = {
+        "Module",   "Globals", "Control",  "Material", "Mesh",   "MeshDomains", "Boundary",
+        "Initial",  "Contact", "Loads",    "LoadData", "Output", "Step"};
     if (std::find(std::begin(known), std::end(known), name) == std::end(known))
       r.doc.fail(s, fmt::format("the section <{}> is not supported (trifem reads Module, Globals, "
-                                "Control, Material, Mesh, MeshDomains, Boundary, Contact, Loads, "
-                                "LoadData, Output and Step)",
+                                "Control, Material, Mesh, MeshDomains, Boundary, Initial, "
+                                "Contact, Loads, LoadData, Output and Step)",
                                 name));
   }
-  if (const pugi::xml_node globals = root.child("Globals"))
-    for (pugi::xml_node g : globals.children())
-      if (g.type() == pugi::node_element && std::string_view(g.name()) != "Constants")
-        r.doc.fail(g, fmt::format("<{}> is not supported (no solutes in this version)", g.name()));
 }
 
 /// Curves extended by EXTRAPOLATE must cover the run (then they equal CONSTANT ones).
@@ -102,18 +104,24 @@ void read_sections(Reader& r) {
   r.version = version(r.doc, root);
   check_sections(r, root);
   read_module(r, root);
+  if (const pugi::xml_node globals = root.child("Globals"))
+    detail::read_globals(r, globals);
   detail::read_materials(r, r.doc.child(root, "Material"));
   detail::read_mesh(r, r.doc.child(root, "Mesh"), root.child("MeshDomains"));
   if (r.version == Version::V4 && !root.child("MeshDomains"))
     r.doc.fail(root, "the element <MeshDomains> is required");
   if (const pugi::xml_node data = root.child("LoadData"))
     detail::read_load_data(r, data);
+  detail::map_fixed_charges(r);
   if (const pugi::xml_node b = root.child("Boundary"))
     detail::read_boundary(r, b, r.spec.fixed, r.spec.prescribed, false);
   if (const pugi::xml_node l = root.child("Loads"))
     detail::read_loads(r, l, r.spec.pressures, r.spec.tractions);
+  if (const pugi::xml_node i = root.child("Initial"))
+    detail::read_initial(r, i);
   detail::read_steps(r, root);
   check_curve_extents(r);
+  detail::map_baths(r);
   if (const pugi::xml_node c = root.child("Contact"))
     detail::read_contact(r, c, root.child("Mesh"));
   if (const pugi::xml_node o = root.child("Output"))

@@ -6,6 +6,7 @@
 #include "trifem/material/registry.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <fmt/format.h>
 
 namespace trifem::feb::detail {
@@ -48,7 +49,7 @@ std::string known_types() {
   std::string s;
   for (const auto& m : law_mappings())
     s += fmt::format("{}{}", s.empty() ? "" : ", ", m.febio);
-  return s + ", biphasic";
+  return s + ", biphasic, triphasic";
 }
 
 /// The value of a material parameter element (a plain number: no load curve, no map).
@@ -179,7 +180,149 @@ io::MaterialSpec biphasic(const Reader& r, pugi::xml_node node) {
   return m;
 }
 
+/// <solute sol="..."> of a triphasic material: the constant diffusivity (FEBio's d must equal
+/// its free diffusivity d0: trifem's ions feel friction with the water only) and the constant
+/// solubility (trifem's activity coefficient is its inverse).
+void triphasic_solute(const Reader& r, pugi::xml_node node, io::MaterialSpec& m) {
+  const std::string ref = r.doc.attribute(node, "sol");
+  const int charge = r.chem.charge(r.doc, node, ref);
+  const char* sign = charge > 0 ? "plus" : "minus";
+  for (pugi::xml_node p : node.children()) {
+    if (p.type() != pugi::node_element)
+      continue;
+    const std::string name = p.name();
+    const std::string type = r.doc.attribute(p, "type");
+    if (name == "diffusivity") {
+      if (type != "diff-const-iso")
+        r.doc.fail(p, "type",
+                   fmt::format("diffusivity type '{}' is not supported (supported: "
+                               "diff-const-iso)",
+                               type));
+      const Real d = parameter_value(r, r.doc.child(p, "diff"));
+      const Real d0 = parameter_value(r, r.doc.child(p, "free_diff"));
+      if (std::abs(d - d0) > 1e-12 * std::abs(d0))
+        r.doc.fail(p, fmt::format("diff = {} differs from free_diff = {}: FEBio then adds a "
+                                  "friction between the solute and the solid, which trifem's "
+                                  "triphasic model does not have (its ions drag on the water "
+                                  "only: diff = free_diff)",
+                                  d, d0));
+      m.parameters[fmt::format("d_{}", sign)] = d;
+    } else if (name == "solubility") {
+      if (type != "solub-const")
+        r.doc.fail(p, "type",
+                   fmt::format("solubility type '{}' is not supported (supported: solub-const)",
+                               type));
+      const Real k = parameter_value(r, r.doc.child(p, "solub"));
+      if (!(k > 0.0))
+        r.doc.fail(p, "the solubility must be positive");
+      m.parameters[fmt::format("gamma_{}", sign)] = 1.0 / k;
+    } else {
+      r.doc.fail(p, fmt::format("unknown parameter '{}' of a solute (expected diffusivity, "
+                                "solubility)",
+                                name));
+    }
+  }
+}
+
+/// A triphasic material: a biphasic one with a fixed charge and the two ions of <Solutes>.
+io::MaterialSpec triphasic(Reader& r, pugi::xml_node node, const std::string& name) {
+  if (!r.multiphasic_module)
+    r.doc.fail(node, "type", "a triphasic material needs the multiphasic module");
+  io::MaterialSpec m;
+  m.type = "triphasic";
+  int solutes = 0;
+  for (pugi::xml_node p : node.children()) {
+    if (p.type() != pugi::node_element)
+      continue;
+    const std::string key = p.name();
+    if (key == "solid") {
+      m.solid = solid_law(r, p);
+    } else if (key == "permeability") {
+      permeability(r, p, m.parameters);
+    } else if (key == "phi0") {
+      m.parameters["phi_s0"] = parameter_value(r, p);
+    } else if (key == "fixed_charge_density") {
+      r.fixed_charges.emplace_back(name, p);
+      m.parameters["fixed_charge"] = 0.0; // set by map_fixed_charges
+    } else if (key == "osmotic_coefficient") {
+      const std::string type = r.doc.attribute(p, "type");
+      if (type != "osm-coef-const")
+        r.doc.fail(p, "type",
+                   fmt::format("osmotic coefficient type '{}' is not supported (supported: "
+                               "osm-coef-const)",
+                               type));
+      m.parameters["osmotic"] = parameter_value(r, r.doc.child(p, "osmcoef"));
+    } else if (key == "solute") {
+      triphasic_solute(r, p, m);
+      ++solutes;
+    } else if (key != "fluid_density" && key != "solid_density" && key != "penalty") {
+      r.doc.fail(p, fmt::format("unknown parameter '{}' of a triphasic material (expected one "
+                                "of: phi0, fixed_charge_density, solid, permeability, "
+                                "osmotic_coefficient, solute, fluid_density, penalty)",
+                                key));
+    }
+  }
+  if (solutes != 2)
+    r.doc.fail(node, fmt::format("a triphasic material needs two <solute>s (the cation and the "
+                                 "anion), found {}",
+                                 solutes));
+  if (!m.solid)
+    r.doc.fail(node, "a triphasic material needs a <solid>");
+  if (!m.parameters.contains("phi_s0"))
+    r.doc.fail(node, "a triphasic material needs <phi0> (the solid volume fraction)");
+  if (!m.parameters.contains("fixed_charge"))
+    m.parameters["fixed_charge"] = 0.0;
+  try {
+    m.parameters = material::validate_mixture_parameters(true, m.parameters, "triphasic");
+  } catch (const InputError& e) {
+    r.doc.fail(node, e.what());
+  }
+  return m;
+}
+
 } // namespace
+
+void map_fixed_charges(Reader& r) {
+  std::string shared_curve;
+  pugi::xml_node first;
+  for (const auto& [name, node] : r.fixed_charges) {
+    // FEBio: c^F(t) = value x curve(t) per reference water volume, negative for the negative
+    // charge trifem models; trifem: fixed_charge x fixed_charge_curve(t), magnitude in mmol
+    const Real value = r.doc.number(node);
+    const std::string curve = r.curve_of(node);
+    if (node.attribute("type"))
+      r.doc.fail(node, "only a constant fixed charge density is supported (no map or math)");
+    if (!first) {
+      first = node;
+      shared_curve = curve;
+    } else if (curve != shared_curve) {
+      r.doc.fail(node, "lc",
+                 "the triphasic materials have different fixed-charge load curves: trifem "
+                 "scales every fixed charge by one curve");
+    }
+    Real magnitude = -value;
+    if (!curve.empty()) {
+      const std::string scaled = curve + "_fixed_charge";
+      io::CurveSpec c = r.spec.curves.at(curve);
+      const Real sign = value < 0.0 ? 1.0 : -1.0;
+      for (auto& [t, v] : c.points) {
+        v = sign * v + 0.0; // + 0.0: no -0 in the curve
+        if (v < 0.0)
+          r.doc.fail(node, fmt::format("the fixed charge density value x curve is positive ({} "
+                                       "at t = {}): trifem's fixed charge is negative",
+                                       -v * std::abs(value), t));
+      }
+      r.spec.curves[scaled] = c;
+      r.spec.analysis.fixed_charge_curve = scaled;
+      magnitude = std::abs(value);
+    }
+    if (magnitude < 0.0)
+      r.doc.fail(node, fmt::format("fixed_charge_density = {} is positive: trifem's fixed charge "
+                                   "is negative (FEBio's sign convention: negative values)",
+                                   value));
+    r.spec.materials.at(name).parameters["fixed_charge"] = magnitude * r.chem.amount;
+  }
+}
 
 void read_materials(Reader& r, pugi::xml_node section) {
   for (pugi::xml_node node : section.children()) {
@@ -195,6 +338,8 @@ void read_materials(Reader& r, pugi::xml_node section) {
     io::MaterialSpec m;
     if (type == "biphasic") {
       m = biphasic(r, node);
+    } else if (type == "triphasic") {
+      m = triphasic(r, node, name);
     } else {
       const material::LawSpec law = solid_law(r, node);
       m.type = law.type;

@@ -25,6 +25,40 @@ struct CurveExtent {
   Real last = 0.0;          ///< time of the last point [s]
 };
 
+/// A load curve with FEBio's own interpolation, for the values the importer evaluates itself
+/// (bath conditions, must points); only LINEAR ones (and SMOOTH through two points) also become
+/// trifem curves.
+struct FebCurve {
+  pugi::xml_node interpolate; ///< its <interpolate> (for messages; may be empty)
+  bool step = false;          ///< STEP: the value of the next point
+  std::vector<std::pair<Real, Real>> points;
+  /// The value at time t, extended constant beyond the points.
+  Real value(Real t) const;
+};
+
+/// The solutes and constants of a multiphasic model (<Globals>), in the file's units.
+struct Electrochemistry {
+  std::map<std::string, int> charge_of; ///< solute id and name -> charge number (+1 Na, -1 Cl)
+  pugi::xml_node constants;             ///< <Constants> (empty: none)
+  Real R = 0.0;                         ///< gas constant of the file
+  Real T = 0.0;                         ///< temperature [K]
+  Real faraday = 0.0;                   ///< Faraday constant of the file
+  /// trifem's amount (mmol) per amount unit of the file: R / 8.314 mJ/(mmol K) (nmol: 1e-6).
+  Real amount = 1.0;
+  /// The charge number of the solute `ref` (id or name) named at `node`; error if unknown.
+  int charge(const Document& doc, pugi::xml_node node, const std::string& ref) const;
+};
+
+/// A prescribed effective fluid pressure (charge 0) or effective concentration (the solute's
+/// charge number) on a node set: the bath a face is drained to.
+struct EffectiveCondition {
+  pugi::xml_node bc;
+  std::string set;
+  int charge = 0;
+  Real value = 0.0;
+  std::string curve; ///< FEBio load controller name ("" : constant)
+};
+
 /// Everything the section readers share while a file is read.
 struct Reader {
   Reader(const Document& d, io::CaseSpec& s) : doc(d), spec(s) {}
@@ -32,7 +66,9 @@ struct Reader {
   const Document& doc;
   io::CaseSpec& spec;
   Version version = Version::V4;
-  bool biphasic_module = false;
+  bool biphasic_module = false;    ///< a mixture module (biphasic or multiphasic)
+  bool multiphasic_module = false; ///< the multiphasic module (triphasic materials)
+  Electrochemistry chem;
   io::InlineMeshSpec mesh;
   std::map<long, Index> node_index;                  ///< FEBio node id -> mesh node
   std::map<long, Index> cell_index;                  ///< FEBio element id -> mesh cell
@@ -40,11 +76,17 @@ struct Reader {
   std::map<std::string, pugi::xml_node> parts;       ///< Elements name -> its element
   std::map<std::string, std::string> curve_by_id;    ///< load controller id -> curve name
   std::vector<CurveExtent> curve_extents;
+  std::map<std::string, FebCurve> feb_curves; ///< every load controller by curve name
+  std::vector<EffectiveCondition> effective;   ///< top-level fluid pressure, concentrations
+  std::vector<EffectiveCondition> initial;     ///< <Initial> fluid pressure, concentrations
+  /// <fixed_charge_density> of each triphasic material (name), mapped once the curves are known
+  std::vector<std::pair<std::string, pugi::xml_node>> fixed_charges;
   std::vector<char> drained; ///< per mesh node: in a "zero fluid pressure" node set
 
   void warn(pugi::xml_node node, const std::string& what);
-  /// The curve name of the attribute lc of `node` ("" without one).
-  std::string curve_of(pugi::xml_node node) const;
+  /// The curve name of the attribute lc of `node` ("" without one); a curve trifem cannot
+  /// reproduce (STEP) is an error unless `any_interpolation` (then read through feb_curves).
+  std::string curve_of(pugi::xml_node node, bool any_interpolation = false) const;
   /// The node set named by the attribute `attribute` ("@surface:S" names the nodes of S).
   std::string node_set(pugi::xml_node node, const char* attribute = "node_set") const;
   /// The surface named by the attribute `attribute`.
@@ -63,8 +105,13 @@ void with_mesh_errors(const Reader& r, pugi::xml_node node, F&& f) {
   }
 }
 
+/// Globals: Constants and Solutes (multiphasic models).
+void read_globals(Reader& r, pugi::xml_node section);
 /// Materials (before the mesh: 3.0 files assign them by id in Elements).
 void read_materials(Reader& r, pugi::xml_node section);
+/// The fixed charge densities of the triphasic materials (after LoadData): magnitude in trifem's
+/// units and, with a load curve, [analysis] fixed_charge_curve.
+void map_fixed_charges(Reader& r);
 /// Mesh (Nodes, Elements, NodeSet, Surface, ElementSet) and MeshDomains.
 void read_mesh(Reader& r, pugi::xml_node mesh, pugi::xml_node domains);
 /// LoadData: the load controllers as curves.
@@ -82,6 +129,11 @@ io::TimeSpec read_control(Reader& r, pugi::xml_node control, Real start);
 void read_steps(Reader& r, pugi::xml_node root);
 /// Output: logfile data as reactions and probes where they map directly.
 void read_output(Reader& r, pugi::xml_node section);
+/// Initial: initial fluid pressure and concentrations of mixtures (checked by map_baths).
+void read_initial(Reader& r, pugi::xml_node section);
+/// The prescribed effective fluid pressures and concentrations as drained nodes and the bath
+/// (electrochemistry), and the initial conditions checked against trifem's Donnan initial state.
+void map_baths(Reader& r);
 /// Contact: each <contact> of a supported type as a contact pair of its <SurfacePair> (in
 /// `mesh`): slave = the primary surface, master = the secondary one.
 void read_contact(Reader& r, pugi::xml_node section, pugi::xml_node mesh);

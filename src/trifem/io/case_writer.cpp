@@ -22,10 +22,6 @@ void check_supported(const CaseSpec& spec) {
   refuse(!spec.meshes.empty(), "inline meshes (write them with write_case)");
   refuse(!spec.rigid_bodies.empty(), "rigid bodies ([[rigid_body]])");
   refuse(spec.is_explicit() || spec.has_explicit_step(), "dynamic-explicit analyses");
-  const AnalysisSpec defaults;
-  refuse(spec.analysis.initial_state != defaults.initial_state ||
-             !spec.analysis.fixed_charge_curve.empty(),
-         "[analysis] initial_state and fixed_charge_curve");
 }
 
 std::string_view interpolation_name(dofs::Interpolation i) {
@@ -174,6 +170,18 @@ void write_contacts(const CaseSpec& spec, TomlText& t) {
   }
 }
 
+/// [analysis] of a mixture model, when it differs from the defaults (quasi-static analyses only:
+/// check_supported refuses the others).
+void write_analysis(const CaseSpec& spec, TomlText& t) {
+  const AnalysisSpec& a = spec.analysis;
+  if (a.initial_state == InitialStateKind::Donnan && a.fixed_charge_curve.empty())
+    return;
+  t.header("[analysis]");
+  t.string("initial_state",
+           a.initial_state == InitialStateKind::Donnan ? "donnan" : "donnan-prestressed");
+  t.optional_string("fixed_charge_curve", a.fixed_charge_curve);
+}
+
 void write_electrochemistry(const CaseSpec& spec, TomlText& t) {
   const ElectrochemistrySpec d;
   const ElectrochemistrySpec& e = spec.electrochemistry;
@@ -283,6 +291,7 @@ std::string case_toml(const CaseSpec& spec) {
   write_curves(spec, t);
   write_boundary(spec, t);
   write_contacts(spec, t);
+  write_analysis(spec, t);
   write_electrochemistry(spec, t);
   write_time(spec, t);
   write_solver(spec.solver, t);

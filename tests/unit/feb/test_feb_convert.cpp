@@ -100,7 +100,7 @@ INSTANTIATE_TEST_SUITE_P(Examples, TomlConvert,
 INSTANTIATE_TEST_SUITE_P(TestFiles, FebConvert,
                          testing::Values("confined_biphasic_ramp", "uniaxial_neo_hookean",
                                          "uniaxial_mooney_rivlin_pressure", "ogden_two_steps",
-                                         "stacked_blocks_contact"));
+                                         "stacked_blocks_contact", "triphasic_swelling_column"));
 
 TEST(FebConvertErrors, RefusesToOverwriteTheInput) {
   const fs::path dir = fresh_dir("self");

@@ -335,3 +335,33 @@ TEST(FebVerification, ConfinedRampSmallStrainMatchesTheSeries) {
             << "\n";
   EXPECT_LT(worst, 0.03);
 }
+
+// A triphasic column (FEBio's multiphasic module: Na and Cl solutes, FEBio units with amounts in
+// nmol, effective fluid pressure and concentrations prescribed at the top, initial conditions)
+// swells as its fixed charge rises to -200 mM, then is compressed 0.1 from the swollen state.
+// Both equilibria are homogeneous: the swollen stretch and the final top reaction match the
+// closed forms of the Donnan swelling equilibrium (neo-Hookean, nu = 0, confined).
+TEST(FebVerification, TriphasicColumnSwellsThenCompressesToTheDonnanEquilibria) {
+  const Real T = 293.0, E = 0.3;
+  const exact::ChargedMedium medium{2e-4, 0.2, 1.5e-4, 8.314 * T, 96.485};
+  const exact::SwellingState swollen =
+      exact::swelling_equilibrium(exact::SolidLaw::NeoHookean, exact::Deformation::Confined, E, 0.0, medium);
+  const Real compressed = swollen.stretch - 0.1;
+  const exact::ColumnEquilibrium loaded =
+      exact::confined_column_equilibrium(compressed, E, 0.0, medium, exact::SolidLaw::NeoHookean);
+  std::map<long, std::pair<Real, Real>> state; // time [s] -> (top uz, top reaction)
+  const FebRun r = run(analysis::read_case_file(kData / "triphasic_swelling_column.feb"),
+                       [&](const model::Model& m, Real t) {
+                         state[std::lround(t)] = {displacement(m, 40, 2), reaction(m, "Top", 2)};
+                       });
+  ASSERT_TRUE(r.report.success) << r.report.failure;
+  EXPECT_NEAR(r.spec.electrochemistry.bath_concentration, 1.5e-4, 1e-18);
+  EXPECT_NEAR(r.spec.materials.at("Cartilage").parameters.at("fixed_charge"), 1e-6, 1e-20);
+  ASSERT_TRUE(state.contains(100000) && state.contains(200000));
+  // the swelling stretch (about 1.3) to 1e-7 of the swelling; the column is 1 mm high
+  EXPECT_NEAR(state.at(100000).first, swollen.stretch - 1.0, 1e-7 * (swollen.stretch - 1.0));
+  EXPECT_NEAR(state.at(100000).second, 0.0, 1e-9); // the top is free while it swells
+  EXPECT_NEAR(state.at(200000).first, compressed - 1.0, 1e-12);
+  // total stress sigma_zz = sigma_e - Pi on the unit area, to 1e-6 of the osmotic pressure
+  EXPECT_NEAR(state.at(200000).second, loaded.total_stress, 1e-6 * loaded.donnan.pressure);
+}

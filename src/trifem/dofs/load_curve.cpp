@@ -37,6 +37,8 @@ Real LoadCurve::operator()(Real t) const {
   switch (interpolation_) {
   case Interpolation::Step:
     return lo->second;
+  case Interpolation::Next:
+    return s > 0.0 ? hi->second : lo->second;
   case Interpolation::Linear:
     return lo->second + s * (hi->second - lo->second);
   case Interpolation::Smooth:

@@ -14,7 +14,8 @@ namespace trifem::dofs {
 enum class Interpolation {
   Linear, ///< piecewise linear
   Step,   ///< value of the last point at or before t
-  Smooth  ///< piecewise cubic Hermite with zero slope at the points (C1, no overshoot)
+  Smooth, ///< piecewise cubic Hermite with zero slope at the points (C1, no overshoot)
+  Next    ///< value of the first point at or after t (FEBio's STEP)
 };
 
 /// A piecewise function of time through (t_i, v_i), t strictly increasing; constant outside.

@@ -115,7 +115,7 @@ void prescribed_effective(Reader& r, pugi::xml_node bc, bool step, bool concentr
       r.doc.fail(c, fmt::format("unknown parameter '{}' (expected {}value, relative)", name,
                                 concentration ? "dof, " : ""));
   }
-  effective_condition(r, bc, step, charge, r.doc.number(value), r.curve_of(value, true));
+  effective_condition(r, bc, step, charge, r.doc.number(value), r.curve_of(value));
 }
 
 /// 3.0 "fix": <dofs>x,y,z,p</dofs>.

@@ -39,21 +39,18 @@ std::vector<std::pair<Real, Real>> curve_points(const Reader& r, pugi::xml_node 
 }
 
 /// The interpolation of a load curve; FEBio's SMOOTH is a blend of quadratics through
-/// neighbouring points, the same as linear only for two points, and its STEP takes the value of
-/// the next point: neither is trifem's. SMOOTH is refused; a STEP curve is kept for the values
-/// the importer evaluates itself and refused where it would become a trifem curve.
+/// neighbouring points, the same as linear only for two points (else refused), and its STEP
+/// takes the value of the next point: trifem's "next".
 dofs::Interpolation interpolation(const Reader& r, pugi::xml_node node, const std::string& kind,
-                                  std::size_t points, bool* step = nullptr) {
+                                  std::size_t points) {
   const std::string k = lower(kind);
   if (k == "linear" || (k == "smooth" && points == 2))
     return dofs::Interpolation::Linear;
-  if (k == "step" && step) {
-    *step = true;
-    return dofs::Interpolation::Linear;
-  }
+  if (k == "step")
+    return dofs::Interpolation::Next;
   r.doc.fail(node, fmt::format("interpolation '{}' is not supported: trifem reproduces FEBio's "
-                               "LINEAR (and SMOOTH through two points) exactly; write the curve "
-                               "with LINEAR segments",
+                               "LINEAR, STEP and SMOOTH through two points exactly; write the "
+                               "curve with LINEAR segments",
                                kind));
 }
 
@@ -73,16 +70,13 @@ void read_curve(Reader& r, pugi::xml_node lc) {
   io::CurveSpec curve;
   curve.points = curve_points(r, lc);
   CurveExtent extent{lc, false, curve.points.front().first, curve.points.back().first};
-  FebCurve feb{pugi::xml_node(), false, curve.points};
   for (pugi::xml_node c : lc.children()) {
     if (!is_element(c))
       continue;
     const std::string_view key = c.name();
     if (key == "interpolate") {
-      feb.interpolate = c;
-      curve.interpolation = interpolation(r, c, r.doc.text(c), curve.points.size(), &feb.step);
-    }
-    else if (key == "extend") {
+      curve.interpolation = interpolation(r, c, r.doc.text(c), curve.points.size());
+    } else if (key == "extend") {
       const std::string mode = lower(r.doc.text(c));
       if (mode == "extrapolate")
         extent.extrapolate = true;
@@ -93,13 +87,9 @@ void read_curve(Reader& r, pugi::xml_node lc) {
     } else if (key != "points" && key != "point")
       r.doc.fail(c, fmt::format("unknown parameter '{}' of a load curve", key));
   }
-  if (r.version == Version::V3 && !type.empty() && type != "loadcurve") { // 3.0: type="smooth"
-    feb.interpolate = lc;
-    curve.interpolation = interpolation(r, lc, type, curve.points.size(), &feb.step);
-  }
-  if (!feb.step)
-    r.spec.curves[name] = curve;
-  r.feb_curves[name] = feb;
+  if (r.version == Version::V3 && !type.empty() && type != "loadcurve") // 3.0: type="smooth"
+    curve.interpolation = interpolation(r, lc, type, curve.points.size());
+  r.spec.curves[name] = curve;
   r.curve_by_id[id] = name;
   r.curve_extents.push_back(extent);
 }
@@ -131,10 +121,10 @@ void read_time_stepper(Reader& r, pugi::xml_node stepper, io::TimeSpec& t) {
     if (key == "dtmin") {
       t.dt_min = std::max(0.0, r.doc.number(c));
     } else if (key == "dtmax") {
-      const std::string curve = r.curve_of(c, true);
+      const std::string curve = r.curve_of(c);
       Real dtmax = r.doc.number(c);
       if (!curve.empty()) // must points: the curve's points; its values are the largest step
-        for (const auto& p : r.feb_curves.at(curve).points)
+        for (const auto& p : r.spec.curves.at(curve).points)
           dtmax = std::max(dtmax, p.second);
       t.dt_max = dtmax;
     } else if (key == "opt_iter") {

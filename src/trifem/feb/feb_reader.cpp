@@ -79,8 +79,8 @@ void check_sections(const Reader& r, pugi::xml_node root) {
       continue;
     const std::string_view name = s.name();
     static constexpr std::string_view known[] = {
-        "Module",   "Globals", "Control",  "Material", "Mesh",   "MeshDomains", "Boundary",
-        "Initial",  "Contact", "Loads",    "LoadData", "Output", "Step"};
+        "Module",  "Globals", "Control", "Material", "Mesh",   "MeshDomains", "Boundary",
+        "Initial", "Contact", "Loads",   "LoadData", "Output", "Step"};
     if (std::find(std::begin(known), std::end(known), name) == std::end(known))
       r.doc.fail(s, fmt::format("the section <{}> is not supported (trifem reads Module, Globals, "
                                 "Control, Material, Mesh, MeshDomains, Boundary, Initial, "

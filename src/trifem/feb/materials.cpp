@@ -209,9 +209,9 @@ void triphasic_solute(const Reader& r, pugi::xml_node node, io::MaterialSpec& m)
       m.parameters[fmt::format("d_{}", sign)] = d;
     } else if (name == "solubility") {
       if (type != "solub-const")
-        r.doc.fail(p, "type",
-                   fmt::format("solubility type '{}' is not supported (supported: solub-const)",
-                               type));
+        r.doc.fail(
+            p, "type",
+            fmt::format("solubility type '{}' is not supported (supported: solub-const)", type));
       const Real k = parameter_value(r, r.doc.child(p, "solub"));
       if (!(k > 0.0))
         r.doc.fail(p, "the solubility must be positive");

@@ -24,8 +24,10 @@ void read_constants(Reader& r, pugi::xml_node constants) {
     if (!is_element(c))
       continue;
     const std::string_view name = c.name();
-    Real* target = name == "T" ? &r.chem.T : name == "R" ? &r.chem.R : name == "Fc" ? &r.chem.faraday
-                                                                                     : nullptr;
+    Real* target = name == "T"    ? &r.chem.T
+                   : name == "R"  ? &r.chem.R
+                   : name == "Fc" ? &r.chem.faraday
+                                  : nullptr;
     if (!target)
       r.doc.fail(c, fmt::format("unknown constant '{}' (expected T, R, Fc)", name));
     *target = r.doc.number(c);
@@ -69,7 +71,10 @@ void read_solutes(Reader& r, pugi::xml_node solutes) {
 
 /// The value of a condition (value x curve) at time t, with FEBio's interpolation.
 Real value_at(const Reader& r, const EffectiveCondition& c, Real t) {
-  return c.curve.empty() ? c.value : c.value * r.feb_curves.at(c.curve).value(t);
+  if (c.curve.empty())
+    return c.value;
+  const io::CurveSpec& curve = r.spec.curves.at(c.curve);
+  return c.value * dofs::LoadCurve(curve.points, curve.interpolation)(t);
 }
 
 /// The value a condition holds on (0, end]: its curve must be constant there (a bath that
@@ -78,8 +83,9 @@ Real constant_value(const Reader& r, const EffectiveCondition& c) {
   const Real end = r.spec.time.end_time;
   if (c.curve.empty())
     return c.value;
-  const FebCurve& curve = r.feb_curves.at(c.curve);
-  std::vector<Real> times{end, curve.step ? end * 1e-12 : 0.0};
+  const io::CurveSpec& curve = r.spec.curves.at(c.curve);
+  std::vector<Real> times{end,
+                          curve.interpolation == dofs::Interpolation::Next ? end * 1e-12 : 0.0};
   for (const auto& [t, v] : curve.points)
     if (t > 0.0 && t < end)
       times.push_back(t);
@@ -106,8 +112,9 @@ int slot(int charge) {
 NodalBath nodal_values(const Reader& r, const std::vector<EffectiveCondition>& conditions,
                        bool initial) {
   const Index n = r.mesh.mesh.num_nodes();
-  NodalBath b{std::vector<std::array<Real, 3>>(n, {NAN, NAN, NAN}),
-              std::vector<std::array<const EffectiveCondition*, 3>>(n, {nullptr, nullptr, nullptr})};
+  NodalBath b{
+      std::vector<std::array<Real, 3>>(n, {NAN, NAN, NAN}),
+      std::vector<std::array<const EffectiveCondition*, 3>>(n, {nullptr, nullptr, nullptr})};
   for (const EffectiveCondition& c : conditions) {
     const Real v = initial ? c.value : constant_value(r, c);
     for (Index node : r.mesh.mesh.node_set(c.set)) {
@@ -178,9 +185,10 @@ void map_triphasic_baths(Reader& r) {
                            "trifem's bath is at gauge pressure 0 (p~ = {:.6g})",
                            p, v[0], v[0] - p));
   if (p != 0.0)
-    r.warn((*bath_source)[0]->bc, fmt::format("the bath's fluid pressure p~ + RT (c~+ + c~-) = {:.3g} "
-                                        "({:.2g} of its osmotic pressure) is taken as 0",
-                                        p, std::abs(p) / scale));
+    r.warn((*bath_source)[0]->bc,
+           fmt::format("the bath's fluid pressure p~ + RT (c~+ + c~-) = {:.3g} "
+                       "({:.2g} of its osmotic pressure) is taken as 0",
+                       p, std::abs(p) / scale));
   r.spec.electrochemistry.bath_concentration = v[1] * r.chem.amount;
 }
 

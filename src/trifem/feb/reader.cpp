@@ -27,7 +27,7 @@ void Reader::warn(pugi::xml_node node, const std::string& what) {
   spec.warnings.push_back(fmt::format("{}: {}", doc.where(node), what));
 }
 
-std::string Reader::curve_of(pugi::xml_node node, bool any_interpolation) const {
+std::string Reader::curve_of(pugi::xml_node node) const {
   const pugi::xml_attribute lc = node.attribute("lc");
   if (!lc)
     return "";
@@ -36,27 +36,7 @@ std::string Reader::curve_of(pugi::xml_node node, bool any_interpolation) const 
     doc.fail(node, "lc",
              fmt::format("load controller {} is not defined (defined: {})", lc.value(),
                          names_of(curve_by_id)));
-  const FebCurve& curve = feb_curves.at(it->second);
-  if (curve.step && !any_interpolation)
-    doc.fail(curve.interpolate,
-             "interpolation 'STEP' is not supported here: trifem reproduces FEBio's LINEAR (and "
-             "SMOOTH through two points) exactly; write the curve with LINEAR segments");
   return it->second;
-}
-
-Real FebCurve::value(Real t) const {
-  if (t <= points.front().first)
-    return points.front().second;
-  for (std::size_t i = 1; i < points.size(); ++i) {
-    const auto& [t1, v1] = points[i];
-    if (t > t1)
-      continue;
-    if (step)
-      return v1;
-    const auto& [t0, v0] = points[i - 1];
-    return v0 + (v1 - v0) * (t - t0) / (t1 - t0);
-  }
-  return points.back().second;
 }
 
 int Electrochemistry::charge(const Document& doc, pugi::xml_node node,

@@ -25,17 +25,6 @@ struct CurveExtent {
   Real last = 0.0;          ///< time of the last point [s]
 };
 
-/// A load curve with FEBio's own interpolation, for the values the importer evaluates itself
-/// (bath conditions, must points); only LINEAR ones (and SMOOTH through two points) also become
-/// trifem curves.
-struct FebCurve {
-  pugi::xml_node interpolate; ///< its <interpolate> (for messages; may be empty)
-  bool step = false;          ///< STEP: the value of the next point
-  std::vector<std::pair<Real, Real>> points;
-  /// The value at time t, extended constant beyond the points.
-  Real value(Real t) const;
-};
-
 /// The solutes and constants of a multiphasic model (<Globals>), in the file's units.
 struct Electrochemistry {
   std::map<std::string, int> charge_of; ///< solute id and name -> charge number (+1 Na, -1 Cl)
@@ -76,17 +65,15 @@ struct Reader {
   std::map<std::string, pugi::xml_node> parts;       ///< Elements name -> its element
   std::map<std::string, std::string> curve_by_id;    ///< load controller id -> curve name
   std::vector<CurveExtent> curve_extents;
-  std::map<std::string, FebCurve> feb_curves; ///< every load controller by curve name
-  std::vector<EffectiveCondition> effective;   ///< top-level fluid pressure, concentrations
-  std::vector<EffectiveCondition> initial;     ///< <Initial> fluid pressure, concentrations
+  std::vector<EffectiveCondition> effective; ///< top-level fluid pressure, concentrations
+  std::vector<EffectiveCondition> initial;   ///< <Initial> fluid pressure, concentrations
   /// <fixed_charge_density> of each triphasic material (name), mapped once the curves are known
   std::vector<std::pair<std::string, pugi::xml_node>> fixed_charges;
   std::vector<char> drained; ///< per mesh node: in a "zero fluid pressure" node set
 
   void warn(pugi::xml_node node, const std::string& what);
-  /// The curve name of the attribute lc of `node` ("" without one); a curve trifem cannot
-  /// reproduce (STEP) is an error unless `any_interpolation` (then read through feb_curves).
-  std::string curve_of(pugi::xml_node node, bool any_interpolation = false) const;
+  /// The curve name of the attribute lc of `node` ("" without one).
+  std::string curve_of(pugi::xml_node node) const;
   /// The node set named by the attribute `attribute` ("@surface:S" names the nodes of S).
   std::string node_set(pugi::xml_node node, const char* attribute = "node_set") const;
   /// The surface named by the attribute `attribute`.

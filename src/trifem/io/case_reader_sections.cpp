@@ -295,7 +295,8 @@ CurveSpec read_curve(const Table& t) {
   t.allow({"interpolation", "points"});
   static const Options<dofs::Interpolation> kinds = {{"linear", dofs::Interpolation::Linear},
                                                      {"step", dofs::Interpolation::Step},
-                                                     {"smooth", dofs::Interpolation::Smooth}};
+                                                     {"smooth", dofs::Interpolation::Smooth},
+                                                     {"next", dofs::Interpolation::Next}};
   CurveSpec c;
   c.interpolation = t.choice("interpolation", kinds, std::optional(c.interpolation));
   c.points = t.required<std::vector<Point>>("points");

@@ -32,6 +32,8 @@ std::string_view interpolation_name(dofs::Interpolation i) {
     return "step";
   case dofs::Interpolation::Smooth:
     return "smooth";
+  case dofs::Interpolation::Next:
+    return "next";
   }
   return "linear";
 }

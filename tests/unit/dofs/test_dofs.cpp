@@ -75,6 +75,13 @@ TEST(LoadCurve, InterpolatesAndHoldsOutside) {
   const dofs::LoadCurve step(pts, dofs::Interpolation::Step);
   EXPECT_DOUBLE_EQ(step(0.99), 0.0);
   EXPECT_DOUBLE_EQ(step(1.0), 2.0);
+  const dofs::LoadCurve next({{0, 0}, {1, 2}, {3, 5}}, dofs::Interpolation::Next); // FEBio's STEP
+  EXPECT_DOUBLE_EQ(next(0.0), 0.0);
+  EXPECT_DOUBLE_EQ(next(1e-9), 2.0);
+  EXPECT_DOUBLE_EQ(next(1.0), 2.0);
+  EXPECT_DOUBLE_EQ(next(1.0 + 1e-9), 5.0);
+  EXPECT_DOUBLE_EQ(next(-1.0), 0.0);
+  EXPECT_DOUBLE_EQ(next(10.0), 5.0);
   const dofs::LoadCurve smooth(pts, dofs::Interpolation::Smooth);
   EXPECT_DOUBLE_EQ(smooth(0.5), 1.0);
   EXPECT_NEAR((smooth(1e-4) - smooth(0)) / 1e-4, 0.0, 1e-3); // zero slope at the points

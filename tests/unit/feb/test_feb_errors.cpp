@@ -153,16 +153,14 @@ TEST(FebErrors, SteadyStateBiphasicAndStepCurves) {
   text.replace(text.find("\"solid\""), 7, "\"biphasic\"");
   expect_contains(error_of(text), {"bad.feb:4: febio_spec/Control/analysis: ",
                                    "a static biphasic analysis is not supported"});
-  // a STEP curve is read (FEBio's bath conditions use them) but refused where it would be a
-  // trifem curve, here a prescribed displacement
-  const std::string pushed = kFixed + R"(
-    <bc name="push" node_set="bottom" type="prescribed displacement"><dof>z</dof><value lc="1">1</value></bc>)";
-  text = model_text(kMaterial, kHex, pushed);
-  text.replace(text.find("</febio_spec>"), 13,
-               R"(<LoadData><load_controller id="1" type="loadcurve"><interpolate>STEP</interpolate>
-<points><pt>0,0</pt><pt>1,1</pt></points></load_controller></LoadData></febio_spec>)");
-  expect_contains(error_of(text), {"bad.feb:21: ", "/interpolate: interpolation 'STEP' is not "
-                                                   "supported here"});
+  // FEBio's SMOOTH through more than two points is not trifem's smooth curve
+  text = model_text(kMaterial, kHex, kFixed);
+  text.replace(
+      text.find("</febio_spec>"), 13,
+      R"(<LoadData><load_controller id="1" type="loadcurve"><interpolate>SMOOTH</interpolate>
+<points><pt>0,0</pt><pt>1,1</pt><pt>2,0</pt></points></load_controller></LoadData></febio_spec>)");
+  expect_contains(error_of(text),
+                  {"bad.feb:20: ", "/interpolate: interpolation 'SMOOTH' is not supported"});
 }
 
 TEST(FebErrors, MissingFile) {

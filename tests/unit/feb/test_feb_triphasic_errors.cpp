@@ -71,8 +71,9 @@ TEST(FebTriphasic, UnitsFixedChargeAndBathAreMapped) {
   const auto& points = spec.curves.at("Charge_fixed_charge").points;
   ASSERT_EQ(points.size(), 2u);
   EXPECT_EQ(points[1].second, 200.0);
-  // the STEP bath curves are not trifem curves; the top is drained, the other faces closed
-  EXPECT_FALSE(spec.curves.contains("BathPressure"));
+  // FEBio's STEP (the value of the next point) is trifem's "next"; the top is drained, the
+  // other faces closed
+  EXPECT_EQ(spec.curves.at("BathPressure").interpolation, dofs::Interpolation::Next);
   EXPECT_EQ(spec.impermeable_surfaces.size(), 5u); // bottom and four sides
 }
 
@@ -88,9 +89,9 @@ TEST(FebTriphasic, RefusesWhatItCannotMap) {
   expect_contains(error_of(column_with("<diff>0.0005</diff>", "<diff>0.0004</diff>")),
                   {"tri.feb:", "/solute[@sol='Na']/diffusivity[@type='diff-const-iso']: ",
                    "diff = 0.0004 differs from free_diff = 0.0005"});
-  expect_contains(
-      error_of(column_with("<charge_number>-1</charge_number>", "<charge_number>2</charge_number>")),
-      {"/Solutes/solute[@name='Cl']/charge_number: ", "charge number 2"});
+  expect_contains(error_of(column_with("<charge_number>-1</charge_number>",
+                                       "<charge_number>2</charge_number>")),
+                  {"/Solutes/solute[@name='Cl']/charge_number: ", "charge number 2"});
   expect_contains(error_of(column_with("<pt>1000,-200</pt>", "<pt>1000,200</pt>")),
                   {"fixed_charge_density: ", "is positive", "trifem's fixed charge is negative"});
   expect_contains(error_of(column_with("<R>8.314e-06</R>", "")),

@@ -344,8 +344,8 @@ TEST(FebVerification, ConfinedRampSmallStrainMatchesTheSeries) {
 TEST(FebVerification, TriphasicColumnSwellsThenCompressesToTheDonnanEquilibria) {
   const Real T = 293.0, E = 0.3;
   const exact::ChargedMedium medium{2e-4, 0.2, 1.5e-4, 8.314 * T, 96.485};
-  const exact::SwellingState swollen =
-      exact::swelling_equilibrium(exact::SolidLaw::NeoHookean, exact::Deformation::Confined, E, 0.0, medium);
+  const exact::SwellingState swollen = exact::swelling_equilibrium(
+      exact::SolidLaw::NeoHookean, exact::Deformation::Confined, E, 0.0, medium);
   const Real compressed = swollen.stretch - 0.1;
   const exact::ColumnEquilibrium loaded =
       exact::confined_column_equilibrium(compressed, E, 0.0, medium, exact::SolidLaw::NeoHookean);

@@ -261,6 +261,18 @@ solver::StepSettings settings_over(const io::CaseSpec& spec, const io::TimeSpec&
   return s;
 }
 
+/// The pseudo-time step of a steady-state step: 1e8 times the slowest transport time of the
+/// model (drainage L^2/(H kappa), ion diffusion L^2/d), so that one backward-Euler step leaves
+/// about 1e-8 of the transient (docs/theory/triphasic.md, steady-state steps).
+Real steady_pseudo_step(const model::Model& model) {
+  const Real L2 = model.length_scale * model.length_scale;
+  Real slowest = L2 / (model.modulus_scale * model.permeability_scale);
+  for (const model::CellMaterial& m : model.materials)
+    if (m.mixture && m.mixture->charged)
+      slowest = std::max(slowest, L2 / std::min(m.mixture->d_plus, m.mixture->d_minus));
+  return 1e8 * slowest;
+}
+
 /// Adds the totals of `part` (a later step) to `run`.
 void accumulate(solver::RunReport& run, const solver::RunReport& part) {
   run.success = part.success;
@@ -321,7 +333,13 @@ solver::RunReport run_steps(const io::CaseSpec& spec, model::Model& model,
     const model::ModelStep& step = model.steps[k];
     log::info("analysis step {} '{}': t = {:.6g} to {:.6g} s, {} prescribed DOFs", k + 1, step.name,
               step.start_time, step.end_time, model.dofs.num_constrained());
-    run_over(step_settings(spec, k));
+    solver::StepSettings settings = step_settings(spec, k);
+    if (spec.steps[k].steady) {
+      settings.steady_dt = steady_pseudo_step(model);
+      log::info("  steady state: each time is reached by a backward-Euler step of {:.3g} s",
+                settings.steady_dt);
+    }
+    run_over(settings);
   }
   return run;
 }
@@ -376,7 +394,7 @@ int run_quasi_static_case(const io::CaseSpec& spec, const std::filesystem::path&
     bool noted = false;
     auto observer = [&](const solver::StepInfo& info) {
       if (output.balance())
-        output.balance()->record_step(info.dt);
+        output.balance()->record_step(info.transport_dt);
       const int linear = info.newton->linear_iterations;
       log::info("step {:4d}  t = {:<10.5g} dt = {:<9.3g} iterations {:2d}  residual {:.2e}{}{}",
                 info.step, info.time, info.dt, info.newton->iterations, info.newton->final_residual,

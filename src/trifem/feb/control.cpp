@@ -94,21 +94,24 @@ void read_curve(Reader& r, pugi::xml_node lc) {
   r.curve_extents.push_back(extent);
 }
 
-/// The analysis type of a Control: transient mixtures, static solids.
-void check_analysis(const Reader& r, pugi::xml_node control) {
+/// The analysis type of a Control: transient or steady-state mixtures (true: steady-state),
+/// static solids.
+bool read_analysis(const Reader& r, pugi::xml_node control) {
   const pugi::xml_node node = control.child("analysis");
   const std::string type = node ? lower(r.doc.text(node)) : std::string();
   if (r.biphasic_module) {
+    if (type.empty() || type == "steady-state") // FEBio's default for mixtures
+      return true;
     if (type != "transient" && type != "dynamic")
-      r.doc.fail(node ? node : control,
-                 fmt::format("a {} biphasic analysis is not supported: trifem's mixtures are "
-                             "transient (use TRANSIENT; the steady state is its long-time limit)",
-                             type.empty() ? "steady-state (FEBio's default)" : type));
+      r.doc.fail(node, fmt::format("a {} analysis of a mixture is not supported (expected "
+                                   "TRANSIENT or STEADY-STATE)",
+                                   type));
   } else if (!type.empty() && type != "static") {
     r.doc.fail(node, fmt::format("analysis '{}' is not supported (trifem's implicit analyses of "
                                  "solids are quasi-static: STATIC)",
                                  r.doc.text(node)));
   }
+  return false;
 }
 
 /// The time stepper of a Control (FEBio's auto time stepper -> trifem's step control).
@@ -207,8 +210,10 @@ void read_load_data(Reader& r, pugi::xml_node section) {
   }
 }
 
-io::TimeSpec read_control(Reader& r, pugi::xml_node control, Real start) {
-  check_analysis(r, control);
+io::TimeSpec read_control(Reader& r, pugi::xml_node control, Real start, bool* steady) {
+  const bool steady_state = read_analysis(r, control);
+  if (steady)
+    *steady = steady_state;
   io::TimeSpec t;
   long steps = 0;
   t.growth = 1.0; // without a time stepper FEBio keeps step_size
@@ -240,7 +245,16 @@ void read_steps(Reader& r, pugi::xml_node root) {
   if (!steps) {
     if (!control)
       r.doc.fail(root, "the element <Control> is required");
-    r.spec.time = read_control(r, control, 0.0);
+    bool steady = false;
+    r.spec.time = read_control(r, control, 0.0, &steady);
+    if (steady) { // a steady-state run: one steady step
+      io::StepSpec step;
+      step.name = "step1";
+      step.key = "step[1]";
+      step.time = r.spec.time;
+      step.steady = true;
+      r.spec.steps.push_back(step);
+    }
     return;
   }
   Real start = 0.0;
@@ -256,7 +270,7 @@ void read_steps(Reader& r, pugi::xml_node root) {
     const pugi::xml_node c = s.child("Control") ? s.child("Control") : control;
     if (!c)
       r.doc.fail(s, "the step has no <Control> (and there is no top-level one)");
-    step.time = read_control(r, c, start);
+    step.time = read_control(r, c, start, &step.steady);
     start = step.time.end_time;
     for (pugi::xml_node part : s.children()) {
       if (!is_element(part))

@@ -110,8 +110,9 @@ void read_boundary(Reader& r, pugi::xml_node section, std::vector<io::FixedSpec>
 /// The surface loads of a Loads section: follower pressures and dead tractions.
 void read_loads(Reader& r, pugi::xml_node section, std::vector<io::PressureSpec>& pressures,
                 std::vector<io::TractionSpec>& tractions);
-/// The time control of a Control section; `start` is the step's start time [s].
-io::TimeSpec read_control(Reader& r, pugi::xml_node control, Real start);
+/// The time control of a Control section; `start` is the step's start time [s]; `steady` (if
+/// given) is set for a steady-state analysis of a mixture.
+io::TimeSpec read_control(Reader& r, pugi::xml_node control, Real start, bool* steady = nullptr);
 /// Control or Step: the time of the run and its steps with their conditions.
 void read_steps(Reader& r, pugi::xml_node root);
 /// Output: logfile data as reactions and probes where they map directly.

@@ -345,7 +345,7 @@ void read_time_keys(const Table& t, TimeSpec& s, Real start, bool allow_duration
                        t.path("end_time")));
   }
   if (allow_duration)
-    t.allow(keys, {"name", "boundary", "loads", "release_time", "analysis"});
+    t.allow(keys, {"name", "boundary", "loads", "release_time", "analysis", "steady"});
   else
     t.allow(keys);
   const std::string after = start > 0.0 ? fmt::format("after the previous step's end, {} s", start)

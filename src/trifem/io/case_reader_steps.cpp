@@ -4,6 +4,8 @@
 // dynamic-explicit step (a mixed run) on a solid model.
 #include "trifem/io/toml_table.hpp"
 
+#include <algorithm>
+
 namespace trifem::io::detail {
 namespace {
 
@@ -142,6 +144,12 @@ StepSpec read_step(const Table& t, const CaseSpec& spec, Real start,
     read_time_keys(t, step.time, start, true);
     step.release_time =
         t.number("release_time", {.range = Range::non_negative(), .fallback = 0.0, .unit = "s"});
+    step.steady = t.get<bool>("steady").value_or(false);
+    if (step.steady && std::none_of(spec.materials.begin(), spec.materials.end(),
+                                    [](const auto& m) { return m.second.is_mixture(); }))
+      fail(t.find("steady"), t.path("steady"),
+           "a steady-state step needs a biphasic or triphasic material (a solid model is "
+           "quasi-static already)");
   }
   read_step_conditions(t, spec, step);
   return step;

@@ -355,6 +355,9 @@ struct StepSpec {
   /// follows the quasi-static ones and starts from their final state; its time.dt is optional
   /// (0: the stability estimate).
   AnalysisType analysis = AnalysisType::QuasiStatic;
+  /// A steady-state step of a mixture model (key `steady`): at each of its times the state is
+  /// the steady state under that time's loads (the transport is done in a pseudo-time step).
+  bool steady = false;
   bool is_explicit() const { return analysis == AnalysisType::DynamicExplicit; }
 };
 

@@ -224,6 +224,8 @@ void write_time(const CaseSpec& spec, TomlText& t) {
     write_time_keys(s.time, t);
     if (s.release_time > 0.0)
       t.number("release_time", s.release_time);
+    if (s.steady)
+      t.raw("steady", "true");
     write_conditions(s.fixed, s.prescribed, s.pressures, s.tractions, "step.boundary", "step.loads",
                      t);
   }

@@ -19,6 +19,9 @@ struct StepSettings {
   Real cutback = 0.5;            ///< factor after a failed step
   int target_iterations = 6;     ///< a step is easy if it converged in at most this many iterations
   std::vector<Real> must_points; ///< times every step sequence must hit exactly
+  /// > 0: a steady-state step; the problem advances each time by a backward-Euler step of this
+  /// pseudo-time step (so long that the transport reaches its steady state), not by dt.
+  Real steady_dt = 0.0;
 };
 
 /// Proposes steps and reacts to their outcome.
@@ -35,6 +38,7 @@ public:
   /// The step failed; returns false if the step is already at dt_min (the run must stop).
   bool reject(Real dt);
   Real dt() const { return dt_; }
+  const StepSettings& settings() const { return settings_; }
   int cutbacks() const { return cutbacks_; }
 
 private:

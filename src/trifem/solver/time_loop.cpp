@@ -30,7 +30,9 @@ RunReport run_time_loop(TransientProblem& problem, NewtonSolver& newton, StepCon
     }
     const Real dt = controller.next_step();
     const Real t = controller.time() + dt;
-    problem.begin_step(t, dt);
+    const Real transport_dt =
+        controller.settings().steady_dt > 0.0 ? controller.settings().steady_dt : dt;
+    problem.begin_step(t, transport_dt);
     NewtonReport report;
     try {
       report = newton.solve(problem);
@@ -71,7 +73,7 @@ RunReport run_time_loop(TransientProblem& problem, NewtonSolver& newton, StepCon
     ++run.steps;
     run.roundoff_floor_steps += report.at_roundoff_floor ? 1 : 0;
     try {
-      observer(StepInfo{run.steps, t, dt, &report});
+      observer(StepInfo{run.steps, t, dt, &report, transport_dt});
     } catch (const OutputError& e) { // the step is solved, but its results cannot be written
       return stop(run, controller,
                   fmt::format("the results at t = {:.6g} could not be written: {}", t, e.what()));

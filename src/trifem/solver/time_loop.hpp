@@ -16,6 +16,9 @@ struct StepInfo {
   Real time = 0.0; ///< end time of the step
   Real dt = 0.0;
   const NewtonReport* newton = nullptr;
+  /// The step size the problem was advanced with: dt, or the pseudo-time step of a
+  /// steady-state step (StepSettings::steady_dt).
+  Real transport_dt = 0.0;
 };
 
 /// Totals of a run.

@@ -152,7 +152,7 @@ TEST(FebErrors, SteadyStateBiphasicAndStepCurves) {
   std::string text = model_text(kMaterial, kHex, kFixed);
   text.replace(text.find("\"solid\""), 7, "\"biphasic\"");
   expect_contains(error_of(text), {"bad.feb:4: febio_spec/Control/analysis: ",
-                                   "a static biphasic analysis is not supported"});
+                                   "a static analysis of a mixture is not supported"});
   // FEBio's SMOOTH through more than two points is not trifem's smooth curve
   text = model_text(kMaterial, kHex, kFixed);
   text.replace(

@@ -365,3 +365,47 @@ TEST(FebVerification, TriphasicColumnSwellsThenCompressesToTheDonnanEquilibria) 
   // total stress sigma_zz = sigma_e - Pi on the unit area, to 1e-6 of the osmotic pressure
   EXPECT_NEAR(state.at(200000).second, loaded.total_stress, 1e-6 * loaded.donnan.pressure);
 }
+
+// The same column with FEBio's tr01 protocol: the swelling is a STEADY-STATE step of 10 steps
+// over 1 s (the fixed charge ramped 0 -> -200 mM over it), the compression a TRANSIENT step
+// from t = 1 s. At t = 1 s the column is at the closed-form swelling equilibrium.
+TEST(FebVerification, SteadyStateSwellingStepReachesTheDonnanEquilibrium) {
+  const Real E = 0.3;
+  const exact::ChargedMedium medium{2e-4, 0.2, 1.5e-4, 8.314 * 293.0, 96.485};
+  const exact::SwellingState swollen = exact::swelling_equilibrium(
+      exact::SolidLaw::NeoHookean, exact::Deformation::Confined, E, 0.0, medium);
+  std::string text = read_file(kData / "triphasic_swelling_column.feb");
+  const auto replace = [&](const std::string& from, const std::string& to) {
+    const auto at = text.find(from);
+    ASSERT_NE(at, std::string::npos) << from;
+    text.replace(at, from.size(), to);
+  };
+  replace("<analysis>TRANSIENT</analysis>\n        <time_steps>100000</time_steps>\n        "
+          "<step_size>1</step_size>",
+          "<analysis>STEADY-STATE</analysis>\n        <time_steps>10</time_steps>\n        "
+          "<step_size>0.1</step_size>");
+  replace("<pt>1000,-200</pt>", "<pt>1,-200</pt>");
+  replace("<pt>100000,0</pt>\n        <pt>100100,-0.1</pt>",
+          "<pt>1,0</pt>\n        <pt>101,-0.1</pt>");
+  std::map<Real, Real> top; // time [s] -> top uz
+  const FebRun r = run(feb::parse_feb(text, kData / "steady.feb"),
+                       [&](const model::Model& m, Real t) { top[t] = displacement(m, 40, 2); });
+  ASSERT_TRUE(r.report.success) << r.report.failure;
+  ASSERT_TRUE(r.spec.steps.at(0).steady);
+  EXPECT_FALSE(r.spec.steps.at(1).steady);
+  ASSERT_TRUE(top.contains(1.0));
+  EXPECT_NEAR(top.at(1.0), swollen.stretch - 1.0, 1e-9 * swollen.stretch);
+  // every step of the ramp ends at the equilibrium of its charge, 2e-4 t mmol/mm^3
+  int ramp_steps = 0;
+  for (const auto& [t, uz] : top) {
+    if (t >= 1.0)
+      continue;
+    const exact::ChargedMedium partial{2e-4 * t, 0.2, 1.5e-4, 8.314 * 293.0, 96.485};
+    const Real stretch = exact::swelling_equilibrium(exact::SolidLaw::NeoHookean,
+                                                     exact::Deformation::Confined, E, 0.0, partial)
+                             .stretch;
+    EXPECT_NEAR(uz, stretch - 1.0, 1e-9 * stretch) << "t = " << t << " s";
+    ++ramp_steps;
+  }
+  EXPECT_GE(ramp_steps, 3);
+}

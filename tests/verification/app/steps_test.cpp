@@ -123,22 +123,42 @@ relative = true
                      kSwellEnd, kSwellEnd + 200.0, swelling);
 }
 
+/// The tr01 protocol with `swelling` as the first step's extra keys: the mean top displacement
+/// at the end of the swelling and the top reaction after it (by whole seconds).
+struct SwellThenCompress {
+  Real swollen_top = 0.0;
+  std::map<long, Real> reaction;
+  Real final_top = 0.0;
+};
+
+SwellThenCompress swell_then_compress(const std::string& swelling) {
+  SwellThenCompress out;
+  const auto run = run_stepped(tr01_case(swelling), [&](const model::Model& m, Real t) {
+    if (std::abs(t - kSwellEnd) < 1e-6)
+      out.swollen_top = top_displacement(m);
+    if (t > kSwellEnd)
+      out.reaction[std::lround(t - kSwellEnd)] = top_reaction(m);
+  });
+  EXPECT_TRUE(run.report.success) << run.report.failure;
+  out.final_top = top_displacement(*run.model);
+  return out;
+}
+
+Real peak_of(const std::map<long, Real>& history) {
+  Real peak = 0.0;
+  for (const auto& [t, r] : history)
+    peak = std::max(peak, std::abs(r));
+  return peak;
+}
+
 TEST(Steps, Tr01SwellThenCompressMatchesPrescribedSwelling) {
   const exact::SwellingState swollen =
       exact::swelling_equilibrium(exact::SolidLaw::StVenantKirchhoff, exact::Deformation::Confined,
                                   0.3, 0.0, exact::paper_medium());
   // free swelling (top free in step 1)
-  Real swollen_top = 0.0;
-  std::map<long, Real> free_reaction, prescribed_reaction;
-  const auto free = run_stepped(tr01_case(""), [&](const model::Model& m, Real t) {
-    if (std::abs(t - kSwellEnd) < 1e-6)
-      swollen_top = top_displacement(m);
-    if (t > kSwellEnd)
-      free_reaction[std::lround(t - kSwellEnd)] = top_reaction(m);
-  });
-  ASSERT_TRUE(free.report.success) << free.report.failure;
-  EXPECT_NEAR(1.0 + swollen_top, swollen.stretch, 1e-6 * swollen.stretch);
-  EXPECT_NEAR(top_displacement(*free.model), swollen_top - 0.1, 1e-12);
+  const SwellThenCompress free = swell_then_compress("");
+  EXPECT_NEAR(1.0 + free.swollen_top, swollen.stretch, 1e-6 * swollen.stretch);
+  EXPECT_NEAR(free.final_top, free.swollen_top - 0.1, 1e-12);
   // the same protocol with the swelling prescribed from the closed form (ramped over 1000 s)
   const std::string prescribed = fmt::format(R"(
 [[step.boundary.prescribed]]
@@ -150,26 +170,44 @@ curve = "swell"
 points = [[0.0, 0.0], [1000.0, 1.0]]
 )",
                                              swollen.stretch - 1.0);
-  const auto ref = run_stepped(tr01_case(prescribed), [&](const model::Model& m, Real t) {
-    if (t > kSwellEnd)
-      prescribed_reaction[std::lround(t - kSwellEnd)] = top_reaction(m);
-  });
-  ASSERT_TRUE(ref.report.success) << ref.report.failure;
-  ASSERT_EQ(free_reaction.size(), 200u);
-  ASSERT_EQ(prescribed_reaction.size(), free_reaction.size());
-  Real peak = 0.0;
-  for (const auto& [t, r] : prescribed_reaction)
-    peak = std::max(peak, std::abs(r));
+  const SwellThenCompress ref = swell_then_compress(prescribed);
+  ASSERT_EQ(free.reaction.size(), 200u);
+  ASSERT_EQ(ref.reaction.size(), free.reaction.size());
+  const Real peak = peak_of(ref.reaction);
   EXPECT_GT(peak, 1e-3); // N: the compression loads the layer
   Real worst = 0.0;
-  for (const auto& [t, r] : free_reaction) {
-    EXPECT_NEAR(r, prescribed_reaction.at(t), 1e-6 * peak) << "t = t1 + " << t << " s";
-    worst = std::max(worst, std::abs(r - prescribed_reaction.at(t)));
+  for (const auto& [t, r] : free.reaction) {
+    EXPECT_NEAR(r, ref.reaction.at(t), 1e-6 * peak) << "t = t1 + " << t << " s";
+    worst = std::max(worst, std::abs(r - ref.reaction.at(t)));
   }
   std::printf("[tr01] swollen stretch %.10f (closed form %.10f, relative difference %.2e); "
               "relaxation peak %.6e N, largest difference %.2e of it\n",
-              1.0 + swollen_top, swollen.stretch, (1.0 + swollen_top) / swollen.stretch - 1.0, peak,
-              worst / peak);
+              1.0 + free.swollen_top, swollen.stretch,
+              (1.0 + free.swollen_top) / swollen.stretch - 1.0, peak, worst / peak);
+}
+
+// A steady-state swelling step (steady = true) reaches the swelling equilibrium at each of its
+// times: the swollen height is the closed-form root, and the compression that follows relaxes as
+// after the long transient swelling (the same problem solved two ways).
+TEST(Steps, SteadySwellingStepIsTheLongTimeLimitOfTheTransientOne) {
+  const exact::SwellingState swollen =
+      exact::swelling_equilibrium(exact::SolidLaw::StVenantKirchhoff, exact::Deformation::Confined,
+                                  0.3, 0.0, exact::paper_medium());
+  const SwellThenCompress transient = swell_then_compress("");
+  const SwellThenCompress steady = swell_then_compress("steady = true");
+  EXPECT_NEAR(1.0 + steady.swollen_top, swollen.stretch, 1e-9 * swollen.stretch);
+  ASSERT_EQ(steady.reaction.size(), transient.reaction.size());
+  const Real peak = peak_of(transient.reaction);
+  Real worst = 0.0;
+  for (const auto& [t, r] : steady.reaction) {
+    EXPECT_NEAR(r, transient.reaction.at(t), 1e-6 * peak) << "t = t1 + " << t << " s";
+    worst = std::max(worst, std::abs(r - transient.reaction.at(t)));
+  }
+  std::printf("[steady] swollen stretch %.12f (closed form %.12f, relative difference %.2e); "
+              "compression after it differs from that after the transient swelling by %.2e of "
+              "the peak\n",
+              1.0 + steady.swollen_top, swollen.stretch,
+              (1.0 + steady.swollen_top) / swollen.stretch - 1.0, worst / peak);
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -8,7 +8,9 @@
 
 using namespace trifem;
 
-TEST(BathTerm, TangentMatchesFiniteDifferences) {
+namespace {
+
+void expect_tangent_matches(Real pressure) {
   mesh::BoxSpec spec;
   const mesh::Mesh mesh = mesh::make_box(spec);
   dofs::DofMap map;
@@ -22,7 +24,7 @@ TEST(BathTerm, TangentMatchesFiniteDifferences) {
   map.finalize();
   material::Electrochemistry chem;
   const physics::BathTerm term(mesh, map, f, mesh.surface("box.xmax").facets, chem, 4e-5,
-                               dofs::LoadCurve::constant());
+                               dofs::LoadCurve::constant(), pressure);
   std::srand(9);
   Vector x = 0.1 * Vector::Random(map.num_dofs());
   const Vector x_old = x;
@@ -44,4 +46,16 @@ TEST(BathTerm, TangentMatchesFiniteDifferences) {
     K_fd.col(j) = (rp - rm) / 2e-6;
   }
   EXPECT_LE((K - K_fd).norm() / K.norm(), 1e-7);
+}
+
+} // namespace
+
+TEST(BathTerm, TangentMatchesFiniteDifferences) {
+  expect_tangent_matches(0.0);
+}
+
+// A bath at a gauge pressure (0.1 MPa, of the size of the osmotic terms) adds p* a to the water
+// rows: its tangent is p* da/du.
+TEST(BathTerm, TangentWithBathPressureMatchesFiniteDifferences) {
+  expect_tangent_matches(0.1);
 }

@@ -3,7 +3,10 @@
 // (drained nodes), pressure and traction loads.
 #include "trifem/feb/reader.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <fmt/format.h>
+#include <optional>
 #include <sstream>
 
 namespace trifem::feb::detail {
@@ -232,22 +235,123 @@ io::TractionSpec traction_load(const Reader& r, pugi::xml_node load) {
   return t;
 }
 
+/// Checks the flags of a load that trifem supports at 0 only (linear, shell_bottom), and that
+/// every other child is one of `known`.
+void check_load_children(const Reader& r, pugi::xml_node load,
+                         std::initializer_list<std::string_view> known) {
+  for (pugi::xml_node c : load.children()) {
+    if (!is_element(c))
+      continue;
+    const std::string_view name = c.name();
+    if (name == "linear" && flag(r, c))
+      r.doc.fail(c, "a linear (non-follower) load is not supported: trifem's surface loads of "
+                    "this kind follow the deformed surface");
+    if (name == "shell_bottom" && flag(r, c))
+      r.doc.fail(c, "shell_bottom is not supported (trifem has no shells)");
+    if (name != "linear" && name != "shell_bottom" &&
+        std::find(known.begin(), known.end(), name) == known.end())
+      r.doc.fail(c, fmt::format("unknown parameter '{}' of a {} load", name,
+                                load.attribute("type").value()));
+  }
+}
+
+/// True if value x curve is 0 at every time (a load written but not applied).
+bool always_zero(const Reader& r, Real value, const std::string& curve) {
+  if (value == 0.0 || curve.empty())
+    return value == 0.0;
+  for (const auto& p : r.spec.curves.at(curve).points)
+    if (p.second != 0.0)
+      return false;
+  return true;
+}
+
+/// <surface_load type="normal_traction">: FEBio's traction normal to a mixture's surface
+/// (positive pulls). The mixture traction (effective = 0) is a follower pressure -traction; the
+/// traction on the solid alone (effective = 1) is accepted only when it is zero throughout.
+std::optional<io::PressureSpec> normal_traction(Reader& r, pugi::xml_node load) {
+  check_load_children(r, load, {"traction", "effective"});
+  const pugi::xml_node value = r.doc.child(load, "traction");
+  io::PressureSpec p;
+  p.surface = r.surface(load);
+  p.value = -r.doc.number(value);
+  p.curve = r.curve_of(value);
+  const pugi::xml_node effective = load.child("effective");
+  if (effective && flag(r, effective)) {
+    if (!always_zero(r, p.value, p.curve))
+      r.doc.fail(effective, "an effective normal traction (on the solid alone) is not supported: "
+                            "trifem's surface loads act on the mixture (effective = 0)");
+    r.warn(load, "an effective normal traction that is zero at every time is ignored");
+    return std::nullopt;
+  }
+  return p;
+}
+
+/// <surface_load type="fluidflux">: the normal flux w.n of the water relative to the solid
+/// (mixture = 0) on a face normal to an axis, prescribed as the fluid flux component along that
+/// axis at the face's nodes; the face is then not one of FEBio's impermeable faces.
+io::PrescribedSpec fluid_flux(Reader& r, pugi::xml_node load, bool step) {
+  check_load_children(r, load, {"flux", "mixture"});
+  if (!r.biphasic_module)
+    r.doc.fail(load, "a fluid flux needs the biphasic or multiphasic module");
+  if (step)
+    r.doc.fail(load, "a fluid flux inside a <step> is not supported (give it in the top-level "
+                     "<Loads>: the face it crosses is open for the whole run)");
+  if (const pugi::xml_node mixture = load.child("mixture"); mixture && flag(r, mixture))
+    r.doc.fail(mixture, "mixture = 1 (the flux of the mixture, w.n + v.n) is not supported: "
+                        "trifem prescribes the water's flux relative to the solid (mixture = 0)");
+  const pugi::xml_node value = r.doc.child(load, "flux");
+  io::PrescribedSpec p;
+  p.set = r.surface(load);
+  p.field = io::FieldKind::FluidFlux;
+  p.curve = r.curve_of(value);
+  Vec3 normal = Vec3::Zero();
+  for (const mesh::Facet& f : r.mesh.mesh.surface(p.set).facets) {
+    const Vec3 n = (r.mesh.mesh.node(f.nodes[2]) - r.mesh.mesh.node(f.nodes[0]))
+                       .cross(r.mesh.mesh.node(f.nodes[3]) - r.mesh.mesh.node(f.nodes[1]))
+                       .normalized();
+    if (normal.isZero())
+      normal = n;
+    if ((n - normal).norm() > 1e-9)
+      r.doc.fail(load, "surface",
+                 "the surface is not plane: trifem prescribes a fluid flux on a face normal to "
+                 "a coordinate axis");
+  }
+  int axis = 0;
+  normal.cwiseAbs().maxCoeff(&axis);
+  if (std::abs(std::abs(normal[axis]) - 1.0) > 1e-9)
+    r.doc.fail(load, "surface",
+               fmt::format("the surface's normal ({:.3g}, {:.3g}, {:.3g}) is not along a "
+                           "coordinate axis: trifem prescribes the fluid flux component along it",
+                           normal.x(), normal.y(), normal.z()));
+  p.component = axis;
+  p.value = r.doc.number(value) * (normal[axis] > 0.0 ? 1.0 : -1.0);
+  r.flux_surfaces.push_back(p.set);
+  return p;
+}
+
 } // namespace
 
 void read_loads(Reader& r, pugi::xml_node section, std::vector<io::PressureSpec>& pressures,
-                std::vector<io::TractionSpec>& tractions) {
+                std::vector<io::TractionSpec>& tractions,
+                std::vector<io::PrescribedSpec>& prescribed, bool step) {
   for (pugi::xml_node load : section.children()) {
     if (!is_element(load))
       continue;
     const std::string type = load.attribute("type").value();
     const bool surface_load = std::string_view(load.name()) == "surface_load";
-    if (surface_load && type == "pressure")
+    if (surface_load && type == "pressure") {
       pressures.push_back(pressure_load(r, load));
-    else if (surface_load && type == "traction")
+    } else if (surface_load && type == "traction") {
       tractions.push_back(traction_load(r, load));
-    else
-      r.doc.fail(load, "only <surface_load type=\"pressure\"> and <surface_load "
-                       "type=\"traction\"> are supported in <Loads>");
+    } else if (surface_load && type == "normal_traction") {
+      if (auto p = normal_traction(r, load))
+        pressures.push_back(*p);
+    } else if (surface_load && type == "fluidflux") {
+      prescribed.push_back(fluid_flux(r, load, step));
+    } else {
+      r.doc.fail(load, "only <surface_load> of type pressure, traction, normal_traction and "
+                       "fluidflux are supported in <Loads>");
+    }
   }
 }
 

@@ -45,7 +45,8 @@ constexpr std::string_view kEnforcement[] = {"laugon",
 
 /// Parameters that must keep FEBio's default (the value trifem's contact has).
 const std::map<std::string_view, Real> kFixedDefaults = {
-    {"fric_coeff", 0.0}, {"tension", 0.0}, {"flip_primary", 0.0}, {"flip_secondary", 0.0}};
+    {"fric_coeff", 0.0},     {"tension", 0.0},      {"flip_primary", 0.0},
+    {"flip_secondary", 0.0}, {"contact_frac", 0.0}, {"smooth_fls", 0.0}};
 
 bool contains(std::span<const std::string_view> list, std::string_view s) {
   return std::find(list.begin(), list.end(), s) != list.end();

@@ -279,7 +279,7 @@ void read_steps(Reader& r, pugi::xml_node root) {
       if (kind == "Boundary")
         read_boundary(r, part, step.fixed, step.prescribed, true);
       else if (kind == "Loads")
-        read_loads(r, part, step.pressures, step.tractions);
+        read_loads(r, part, step.pressures, step.tractions, step.prescribed, true);
       else if (kind != "Control")
         r.doc.fail(part, fmt::format("<{}> in a step is not supported", kind));
     }

@@ -116,7 +116,7 @@ void read_sections(Reader& r) {
   if (const pugi::xml_node b = root.child("Boundary"))
     detail::read_boundary(r, b, r.spec.fixed, r.spec.prescribed, false);
   if (const pugi::xml_node l = root.child("Loads"))
-    detail::read_loads(r, l, r.spec.pressures, r.spec.tractions);
+    detail::read_loads(r, l, r.spec.pressures, r.spec.tractions, r.spec.prescribed, false);
   if (const pugi::xml_node i = root.child("Initial"))
     detail::read_initial(r, i);
   detail::read_steps(r, root);

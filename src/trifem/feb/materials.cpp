@@ -49,7 +49,7 @@ std::string known_types() {
   std::string s;
   for (const auto& m : law_mappings())
     s += fmt::format("{}{}", s.empty() ? "" : ", ", m.febio);
-  return s + ", biphasic, triphasic";
+  return s + ", biphasic, triphasic, multiphasic (Na and Cl)";
 }
 
 /// The value of a material parameter element (a plain number: no load curve, no map).
@@ -224,10 +224,13 @@ void triphasic_solute(const Reader& r, pugi::xml_node node, io::MaterialSpec& m)
   }
 }
 
-/// A triphasic material: a biphasic one with a fixed charge and the two ions of <Solutes>.
+/// A triphasic material (or a multiphasic one with exactly the two ions of <Solutes>): a
+/// biphasic one with a fixed charge and a cation and an anion.
 io::MaterialSpec triphasic(Reader& r, pugi::xml_node node, const std::string& name) {
   if (!r.multiphasic_module)
-    r.doc.fail(node, "type", "a triphasic material needs the multiphasic module");
+    r.doc.fail(
+        node, "type",
+        fmt::format("a {} material needs the multiphasic module", r.doc.attribute(node, "type")));
   io::MaterialSpec m;
   m.type = "triphasic";
   int solutes = 0;
@@ -338,7 +341,7 @@ void read_materials(Reader& r, pugi::xml_node section) {
     io::MaterialSpec m;
     if (type == "biphasic") {
       m = biphasic(r, node);
-    } else if (type == "triphasic") {
+    } else if (type == "triphasic" || type == "multiphasic") {
       m = triphasic(r, node, name);
     } else {
       const material::LawSpec law = solid_law(r, node);

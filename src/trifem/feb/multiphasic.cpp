@@ -30,9 +30,7 @@ void read_constants(Reader& r, pugi::xml_node constants) {
                                   : nullptr;
     if (!target)
       r.doc.fail(c, fmt::format("unknown constant '{}' (expected T, R, Fc)", name));
-    *target = r.doc.number(c);
-    if (!(*target > 0.0) && name != "Fc")
-      r.doc.fail(c, fmt::format("{} must be positive", name));
+    *target = r.doc.number(c); // checked where used (FEBio Studio writes 0 for solid models)
   }
 }
 
@@ -67,6 +65,14 @@ void read_solutes(Reader& r, pugi::xml_node solutes) {
                                   "molar_mass, density)",
                                   p.name()));
   }
+}
+
+/// True if value x curve of a condition is 0 at every time.
+bool always_zero(const Reader& r, const EffectiveCondition& c) {
+  if (c.value == 0.0 || c.curve.empty())
+    return c.value == 0.0;
+  const auto& points = r.spec.curves.at(c.curve).points;
+  return std::all_of(points.begin(), points.end(), [](const auto& p) { return p.second == 0.0; });
 }
 
 /// The value of a condition (value x curve) at time t, with FEBio's interpolation.
@@ -192,16 +198,17 @@ void map_triphasic_baths(Reader& r) {
   r.spec.electrochemistry.bath_concentration = v[1] * r.chem.amount;
 }
 
-/// The drained nodes of a biphasic model: a prescribed fluid pressure of 0.
+/// The drained nodes of a biphasic model: a prescribed fluid pressure of 0 drains to the
+/// reference bath; any other (value x curve) is a bath at that pressure (add_impermeable_faces
+/// makes its faces).
 void map_biphasic_baths(Reader& r) {
   for (const EffectiveCondition& c : r.effective) {
     if (c.charge != 0)
       r.doc.fail(c.bc, "a prescribed concentration needs a triphasic material");
-    const Real v = constant_value(r, c);
-    if (v != 0.0)
-      r.doc.fail(c.bc, fmt::format("a prescribed fluid pressure of {}: trifem drains faces to a "
-                                   "bath at gauge pressure 0 (only 0 is mapped)",
-                                   v));
+    if (!always_zero(r, c)) {
+      r.pressure_baths.push_back(&c);
+      continue;
+    }
     for (Index n : r.mesh.mesh.node_set(c.set))
       r.drained[n] = 1;
   }

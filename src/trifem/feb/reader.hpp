@@ -67,6 +67,9 @@ struct Reader {
   std::vector<CurveExtent> curve_extents;
   std::vector<EffectiveCondition> effective; ///< top-level fluid pressure, concentrations
   std::vector<EffectiveCondition> initial;   ///< <Initial> fluid pressure, concentrations
+  std::vector<std::string> flux_surfaces;    ///< surfaces with a prescribed normal fluid flux
+  /// prescribed fluid pressures other than 0 of a biphasic model: baths at that pressure
+  std::vector<const EffectiveCondition*> pressure_baths;
   /// <fixed_charge_density> of each triphasic material (name), mapped once the curves are known
   std::vector<std::pair<std::string, pugi::xml_node>> fixed_charges;
   std::vector<char> drained; ///< per mesh node: in a "zero fluid pressure" node set
@@ -107,9 +110,11 @@ void read_load_data(Reader& r, pugi::xml_node section);
 /// marks drained nodes (top level only: `step` false).
 void read_boundary(Reader& r, pugi::xml_node section, std::vector<io::FixedSpec>& fixed,
                    std::vector<io::PrescribedSpec>& prescribed, bool step);
-/// The surface loads of a Loads section: follower pressures and dead tractions.
+/// The surface loads of a Loads section: follower pressures and dead tractions, mixture normal
+/// tractions (as pressures) and normal fluid fluxes (as prescribed fluxes, top level only).
 void read_loads(Reader& r, pugi::xml_node section, std::vector<io::PressureSpec>& pressures,
-                std::vector<io::TractionSpec>& tractions);
+                std::vector<io::TractionSpec>& tractions,
+                std::vector<io::PrescribedSpec>& prescribed, bool step);
 /// The time control of a Control section; `start` is the step's start time [s]; `steady` (if
 /// given) is set for a steady-state analysis of a mixture.
 io::TimeSpec read_control(Reader& r, pugi::xml_node control, Real start, bool* steady = nullptr);

@@ -201,15 +201,24 @@ void read_boundary(const Table& root, CaseSpec& spec) {
   for (const Table& t : boundary->tables("prescribed"))
     spec.prescribed.push_back(read_prescribed(t, spec, fixed_keys));
   for (const Table& t : boundary->tables("bath")) {
-    t.allow({"surface", "concentration", "curve"});
-    if (!model.ions)
-      fail(t.where(), t.path(), "a bath needs a triphasic material");
-    spec.baths.push_back(
-        {t.name("surface"),
-         t.number("concentration", {.range = material::Range::positive(),
-                                    .unit = "mmol/mm^3",
-                                    .plausible = &material::plausible::concentration()}),
-         read_curve_reference(t, spec)});
+    t.allow({"surface", "concentration", "pressure", "curve"});
+    if (!model.fluxes)
+      fail(t.where(), t.path(), "a bath needs a biphasic or triphasic material");
+    if (!t.find("concentration") && !t.find("pressure"))
+      fail(t.where(), t.path(), "a bath needs its concentration, its pressure or both");
+    if (t.find("concentration") && !model.ions)
+      fail(t.find("concentration"), t.path("concentration"),
+           "a bath concentration needs a triphasic material (a biphasic bath has a pressure only)");
+    BathSpec b;
+    b.surface = t.name("surface");
+    if (t.find("concentration"))
+      b.concentration =
+          t.number("concentration", {.range = material::Range::positive(),
+                                     .unit = "mmol/mm^3",
+                                     .plausible = &material::plausible::concentration()});
+    b.pressure = t.number("pressure", {.fallback = 0.0, .unit = "MPa"});
+    b.curve = read_curve_reference(t, spec);
+    spec.baths.push_back(b);
   }
 }
 

@@ -151,11 +151,13 @@ struct PressureSpec {
 };
 
 /// [[boundary.bath]]: a surface in a NaCl bath whose concentration moves from the reference
-/// (electrochemistry.bath_concentration) to `concentration` following `curve` (0 -> 1).
+/// (electrochemistry.bath_concentration) to `concentration`, and its pressure from 0 to
+/// `pressure`, following `curve` (0 -> 1).
 /// Surfaces without conditions are free-draining to the reference bath.
 struct BathSpec {
   std::string surface;
-  Real concentration = 0.0; ///< [mmol/mm^3], > 0
+  Real concentration = 0.0; ///< [mmol/mm^3], > 0; 0: the reference bath's (biphasic models)
+  Real pressure = 0.0;      ///< gauge pressure of the bath's water [MPa]
   std::string curve;        ///< empty: the new bath applies from t = 0
 };
 

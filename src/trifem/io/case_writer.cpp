@@ -151,7 +151,10 @@ void write_boundary(const CaseSpec& spec, TomlText& t) {
   for (const BathSpec& b : spec.baths) {
     t.header("[[boundary.bath]]");
     t.string("surface", b.surface);
-    t.number("concentration", b.concentration);
+    if (b.concentration > 0.0)
+      t.number("concentration", b.concentration);
+    if (b.pressure != 0.0)
+      t.number("pressure", b.pressure);
     t.optional_string("curve", b.curve);
   }
   write_conditions({}, {}, spec.pressures, spec.tractions, "boundary", "loads", t);

@@ -167,9 +167,10 @@ std::vector<std::unique_ptr<physics::Term>> load_terms(const io::CaseSpec& spec,
     const auto& b = spec.baths[i];
     const auto& surface = with_context(fmt::format("boundary.bath[{}].surface", i + 1),
                                        [&] { return model.mesh.surface(b.surface); });
-    terms.push_back(std::make_unique<physics::BathTerm>(model.mesh, model.dofs, model.fields,
-                                                        surface.facets, model.chem, b.concentration,
-                                                        make_curve(spec, b.curve)));
+    terms.push_back(std::make_unique<physics::BathTerm>(
+        model.mesh, model.dofs, model.fields, surface.facets, model.chem,
+        b.concentration > 0.0 ? b.concentration : model.chem.c_ref, make_curve(spec, b.curve),
+        b.pressure));
   }
   return terms;
 }

@@ -10,9 +10,9 @@ namespace trifem::physics {
 
 BathTerm::BathTerm(const mesh::Mesh& mesh, const dofs::DofMap& dofs, MixtureFields fields,
                    std::vector<mesh::Facet> facets, const material::Electrochemistry& chem,
-                   Real concentration, dofs::LoadCurve curve)
+                   Real concentration, dofs::LoadCurve curve, Real pressure)
     : mesh_(mesh), dofs_(dofs), fields_(fields), facets_(std::move(facets)), chem_(chem),
-      concentration_(concentration), curve_(std::move(curve)) {
+      concentration_(concentration), curve_(std::move(curve)), pressure_(pressure) {
   TRIFEM_CHECK(concentration_ > 0.0, "bath concentration {} must be > 0", concentration_);
 }
 
@@ -41,8 +41,9 @@ bool BathTerm::evaluate(Index e, const EvalState& state, LocalVector& r, LocalMa
   const FacetVector area = facet_area_vectors(x, K ? &da : nullptr);
   const Real c = concentration(state.time), RT = chem_.RT(), dt = state.dt > 0 ? state.dt : 1.0;
   // natural rows -mu* a, scaled by -dt (water) and -dt c_ref (ions)
-  std::array<Real, 3> factor = {-2.0 * RT * chem_.osmotic_bath * (c - chem_.c_ref) * dt,
-                                RT * std::log(c / chem_.c_ref) * dt * chem_.c_ref, 0.0};
+  std::array<Real, 3> factor = {
+      (pressure(state.time) - 2.0 * RT * chem_.osmotic_bath * (c - chem_.c_ref)) * dt,
+      RT * std::log(c / chem_.c_ref) * dt * chem_.c_ref, 0.0};
   factor[2] = factor[1];
   const int rows = ions() ? 3 : 1, n = 12 * (rows + 1);
   r.setZero(n);

@@ -12,14 +12,16 @@
 
 namespace trifem::physics {
 
-/// Bath boundary: c*(t) = c_ref + (concentration - c_ref) curve(t), gauge pressure 0,
-/// potential 0. Bath-normalised potentials mu_w* = -2 RT Phi* (c* - c_ref),
-/// mu_+-* = RT ln(c* / c_ref). Rows scaled like the mixture term's.
+/// Bath boundary: c*(t) = c_ref + (concentration - c_ref) curve(t), gauge pressure
+/// p*(t) = pressure curve(t), potential 0. Bath-normalised potentials
+/// mu_w* = p* - 2 RT Phi* (c* - c_ref), mu_+-* = RT ln(c* / c_ref). Rows scaled like the mixture
+/// term's. The bath's pressure acts on the water only: it does not push on the surface (a
+/// [[loads.pressure]] does).
 class BathTerm final : public Term {
 public:
   BathTerm(const mesh::Mesh& mesh, const dofs::DofMap& dofs, MixtureFields fields,
            std::vector<mesh::Facet> facets, const material::Electrochemistry& chem,
-           Real concentration, dofs::LoadCurve curve);
+           Real concentration, dofs::LoadCurve curve, Real pressure = 0.0);
 
   std::string name() const override { return "bath"; }
   Index num_elements() const override { return static_cast<Index>(facets_.size()); }
@@ -28,6 +30,8 @@ public:
 
   /// Bath concentration at time t [mmol/mm^3].
   Real concentration(Real t) const;
+  /// Bath gauge pressure at time t [MPa].
+  Real pressure(Real t) const { return pressure_ * curve_(t); }
 
 private:
   bool ions() const { return fields_.j_plus.valid(); }
@@ -39,6 +43,7 @@ private:
   material::Electrochemistry chem_;
   Real concentration_;
   dofs::LoadCurve curve_;
+  Real pressure_;
 };
 
 } // namespace trifem::physics

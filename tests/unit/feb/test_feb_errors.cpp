@@ -193,9 +193,14 @@ TEST(FebErrors, UnsupportedSurfaceLoads) {
   expect_contains(
       error_of(with_load("traction", "<scale>1</scale>")),
       {"bad.feb:21: ", "surface_load[@type='traction']: the element <traction> is required"});
+  expect_contains(error_of(with_load("heat flux", "<flux>1</flux>")),
+                  {"bad.feb:21: ", "only <surface_load> of type pressure, traction, "
+                                   "normal_traction and fluidflux are supported"});
   expect_contains(error_of(with_load("fluidflux", "<flux>1</flux>")),
-                  {"bad.feb:21: ", "only <surface_load type=\"pressure\"> and <surface_load "
-                                   "type=\"traction\"> are supported"});
+                  {"bad.feb:21: ", "a fluid flux needs the biphasic or multiphasic module"});
+  expect_contains(
+      error_of(with_load("normal_traction", "<traction>1</traction><linear>1</linear>")),
+      {"bad.feb:21: ", "/linear: a linear (non-follower) load is not supported"});
 }
 
 namespace {

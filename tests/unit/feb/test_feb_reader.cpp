@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 using namespace trifem;
 
 namespace {
@@ -38,7 +40,8 @@ TEST(FebReader, ConfinedCompressionCase) {
   EXPECT_DOUBLE_EQ(mat.solid->parameters.at("E"), 1.0);
   EXPECT_DOUBLE_EQ(mat.solid->parameters.at("nu"), 0.0);
 
-  ASSERT_EQ(spec.fixed.size(), 2u); // z on the bottom, x and y everywhere
+  // z on the bottom, x and y everywhere, then FEBio's undrained faces (below)
+  ASSERT_EQ(spec.fixed.size(), 7u);
   EXPECT_EQ(spec.fixed[0].set, "Bottom");
   EXPECT_EQ(spec.fixed[0].components, std::vector<io::Component>{2});
   EXPECT_EQ(spec.fixed[1].set, "All");
@@ -58,12 +61,20 @@ TEST(FebReader, ConfinedCompressionCase) {
   EXPECT_DOUBLE_EQ(spec.time.dt_max, 2.5); // no time stepper: FEBio's fixed steps
   EXPECT_TRUE(spec.steps.empty());
 
-  // FEBio's undrained faces: the bottom and the four sides (five patches), not the top.
-  ASSERT_EQ(spec.impermeable_surfaces.size(), 5u);
+  // FEBio's undrained faces: the bottom and the four sides (five patches), not the top; each
+  // is a plane normal to an axis, so its normal flux component is fixed
+  EXPECT_TRUE(spec.impermeable_surfaces.empty());
   std::size_t facets = 0;
-  for (const auto& s : spec.impermeable_surfaces)
-    facets += m.surface(s.surface).facets.size();
+  std::vector<io::Component> normals;
+  for (std::size_t k = 2; k < spec.fixed.size(); ++k) {
+    EXPECT_EQ(spec.fixed[k].fields, std::vector<io::FieldKind>{io::FieldKind::FluidFlux});
+    ASSERT_EQ(spec.fixed[k].components.size(), 1u);
+    normals.push_back(spec.fixed[k].components[0]);
+    facets += m.surface(spec.fixed[k].set).facets.size();
+  }
   EXPECT_EQ(facets, 41u); // 1 bottom + 4 x 10 sides
+  std::sort(normals.begin(), normals.end());
+  EXPECT_EQ(normals, (std::vector<io::Component>{0, 0, 1, 1, 2}));
 }
 
 TEST(FebReader, ConfinedCompressionBuildsTheModel) {

@@ -74,7 +74,8 @@ TEST(FebTriphasic, UnitsFixedChargeAndBathAreMapped) {
   // FEBio's STEP (the value of the next point) is trifem's "next"; the top is drained, the
   // other faces closed
   EXPECT_EQ(spec.curves.at("BathPressure").interpolation, dofs::Interpolation::Next);
-  EXPECT_EQ(spec.impermeable_surfaces.size(), 5u); // bottom and four sides
+  ASSERT_EQ(spec.fixed.size(), 7u); // bottom z, sides x y, then the bottom and four sides closed
+  EXPECT_EQ(spec.fixed.back().fields.size(), 3u); // water and both ions
 }
 
 TEST(FebTriphasic, SolubilityIsTheInverseActivityCoefficient) {

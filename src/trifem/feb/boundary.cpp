@@ -164,6 +164,8 @@ void read_boundary(Reader& r, pugi::xml_node section, std::vector<io::FixedSpec>
       prescribed_effective(r, bc, step, false);
     else if (type == "prescribed concentration" && r.version == Version::V4)
       prescribed_effective(r, bc, step, true);
+    else if (type == "rigid" && r.version == Version::V4)
+      attach_rigid(r, bc, step);
     else if (type == "fix" && r.version == Version::V3)
       fix(r, bc, fixed, step);
     else if (type == "prescribe" && r.version == Version::V3)

@@ -5,6 +5,7 @@
 #include "trifem/feb/reader.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <fmt/format.h>
 #include <map>
 #include <span>
@@ -130,6 +131,25 @@ void check_parameters(Reader& r, pugi::xml_node c, bool& noted) {
   }
 }
 
+/// The mean reference facet size sqrt(area) of two surfaces.
+Real mean_facet_size(const mesh::Mesh& mesh, const std::string& a, const std::string& b) {
+  Real sum = 0.0;
+  std::size_t count = 0;
+  for (const std::string& name : {a, b})
+    for (const mesh::Facet& f : mesh.surface(name).facets) {
+      const Vec3 n = (mesh.node(f.nodes[2]) - mesh.node(f.nodes[0]))
+                         .cross(mesh.node(f.nodes[3]) - mesh.node(f.nodes[1]));
+      sum += std::sqrt(0.5 * n.norm());
+      ++count;
+    }
+  return count ? sum / static_cast<Real>(count) : 0.0;
+}
+
+/// FEBio resolves an initial overlap of the surfaces through the contact itself; trifem's
+/// multipliers close it in the first step, so an overlap up to this fraction of the facet size
+/// is accepted (trifem's own default is 1e-3).
+constexpr Real kInitialOverlap = 0.05;
+
 } // namespace
 
 void read_contact(Reader& r, pugi::xml_node section, pugi::xml_node mesh) {
@@ -152,6 +172,8 @@ void read_contact(Reader& r, pugi::xml_node section, pugi::xml_node mesh) {
                            c.attribute("name") ? c.attribute("name").value() : pair_name.c_str());
     spec.slave = pair->second.primary; // FEBio's primary surface is the former slave
     spec.master = pair->second.secondary;
+    spec.penetration_tolerance =
+        kInitialOverlap * mean_facet_size(r.mesh.mesh, spec.slave, spec.master);
     for (const io::ContactSpec& other : r.spec.contacts)
       if ((other.master == spec.master && other.slave == spec.slave) ||
           (other.master == spec.slave && other.slave == spec.master))

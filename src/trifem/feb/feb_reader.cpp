@@ -79,12 +79,12 @@ void check_sections(const Reader& r, pugi::xml_node root) {
       continue;
     const std::string_view name = s.name();
     static constexpr std::string_view known[] = {
-        "Module",  "Globals", "Control", "Material", "Mesh",   "MeshDomains", "Boundary",
-        "Initial", "Contact", "Loads",   "LoadData", "Output", "Step"};
+        "Module",  "Globals", "Control", "Material", "Mesh",     "MeshDomains", "Boundary",
+        "Initial", "Rigid",   "Contact", "Loads",    "LoadData", "Output",      "Step"};
     if (std::find(std::begin(known), std::end(known), name) == std::end(known))
       r.doc.fail(s, fmt::format("the section <{}> is not supported (trifem reads Module, Globals, "
                                 "Control, Material, Mesh, MeshDomains, Boundary, Initial, "
-                                "Contact, Loads, LoadData, Output and Step)",
+                                "Rigid, Contact, Loads, LoadData, Output and Step)",
                                 name));
   }
 }
@@ -117,6 +117,9 @@ void read_sections(Reader& r) {
     detail::read_boundary(r, b, r.spec.fixed, r.spec.prescribed, false);
   if (const pugi::xml_node l = root.child("Loads"))
     detail::read_loads(r, l, r.spec.pressures, r.spec.tractions, r.spec.prescribed, false);
+  if (const pugi::xml_node rigid = root.child("Rigid"))
+    detail::read_rigid(r, rigid);
+  detail::map_rigid_bodies(r);
   if (const pugi::xml_node i = root.child("Initial"))
     detail::read_initial(r, i);
   detail::read_steps(r, root);

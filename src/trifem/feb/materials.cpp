@@ -343,6 +343,9 @@ void read_materials(Reader& r, pugi::xml_node section) {
       m = biphasic(r, node);
     } else if (type == "triphasic" || type == "multiphasic") {
       m = triphasic(r, node, name);
+    } else if (type == "rigid body") {
+      add_rigid_material(r, node, name);
+      continue;
     } else {
       const material::LawSpec law = solid_law(r, node);
       m.type = law.type;

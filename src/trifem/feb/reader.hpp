@@ -6,6 +6,7 @@
 #include "trifem/feb/document.hpp"
 #include "trifem/io/case_spec.hpp"
 
+#include <array>
 #include <map>
 #include <set>
 #include <string>
@@ -48,6 +49,15 @@ struct EffectiveCondition {
   std::string curve; ///< FEBio load controller name ("" : constant)
 };
 
+/// A "rigid body" material: its attachment (bc type rigid) and the <Rigid> conditions on it.
+struct RigidBodyInput {
+  pugi::xml_node material;
+  pugi::xml_node attachment;
+  std::string set;                              ///< the attached node set
+  std::array<bool, 6> fixed{};                  ///< rigid_fixed: x, y, z, then the rotations
+  std::array<io::RigidComponentSpec, 3> drives; ///< rigid_displacement, rigid_force
+};
+
 /// Everything the section readers share while a file is read.
 struct Reader {
   Reader(const Document& d, io::CaseSpec& s) : doc(d), spec(s) {}
@@ -65,9 +75,10 @@ struct Reader {
   std::map<std::string, pugi::xml_node> parts;       ///< Elements name -> its element
   std::map<std::string, std::string> curve_by_id;    ///< load controller id -> curve name
   std::vector<CurveExtent> curve_extents;
-  std::vector<EffectiveCondition> effective; ///< top-level fluid pressure, concentrations
-  std::vector<EffectiveCondition> initial;   ///< <Initial> fluid pressure, concentrations
-  std::vector<std::string> flux_surfaces;    ///< surfaces with a prescribed normal fluid flux
+  std::vector<EffectiveCondition> effective;          ///< top-level fluid pressure, concentrations
+  std::vector<EffectiveCondition> initial;            ///< <Initial> fluid pressure, concentrations
+  std::map<std::string, RigidBodyInput> rigid_bodies; ///< by material name
+  std::vector<std::string> flux_surfaces; ///< surfaces with a prescribed normal fluid flux
   /// prescribed fluid pressures other than 0 of a biphasic model: baths at that pressure
   std::vector<const EffectiveCondition*> pressure_baths;
   /// <fixed_charge_density> of each triphasic material (name), mapped once the curves are known
@@ -127,6 +138,14 @@ void read_initial(Reader& r, pugi::xml_node section);
 /// The prescribed effective fluid pressures and concentrations as drained nodes and the bath
 /// (electrochemistry), and the initial conditions checked against trifem's Donnan initial state.
 void map_baths(Reader& r);
+/// A material of type "rigid body" (no elements: its nodes are attached by bc type rigid).
+void add_rigid_material(Reader& r, pugi::xml_node node, const std::string& name);
+/// bc type "rigid": the node set a rigid body moves.
+void attach_rigid(Reader& r, pugi::xml_node bc, bool step);
+/// <Rigid>: rigid_fixed, rigid_displacement and rigid_force on the bodies.
+void read_rigid(Reader& r, pugi::xml_node section);
+/// The attached rigid bodies as translating [[rigid_body]]s (rotations must be fixed).
+void map_rigid_bodies(Reader& r);
 /// Contact: each <contact> of a supported type as a contact pair of its <SurfacePair> (in
 /// `mesh`): slave = the primary surface, master = the secondary one.
 void read_contact(Reader& r, pugi::xml_node section, pugi::xml_node mesh);

@@ -142,10 +142,10 @@ TEST(FebErrors, UnsupportedBoundaryAndSections) {
       R"(    <bc name="r" node_set="bottom" type="zero rotation"><x_dof>1</x_dof></bc>)";
   expect_contains(error_of(model_text(kMaterial, kHex, rigid)),
                   {"bad.feb:18: ", "boundary condition type 'zero rotation' is not supported"});
-  std::string rigid_section = model_text(kMaterial, kHex, kFixed);
-  rigid_section.replace(rigid_section.find("</febio_spec>"), 13, "  <Rigid/>\n</febio_spec>");
-  expect_contains(error_of(rigid_section),
-                  {"bad.feb:20: febio_spec/Rigid: ", "the section <Rigid> is not supported"});
+  std::string discrete = model_text(kMaterial, kHex, kFixed);
+  discrete.replace(discrete.find("</febio_spec>"), 13, "  <Discrete/>\n</febio_spec>");
+  expect_contains(error_of(discrete),
+                  {"bad.feb:20: febio_spec/Discrete: ", "the section <Discrete> is not supported"});
 }
 
 TEST(FebErrors, SteadyStateBiphasicAndStepCurves) {
@@ -251,4 +251,53 @@ TEST(FebErrors, UnsupportedContact) {
                                                             "'sliding-biphasic'"});
   expect_contains(error_of(stacked_with("type=\"sliding-elastic\"", "type=\"sliding-biphasic\"")),
                   {"'sliding-biphasic' needs the biphasic module"});
+}
+
+namespace {
+
+/// The base file with a rigid body "plate" attached to the bottom nodes and `rigid` as its
+/// <Rigid> section.
+std::string with_rigid_body(const std::string& rigid) {
+  const std::string materials = kMaterial + R"(
+    <material id="2" name="plate" type="rigid body"><density>1</density><center_of_mass>0,0,0</center_of_mass></material>)";
+  std::string text = model_text(
+      materials, kHex, R"(    <bc name="glue" node_set="bottom" type="rigid"><rb>plate</rb></bc>)");
+  text.replace(text.find("</febio_spec>"), 13, rigid + "\n</febio_spec>");
+  return text;
+}
+
+} // namespace
+
+TEST(FebRigid, AttachedBodyWithFixedRotationsTranslates) {
+  const io::CaseSpec spec = feb::parse_feb(with_rigid_body(R"(<Rigid>
+  <rigid_bc type="rigid_fixed"><rb>plate</rb><Rx_dof>1</Rx_dof><Ry_dof>1</Ry_dof><Ru_dof>1</Ru_dof><Rv_dof>1</Rv_dof><Rw_dof>1</Rw_dof></rigid_bc>
+  <rigid_load type="rigid_force"><rb>plate</rb><dof>Rz</dof><value>-0.5</value><load_type>LOAD</load_type></rigid_load>
+</Rigid>)"),
+                                           "good.feb");
+  ASSERT_EQ(spec.rigid_bodies.size(), 1u);
+  const io::RigidBodySpec& b = spec.rigid_bodies[0];
+  EXPECT_EQ(b.set, "bottom");
+  EXPECT_EQ(b.components, (std::vector<io::Component>{0, 1, 2}));
+  EXPECT_EQ(b.drives[0].drive, io::RigidDrive::Displacement); // fixed: held at 0
+  EXPECT_EQ(b.drives[0].value, 0.0);
+  EXPECT_EQ(b.drives[2].drive, io::RigidDrive::Force);
+  EXPECT_EQ(b.drives[2].value, -0.5);
+  EXPECT_FALSE(spec.materials.contains("plate")); // no elements: not a material of the mesh
+}
+
+TEST(FebRigid, RefusesRotationsAndUnknownConditions) {
+  expect_contains(error_of(with_rigid_body(R"(<Rigid>
+  <rigid_bc type="rigid_fixed"><rb>plate</rb><Rx_dof>1</Rx_dof></rigid_bc>
+</Rigid>)")),
+                  {"bad.feb:19: febio_spec/Boundary/bc[@type='rigid'][@name='glue']: ",
+                   "trifem's rigid bodies translate only"});
+  expect_contains(
+      error_of(with_rigid_body(R"(<Rigid>
+  <rigid_bc type="rigid_rotation"><rb>plate</rb></rigid_bc>
+</Rigid>)")),
+      {"febio_spec/Rigid/rigid_bc[@type='rigid_rotation']/@type: ", "is not supported"});
+  expect_contains(error_of(with_rigid_body(R"(<Rigid>
+  <rigid_load type="rigid_force"><rb>bone</rb><dof>Rz</dof><value>1</value></rigid_load>
+</Rigid>)")),
+                  {"/rb: ", "'bone' is not a material of type 'rigid body'"});
 }

@@ -286,3 +286,32 @@ TEST(FebioTestSuite, Bp16BiphasicContactCreepsTowardsTheHolmesMowStretch) {
   report("bp16", "top displacement at 10000 s [mm]", u, (a - 1.0) * H);
   EXPECT_NEAR(u, (a - 1.0) * H, 0.01 * std::abs((a - 1.0) * H));
 }
+
+// bp22: two biphasic columns (neo-Hookean, nu = 0) in sliding-biphasic contact, loaded through a
+// rigid body ("rigid body" material attached to the top nodes, rotations fixed) by a creep force
+// of 0.2 N (to 10 000 s). The columns start overlapping by 0.001, which the contact closes: the
+// top moves by s H - (extent of the mesh), H the sum of the column heights, s the confined
+// stretch at 0.2 MPa.
+TEST(FebioTestSuite, Bp22RigidBodyCreepsTowardsTheNeoHookeanStretch) {
+  SUITE_FILE(file, "bp22.feb");
+  const SuiteRun r = run(file);
+  ASSERT_TRUE(r.report.success) << r.report.failure;
+  const model::Model& m = *r.model;
+  ASSERT_EQ(r.spec.rigid_bodies.size(), 1u);
+  EXPECT_EQ(r.spec.rigid_bodies[0].components, std::vector<io::Component>{2});
+  Real H = 0.0;
+  for (const auto& [part, material] : r.spec.meshes.at(0).materials) { // the two columns
+    Real lo = 1e300, hi = -1e300;
+    for (Index c : m.mesh.cell_block(part))
+      for (Index n : m.mesh.cell(c)) {
+        lo = std::min(lo, m.mesh.node(n).z());
+        hi = std::max(hi, m.mesh.node(n).z());
+      }
+    H += hi - lo;
+  }
+  const Real s = 0.5 * (-0.4 + std::sqrt(0.16 + 4.0)); // mu (s - 1/s) = -0.2, mu = 0.5
+  const Real expected = s * H - extent(m, 2);
+  const Real u = mean_of(m, m.fields.u, end_nodes(m, 2, 1), 2);
+  report("bp22", "rigid body displacement at 10000 s [mm]", u, expected);
+  EXPECT_NEAR(u, expected, 0.01 * std::abs(expected));
+}

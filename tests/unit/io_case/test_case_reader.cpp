@@ -617,7 +617,7 @@ const std::string kSolidTable = "\n[materials.cart.solid]\ntype = \"neo-hookean\
 const std::vector<BadCase> kMixtureBadCases = {
     {"bath_without_ions",
      kBase + kGel + "\n[[boundary.bath]]\nsurface = \"block.xmax\"\nconcentration = 1e-5\n",
-     {"boundary.bath[1]", "a bath needs a triphasic material"}},
+     {"boundary.bath[1].concentration", "a bath concentration needs a triphasic material"}},
     {"bath_zero_concentration",
      kBase + kCartilage + "\n[[boundary.bath]]\nsurface = \"block.xmax\"\nconcentration = 0.0\n",
      {"boundary.bath[1].concentration = 0", "out of range"}},

@@ -20,7 +20,6 @@ void check_supported(const CaseSpec& spec) {
     TRIFEM_CHECK(!unsupported, "{}: writing this to a TOML case is not supported yet", what);
   };
   refuse(!spec.meshes.empty(), "inline meshes (write them with write_case)");
-  refuse(!spec.rigid_bodies.empty(), "rigid bodies ([[rigid_body]])");
   refuse(spec.is_explicit() || spec.has_explicit_step(), "dynamic-explicit analyses");
 }
 
@@ -175,6 +174,26 @@ void write_contacts(const CaseSpec& spec, TomlText& t) {
   }
 }
 
+/// [[rigid_body]]: the tied components, each driven one with its table (free ones have none).
+void write_rigid_bodies(const CaseSpec& spec, TomlText& t) {
+  for (const RigidBodySpec& b : spec.rigid_bodies) {
+    t.header("[[rigid_body]]");
+    t.string("name", b.name);
+    t.string("set", b.set);
+    t.raw("components", components(b.components));
+    for (Component k : b.components) {
+      const RigidComponentSpec& d = b.drives[k];
+      if (d.drive == RigidDrive::Free)
+        continue;
+      std::vector<std::pair<std::string, std::string>> entries = {
+          {d.drive == RigidDrive::Force ? "force" : "displacement", TomlText::number(d.value)}};
+      if (!d.curve.empty())
+        entries.emplace_back("curve", TomlText::quoted(d.curve));
+      t.inline_table(kAxes[k], entries);
+    }
+  }
+}
+
 /// [analysis] of a mixture model, when it differs from the defaults (quasi-static analyses only:
 /// check_supported refuses the others).
 void write_analysis(const CaseSpec& spec, TomlText& t) {
@@ -298,6 +317,7 @@ std::string case_toml(const CaseSpec& spec) {
   write_curves(spec, t);
   write_boundary(spec, t);
   write_contacts(spec, t);
+  write_rigid_bodies(spec, t);
   write_analysis(spec, t);
   write_electrochemistry(spec, t);
   write_time(spec, t);

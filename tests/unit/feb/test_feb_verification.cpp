@@ -3,6 +3,7 @@
 // their sources) and compared with independent answers: closed forms of homogeneous uniaxial
 // states for the solids, the confined-compression ramp-relaxation series for a biphasic column.
 #include "exact_solutions.hpp"
+#include "feb_run.hpp"
 #include "trifem/analysis/case_file.hpp"
 #include "trifem/analysis/run.hpp"
 #include "trifem/feb/feb_reader.hpp"
@@ -23,29 +24,10 @@ namespace {
 
 const std::filesystem::path kData = TRIFEM_FEB_DATA_DIR;
 
-struct FebRun {
-  io::CaseSpec spec;
-  std::unique_ptr<model::Model> model;
-  solver::RunReport report;
-};
+using test::FebRun;
 
-/// Builds the model of `spec` and runs all its steps, calling `observer` after every step.
 FebRun run(io::CaseSpec spec, const std::function<void(const model::Model&, Real)>& observer = {}) {
-  FebRun r;
-  r.spec = std::move(spec);
-  r.model = model::build_model(r.spec);
-  solver::NewtonSolver newton(analysis::newton_settings(r.spec.solver),
-                              linalg::make_linear_solver(r.spec.solver.linear_solver));
-  solver::Linearization initial;
-  r.model->problem->linearize(initial, false);
-  r.report = analysis::run_steps(
-      r.spec, *r.model, newton,
-      [&](const solver::StepInfo& info) {
-        if (observer)
-          observer(*r.model, info.time);
-      },
-      [](const solver::StepController&) {});
-  return r;
+  return test::run_feb_case(std::move(spec), observer);
 }
 
 /// Sum of the residual (reaction) at one displacement component of a node set.

@@ -4,6 +4,7 @@
 // so they are not stored here: set TRIFEM_FEBIO_TESTSUITE to the folder that holds them (e.g.
 // a checkout's Verify/); without it these tests are skipped. Results: docs/verification.md.
 #include "exact_solutions.hpp"
+#include "feb_run.hpp"
 #include "trifem/analysis/case_file.hpp"
 #include "trifem/analysis/run.hpp"
 #include "trifem/linalg/linear_solver.hpp"
@@ -36,30 +37,11 @@ std::filesystem::path suite_file(const std::string& name) {
     GTEST_SKIP() << "TRIFEM_FEBIO_TESTSUITE is not set (FEBio's TestSuite/Verify folder)";         \
   ASSERT_TRUE(std::filesystem::exists(var)) << var
 
-/// A run of a .feb file with an observer after every step.
-struct SuiteRun {
-  io::CaseSpec spec;
-  std::unique_ptr<model::Model> model;
-  solver::RunReport report;
-};
+using SuiteRun = test::FebRun;
 
 SuiteRun run(const std::filesystem::path& file,
              const std::function<void(const model::Model&, Real)>& observer = {}) {
-  SuiteRun r;
-  r.spec = analysis::read_case_file(file);
-  r.model = model::build_model(r.spec);
-  solver::NewtonSolver newton(analysis::newton_settings(r.spec.solver),
-                              linalg::make_linear_solver(r.spec.solver.linear_solver));
-  solver::Linearization initial;
-  r.model->problem->linearize(initial, false);
-  r.report = analysis::run_steps(
-      r.spec, *r.model, newton,
-      [&](const solver::StepInfo& info) {
-        if (observer)
-          observer(*r.model, info.time);
-      },
-      [](const solver::StepController&) {});
-  return r;
+  return test::run_feb_case(analysis::read_case_file(file), observer);
 }
 
 /// The nodes at the largest (end = +1) or smallest (end = -1) coordinate along `axis`.

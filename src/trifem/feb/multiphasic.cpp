@@ -142,8 +142,8 @@ Real osmotic_scale(const Reader& r, const std::array<Real, 3>& v) {
   return r.chem.R * r.chem.T * (std::abs(v[1]) + std::abs(v[2]));
 }
 
-const char* kSlotNames[3] = {"effective fluid pressure", "cation concentration",
-                             "anion concentration"};
+constexpr const char* kSlotNames[3] = {"effective fluid pressure", "cation concentration",
+                                       "anion concentration"};
 
 /// The drained nodes of a triphasic model: p~, c~+ and c~- prescribed together; the bath
 /// they define (one for the model) sets trifem's reference bath.
@@ -246,7 +246,7 @@ void check_initial(Reader& r) {
                    fmt::format("initial {} {}: trifem starts a mixture in Donnan equilibrium "
                                "with its bath, where it is {:.6g}",
                                kSlotNames[k], v, bath[k]));
-      if (first && !source && mixture[n])
+      if (first && !source && mixture[n] && std::abs(bath[k]) > 1e-3 * scale)
         r.doc.fail(first->bc, fmt::format("the initial {} is not given at every node of the "
                                           "mixture (FEBio starts the others at 0): trifem "
                                           "starts a mixture in Donnan equilibrium with its bath",

@@ -257,16 +257,6 @@ void check_load_children(const Reader& r, pugi::xml_node load,
   }
 }
 
-/// True if value x curve is 0 at every time (a load written but not applied).
-bool always_zero(const Reader& r, Real value, const std::string& curve) {
-  if (value == 0.0 || curve.empty())
-    return value == 0.0;
-  for (const auto& p : r.spec.curves.at(curve).points)
-    if (p.second != 0.0)
-      return false;
-  return true;
-}
-
 /// <surface_load type="normal_traction">: FEBio's traction normal to a mixture's surface
 /// (positive pulls). The mixture traction (effective = 0) is a follower pressure -traction; the
 /// traction on the solid alone (effective = 1) is accepted only when it is zero throughout.
@@ -279,7 +269,7 @@ std::optional<io::PressureSpec> normal_traction(Reader& r, pugi::xml_node load) 
   p.curve = r.curve_of(value);
   const pugi::xml_node effective = load.child("effective");
   if (effective && flag(r, effective)) {
-    if (!always_zero(r, p.value, p.curve))
+    if (!r.always_zero(p.value, p.curve))
       r.doc.fail(effective, "an effective normal traction (on the solid alone) is not supported: "
                             "trifem's surface loads act on the mixture (effective = 0)");
     r.warn(load, "an effective normal traction that is zero at every time is ignored");

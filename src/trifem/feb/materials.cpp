@@ -147,6 +147,21 @@ void permeability(const Reader& r, pugi::xml_node node, material::ParameterValue
   }
 }
 
+/// The solid and phi0 every mixture needs, and its parameters validated by trifem's schema
+/// (errors located at the material element).
+void validate_mixture(const Reader& r, pugi::xml_node node, io::MaterialSpec& m) {
+  if (!m.solid)
+    r.doc.fail(node, fmt::format("a {} material needs a <solid>", m.type));
+  if (!m.parameters.contains("phi_s0"))
+    r.doc.fail(node, fmt::format("a {} material needs <phi0> (the solid volume fraction)", m.type));
+  try {
+    m.parameters =
+        material::validate_mixture_parameters(m.type == "triphasic", m.parameters, m.type);
+  } catch (const InputError& e) {
+    r.doc.fail(node, e.what());
+  }
+}
+
 /// A biphasic material: solid, permeability and solid volume fraction.
 io::MaterialSpec biphasic(const Reader& r, pugi::xml_node node) {
   io::MaterialSpec m;
@@ -168,15 +183,7 @@ io::MaterialSpec biphasic(const Reader& r, pugi::xml_node node) {
                                 "phi0, solid, permeability, fluid_density, tau)",
                                 name));
   }
-  if (!m.solid)
-    r.doc.fail(node, "a biphasic material needs a <solid>");
-  if (!m.parameters.contains("phi_s0"))
-    r.doc.fail(node, "a biphasic material needs <phi0> (the solid volume fraction)");
-  try {
-    m.parameters = material::validate_mixture_parameters(false, m.parameters, "biphasic");
-  } catch (const InputError& e) {
-    r.doc.fail(node, e.what());
-  }
+  validate_mixture(r, node, m);
   return m;
 }
 
@@ -269,17 +276,9 @@ io::MaterialSpec triphasic(Reader& r, pugi::xml_node node, const std::string& na
     r.doc.fail(node, fmt::format("a triphasic material needs two <solute>s (the cation and the "
                                  "anion), found {}",
                                  solutes));
-  if (!m.solid)
-    r.doc.fail(node, "a triphasic material needs a <solid>");
-  if (!m.parameters.contains("phi_s0"))
-    r.doc.fail(node, "a triphasic material needs <phi0> (the solid volume fraction)");
   if (!m.parameters.contains("fixed_charge"))
     m.parameters["fixed_charge"] = 0.0;
-  try {
-    m.parameters = material::validate_mixture_parameters(true, m.parameters, "triphasic");
-  } catch (const InputError& e) {
-    r.doc.fail(node, e.what());
-  }
+  validate_mixture(r, node, m);
   return m;
 }
 

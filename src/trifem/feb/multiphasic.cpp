@@ -67,14 +67,6 @@ void read_solutes(Reader& r, pugi::xml_node solutes) {
   }
 }
 
-/// True if value x curve of a condition is 0 at every time.
-bool always_zero(const Reader& r, const EffectiveCondition& c) {
-  if (c.value == 0.0 || c.curve.empty())
-    return c.value == 0.0;
-  const auto& points = r.spec.curves.at(c.curve).points;
-  return std::all_of(points.begin(), points.end(), [](const auto& p) { return p.second == 0.0; });
-}
-
 /// The value of a condition (value x curve) at time t, with FEBio's interpolation.
 Real value_at(const Reader& r, const EffectiveCondition& c, Real t) {
   if (c.curve.empty())
@@ -205,7 +197,7 @@ void map_biphasic_baths(Reader& r) {
   for (const EffectiveCondition& c : r.effective) {
     if (c.charge != 0)
       r.doc.fail(c.bc, "a prescribed concentration needs a triphasic material");
-    if (!always_zero(r, c)) {
+    if (!r.always_zero(c.value, c.curve)) {
       r.pressure_baths.push_back(&c);
       continue;
     }

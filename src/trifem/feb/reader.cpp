@@ -3,6 +3,7 @@
 
 #include "trifem/core/log.hpp"
 
+#include <algorithm>
 #include <fmt/format.h>
 
 namespace trifem::feb::detail {
@@ -37,6 +38,13 @@ std::string Reader::curve_of(pugi::xml_node node) const {
              fmt::format("load controller {} is not defined (defined: {})", lc.value(),
                          names_of(curve_by_id)));
   return it->second;
+}
+
+bool Reader::always_zero(Real value, const std::string& curve) const {
+  if (value == 0.0 || curve.empty())
+    return value == 0.0;
+  const auto& points = spec.curves.at(curve).points;
+  return std::all_of(points.begin(), points.end(), [](const auto& p) { return p.second == 0.0; });
 }
 
 int Electrochemistry::charge(const Document& doc, pugi::xml_node node,

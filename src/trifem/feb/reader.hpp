@@ -88,6 +88,8 @@ struct Reader {
   void warn(pugi::xml_node node, const std::string& what);
   /// The curve name of the attribute lc of `node` ("" without one).
   std::string curve_of(pugi::xml_node node) const;
+  /// True if value x curve (a curve name, "" for none) is 0 at every time.
+  bool always_zero(Real value, const std::string& curve) const;
   /// The node set named by the attribute `attribute` ("@surface:S" names the nodes of S).
   std::string node_set(pugi::xml_node node, const char* attribute = "node_set") const;
   /// The surface named by the attribute `attribute`.

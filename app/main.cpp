@@ -65,6 +65,13 @@ int main(int argc, char** argv) {
                 "write a restart file with every VTU state (as [output] restart = true)");
   auto* check = cli.add_subcommand("check", "validate a case without solving");
   check->add_option("case", case_file, "case file (.toml, or an FEBio .feb file)")->required();
+  analysis::Refinement refinement;
+  for (CLI::App* command : {run, check}) {
+    command->add_option("--refine-mesh", refinement.mesh_levels,
+                        "split every cell into eight this many times (mesh convergence)");
+    command->add_option("--refine-time", refinement.time_levels,
+                        "halve the time steps this many times (time-step convergence)");
+  }
   std::string converted;
   auto* convert = cli.add_subcommand("convert", "write a case as a TOML case and a Gmsh mesh");
   convert->add_option("case", case_file, "case file (an FEBio .feb file, or .toml)")->required();
@@ -90,7 +97,8 @@ int main(int argc, char** argv) {
         log::info("wrote {}", file.string());
       return static_cast<int>(analysis::kSuccess);
     }
-    const io::CaseSpec spec = analysis::read_case_file(case_file);
+    io::CaseSpec spec = analysis::read_case_file(case_file);
+    analysis::refine_case(spec, refinement);
     if (check->parsed())
       return analysis::check_case(spec);
     interrupt::install_handler(); // Ctrl-C ends the run cleanly, with its summary

@@ -121,10 +121,11 @@ std::pair<int, int> dofs_per_node_and_cell(const CaseSpec& spec) {
 
 ModelSize estimate_size(const CaseSpec& spec) {
   ModelSize m;
+  const Real split = std::ldexp(1.0, spec.mesh_refinement); // [mesh] refine: divisions x 2^L
   for (const auto& b : spec.boxes) {
-    const auto& n = b.box.divisions;
-    m.nodes += Real(n[0] + 1.0) * Real(n[1] + 1.0) * Real(n[2] + 1.0);
-    m.cells += Real(n[0]) * Real(n[1]) * Real(n[2]);
+    const Vec3 n = split * Vec3(b.box.divisions[0], b.box.divisions[1], b.box.divisions[2]);
+    m.nodes += (n[0] + 1.0) * (n[1] + 1.0) * (n[2] + 1.0);
+    m.cells += n[0] * n[1] * n[2];
   }
   const auto [per_node, per_cell] = dofs_per_node_and_cell(spec);
   const Real dn = per_node, dc = per_cell;
@@ -179,7 +180,11 @@ void check_model_size(const Table& root, const CaseSpec& spec) {
     return;
   const auto [path, node] = largest_box(root, spec);
   const std::string size =
-      fmt::format("the boxes make a model of {:.4g} nodes and {:.4g} cells, about {:.4g} equations",
+      fmt::format("the boxes{} make a model of {:.4g} nodes and {:.4g} cells, about {:.4g} "
+                  "equations",
+                  spec.mesh_refinement > 0
+                      ? fmt::format(" (refined {} times by mesh.refine)", spec.mesh_refinement)
+                      : "",
                   m.nodes, m.cells, m.equations);
   if (too_many)
     fail(node, path, fmt::format("{}, more than the {} a model can have", size, INT_MAX));

@@ -478,7 +478,8 @@ GmshMeshSpec read_gmsh(const Table& t, const CaseSpec& spec) {
 
 void read_mesh(const Table& root, CaseSpec& spec) {
   if (const auto mesh = root.table("mesh")) {
-    mesh->allow({"box", "gmsh"});
+    mesh->allow({"box", "gmsh", "refine"});
+    spec.mesh_refinement = mesh->integer("refine", 0, 0, kMaxMeshRefinement);
     for (const Table& t : mesh->tables("box"))
       spec.boxes.push_back(read_box(t, spec));
     for (const Table& t : mesh->tables("gmsh"))

@@ -273,6 +273,9 @@ struct ExplicitSpec {
   Real constraint_tolerance = 1e-11;   ///< max_e |Ψ_e − V_e Λ_e/α| / V_e that ends it
 };
 
+/// Most levels of [mesh] refine (each multiplies the cells by eight).
+inline constexpr int kMaxMeshRefinement = 6;
+
 /// Most steps a run may need: end_time / (largest step) above this is refused (by the reader,
 /// and by the explicit analysis once its stability estimate is known).
 inline constexpr Real kMaxSteps = 1e8;
@@ -370,6 +373,9 @@ struct CaseSpec {
   std::vector<BoxMeshSpec> boxes;
   std::vector<GmshMeshSpec> gmsh;
   std::vector<InlineMeshSpec> meshes; ///< meshes read with the case (not from TOML)
+  /// Uniform refinement levels of the whole mesh ([mesh] refine, or `trifem run --refine-mesh`):
+  /// each level splits every cell into eight (mesh::refine_uniformly).
+  int mesh_refinement = 0;
   std::map<std::string, MaterialSpec> materials;
   std::map<std::string, CurveSpec> curves;
   std::vector<FixedSpec> fixed;

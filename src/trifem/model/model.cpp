@@ -4,6 +4,7 @@
 #include "trifem/core/error.hpp"
 #include "trifem/material/registry.hpp"
 #include "trifem/mesh/gmsh_reader.hpp"
+#include "trifem/mesh/refine.hpp"
 #include "trifem/model/averages.hpp"
 #include "trifem/model/cell_axes.hpp"
 #include "trifem/model/conditions.hpp"
@@ -214,7 +215,7 @@ mesh::Mesh build_mesh(const io::CaseSpec& spec, std::map<std::string, std::strin
     });
   }
   TRIFEM_CHECK(mesh.num_cells() > 0, "mesh: the model has no cells");
-  return mesh;
+  return mesh::refine_uniformly(mesh, spec.mesh_refinement);
 }
 
 std::unique_ptr<Model> build_model(const io::CaseSpec& spec) {

@@ -149,4 +149,35 @@ void FeProblem::reject_step() {
   dofs::prescribed_values(conditions_, time_, target_);
 }
 
+std::vector<Real> FeProblem::step_change() const {
+  std::vector<Real> change(scales_.size(), 0.0);
+  for (Index eq = 0; eq < map_.num_equations(); ++eq) {
+    const Index d = map_.dof_of_equation(eq);
+    Real& c = change[equation_fields_[eq]];
+    c = std::max(c, std::abs(x_[d] - x_old_[d]));
+  }
+  return change;
+}
+
+void FeProblem::mark_committed() {
+  mark_.x = x_old_;
+  mark_.time = time_old_;
+  mark_.histories.clear();
+  for (const auto& t : terms_)
+    mark_.histories.push_back(t->history());
+}
+
+void FeProblem::return_to_mark() {
+  for (std::size_t k = 0; k < terms_.size(); ++k) {
+    terms_[k]->reject();
+    terms_[k]->restore_history(mark_.histories[k]);
+  }
+  x_ = mark_.x;
+  sync();
+  x_old_ = x_;
+  x_old_global_ = x_global_;
+  time_ = time_old_ = mark_.time;
+  dofs::prescribed_values(conditions_, time_, target_);
+}
+
 } // namespace trifem::assembly

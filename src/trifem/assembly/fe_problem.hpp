@@ -79,6 +79,9 @@ public:
   std::string step_rejection() const override;
   void commit_step() override;
   void reject_step() override;
+  std::vector<Real> step_change() const override;
+  void mark_committed() override;
+  void return_to_mark() override;
 
   /// Current state (all DOFs, global components) and time.
   const Vector& state() const { return x_global_; }
@@ -120,6 +123,12 @@ private:
   Vector x_global_, x_old_global_;
   Real time_ = 0.0, time_old_ = 0.0, dt_ = 0.0;
   int pattern_id_ = 0;
+  /// The committed state remembered by mark_committed().
+  struct Mark {
+    Vector x;
+    Real time = 0.0;
+    std::vector<std::vector<double>> histories; ///< per term
+  } mark_;
 };
 
 } // namespace trifem::assembly

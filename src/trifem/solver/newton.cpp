@@ -174,6 +174,10 @@ SolveStatus NewtonSolver::line_search(NonlinearProblem& problem, const Vector& d
 }
 
 NewtonReport NewtonSolver::solve(NonlinearProblem& problem) {
+  return solve(problem, {});
+}
+
+NewtonReport NewtonSolver::solve(NonlinearProblem& problem, const std::vector<Real>& reference) {
   NewtonReport report;
   Linearization lin;
   auto start = Clock::now();
@@ -192,7 +196,8 @@ NewtonReport NewtonSolver::solve(NonlinearProblem& problem) {
   const std::vector<Real> c0 = field_norms(problem, lin.residual + lin.constraint_rhs, false);
   reference_.assign(scales.size(), 0.0);
   for (std::size_t f = 0; f < scales.size(); ++f)
-    reference_[f] = std::max({r0[f], c0[f], settings_.absolute_floor * scales[f].residual});
+    reference_[f] = std::max({r0[f], c0[f], settings_.absolute_floor * scales[f].residual,
+                              f < reference.size() ? reference[f] : 0.0});
 
   Vector dx = Vector::Zero(problem.num_equations());
   Real step = 1.0;

@@ -47,6 +47,12 @@ class NewtonSolver {
 public:
   NewtonSolver(NewtonSettings settings, std::unique_ptr<linalg::LinearSolver> linear_solver);
   NewtonReport solve(NonlinearProblem& problem);
+  /// As solve, with the reference residual of each field at least `reference` (the load scale
+  /// of an earlier solve under the same loads, e.g. reference() after it): a start already
+  /// within the tolerance of that scale converges without an iteration.
+  NewtonReport solve(NonlinearProblem& problem, const std::vector<Real>& reference);
+  /// The per-field reference residual of the last solve (the largest residual it saw).
+  const std::vector<Real>& reference() const { return reference_; }
   const PhaseTimes& times() const { return times_; }
   const NewtonSettings& settings() const { return settings_; }
 

@@ -75,6 +75,13 @@ public:
   virtual void commit_step() = 0;
   /// Returns to the state at the beginning of the step (after a failure).
   virtual void reject_step() = 0;
+  /// Per field (as field_scales()), the largest change of an unknown since the last commit.
+  virtual std::vector<Real> step_change() const = 0;
+  /// Remembers the committed state (unknowns, time and history), for a step made of several
+  /// committed sub-steps (a steady-state step) that must be undone as a whole if one fails.
+  virtual void mark_committed() = 0;
+  /// Returns to the state remembered by mark_committed() (as committed state).
+  virtual void return_to_mark() = 0;
 };
 
 } // namespace trifem::solver

@@ -19,8 +19,9 @@ struct StepSettings {
   Real cutback = 0.5;            ///< factor after a failed step
   int target_iterations = 6;     ///< a step is easy if it converged in at most this many iterations
   std::vector<Real> must_points; ///< times every step sequence must hit exactly
-  /// > 0: a steady-state step; the problem advances each time by a backward-Euler step of this
-  /// pseudo-time step (so long that the transport reaches its steady state), not by dt.
+  /// > 0: a steady-state step; the problem reaches each time by backward-Euler pseudo-steps of
+  /// this size (long against the transport times), repeated from the last until one changes no
+  /// unknown by more than the Newton increment tolerance (run_time_loop), not by dt.
   Real steady_dt = 0.0;
 };
 

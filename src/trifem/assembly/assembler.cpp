@@ -11,20 +11,28 @@ namespace {
 /// Colours with fewer elements are assembled by one thread (a parallel region costs more).
 constexpr Index kMinParallelElements = 32;
 
-/// Adds value at (row, col) of a compressed column-major matrix whose pattern contains it.
-inline void add_entry(SparseMatrix& A, Index row, Index col, Real value) {
-  const Index* begin = A.innerIndexPtr() + A.outerIndexPtr()[col];
-  const Index* end = A.innerIndexPtr() + A.outerIndexPtr()[col + 1];
-  const Index* it = std::lower_bound(begin, end, row);
-  TRIFEM_ASSERT(it != end && *it == row, "entry ({}, {}) is not in the pattern", row, col);
-  A.valuePtr()[it - A.innerIndexPtr()] += value;
+/// The entry of `row` in the sorted row indices [from, end) of a column whose pattern contains
+/// it, found by galloping forward from `from`: the rows of an element are scattered in
+/// ascending order, so consecutive ones are usually a few entries apart (a node's DOFs are
+/// consecutive equations).
+inline const Index* find_row(const Index* from, const Index* end, Index row) {
+  std::ptrdiff_t step = 1;
+  const Index* lo = from;
+  while (lo + step < end && lo[step] <= row) {
+    lo += step;
+    step *= 2;
+  }
+  const Index* it = std::lower_bound(lo, std::min(lo + step, end), row);
+  TRIFEM_ASSERT(it != end && *it == row, "row {} is not in the pattern", row);
+  return it;
 }
 
 /// Thread-private buffers of one element evaluation.
 struct Scratch {
   physics::LocalVector r;
   physics::LocalMatrix K;
-  std::vector<Index> rows;
+  std::vector<Index> rows;  ///< equation of each local DOF (-1: constrained)
+  std::vector<Index> order; ///< the local DOFs with an equation, by ascending equation
 };
 
 /// Rotates an element contribution to the local frames of its rotated nodal DOFs:
@@ -60,6 +68,8 @@ void rotate(const dofs::NodalFrames& frames, std::span<const Index> dofs, Scratc
   }
 }
 
+/// Adds the element residual and tangent to the system. Each column of the tangent is added
+/// along the matrix column in one forward walk, its rows taken in ascending order.
 void scatter(const dofs::DofMap& map, std::span<const Index> dofs, Scratch& s, AssembledSystem& out,
              bool with_jacobian) {
   const Index n = static_cast<Index>(dofs.size());
@@ -68,15 +78,29 @@ void scatter(const dofs::DofMap& map, std::span<const Index> dofs, Scratch& s, A
   if (!with_jacobian)
     return;
   s.rows.resize(n);
-  for (Index i = 0; i < n; ++i)
+  s.order.clear();
+  for (Index i = 0; i < n; ++i) {
     s.rows[i] = map.equation(dofs[i]);
+    if (s.rows[i] >= 0)
+      s.order.push_back(i);
+  }
+  std::sort(s.order.begin(), s.order.end(),
+            [&](Index a, Index b) { return s.rows[a] < s.rows[b]; });
   for (Index j = 0; j < n; ++j) {
-    const Index eq = map.equation(dofs[j]);
+    const Index eq = s.rows[j];
     SparseMatrix& A = eq >= 0 ? out.Kff : out.Kfc;
     const Index col = eq >= 0 ? eq : map.constrained_index(dofs[j]);
-    for (Index i = 0; i < n; ++i)
-      if (s.rows[i] >= 0 && s.K(i, j) != 0.0)
-        add_entry(A, s.rows[i], col, s.K(i, j));
+    const Index* inner = A.innerIndexPtr();
+    const Index* at = inner + A.outerIndexPtr()[col];
+    const Index* end = inner + A.outerIndexPtr()[col + 1];
+    Real* values = A.valuePtr();
+    for (Index i : s.order) {
+      const Real v = s.K(i, j);
+      if (v == 0.0)
+        continue;
+      at = find_row(at, end, s.rows[i]);
+      values[at - inner] += v;
+    }
   }
 }
 

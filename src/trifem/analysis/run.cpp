@@ -160,7 +160,8 @@ void log_linear_solver(const std::string& name, Index equations) {
   if (name != "auto")
     log::info("  linear solver: {}", name);
   else
-    log::info("  linear solver: auto, {} for {} equations (sparselu below {})",
+    log::info("  linear solver: auto, {} for {} equations (sparselu below {}, unless its "
+              "factors fill up)",
               equations < linalg::kAutoSparseLuLimit ? "sparselu" : "mumps reusing factorizations",
               equations, linalg::kAutoSparseLuLimit);
 }

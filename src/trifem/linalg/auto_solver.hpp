@@ -15,8 +15,19 @@ namespace trifem::linalg {
 /// the indentation example (16 532, 53 212 and 93 468 equations: 3.5×, 5.1× and 7.7×).
 constexpr Index kAutoSparseLuLimit = 8000;
 
+/// Below kAutoSparseLuLimit, SparseLU's first factorization decides: from this many equations,
+/// factors with at least kAutoFillRatio times the matrix's nonzeros (a 2-D or 3-D model) hand
+/// the system to MUMPS reusing its factorizations for the rest of the run. Measured fill and
+/// whole-run times (SparseLU / MUMPS): 1-D columns of 900 and 2 700 equations, fill 1.4 and
+/// 1.1, 0.62 / 1.12 s and 1.69 / 2.70 s; the 2-D sliding_layers example, 3 149 equations, fill
+/// 3.4, 76 / 43 s (29 s reusing factorizations, what "auto" now takes); a triphasic block of
+/// 4 205 equations, fill 7.3, 2.9 / 1.0 s (1.6 s for "auto", after one SparseLU factorization).
+constexpr Index kAutoFillCheckRows = 2000;
+constexpr Real kAutoFillRatio = 3.0;
+
 /// Chooses the backend in analyze_pattern from the number of rows (again for every new
-/// pattern); name() is "auto (sparselu)" or "auto (mumps)" once chosen.
+/// pattern), and from SparseLU's fill after its first factorization; name() is
+/// "auto (sparselu)" or "auto (mumps)" once chosen.
 std::unique_ptr<LinearSolver> make_auto_solver();
 
 } // namespace trifem::linalg

@@ -4,6 +4,8 @@
 
 #include "trifem/linalg/linear_solver.hpp"
 
+#include <cstdint>
+
 namespace trifem::linalg {
 
 /// Wraps an Eigen sparse solver type `Lu` under the backend name `name`. An empty system
@@ -40,6 +42,11 @@ public:
     return false;
   }
   std::string name() const override { return name_; }
+  std::int64_t factor_nonzeros() const override {
+    if constexpr (requires(const Lu& lu) { lu.nnzL(); })
+      return empty_ ? 0 : static_cast<std::int64_t>(lu_.nnzL()) + lu_.nnzU();
+    return 0;
+  }
   LinearSolverFailure failure() const override { return failure_; }
 
 protected:

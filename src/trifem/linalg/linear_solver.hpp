@@ -5,6 +5,7 @@
 
 #include "trifem/core/types.hpp"
 
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -37,6 +38,9 @@ public:
   }
   /// Iterations of the last solve of an iterative backend (0 for a direct one).
   virtual int last_iterations() const { return 0; }
+  /// Nonzeros of the factors of the last factorization of a direct backend that reports them
+  /// (0 otherwise).
+  virtual std::int64_t factor_nonzeros() const { return 0; }
   /// Backend name ("umfpack", "sparselu", "mumps", "auto (sparselu)", ...).
   virtual std::string name() const = 0;
   /// Why the last operation failed (empty reason if it succeeded).

@@ -116,6 +116,53 @@ TEST(LinearSolver, AutoTakesSparseLuForSmallAndMumpsForLargeSystems) {
   EXPECT_EQ(chosen, "auto (mumps)");
 }
 
+// A 3-D stencil (the 7-point Laplacian on a 14^3 grid, 2 744 equations) fills SparseLU's
+// factors far beyond kAutoFillRatio: "auto" hands it to MUMPS after the first factorization and
+// keeps MUMPS for the next pattern of the run; a 1-D system of the same size stays with SparseLU.
+TEST(LinearSolver, AutoHandsHighFillSystemsToMumps) {
+  const Index n = 14, rows = n * n * n;
+  std::vector<Eigen::Triplet<Real>> t;
+  const auto at = [&](Index i, Index j, Index k) { return (k * n + j) * n + i; };
+  for (Index k = 0; k < n; ++k)
+    for (Index j = 0; j < n; ++j)
+      for (Index i = 0; i < n; ++i) {
+        const Index r = at(i, j, k);
+        t.emplace_back(r, r, 6.5);
+        if (i > 0)
+          t.emplace_back(r, at(i - 1, j, k), -1.0);
+        if (i + 1 < n)
+          t.emplace_back(r, at(i + 1, j, k), -1.0);
+        if (j > 0)
+          t.emplace_back(r, at(i, j - 1, k), -1.0);
+        if (j + 1 < n)
+          t.emplace_back(r, at(i, j + 1, k), -1.0);
+        if (k > 0)
+          t.emplace_back(r, at(i, j, k - 1), -1.0);
+        if (k + 1 < n)
+          t.emplace_back(r, at(i, j, k + 1), -1.0);
+      }
+  SparseMatrix L(rows, rows);
+  L.setFromTriplets(t.begin(), t.end());
+  ASSERT_GE(rows, linalg::kAutoFillCheckRows);
+  std::string chosen;
+  EXPECT_LT(solve_residual("auto", L, &chosen), 1e-10); // MUMPS reusing: FGMRES to 1e-10
+  EXPECT_EQ(chosen, "auto (mumps)");
+  EXPECT_LT(solve_residual("auto", saddle_point(rows, 4), &chosen), 1e-13);
+  EXPECT_EQ(chosen, "auto (sparselu)");
+
+  auto solver = linalg::make_linear_solver("auto");
+  solver->analyze_pattern(L);
+  ASSERT_TRUE(solver->factorize(L));
+  EXPECT_EQ(solver->name(), "auto (mumps)");
+  const SparseMatrix S = saddle_point(600, 3); // a later, small pattern of the same run
+  solver->analyze_pattern(S);
+  ASSERT_TRUE(solver->factorize(S));
+  Vector x;
+  ASSERT_TRUE(solver->solve(right_hand_side(S.rows()), x));
+  EXPECT_EQ(solver->name(), "auto (mumps)");
+  EXPECT_LT((S * x - right_hand_side(S.rows())).norm(), 1e-10 * right_hand_side(S.rows()).norm());
+}
+
 TEST(LinearSolver, UnknownBackendIsNamedWithTheChoices) {
   try {
     linalg::make_linear_solver("pardiso");

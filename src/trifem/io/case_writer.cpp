@@ -40,6 +40,10 @@ std::string_view interpolation_name(dofs::Interpolation i) {
 constexpr std::string_view kAxes[] = {"x", "y", "z"};
 
 void write_meshes(const CaseSpec& spec, TomlText& t) {
+  if (spec.mesh_refinement > 0) {
+    t.header("[mesh]");
+    t.raw("refine", fmt::format("{}", spec.mesh_refinement));
+  }
   for (const BoxMeshSpec& b : spec.boxes) {
     t.header("[[mesh.box]]");
     t.string("name", b.box.name);

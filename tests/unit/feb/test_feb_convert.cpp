@@ -6,6 +6,7 @@
 #include "trifem/analysis/run.hpp"
 #include "trifem/core/error.hpp"
 #include "trifem/io/case_writer.hpp"
+#include "trifem/model/model.hpp"
 
 #include <gtest/gtest.h>
 
@@ -16,6 +17,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <string>
 
 using namespace trifem;
@@ -129,6 +131,20 @@ TEST(TomlConvertRigid, RigidBodiesReadBackAsWritten) {
   EXPECT_EQ(b.drives[2].drive, io::RigidDrive::Force);
   EXPECT_EQ(b.drives[2].value, -0.25);
   EXPECT_EQ(b.drives[2].curve, body.drives[2].curve);
+  fs::remove_all(dir);
+}
+
+// A refined case is written with its [mesh] refine and reads back to the same refined model.
+TEST(TomlConvertRefined, MeshRefinementReadsBackAsWritten) {
+  io::CaseSpec spec = analysis::read_case_file(kData / "uniaxial_neo_hookean.feb");
+  std::map<std::string, std::string> blocks;
+  const Index cells = model::build_mesh(spec, blocks).num_cells();
+  analysis::refine_case(spec, {.mesh_levels = 1});
+  const fs::path dir = fresh_dir("refined");
+  io::write_case(spec, dir / "case.toml");
+  const io::CaseSpec back = analysis::read_case_file(dir / "case.toml");
+  EXPECT_EQ(back.mesh_refinement, 1);
+  EXPECT_EQ(model::build_mesh(back, blocks).num_cells(), 8 * cells);
   fs::remove_all(dir);
 }
 

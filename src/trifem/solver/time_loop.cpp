@@ -45,7 +45,14 @@ NewtonReport solve_steady(TransientProblem& problem, NewtonSolver& newton, Real 
   std::vector<Real> load_scale;
   for (int k = 1;; ++k) {
     problem.begin_step(t, pseudo_dt);
-    NewtonReport report = newton.solve(problem, load_scale);
+    NewtonReport report;
+    try {
+      report = newton.solve(problem, load_scale);
+    } catch (...) { // e.g. out of memory: leave the step's start as the committed state
+      if (k > 1)
+        problem.return_to_mark();
+      throw;
+    }
     if (k == 1)
       load_scale = newton.reference();
     iterations += report.iterations;

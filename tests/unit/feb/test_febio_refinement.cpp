@@ -4,7 +4,7 @@
 // the file ends before the transient does, the quantity at its end time is compared with the
 // same problem converged under refinement (Richardson extrapolation of the three levels); where
 // the reference is reached exactly, every level reaches it. Skipped without
-// TRIFEM_FEBIO_TESTSUITE (the files are not stored here); about 19 minutes on 2 cores with it.
+// TRIFEM_FEBIO_TESTSUITE (the files are not stored here); about 15 minutes on 2 cores with it.
 // Results: docs/feb.md (FEBio's test problems).
 #include "exact_solutions.hpp"
 #include "febio_suite.hpp"

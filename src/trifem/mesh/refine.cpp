@@ -217,8 +217,10 @@ Mesh refine_uniformly(const Mesh& mesh) {
 
 Mesh refine_uniformly(const Mesh& mesh, int levels) {
   TRIFEM_CHECK(levels >= 0, "mesh refinement: {} levels (expected 0 or more)", levels);
-  Mesh fine = mesh;
-  for (int level = 0; level < levels; ++level)
+  if (levels == 0)
+    return mesh;
+  Mesh fine = refine_uniformly(mesh);
+  for (int level = 1; level < levels; ++level)
     fine = refine_uniformly(fine);
   return fine;
 }

@@ -215,7 +215,9 @@ mesh::Mesh build_mesh(const io::CaseSpec& spec, std::map<std::string, std::strin
     });
   }
   TRIFEM_CHECK(mesh.num_cells() > 0, "mesh: the model has no cells");
-  return mesh::refine_uniformly(mesh, spec.mesh_refinement);
+  if (spec.mesh_refinement > 0) // [mesh] refine: the refined mesh replaces the given one
+    mesh = mesh::refine_uniformly(mesh, spec.mesh_refinement);
+  return mesh;
 }
 
 std::unique_ptr<Model> build_model(const io::CaseSpec& spec) {

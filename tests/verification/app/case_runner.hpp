@@ -21,14 +21,14 @@ struct CaseRun {
   solver::RunReport report;
 };
 
-/// Parses `text` (relative paths resolved against `file`), builds the model and runs it to
-/// time.end_time with the step and Newton settings of `trifem run`, calling `observer` after
-/// every step.
-inline CaseRun
-run_case_text(std::string_view text, const std::filesystem::path& file,
-              const std::function<void(const CaseRun&, const solver::StepInfo&)>& observer = {}) {
+/// Called after every step of a run.
+using CaseObserver = std::function<void(const CaseRun&, const solver::StepInfo&)>;
+
+/// Builds the model of `spec` and runs it to time.end_time with the step and Newton settings
+/// of `trifem run`, calling `observer` after every step.
+inline CaseRun run_case_spec(io::CaseSpec spec, const CaseObserver& observer = {}) {
   CaseRun run;
-  run.spec = io::parse_case(text, file);
+  run.spec = std::move(spec);
   run.model = model::build_model(run.spec);
   solver::NewtonSolver newton(analysis::newton_settings(run.spec.solver),
                               linalg::make_linear_solver(run.spec.solver.linear_solver,
@@ -43,6 +43,12 @@ run_case_text(std::string_view text, const std::filesystem::path& file,
                                          observer(run, info);
                                      });
   return run;
+}
+
+/// Parses `text` (relative paths resolved against `file`) and runs it (run_case_spec).
+inline CaseRun run_case_text(std::string_view text, const std::filesystem::path& file,
+                             const CaseObserver& observer = {}) {
+  return run_case_spec(io::parse_case(text, file), observer);
 }
 
 } // namespace trifem::test

@@ -44,23 +44,17 @@ std::string creep_case(const std::string& divisions, Real end, Real dt_max) {
 }
 
 /// The top displacement (probe "top", z component) after every step, with the step times.
-std::vector<std::pair<Real, Real>> run_top_history(const io::CaseSpec& spec) {
-  const auto model = model::build_model(spec);
-  solver::NewtonSolver newton(analysis::newton_settings(spec.solver),
-                              linalg::make_linear_solver(spec.solver.linear_solver,
-                                                         spec.solver.petsc_options,
-                                                         spec.solver.reuse_factorization));
-  solver::StepController controller(analysis::step_settings(spec));
+std::vector<std::pair<Real, Real>> run_top_history(io::CaseSpec spec) {
   std::vector<std::pair<Real, Real>> history;
-  const model::Probe& top = model->probes.at(0);
-  const solver::RunReport report =
-      solver::run_time_loop(*model->problem, newton, controller, [&](const solver::StepInfo& info) {
+  const test::CaseRun run = test::run_case_spec(
+      std::move(spec), [&](const test::CaseRun& r, const solver::StepInfo& info) {
+        const model::Model& m = *r.model;
         std::vector<double> row;
-        analysis::append_probe_values(*model, analysis::CellEvaluator(*model), top,
-                                      model->problem->state(), row);
+        analysis::append_probe_values(m, analysis::CellEvaluator(m), m.probes.at(0),
+                                      m.problem->state(), row);
         history.emplace_back(info.time, row.at(2));
       });
-  EXPECT_TRUE(report.success);
+  EXPECT_TRUE(run.report.success) << run.report.failure;
   return history;
 }
 

@@ -5,8 +5,13 @@
 #include "trifem/core/error.hpp"
 #include "trifem/core/interrupt.hpp"
 #include "trifem/core/log.hpp"
+#include "trifem/parallel/communicator.hpp"
 
 #include <CLI/CLI.hpp>
+#include <omp.h>
+
+#include <algorithm>
+#include <cstdlib>
 #include <iostream>
 #include <new>
 
@@ -14,21 +19,38 @@ using namespace trifem;
 
 namespace {
 
+/// Prints `line` (one message of a failure) and returns `code`. On several processes, rank 0
+/// prints it once if all failed together (an input error, read by all); a failure of this
+/// process alone is printed with its rank and stops the others (parallel::agree_on_failure).
+int fail(const std::string& line, int code) {
+  if (parallel::agree_on_failure(line))
+    std::cerr << line << '\n';
+  return code;
+}
+
 /// Runs `action`, mapping exceptions to exit codes with one clear message.
 template <class F>
 int guarded(F&& action) {
   try {
     return action();
   } catch (const InputError& e) {
-    std::cerr << "error: " << e.what() << '\n';
-    return analysis::kInvalidInput;
+    return fail(std::string("error: ") + e.what(), analysis::kInvalidInput);
   } catch (const std::bad_alloc&) {
-    std::cerr << "error: out of memory: the model is too large for the memory available\n";
-    return analysis::kAnalysisFailed;
+    return fail("error: out of memory: the model is too large for the memory available",
+                analysis::kAnalysisFailed);
   } catch (const std::exception& e) {
-    std::cerr << "internal error: " << e.what() << '\n';
-    return analysis::kInternalError;
+    return fail(std::string("internal error: ") + e.what(), analysis::kInternalError);
   }
+}
+
+/// Under mpirun without OMP_NUM_THREADS: the cores shared between the processes of a machine
+/// (OMPI_COMM_WORLD_LOCAL_SIZE), so that they do not oversubscribe them.
+void share_cores() {
+  if (!parallel::active() || std::getenv("OMP_NUM_THREADS") != nullptr)
+    return;
+  const char* local = std::getenv("OMPI_COMM_WORLD_LOCAL_SIZE");
+  const int processes = local != nullptr ? std::max(1, std::atoi(local)) : parallel::size();
+  omp_set_num_threads(std::max(1, omp_get_num_procs() / processes));
 }
 
 /// The first argument that is not a flag must be a known command.
@@ -47,6 +69,8 @@ void check_command_name(int argc, char** argv) {
 } // namespace
 
 int main(int argc, char** argv) {
+  parallel::initialize(argc, argv); // under mpirun: one analysis shared by the processes
+  share_cores();
   CLI::App cli{"trifem: finite elements for charged-hydrated soft tissues"};
   cli.set_version_flag("--version", std::string("trifem ") + TRIFEM_VERSION);
   cli.require_subcommand(1);
@@ -87,10 +111,14 @@ int main(int argc, char** argv) {
   } catch (const CLI::Success& e) {
     return cli.exit(e);
   } catch (const CLI::ParseError& e) {
-    std::cerr << "error: " << e.what() << " (see 'trifem --help')\n";
+    if (parallel::is_root())
+      std::cerr << "error: " << e.what() << " (see 'trifem --help')\n";
     return analysis::kUsage;
   }
-  log::configure(quiet ? log::Level::Quiet : verbose ? log::Level::Verbose : log::Level::Normal);
+  log::configure(!parallel::is_root() ? log::Level::Silent
+                 : quiet              ? log::Level::Quiet
+                 : verbose            ? log::Level::Verbose
+                                      : log::Level::Normal);
   return guarded([&] {
     if (convert->parsed()) {
       for (const auto& file : analysis::convert_case(case_file, converted))

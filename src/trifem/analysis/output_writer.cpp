@@ -10,6 +10,7 @@
 #include "trifem/core/error.hpp"
 #include "trifem/core/log.hpp"
 #include "trifem/io/vtu_writer.hpp"
+#include "trifem/parallel/communicator.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -68,17 +69,19 @@ io::UnstructuredGrid volume_grid(const model::Model& model) {
 OutputWriter::OutputWriter(const model::Model& model, const io::OutputSpec& spec,
                            std::filesystem::path directory, Real end_time)
     : model_(model), spec_(spec), directory_(std::move(directory)), end_time_(end_time),
-      next_default_(end_time / io::kDefaultOutputCount) {
+      next_default_(end_time / io::kDefaultOutputCount), writes_files_(parallel::is_root()) {
+  if (model.mixture)
+    balance_ = std::make_unique<MassBalance>(model);
+  if (!writes_files_)
+    return;
   std::error_code ec;
   std::filesystem::create_directories(directory_, ec);
   TRIFEM_CHECK(!ec, "cannot create the output directory {}: {}", directory_.string(), ec.message());
   pvd_ = std::make_unique<io::PvdWriter>(directory_ / "results.pvd");
   cells_ = std::make_unique<CellEvaluator>(model);
   std::vector<std::string> columns = history_columns(model);
-  if (model.mixture) {
-    balance_ = std::make_unique<MassBalance>(model);
+  if (balance_)
     add_body_columns(*balance_, columns);
-  }
   history_ = std::make_unique<io::CsvWriter>(history_file(), columns);
   if (!model.contacts.empty())
     contact_ = std::make_unique<ContactOutput>(model, directory_);
@@ -152,6 +155,11 @@ void OutputWriter::write_vtu(Real time) {
 }
 
 void OutputWriter::write_state(Real time) {
+  if (!writes_files_) { // another process writes the files: count the states only
+    ++state_count_;
+    last_state_time_ = time;
+    return;
+  }
   if (spec_.vtu)
     write_vtu(time);
   if (contact_)
@@ -170,8 +178,8 @@ void OutputWriter::write_last_state(Real time) {
 
 void OutputWriter::write(Real time, int step, Real dt, int iterations, bool volume) {
   const auto start = std::chrono::steady_clock::now();
-  const auto row = history_row(time, step, dt, iterations);
-  history_->write_row(row);
+  if (writes_files_)
+    history_->write_row(history_row(time, step, dt, iterations));
   if (volume)
     write_state(time);
   seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

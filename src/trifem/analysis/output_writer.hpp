@@ -39,7 +39,7 @@ public:
   bool is_output_time(Real time);
 
   const std::filesystem::path& directory() const { return directory_; }
-  std::filesystem::path pvd_file() const { return pvd_->file(); }
+  std::filesystem::path pvd_file() const { return directory_ / "results.pvd"; }
   /// The collection of the VTU files, for a later part of the run to continue (a mixed run).
   io::PvdWriter& pvd() { return *pvd_; }
   /// Output states written so far (the NNNN of the next file).
@@ -69,6 +69,8 @@ private:
   Real last_state_time_ = -1.0;            ///< time of the last output state written
   int vtu_count_ = 0;
   double seconds_ = 0.0;
+  /// False on the processes of a parallel run other than rank 0: they write no file.
+  bool writes_files_ = true;
 };
 
 } // namespace trifem::analysis

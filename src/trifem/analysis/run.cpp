@@ -12,6 +12,7 @@
 #include "trifem/mesh/mesh.hpp"
 #include "trifem/model/model.hpp"
 #include "trifem/model/steps.hpp"
+#include "trifem/parallel/communicator.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -58,9 +59,10 @@ void log_model(const io::CaseSpec& spec, const model::Model& model) {
   log::info("trifem {}  case {}", TRIFEM_VERSION, spec.file.string());
   if (!spec.title.empty())
     log::info("  {}", spec.title);
-  log::info("  mesh: {} nodes, {} hex8 cells; {} equations, {} prescribed DOFs; {} threads",
+  log::info("  mesh: {} nodes, {} hex8 cells; {} equations, {} prescribed DOFs; {} threads{}",
             model.mesh.num_nodes(), model.mesh.num_cells(), model.dofs.num_equations(),
-            model.dofs.num_constrained(), omp_get_max_threads());
+            model.dofs.num_constrained(), omp_get_max_threads(),
+            parallel::active() ? fmt::format(" on each of {} processes", parallel::size()) : "");
   log::info("  scales: length {:.4g} mm, modulus {:.4g} MPa", model.length_scale,
             model.modulus_scale);
   if (model.mixture)
@@ -169,6 +171,8 @@ void log_linear_solver(const std::string& name, Index equations) {
 /// Writes the summary, the final report and the error line; returns the exit code.
 int finish_run(const io::CaseSpec& spec, const std::filesystem::path& output_dir,
                const nlohmann::json& summary_json, const solver::RunReport& run) {
+  if (!parallel::is_root()) // rank 0 writes and reports for all
+    return run.success ? kSuccess : run.interrupted ? interrupted_exit_code() : kAnalysisFailed;
   try {
     write_summary_file(output_dir / "summary.json", summary_json);
   } catch (const OutputError& e) {
@@ -358,6 +362,10 @@ solver::NewtonSettings newton_settings(const io::SolverSpec& s) {
 int run_case(const io::CaseSpec& spec, const std::filesystem::path& output_dir,
              const RunOptions& options) {
   if (spec.is_explicit() || spec.has_explicit_step()) {
+    TRIFEM_CHECK(!parallel::active(),
+                 "{}: the explicit analysis runs on one process; run this case without mpirun "
+                 "(started on {} processes)",
+                 spec.file.string(), parallel::size());
     TRIFEM_CHECK(options.restart_file.empty() && !options.write_restart && !spec.output.restart,
                  "{}: restart files are written and read by quasi-static analyses only{}",
                  spec.file.string(),
@@ -377,9 +385,11 @@ int run_quasi_static_case(const io::CaseSpec& spec, const std::filesystem::path&
     resume = resume_from(options.restart_file, spec, *model);
   const bool write_restarts = options.write_restart || spec.output.restart;
   std::unique_ptr<linalg::LinearSolver> linear_solver = linear_solver_for(spec);
-  start_output_directory(output_dir, spec);
+  if (parallel::is_root()) // rank 0 writes every file of a parallel run
+    start_output_directory(output_dir, spec);
   OutputWriter output(*model, spec.output, output_dir, spec.time.end_time);
-  log::add_file((output_dir / "run.log").string());
+  if (parallel::is_root())
+    log::add_file((output_dir / "run.log").string());
   log_model(spec, *model);
 
   solver::NewtonSolver newton(newton_settings(spec.solver), std::move(linear_solver));
@@ -405,7 +415,7 @@ int run_quasi_static_case(const io::CaseSpec& spec, const std::filesystem::path&
       note_roundoff_floor(*model, info, noted);
       const bool volume = output.is_output_time(info.time) || controller->finished();
       output.write(info.time, info.step, info.dt, info.newton->iterations, volume);
-      if (volume && write_restarts)
+      if (volume && write_restarts && parallel::is_root())
         write_restart(output_dir / fmt::format("restart_{:04d}.bin", output.last_state_index()),
                       *model, {controller->time(), controller->dt(), info.step});
     };

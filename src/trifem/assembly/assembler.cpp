@@ -104,6 +104,37 @@ void scatter(const dofs::DofMap& map, std::span<const Index> dofs, Scratch& s, A
   }
 }
 
+/// The elements of `stencils` that process `rank` assembles: those whose first equation it
+/// owns, and on rank 0 those without an equation (all DOFs prescribed: reactions only).
+std::vector<Index> owned_elements(const Stencils& stencils, const dofs::DofMap& map,
+                                  const std::vector<int>& equation_owner, int rank) {
+  std::vector<Index> mine;
+  for (Index e = 0; e < stencils.size(); ++e) {
+    int owner = 0;
+    for (Index d : stencils.of(e))
+      if (const Index eq = map.equation(d); eq >= 0) {
+        owner = equation_owner[eq];
+        break;
+      }
+    if (owner == rank)
+      mine.push_back(e);
+  }
+  return mine;
+}
+
+/// The stencils of the elements `which` of `stencils`, renumbered 0, 1, ...
+Stencils subset(const Stencils& stencils, const std::vector<Index>& which) {
+  Stencils s;
+  s.offsets.reserve(which.size() + 1);
+  s.offsets.push_back(0);
+  for (Index e : which) {
+    const auto dofs = stencils.of(e);
+    s.dofs.insert(s.dofs.end(), dofs.begin(), dofs.end());
+    s.offsets.push_back(static_cast<Index>(s.dofs.size()));
+  }
+  return s;
+}
+
 } // namespace
 
 Assembler::Assembler(const dofs::DofMap& map, std::vector<const physics::Term*> terms,
@@ -113,17 +144,34 @@ Assembler::Assembler(const dofs::DofMap& map, std::vector<const physics::Term*> 
   rebuild();
 }
 
+void Assembler::set_ownership(std::vector<int> equation_owner, int rank) {
+  equation_owner_ = std::move(equation_owner);
+  rank_ = rank;
+  rebuild();
+}
+
 void Assembler::rebuild() {
   stencils_.clear();
   colours_.clear();
+  std::vector<Stencils> owned; // on several processes: the stencils of this process's elements
   for (const physics::Term* t : terms_) {
     stencils_.push_back(collect_stencils(*t));
-    colours_.push_back(colour_elements(stencils_.back(), map_));
+    if (equation_owner_.empty()) {
+      colours_.push_back(colour_elements(stencils_.back(), map_));
+      continue;
+    }
+    const std::vector<Index> mine = owned_elements(stencils_.back(), map_, equation_owner_, rank_);
+    owned.push_back(subset(stencils_.back(), mine));
+    std::vector<std::vector<Index>> colours = colour_elements(owned.back(), map_);
+    for (auto& colour : colours)
+      for (Index& e : colour)
+        e = mine[e];
+    colours_.push_back(std::move(colours));
   }
-  std::vector<const Stencils*> all;
-  for (const auto& s : stencils_)
-    all.push_back(&s);
-  pattern_ = build_pattern(map_, all);
+  std::vector<const Stencils*> sets;
+  for (const auto& s : equation_owner_.empty() ? stencils_ : owned)
+    sets.push_back(&s);
+  pattern_ = build_pattern(map_, sets);
 }
 
 AssembledSystem Assembler::make_system() const {

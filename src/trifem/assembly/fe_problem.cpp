@@ -2,6 +2,8 @@
 #include "trifem/assembly/fe_problem.hpp"
 
 #include "trifem/core/error.hpp"
+#include "trifem/linalg/nested_dissection.hpp"
+#include "trifem/parallel/communicator.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -30,8 +32,23 @@ void FeProblem::build_assembler() {
   for (const auto& t : terms_)
     views.push_back(t.get());
   assembler_ = std::make_unique<Assembler>(map_, std::move(views), &frames_);
+  partition();
   system_ = assembler_->make_system();
   ++pattern_id_;
+}
+
+void FeProblem::partition() {
+  equation_owner_.clear();
+  if (!parallel::active())
+    return;
+  equation_owner_.assign(map_.num_equations(), 0);
+  if (parallel::is_root()) {
+    const SparseMatrix& K = assembler_->make_system().Kff; // the pattern of every element
+    equation_owner_ = linalg::partition_rows(
+        {static_cast<Index>(K.rows()), K.outerIndexPtr(), K.innerIndexPtr()}, parallel::size());
+  }
+  parallel::broadcast(equation_owner_);
+  assembler_->set_ownership(equation_owner_, parallel::rank());
 }
 
 void FeProblem::set_conditions(std::vector<dofs::DirichletCondition> conditions) {
@@ -70,8 +87,11 @@ solver::SolveStatus FeProblem::linearize(solver::Linearization& lin, bool with_j
     system_ = assembler_->make_system();
     ++pattern_id_;
   }
-  if (!assembler_->assemble(eval_state(), system_, with_jacobian))
+  // on several processes each assembles its elements: the parts are summed (and every
+  // process must agree that the state is admissible before any returns)
+  if (!parallel::all(assembler_->assemble(eval_state(), system_, with_jacobian)))
     return solver::SolveStatus::Inadmissible;
+  parallel::sum(system_.residual);
   const Index neq = map_.num_equations();
   lin.residual.setZero(neq);
   for (Index d = 0; d < map_.num_dofs(); ++d) // tied DOFs add their rows
@@ -85,6 +105,7 @@ solver::SolveStatus FeProblem::linearize(solver::Linearization& lin, bool with_j
     pending[c] = target_[d] - x_[d];
   }
   lin.constraint_rhs = system_.Kfc * pending;
+  parallel::sum(lin.constraint_rhs);
   lin.jacobian = system_.Kff;
   return solver::SolveStatus::Converged;
 }

@@ -35,6 +35,10 @@ public:
   /// Recollects the stencils of every term and rebuilds colours and pattern (after a term's
   /// element_dofs() changed).
   void rebuild();
+  /// Runs on several processes: from now on only the elements of process `rank` are assembled
+  /// (and only their couplings are in the pattern). An element belongs to the owner of its first
+  /// equation in `equation_owner`, to rank 0 if all its DOFs are prescribed. Rebuilds.
+  void set_ownership(std::vector<int> equation_owner, int rank);
 
 private:
   bool assemble_term(std::size_t t, const physics::EvalState& state, AssembledSystem& out,
@@ -43,6 +47,8 @@ private:
   const dofs::DofMap& map_;
   std::vector<const physics::Term*> terms_;
   const dofs::NodalFrames* frames_;
+  std::vector<int> equation_owner_; ///< empty: this process assembles every element
+  int rank_ = 0;
   std::vector<Stencils> stencils_;
   std::vector<std::vector<std::vector<Index>>> colours_;
   SystemPattern pattern_;
@@ -63,6 +69,7 @@ public:
   const std::vector<int>& equation_fields() const override { return equation_fields_; }
   const std::vector<solver::FieldScale>& field_scales() const override { return scales_; }
   int pattern_id() const override { return pattern_id_; }
+  const std::vector<int>& equation_owners() const override { return equation_owner_; }
   solver::SolveStatus linearize(solver::Linearization& lin, bool with_jacobian) override;
   solver::SolveStatus update(const Vector& dx, Real step) override;
   bool constraints_satisfied() const override;
@@ -108,6 +115,9 @@ private:
   physics::EvalState eval_state() const { return {x_global_, x_old_global_, time_, dt_}; }
   /// Refreshes the global-component copy of the state after x_ changed.
   void sync();
+  /// On several processes: splits the equations between them (METIS on the pattern, computed
+  /// on rank 0 and broadcast) and restricts the assembler to this process's elements.
+  void partition();
   /// Numbers the equations' fields and builds the assembler and its pattern.
   void build_assembler();
 
@@ -116,6 +126,7 @@ private:
   std::vector<std::unique_ptr<physics::Term>> terms_;
   std::vector<solver::FieldScale> scales_;
   std::vector<int> equation_fields_;
+  std::vector<int> equation_owner_; ///< on several processes: the owner of each equation
   std::unique_ptr<Assembler> assembler_;
   AssembledSystem system_;
   dofs::NodalFrames frames_;

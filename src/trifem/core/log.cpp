@@ -10,6 +10,9 @@ void configure(Level level) {
   auto logger = spdlog::stdout_color_mt("trifem");
   logger->set_pattern("%v");
   switch (level) {
+  case Level::Silent: // the processes of a parallel run other than rank 0
+    logger->set_level(spdlog::level::off);
+    break;
   case Level::Quiet:
     logger->set_level(spdlog::level::warn);
     break;

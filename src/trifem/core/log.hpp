@@ -8,7 +8,7 @@
 namespace trifem::log {
 
 /// Verbosity of the console log.
-enum class Level { Quiet, Normal, Verbose };
+enum class Level { Silent, Quiet, Normal, Verbose };
 
 /// Configures the global console logger (called once by the application).
 void configure(Level level);

@@ -36,6 +36,11 @@ public:
     (void)equation_fields;
     (void)field_names;
   }
+  /// On several processes: the owner of every equation, before analyze_pattern of a new
+  /// pattern; each process then gives its own part of the matrix (its elements' couplings)
+  /// and the whole right-hand side, and receives the whole solution. Empty: one process.
+  /// Backends that run on one process only refuse a non-empty partition.
+  virtual void set_partition(const std::vector<int>& equation_owner);
   /// Iterations of the last solve of an iterative backend (0 for a direct one).
   virtual int last_iterations() const { return 0; }
   /// Nonzeros of the factors of the last factorization of a direct backend that reports them
@@ -58,5 +63,12 @@ std::vector<std::string> available_linear_solvers();
 std::unique_ptr<LinearSolver> make_linear_solver(const std::string& name,
                                                  const std::string& petsc_options = "",
                                                  bool reuse_factorization = false);
+
+/// The backend on several processes (parallel::active()): MUMPS on the distributed matrix for
+/// every direct backend's name (`auto`, `umfpack`, `sparselu`, `mumps`; reusing
+/// factorizations only when `mumps` asks for it); InputError for `krylov` and unknown names.
+std::unique_ptr<LinearSolver> make_distributed_solver(const std::string& name,
+                                                      const std::string& petsc_options,
+                                                      bool reuse_factorization);
 
 } // namespace trifem::linalg

@@ -7,6 +7,7 @@
 #include <metis.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <numeric>
 #include <stdexcept>
 #include <unordered_map>
@@ -61,6 +62,44 @@ std::vector<Index> merge_identical(const std::vector<std::vector<Index>>& adjace
   return group;
 }
 
+/// The quotient graph of the symmetrised pattern: one vertex per group of rows of identical
+/// structure, weighted by its size, in METIS's compressed form without self-loops.
+struct QuotientGraph {
+  Index groups = 0;
+  std::vector<Index> group; ///< group of each row
+  std::vector<idx_t> xadj, adjncy, weight;
+};
+
+QuotientGraph quotient_graph(const RowPattern& pattern) {
+  const Index n = pattern.rows;
+  QuotientGraph q;
+  std::vector<std::vector<Index>> adjacent = symmetric_adjacency(pattern);
+  q.group = merge_identical(adjacent, q.groups);
+  std::vector<std::vector<idx_t>> lists(q.groups);
+  q.weight.assign(q.groups, 0);
+  std::vector<Index> first(q.groups, -1);
+  for (Index v = 0; v < n; ++v) {
+    ++q.weight[q.group[v]];
+    if (first[q.group[v]] < 0)
+      first[q.group[v]] = v;
+  }
+  for (Index g = 0; g < q.groups; ++g) {
+    for (Index w : adjacent[first[g]])
+      if (q.group[w] != g)
+        lists[g].push_back(q.group[w]);
+    std::sort(lists[g].begin(), lists[g].end());
+    lists[g].erase(std::unique(lists[g].begin(), lists[g].end()), lists[g].end());
+  }
+  adjacent = {};
+  q.xadj.assign(q.groups + 1, 0);
+  for (Index g = 0; g < q.groups; ++g)
+    q.xadj[g + 1] = q.xadj[g] + static_cast<idx_t>(lists[g].size());
+  q.adjncy.reserve(q.xadj[q.groups]);
+  for (auto& list : lists)
+    q.adjncy.insert(q.adjncy.end(), list.begin(), list.end());
+  return q;
+}
+
 } // namespace
 
 std::vector<Index> nested_dissection_order(const RowPattern& pattern) {
@@ -70,34 +109,9 @@ std::vector<Index> nested_dissection_order(const RowPattern& pattern) {
     std::iota(identity.begin(), identity.end(), 0);
     return identity;
   }
-  std::vector<std::vector<Index>> adjacent = symmetric_adjacency(pattern);
-  Index groups = 0;
-  const std::vector<Index> group = merge_identical(adjacent, groups);
-
-  // the quotient graph: one vertex per group, weighted by its size, without self-loops
-  std::vector<std::vector<idx_t>> quotient(groups);
-  std::vector<idx_t> weight(groups, 0);
-  std::vector<Index> first(groups, -1);
-  for (Index v = 0; v < n; ++v) {
-    ++weight[group[v]];
-    if (first[group[v]] < 0)
-      first[group[v]] = v;
-  }
-  for (Index g = 0; g < groups; ++g) {
-    for (Index w : adjacent[first[g]])
-      if (group[w] != g)
-        quotient[g].push_back(group[w]);
-    std::sort(quotient[g].begin(), quotient[g].end());
-    quotient[g].erase(std::unique(quotient[g].begin(), quotient[g].end()), quotient[g].end());
-  }
-  adjacent = {};
-  std::vector<idx_t> xadj(groups + 1, 0), adjncy;
-  for (Index g = 0; g < groups; ++g)
-    xadj[g + 1] = xadj[g] + static_cast<idx_t>(quotient[g].size());
-  adjncy.reserve(xadj[groups]);
-  for (auto& list : quotient)
-    adjncy.insert(adjncy.end(), list.begin(), list.end());
-  quotient = {};
+  QuotientGraph q = quotient_graph(pattern);
+  const Index groups = q.groups;
+  const std::vector<Index>& group = q.group;
 
   std::vector<idx_t> perm(groups), iperm(groups);
   idx_t vertices = groups;
@@ -105,8 +119,8 @@ std::vector<Index> nested_dissection_order(const RowPattern& pattern) {
   METIS_SetDefaultOptions(options);
   options[METIS_OPTION_NUMBERING] = 0;
   options[METIS_OPTION_SEED] = 1; // reproducible orderings, so reproducible round-off
-  const int status = groups > 1 ? METIS_NodeND(&vertices, xadj.data(), adjncy.data(), weight.data(),
-                                               options, perm.data(), iperm.data())
+  const int status = groups > 1 ? METIS_NodeND(&vertices, q.xadj.data(), q.adjncy.data(),
+                                               q.weight.data(), options, perm.data(), iperm.data())
                                 : METIS_OK;
   if (groups <= 1)
     perm.assign(groups, 0);
@@ -130,6 +144,33 @@ std::vector<Index> nested_dissection_order(const RowPattern& pattern) {
     order.insert(order.end(), members.begin() + start[g], members.begin() + start[g + 1]);
   }
   return order;
+}
+
+std::vector<int> partition_rows(const RowPattern& pattern, int parts) {
+  const Index n = pattern.rows;
+  std::vector<int> owner(n, 0);
+  if (parts <= 1 || n == 0)
+    return owner;
+  QuotientGraph q = quotient_graph(pattern);
+  std::vector<idx_t> part(q.groups, 0);
+  if (q.groups >= 2 * parts) {
+    idx_t vertices = q.groups, constraints = 1, count = parts, cut = 0;
+    idx_t options[METIS_NOPTIONS];
+    METIS_SetDefaultOptions(options);
+    options[METIS_OPTION_NUMBERING] = 0;
+    options[METIS_OPTION_SEED] = 1;
+    const int status = METIS_PartGraphKway(&vertices, &constraints, q.xadj.data(), q.adjncy.data(),
+                                           q.weight.data(), nullptr, nullptr, &count, nullptr,
+                                           nullptr, options, &cut, part.data());
+    if (status != METIS_OK)
+      throw std::runtime_error(fmt::format("METIS partitioning failed (status {})", status));
+  } else { // too few vertices to cut: consecutive blocks
+    for (Index g = 0; g < q.groups; ++g)
+      part[g] = static_cast<idx_t>(static_cast<std::int64_t>(g) * parts / q.groups);
+  }
+  for (Index i = 0; i < n; ++i)
+    owner[i] = static_cast<int>(part[q.group[i]]);
+  return owner;
 }
 
 } // namespace trifem::linalg

@@ -21,4 +21,9 @@ struct RowPattern {
 /// eliminated k-th (a permutation of 0 .. rows-1).
 std::vector<Index> nested_dissection_order(const RowPattern& pattern);
 
+/// A partition of the rows of the square pattern into `parts` parts of about equal size with
+/// few couplings between them (METIS k-way on the same merged graph): the part of each row.
+/// Rows of identical structure stay together. Deterministic for a given pattern.
+std::vector<int> partition_rows(const RowPattern& pattern, int parts);
+
 } // namespace trifem::linalg

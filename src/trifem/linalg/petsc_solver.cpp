@@ -5,7 +5,9 @@
 #include "trifem/core/log.hpp"
 #include "trifem/linalg/nested_dissection.hpp"
 #include "trifem/linalg/petsc_matrix.hpp"
+#include "trifem/linalg/petsc_mpi_matrix.hpp"
 #include "trifem/linalg/petsc_session.hpp"
+#include "trifem/parallel/communicator.hpp"
 
 #include <fmt/format.h>
 #include <petscksp.h>
@@ -80,7 +82,8 @@ const char* pc_failure_text(PCFailedReason reason) {
   }
 }
 
-/// MUMPS LU through a PETSc KSP of type preonly.
+/// MUMPS LU through a PETSc KSP of type preonly, on one process or (after set_partition) on
+/// all the processes of the run, each giving its part of the matrix.
 class MumpsSolver final : public LinearSolver {
 public:
   MumpsSolver(const std::string& options, bool reuse) : options_(options), reuse_(reuse) {}
@@ -96,6 +99,10 @@ public:
     n_ = static_cast<Index>(A.rows());
     if (n_ == 0)
       return;
+    if (layout_) {
+      analyze_distributed(A);
+      return;
+    }
     try {
       // METIS nested dissection unless the options choose a MUMPS ordering (ICNTL(7)); the
       // matrix is handed over permuted, and MUMPS keeps that order (PETSc's "natural")
@@ -151,7 +158,7 @@ public:
     failure_ = {};
     factored_ = false;
     try {
-      matrix_->update(A);         // same pattern: a numeric factorization only
+      update_matrix(A);           // same pattern: a numeric factorization only
       if (reuse_ && !refactor_) { // the last factorization preconditions this matrix
         check(KSPSetReusePreconditioner(ksp_, PETSC_TRUE), "PETSc KSP");
         stale_ = true;
@@ -173,7 +180,7 @@ public:
     if (!factored_)
       return false;
     try {
-      petsc::set_vector(b_, b, order_);
+      to_petsc(b);
       check(KSPSolve(ksp_, b_, x_), "MUMPS solve");
       KSPConvergedReason reason = KSP_CONVERGED_ITERATING;
       check(KSPGetConvergedReason(ksp_, &reason), "PETSc KSP");
@@ -184,7 +191,7 @@ public:
         if (reason < 0 && stale_) { // the old factorization no longer serves: a new one
           if (!refactorize())
             return false;
-          petsc::set_vector(b_, b, order_); // a workspace retry sets the vectors up anew
+          to_petsc(b); // a workspace retry sets the vectors up anew
           check(KSPSolve(ksp_, b_, x_), "MUMPS solve");
           check(KSPGetConvergedReason(ksp_, &reason), "PETSc KSP");
           check(KSPGetIterationNumber(ksp_, &iterations), "PETSc KSP");
@@ -196,7 +203,7 @@ public:
         failure_ = {fmt::format("MUMPS solve failed ({})", KSPConvergedReasons[reason]), false};
         return false;
       }
-      petsc::get_vector(x_, x, order_);
+      from_petsc(x);
     } catch (const petsc::PetscError& e) {
       failure_ = {e.what(), false};
       broken_ = true;
@@ -208,11 +215,77 @@ public:
     return false;
   }
 
+  void set_partition(const std::vector<int>& equation_owner) override {
+    layout_.reset();
+    if (!equation_owner.empty())
+      layout_ =
+          std::make_unique<petsc::RowLayout>(equation_owner, parallel::rank(), parallel::size());
+  }
+
   std::string name() const override { return "mumps"; }
   int last_iterations() const override { return iterations_; }
   LinearSolverFailure failure() const override { return failure_; }
 
 private:
+  /// The set-up on several processes: a distributed matrix, MUMPS's own (parallel) analysis.
+  void analyze_distributed(const SparseMatrix& A) {
+    try {
+      mpi_matrix_ = std::make_unique<petsc::MpiAijMatrix>(A, *layout_);
+      check(MatCreateVecs(mpi_matrix_->mat(), &x_, &b_), "PETSc vectors");
+      gather_ = std::make_unique<petsc::Gather>(x_);
+      check(KSPCreate(PETSC_COMM_WORLD, &ksp_), "PETSc KSP");
+      if (reuse_) {
+        mpi_factored_ = std::make_unique<petsc::MpiAijMatrix>(A, *layout_);
+        check(KSPSetOperators(ksp_, mpi_matrix_->mat(), mpi_factored_->mat()),
+              "PETSc KSP operators");
+        check(KSPSetType(ksp_, KSPFGMRES), "PETSc KSP type");
+        check(KSPGMRESSetRestart(ksp_, kMaxReuseIterations), "PETSc GMRES restart");
+        check(KSPSetTolerances(ksp_, kReuseTolerance, 0.0, PETSC_DEFAULT, kMaxReuseIterations),
+              "PETSc KSP tolerances");
+      } else {
+        check(KSPSetOperators(ksp_, mpi_matrix_->mat(), mpi_matrix_->mat()), "PETSc KSP operators");
+        check(KSPSetType(ksp_, KSPPREONLY), "PETSc KSP type");
+      }
+      refactor_ = true;
+      PC pc = nullptr;
+      check(KSPGetPC(ksp_, &pc), "PETSc PC");
+      check(PCSetType(pc, PCLU), "PETSc PC type");
+      check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS), "MUMPS");
+      check(KSPSetFromOptions(ksp_), "PETSc options");
+      if (workspace_percent_ > 0) {
+        Mat factor = nullptr;
+        check(PCFactorSetUpMatSolverType(pc), "MUMPS");
+        check(PCFactorGetMatrix(pc, &factor), "MUMPS");
+        check(MatMumpsSetIcntl(factor, 14, workspace_percent_), "MUMPS ICNTL(14)");
+      }
+    } catch (const petsc::PetscError& e) {
+      failure_ = {e.what(), true};
+      release();
+    }
+  }
+
+  /// The values of A in the matrix PETSc solves with.
+  void update_matrix(const SparseMatrix& A) {
+    if (layout_)
+      mpi_matrix_->update(A);
+    else
+      matrix_->update(A);
+  }
+
+  void to_petsc(const Vector& b) {
+    if (layout_)
+      petsc::set_vector(b_, b, *layout_);
+    else
+      petsc::set_vector(b_, b, order_);
+  }
+
+  void from_petsc(Vector& x) {
+    if (layout_)
+      (*gather_)(x_, x, *layout_);
+    else
+      from_petsc(x);
+  }
+
   /// A new numeric factorization of the current matrix, repeated with a larger workspace while
   /// MUMPS reports its estimate too small.
   bool refactorize() {
@@ -236,7 +309,10 @@ private:
   /// One numeric factorization of the current matrix.
   bool factorize_once() {
     workspace_failed_ = false;
-    if (reuse_) {
+    if (reuse_ && layout_) {
+      mpi_factored_->assign_values(*mpi_matrix_);
+      check(KSPSetReusePreconditioner(ksp_, PETSC_FALSE), "PETSc KSP");
+    } else if (reuse_) {
       factored_matrix_->assign_values(*matrix_);
       check(KSPSetReusePreconditioner(ksp_, PETSC_FALSE), "PETSc KSP");
     }
@@ -279,8 +355,11 @@ private:
       VecDestroy(&x_);
     if (b_)
       VecDestroy(&b_);
+    gather_.reset();
     matrix_.reset();
     factored_matrix_.reset();
+    mpi_matrix_.reset();
+    mpi_factored_.reset();
     ksp_ = nullptr;
     x_ = b_ = nullptr;
     factored_ = false;
@@ -291,6 +370,9 @@ private:
   std::vector<Index> order_; ///< row and column order[i] of A is row and column i for MUMPS
   std::unique_ptr<petsc::SeqAijMatrix> matrix_;
   std::unique_ptr<petsc::SeqAijMatrix> factored_matrix_; ///< values last factorized (reuse)
+  std::unique_ptr<petsc::RowLayout> layout_;             ///< on several processes: the rows of each
+  std::unique_ptr<petsc::MpiAijMatrix> mpi_matrix_, mpi_factored_; ///< ... and the matrices
+  std::unique_ptr<petsc::Gather> gather_; ///< ... and the gathering of the solution
   bool reuse_ = false;   ///< precondition later matrices with an earlier factorization
   bool refactor_ = true; ///< the next factorize() factorizes
   bool stale_ = false;   ///< the factorization in use is of an earlier matrix

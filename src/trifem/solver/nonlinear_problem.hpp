@@ -49,6 +49,12 @@ public:
   virtual const std::vector<FieldScale>& field_scales() const = 0;
   /// Changes whenever the sparsity pattern of the Jacobian changes (symbolic re-analysis).
   virtual int pattern_id() const = 0;
+  /// On several processes: the process that owns each equation (the linear solver's rows);
+  /// the Jacobian of linearize() then holds this process's part only. Empty on one process.
+  virtual const std::vector<int>& equation_owners() const {
+    static const std::vector<int> none;
+    return none;
+  }
   /// Evaluates residual and, if `with_jacobian`, Jacobian and constraint_rhs at the current
   /// state. Returns Inadmissible if the state cannot be evaluated.
   virtual SolveStatus linearize(Linearization& lin, bool with_jacobian) = 0;

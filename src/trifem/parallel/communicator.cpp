@@ -1,0 +1,134 @@
+// SPDX-License-Identifier: MIT
+#include "trifem/parallel/communicator.hpp"
+
+#include <mpi.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <iostream>
+#include <string_view>
+#include <thread>
+
+namespace trifem::parallel {
+namespace {
+
+/// The launcher's process count, or 1.
+int launched_size() {
+  for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE"})
+    if (const char* value = std::getenv(name))
+      return std::max(1, std::atoi(value));
+  return 1;
+}
+
+/// A communicator of its own for the failure agreement, so that its barrier never matches a
+/// collective of the analysis that other processes may be in.
+MPI_Comm failure_comm = MPI_COMM_NULL;
+
+void finalize_mpi() {
+  int finalized = 0;
+  MPI_Finalized(&finalized);
+  if (finalized)
+    return;
+  if (failure_comm != MPI_COMM_NULL)
+    MPI_Comm_free(&failure_comm);
+  MPI_Finalize();
+}
+
+bool mpi_running() {
+  int initialized = 0, finalized = 0;
+  MPI_Initialized(&initialized);
+  MPI_Finalized(&finalized);
+  return initialized && !finalized;
+}
+
+} // namespace
+
+bool launched_in_parallel() {
+  return launched_size() > 1;
+}
+
+void initialize(int& argc, char**& argv) {
+  if (!launched_in_parallel() || mpi_running())
+    return;
+  int provided = 0;
+  MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);
+  MPI_Comm_dup(MPI_COMM_WORLD, &failure_comm);
+  // registered before PETSc's own finalisation, so it runs after it
+  std::atexit(finalize_mpi);
+}
+
+bool active() {
+  return size() > 1;
+}
+
+int rank() {
+  if (!mpi_running())
+    return 0;
+  int r = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &r);
+  return r;
+}
+
+int size() {
+  if (!mpi_running())
+    return 1;
+  int n = 1;
+  MPI_Comm_size(MPI_COMM_WORLD, &n);
+  return n;
+}
+
+void sum(Vector& values) {
+  if (!active())
+    return;
+  Vector total(values.size());
+  MPI_Reduce(values.data(), total.data(), static_cast<int>(values.size()), MPI_DOUBLE, MPI_SUM, 0,
+             MPI_COMM_WORLD);
+  if (is_root())
+    values = total;
+  MPI_Bcast(values.data(), static_cast<int>(values.size()), MPI_DOUBLE, 0, MPI_COMM_WORLD);
+}
+
+Real sum(Real value) {
+  Vector v(1);
+  v[0] = value;
+  sum(v);
+  return v[0];
+}
+
+bool all(bool value) {
+  if (!active())
+    return value;
+  int mine = value ? 1 : 0, every = 0;
+  MPI_Allreduce(&mine, &every, 1, MPI_INT, MPI_LAND, MPI_COMM_WORLD);
+  return every != 0;
+}
+
+void broadcast(std::vector<int>& values) {
+  if (!active())
+    return;
+  MPI_Bcast(values.data(), static_cast<int>(values.size()), MPI_INT, 0, MPI_COMM_WORLD);
+}
+
+bool agree_on_failure(const std::string& message, double wait_seconds) {
+  if (!active())
+    return true;
+  MPI_Request request = MPI_REQUEST_NULL;
+  MPI_Ibarrier(failure_comm, &request);
+  const auto deadline =
+      std::chrono::steady_clock::now() + std::chrono::duration<double>(wait_seconds);
+  int done = 0;
+  while (!done && std::chrono::steady_clock::now() < deadline) {
+    MPI_Test(&request, &done, MPI_STATUS_IGNORE);
+    if (!done)
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  if (done)
+    return is_root();
+  std::cerr << "error (process " << rank() << " of " << size() << "): " << message
+            << " (the other processes are stopped)\n"
+            << std::flush;
+  MPI_Abort(MPI_COMM_WORLD, 1);
+  return false;
+}
+
+} // namespace trifem::parallel

@@ -4,6 +4,7 @@
 #include "trifem/analysis/explicit_run.hpp"
 #include "trifem/analysis/output_writer.hpp"
 #include "trifem/analysis/run_files.hpp"
+#include "trifem/contact/contact_term.hpp"
 #include "trifem/core/error.hpp"
 #include "trifem/core/interrupt.hpp"
 #include "trifem/core/log.hpp"
@@ -17,6 +18,7 @@
 #include <chrono>
 #include <cmath>
 #include <csignal>
+#include <fmt/ranges.h>
 #include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -166,6 +168,37 @@ void log_linear_solver(const std::string& name, Index equations) {
               "factors fill up)",
               equations < linalg::kAutoSparseLuLimit ? "sparselu" : "mumps reusing factorizations",
               equations, linalg::kAutoSparseLuLimit);
+}
+
+/// The processes that own the nodes of `nodes` (the owner of a node's first displacement
+/// equation), ascending, as "[0, 2]".
+std::string owners_of(const model::Model& model, const std::vector<Index>& nodes) {
+  const std::vector<int>& owner = model.problem->equation_owners();
+  std::set<int> found;
+  for (Index node : nodes)
+    for (int c = 0; c < 3; ++c)
+      if (const Index eq = model.dofs.equation(model.dofs.dof(model.fields.u, node, c)); eq >= 0) {
+        found.insert(owner[eq]);
+        break;
+      }
+  std::string list;
+  for (int p : found)
+    list += (list.empty() ? "" : ", ") + std::to_string(p);
+  return "[" + list + "]";
+}
+
+/// On several processes: the equations of each, and where the sides of each contact pair live.
+void log_partition(const model::Model& model) {
+  if (!parallel::active())
+    return;
+  std::vector<Index> count(parallel::size(), 0);
+  for (int owner : model.problem->equation_owners())
+    ++count[owner];
+  log::info("  processes: {}, equations of each: {}", parallel::size(), fmt::join(count, ", "));
+  for (std::size_t k = 0; k < model.contacts.size(); ++k)
+    log::info("  contact {}: slave nodes on processes {}, master nodes on {}", k + 1,
+              owners_of(model, model.contacts[k]->slave().nodes()),
+              owners_of(model, model.contacts[k]->master().nodes()));
 }
 
 /// Writes the summary, the final report and the error line; returns the exit code.
@@ -391,6 +424,7 @@ int run_quasi_static_case(const io::CaseSpec& spec, const std::filesystem::path&
   if (parallel::is_root())
     log::add_file((output_dir / "run.log").string());
   log_model(spec, *model);
+  log_partition(*model);
 
   solver::NewtonSolver newton(newton_settings(spec.solver), std::move(linear_solver));
   log_linear_solver(spec.solver.linear_solver, model->problem->num_equations());

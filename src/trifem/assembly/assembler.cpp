@@ -174,6 +174,14 @@ void Assembler::rebuild() {
   pattern_ = build_pattern(map_, sets);
 }
 
+SparseMatrix Assembler::body_couplings() const {
+  std::vector<const Stencils*> sets;
+  for (std::size_t t = 0; t < terms_.size(); ++t)
+    if (!terms_[t]->joins_bodies())
+      sets.push_back(&stencils_[t]);
+  return build_pattern(map_, sets).Kff;
+}
+
 AssembledSystem Assembler::make_system() const {
   return {Vector::Zero(map_.num_dofs()), pattern_.Kff, pattern_.Kfc};
 }

@@ -43,7 +43,7 @@ void FeProblem::partition() {
     return;
   equation_owner_.assign(map_.num_equations(), 0);
   if (parallel::is_root()) {
-    const SparseMatrix& K = assembler_->make_system().Kff; // the pattern of every element
+    const SparseMatrix K = assembler_->body_couplings(); // bodies may be cut at contacts
     equation_owner_ = linalg::partition_rows(
         {static_cast<Index>(K.rows()), K.outerIndexPtr(), K.innerIndexPtr()}, parallel::size());
   }

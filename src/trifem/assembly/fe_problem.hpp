@@ -32,6 +32,9 @@ public:
   bool assemble(const physics::EvalState& state, AssembledSystem& out, bool with_jacobian) const;
   /// An AssembledSystem with the right sizes and patterns (values zero).
   AssembledSystem make_system() const;
+  /// The couplings between equations of every term but those that join bodies (the graph
+  /// a parallel run is partitioned by).
+  SparseMatrix body_couplings() const;
   /// Recollects the stencils of every term and rebuilds colours and pattern (after a term's
   /// element_dofs() changed).
   void rebuild();

@@ -93,6 +93,7 @@ public:
               std::shared_ptr<const ContactLaw> law, ContactSettings settings);
 
   std::string name() const override { return "contact"; }
+  bool joins_bodies() const override { return true; }
   Index num_elements() const override { return static_cast<Index>(stencils_.size()); }
   void element_dofs(Index e, std::vector<Index>& dofs) const override { dofs = stencils_[e]; }
   bool evaluate(Index e, const physics::EvalState& state, physics::LocalVector& r,

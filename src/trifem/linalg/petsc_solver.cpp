@@ -283,7 +283,7 @@ private:
     if (layout_)
       (*gather_)(x_, x, *layout_);
     else
-      from_petsc(x);
+      petsc::get_vector(x_, x, order_);
   }
 
   /// A new numeric factorization of the current matrix, repeated with a larger workspace while

@@ -28,6 +28,9 @@ class Term {
 public:
   virtual ~Term() = default;
   virtual std::string name() const = 0;
+  /// True for a term that couples separate bodies (contact): a parallel run partitions the
+  /// model by the couplings of the other terms, so that bodies may be cut at their interfaces.
+  virtual bool joins_bodies() const { return false; }
   virtual Index num_elements() const = 0;
   /// Global DOFs of element e; fixed for the whole run (defines the sparsity pattern).
   virtual void element_dofs(Index e, std::vector<Index>& dofs) const = 0;

@@ -1,0 +1,178 @@
+// SPDX-License-Identifier: MIT
+// Runs on several processes (mpirun -np 2 and -np 3, oversubscribed on small machines): every
+// quasi-static example gives the one-process history to 1e-8 of the largest magnitude of each
+// unit, with one set of result files and one log; a contact interface split between processes
+// gives the same answer; bad input fails with one error line; the explicit analysis is refused.
+#include "cli_harness.hpp"
+
+#include <cstdlib>
+#include <map>
+#include <regex>
+
+namespace trifem::cli_test {
+namespace {
+
+const fs::path kExamples = fs::path(TRIFEM_SOURCE_DIR) / "examples";
+const fs::path kMpiexec = TRIFEM_MPIEXEC;
+
+class CliParallel : public Cli {
+protected:
+  void SetUp() override {
+    Cli::SetUp();
+    // OpenMPI refuses to start as root (containers, CI) without these
+    ::setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
+    ::setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
+  }
+
+  /// Runs trifem with `args` on `processes` processes through mpirun.
+  Result mpirun(int processes, std::initializer_list<std::string> args) const {
+    const std::string command = shell_quoted(kMpiexec.string()) + " --oversubscribe -np " +
+                                std::to_string(processes) + " " + shell_quoted(kExe.string());
+    Result r;
+    r.command = command;
+    for (const auto& a : args)
+      r.command += ' ' + shell_quoted(a);
+    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
+    const std::string line = "cd " + shell_quoted(dir_.string()) + " && " + r.command + " >" +
+                             shell_quoted(out.string()) + " 2>" + shell_quoted(err.string());
+    const int status = std::system(line.c_str());
+    r.exit_code = status != -1 && WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    r.out = read_text(out);
+    r.err = read_text(err);
+    return r;
+  }
+
+  /// The example `name` as a case file of the working directory (its mesh file, if any, read
+  /// from the example's folder).
+  fs::path example(const std::string& name) const {
+    std::string text = read_text(kExamples / name / (name + ".toml"));
+    const std::string mesh = "\nfile = \"";
+    if (const auto at = text.find(mesh); at != std::string::npos)
+      text.insert(at + mesh.size(), (kExamples / name).string() + "/");
+    return write_file(name + ".toml", text);
+  }
+
+  /// Runs `name` on 1, 2 and 3 processes: the same steps and the same history to 1e-8 of each
+  /// unit's scale; rank 0 alone writes the files and the log.
+  void expect_the_one_process_history(const std::string& name) const {
+    SCOPED_TRACE(name);
+    const fs::path file = example(name);
+    const Result one = trifem({"run", file.string(), "-o", (output() / "1").string()});
+    ASSERT_EQ(one.exit_code, kSuccess) << one;
+    const History serial = read_history(output() / "1" / "history.csv");
+    ASSERT_GT(serial.names.size(), 4u);
+    const std::map<std::string, double> scale = unit_scales(serial);
+    for (const int processes : {2, 3}) {
+      SCOPED_TRACE(std::to_string(processes) + " processes");
+      const fs::path out = output() / std::to_string(processes);
+      const Result r = mpirun(processes, {"run", file.string(), "-o", out.string()});
+      ASSERT_EQ(r.exit_code, kSuccess) << r;
+      EXPECT_EQ(count_of(r.out, "completed: "), 1u) << "one log, from rank 0" << r;
+      EXPECT_TRUE(contains(r.out, "on each of " + std::to_string(processes) + " processes")) << r;
+      EXPECT_TRUE(lines_of(r.err).empty()) << r;
+      const History parallel = read_history(out / "history.csv");
+      ASSERT_EQ(parallel.names, serial.names);
+      for (std::size_t c = 0; c < serial.names.size(); ++c) {
+        if (serial.names[c] == "iterations")
+          continue;
+        const std::vector<double>& a = serial.columns[c];
+        const std::vector<double>& b = parallel.columns[c];
+        ASSERT_EQ(a.size(), b.size()) << serial.names[c] << ": the runs took other steps";
+        double diff = 0.0;
+        for (std::size_t i = 0; i < a.size(); ++i)
+          diff = std::max(diff, std::abs(a[i] - b[i]));
+        EXPECT_LE(diff, 1e-8 * scale.at(unit_of(serial.names[c]))) << serial.names[c];
+      }
+      EXPECT_EQ(read_text(out / "results.pvd"), read_text(output() / "1" / "results.pvd"))
+          << "the same output states";
+    }
+  }
+};
+
+TEST_F(CliParallel, BiphasicAndSolidExamplesGiveTheOneProcessHistory) {
+  for (const std::string name : {"biphasic_creep", "cantilever", "fibre_reinforced_unconfined"})
+    expect_the_one_process_history(name);
+}
+
+TEST_F(CliParallel, TriphasicExamplesGiveTheOneProcessHistory) {
+  for (const std::string name : {"confined_column", "free_swelling", "swell_then_compress"})
+    expect_the_one_process_history(name);
+}
+
+TEST_F(CliParallel, ContactExamplesGiveTheOneProcessHistory) {
+  for (const std::string name : {"contact_patch", "contact_column"})
+    expect_the_one_process_history(name);
+}
+
+TEST_F(CliParallel, AContactInterfaceSplitBetweenProcessesGivesTheOneProcessAnswer) {
+  // the paper's §4.1 column split at mid-height by a contact interface, both halves meshed
+  // alike: the partition (by the couplings of the bodies, not of the contact) puts the slave
+  // and the master side on different processes, and the answer is the one-process answer
+  std::string text = read_text(kExamples / "contact_column" / "contact_column.toml");
+  const std::string upper = "divisions = [3, 3, 5]";
+  ASSERT_NE(text.find(upper), std::string::npos);
+  text.replace(text.find(upper), upper.size(), "divisions = [2, 2, 5]");
+  const fs::path file = write_file("halves.toml", text);
+  const Result one = trifem({"run", file.string(), "-o", (output() / "1").string()});
+  ASSERT_EQ(one.exit_code, kSuccess) << one;
+  const History serial = read_history(output() / "1" / "history.csv");
+  const std::map<std::string, double> scale = unit_scales(serial);
+  for (const int processes : {2, 3}) {
+    SCOPED_TRACE(std::to_string(processes) + " processes");
+    const fs::path out = output() / std::to_string(processes);
+    const Result r = mpirun(processes, {"run", file.string(), "-o", out.string()});
+    ASSERT_EQ(r.exit_code, kSuccess) << r;
+    // "contact 1: slave nodes on processes [a], master nodes on [b]" with a != b
+    const std::regex sides(
+        R"(contact 1: slave nodes on processes \[(\d)\], master nodes on \[(\d)\])");
+    std::smatch m;
+    ASSERT_TRUE(std::regex_search(r.out, m, sides)) << r;
+    EXPECT_NE(m[1].str(), m[2].str()) << "the interface must lie between processes" << r;
+    const History parallel = read_history(out / "history.csv");
+    ASSERT_EQ(parallel.names, serial.names);
+    for (std::size_t c = 0; c < serial.names.size(); ++c) {
+      ASSERT_EQ(parallel.columns[c].size(), serial.columns[c].size()) << serial.names[c];
+      for (std::size_t i = 0; i < serial.columns[c].size(); ++i)
+        EXPECT_NEAR(parallel.columns[c][i], serial.columns[c][i],
+                    1e-8 * scale.at(unit_of(serial.names[c])))
+            << serial.names[c];
+    }
+  }
+}
+
+TEST_F(CliParallel, BadInputFailsWithOneErrorLine) {
+  std::string text = read_text(kExamples / "cantilever" / "cantilever.toml");
+  text += "\n[bogus]\nkey = 1\n";
+  const fs::path file = write_file("bad.toml", text);
+  const Result r = mpirun(3, {"run", file.string(), "-o", output().string()});
+  EXPECT_EQ(r.exit_code, kInvalidInput) << r;
+  const std::vector<std::string> errors = error_lines(r.err);
+  ASSERT_EQ(errors.size(), 1u) << r;
+  EXPECT_TRUE(contains(errors[0], "bogus")) << r;
+  EXPECT_FALSE(fs::exists(output() / "history.csv")) << r;
+}
+
+TEST_F(CliParallel, TheExplicitAnalysisIsRefusedWithOneErrorLine) {
+  const Result r =
+      mpirun(2, {"run", example("explicit_cantilever").string(), "-o", output().string()});
+  EXPECT_EQ(r.exit_code, kInvalidInput) << r;
+  const std::vector<std::string> errors = error_lines(r.err);
+  ASSERT_EQ(errors.size(), 1u) << r;
+  EXPECT_TRUE(contains(errors[0], "runs on one process")) << r;
+  EXPECT_TRUE(contains(errors[0], "without mpirun")) << r;
+}
+
+TEST_F(CliParallel, TheKrylovBackendIsRefusedWithOneErrorLine) {
+  std::string text = read_text(kExamples / "cantilever" / "cantilever.toml");
+  text += "\n[solver]\nlinear_solver = \"krylov\"\n";
+  ASSERT_EQ(count_of(text, "[solver]"), 1u) << "the example has no [solver] of its own";
+  const Result r =
+      mpirun(2, {"run", write_file("krylov.toml", text).string(), "-o", output().string()});
+  EXPECT_EQ(r.exit_code, kInvalidInput) << r;
+  const std::vector<std::string> errors = error_lines(r.err);
+  ASSERT_EQ(errors.size(), 1u) << r;
+  EXPECT_TRUE(contains(errors[0], "krylov")) << r;
+}
+
+} // namespace
+} // namespace trifem::cli_test

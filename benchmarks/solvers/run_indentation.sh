@@ -6,8 +6,10 @@
 # backend, equations, Newton and linear iterations, wall time [s], peak memory [MB],
 # factorization and solve time [s]; with REPEATS > 1 the row of the run with the median wall
 # time.
-#   run_indentation.sh [TRIFEM] ["N:NZ ..."] [BACKENDS] [REPEATS]
-# defaults: build/bin/trifem, "8:4 16:4 24:6", "umfpack mumps mumps+reuse", 1
+#   run_indentation.sh [TRIFEM] ["N:NZ ..."] [BACKENDS] [REPEATS] [PROCESSES]
+# defaults: build/bin/trifem, "8:4 16:4 24:6", "umfpack mumps mumps+reuse", 1, 1
+# PROCESSES > 1: each run through mpirun -np PROCESSES (the distributed MUMPS whatever the
+# backend; memory: the sum of the processes' peaks)
 # (python3 writes the meshes with examples/indentation/make_mesh.py)
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
@@ -16,6 +18,12 @@ trifem=${1:-$here/../../build/bin/trifem}
 sizes=${2:-"8:4 16:4 24:6"}
 backends=${3:-"umfpack mumps mumps+reuse"}
 repeats=${4:-1}
+processes=${5:-1}
+launch=()
+if [ "$processes" -gt 1 ]; then
+  export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+  launch=(mpirun --oversubscribe -np "$processes")
+fi
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
@@ -44,14 +52,18 @@ for size in $sizes; do
     [ "$backend" != "$solver" ] && reuse=true
     write_case "$work/mesh.msh" "$solver" "$reuse" > "$work/case.toml"
     for r in $(seq "$repeats"); do
-      "$trifem" -q run "$work/case.toml" -o "$work/out$r" > /dev/null 2>&1 || true
+      "${launch[@]}" "$trifem" -q run "$work/case.toml" -o "$work/out$r" > /dev/null 2>&1 || true
       echo "$(value total "$work/out$r/summary.json") $r"
     done | sort -g > "$work/times"
     median=$(sed -n "$(((repeats + 1) / 2))p" "$work/times" | cut -d' ' -f2)
     s="$work/out$median/summary.json"
+    memory=$(value peak_memory_mb_total "$s")
+    [ -n "$memory" ] || memory=$(value peak_memory_mb "$s")
+    label=$backend
+    [ "$processes" -gt 1 ] && label="$backend, $processes processes"
     printf '| %s×%s×%s | %s | %s | %s | %s | %.2f | %.0f | %.2f | %.2f |\n' "$n" "$n" "$nz" \
-      "$backend" "$(value equations "$s")" "$(value newton_iterations "$s")" \
+      "$label" "$(value equations "$s")" "$(value newton_iterations "$s")" \
       "$(value linear_iterations "$s")" "$(value total "$s")" \
-      "$(value peak_memory_mb "$s")" "$(value factorization "$s")" "$(value solve "$s")"
+      "$memory" "$(value factorization "$s")" "$(value solve "$s")"
   done
 done

@@ -9,6 +9,7 @@
 
 #include "trifem/core/error.hpp"
 #include "trifem/core/log.hpp"
+#include "trifem/io/pvtu_writer.hpp"
 #include "trifem/io/vtu_writer.hpp"
 #include "trifem/parallel/communicator.hpp"
 
@@ -64,6 +65,30 @@ io::UnstructuredGrid volume_grid(const model::Model& model) {
   return grid;
 }
 
+/// On several processes: the cells whose VTU piece process `rank` writes (a cell goes with the
+/// owner of the first displacement equation of its nodes; rank 0 if it has none).
+std::vector<Index> cells_of_process(const model::Model& model, int rank) {
+  const std::vector<int>& owner = model.problem->equation_owners();
+  std::vector<Index> mine;
+  for (Index c = 0; c < model.mesh.num_cells(); ++c) {
+    int cell_owner = 0;
+    bool found = false;
+    for (Index node : model.mesh.cells()[c]) {
+      for (int k = 0; k < 3 && !found; ++k)
+        if (const Index eq = model.dofs.equation(model.dofs.dof(model.fields.u, node, k));
+            eq >= 0) {
+          cell_owner = owner[eq];
+          found = true;
+        }
+      if (found)
+        break;
+    }
+    if (cell_owner == rank)
+      mine.push_back(c);
+  }
+  return mine;
+}
+
 } // namespace
 
 OutputWriter::OutputWriter(const model::Model& model, const io::OutputSpec& spec,
@@ -72,6 +97,9 @@ OutputWriter::OutputWriter(const model::Model& model, const io::OutputSpec& spec
       next_default_(end_time / io::kDefaultOutputCount), writes_files_(parallel::is_root()) {
   if (model.mixture)
     balance_ = std::make_unique<MassBalance>(model);
+  if (parallel::active() && model.problem->equation_owners().size() ==
+                                static_cast<std::size_t>(model.dofs.num_equations()))
+    piece_cells_ = cells_of_process(model, parallel::rank());
   if (!writes_files_)
     return;
   std::error_code ec;
@@ -147,6 +175,22 @@ void OutputWriter::write_vtu(Real time) {
   io::UnstructuredGrid grid = volume_grid(model_);
   grid.point_data = point_fields(model_);
   grid.cell_data = cell_fields(model_);
+  if (piece_cells_) { // several processes: a piece each, listed by rank 0's .pvtu file
+    const auto piece = fmt::format("volume_{:04d}_{}.vtu", state_count_, parallel::rank());
+    if (const auto bad = io::write_vtu(directory_ / piece, io::piece_of(grid, *piece_cells_));
+        bad > 0)
+      log::warn("  {} non-finite values written to {}", bad, piece);
+    if (!writes_files_)
+      return;
+    std::vector<std::string> pieces;
+    for (int p = 0; p < parallel::size(); ++p)
+      pieces.push_back(fmt::format("volume_{:04d}_{}.vtu", state_count_, p));
+    const auto file = directory_ / fmt::format("volume_{:04d}.pvtu", state_count_);
+    io::write_pvtu(file, grid, pieces);
+    pvd_->add(time, file);
+    ++vtu_count_;
+    return;
+  }
   const auto file = directory_ / fmt::format("volume_{:04d}.vtu", state_count_);
   if (const auto bad = io::write_vtu(file, grid); bad > 0)
     log::warn("  {} non-finite values written to {}", bad, file.string());
@@ -155,7 +199,9 @@ void OutputWriter::write_vtu(Real time) {
 }
 
 void OutputWriter::write_state(Real time) {
-  if (!writes_files_) { // another process writes the files: count the states only
+  if (!writes_files_) { // rank 0 writes the files but for this process's VTU piece
+    if (spec_.vtu && piece_cells_)
+      write_vtu(time);
     ++state_count_;
     last_state_time_ = time;
     return;

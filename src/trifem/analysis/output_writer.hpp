@@ -10,6 +10,7 @@
 
 #include <filesystem>
 #include <memory>
+#include <optional>
 
 namespace trifem::analysis {
 
@@ -71,6 +72,8 @@ private:
   double seconds_ = 0.0;
   /// False on the processes of a parallel run other than rank 0: they write no file.
   bool writes_files_ = true;
+  /// On several processes: the cells of this process's piece of each VTU state.
+  std::optional<std::vector<Index>> piece_cells_;
 };
 
 } // namespace trifem::analysis

@@ -22,6 +22,7 @@
 #include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <numeric>
 #include <omp.h>
 #include <optional>
 #include <set>
@@ -76,6 +77,12 @@ nlohmann::json summary(const io::CaseSpec& spec, const model::Model& model,
                        const solver::RunReport& run, const solver::PhaseTimes& phases,
                        double output_s, double wall_s, const MassBalance* balance) {
   nlohmann::json j = summary_header(spec, run_status(run), run.failure);
+  if (parallel::active()) { // collective: every process makes the summary
+    const std::vector<Real> each = parallel::gather(peak_memory_mb());
+    j["processes"] = parallel::size();
+    j["peak_memory_mb_of_each_process"] = each;
+    j["peak_memory_mb_total"] = std::accumulate(each.begin(), each.end(), 0.0);
+  }
   j["end_time_s"] = run.end_time;
   j["steps"] = run.steps;
   j["newton_iterations"] = run.iterations;

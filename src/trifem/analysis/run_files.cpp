@@ -15,7 +15,7 @@ namespace fs = std::filesystem;
 bool is_result_file_name(const std::string& name) {
   static const std::regex pattern(
       R"((results\.pvd|history\.csv|history_step\d+\.csv|summary\.json|run\.log|)"
-      R"(volume_\d{4,}\.vtu|contact\d+\.pvd|contact\d+_\d{4,}\.vtu|)"
+      R"(volume_\d{4,}\.vtu|volume_\d{4,}\.pvtu|volume_\d{4,}_\d+\.vtu|contact\d+\.pvd|contact\d+_\d{4,}\.vtu|)"
       R"(contact\d+_surface_\d{4,}\.csv|restart_\d{4,}\.bin)(\.tmp)?)");
   return std::regex_match(name, pattern);
 }
@@ -55,7 +55,7 @@ nlohmann::json summary_header(const io::CaseSpec& spec, const std::string& statu
   j["case"] = spec.file.string();
   j["status"] = status;
   j["failure"] = failure;
-  j["peak_memory_mb"] = peak_memory_mb();
+  j["peak_memory_mb"] = peak_memory_mb(); // of rank 0 on several processes
   return j;
 }
 

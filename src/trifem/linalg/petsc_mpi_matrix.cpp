@@ -18,8 +18,12 @@ RowLayout::RowLayout(const std::vector<int>& equation_owner, int rank_, int proc
 
 MpiAijMatrix::MpiAijMatrix(const SparseMatrix& part, const RowLayout& layout)
     : row_of_entry_(part.nonZeros()), column_(part.cols()) {
-  for (Index k = 0; k < part.nonZeros(); ++k)
+  const PetscInt first = layout.start[layout.rank], last = layout.start[layout.rank + 1];
+  for (Index k = 0; k < part.nonZeros(); ++k) {
     row_of_entry_[k] = layout.row[part.innerIndexPtr()[k]];
+    if (row_of_entry_[k] < first || row_of_entry_[k] >= last)
+      ++sent_entries_;
+  }
   for (Index j = 0; j < part.cols(); ++j)
     column_[j] = layout.row[j];
   const PetscInt local = layout.local_rows(), global = layout.rows();

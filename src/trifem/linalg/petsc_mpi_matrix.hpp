@@ -8,6 +8,7 @@
 
 #include <petscmat.h>
 
+#include <cstdint>
 #include <vector>
 
 namespace trifem::linalg::petsc {
@@ -42,12 +43,17 @@ public:
   /// Copies the values of `other`, a matrix of the same layout and pattern.
   void assign_values(const MpiAijMatrix& other);
   Mat mat() const { return matrix_; }
+  /// Stored entries of this process's part, and those of them in rows of other processes
+  /// (sent at every assembly).
+  std::int64_t entries() const { return static_cast<std::int64_t>(row_of_entry_.size()); }
+  std::int64_t sent_entries() const { return sent_entries_; }
 
 private:
   void add_part(Mat target, const SparseMatrix& part) const;
 
   std::vector<PetscInt> row_of_entry_; ///< PETSc row of every stored entry of the part
   std::vector<PetscInt> column_;       ///< PETSc column of every column of the part
+  std::int64_t sent_entries_ = 0;
   Mat matrix_ = nullptr;
 };
 

@@ -231,6 +231,17 @@ private:
   void analyze_distributed(const SparseMatrix& A) {
     try {
       mpi_matrix_ = std::make_unique<petsc::MpiAijMatrix>(A, *layout_);
+      const Real entries = parallel::sum(static_cast<Real>(mpi_matrix_->entries()));
+      const Real sent = parallel::sum(static_cast<Real>(mpi_matrix_->sent_entries()));
+      const std::string text =
+          fmt::format("  distributed matrix: {} rows on {} processes; {:.0f} of the {:.0f} entries "
+                      "assembled ({:.1f} %) go to another process",
+                      layout_->rows(), parallel::size(), sent, entries, 100.0 * sent / entries);
+      if (told_) // after a change of pattern (contact)
+        log::debug("{}", text);
+      else
+        log::info("{}", text);
+      told_ = true;
       check(MatCreateVecs(mpi_matrix_->mat(), &x_, &b_), "PETSc vectors");
       gather_ = std::make_unique<petsc::Gather>(x_);
       check(KSPCreate(PETSC_COMM_WORLD, &ksp_), "PETSc KSP");
@@ -373,6 +384,7 @@ private:
   std::unique_ptr<petsc::RowLayout> layout_;             ///< on several processes: the rows of each
   std::unique_ptr<petsc::MpiAijMatrix> mpi_matrix_, mpi_factored_; ///< ... and the matrices
   std::unique_ptr<petsc::Gather> gather_; ///< ... and the gathering of the solution
+  bool told_ = false;                     ///< the distributed matrix's size was logged
   bool reuse_ = false;   ///< precondition later matrices with an earlier factorization
   bool refactor_ = true; ///< the next factorize() factorizes
   bool stale_ = false;   ///< the factorization in use is of an earlier matrix

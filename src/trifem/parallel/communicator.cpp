@@ -95,6 +95,13 @@ Real sum(Real value) {
   return v[0];
 }
 
+std::vector<Real> gather(Real value) {
+  std::vector<Real> values(size(), value);
+  if (active())
+    MPI_Allgather(&value, 1, MPI_DOUBLE, values.data(), 1, MPI_DOUBLE, MPI_COMM_WORLD);
+  return values;
+}
+
 bool all(bool value) {
   if (!active())
     return value;

@@ -35,6 +35,8 @@ inline bool is_root() {
 void sum(Vector& values);
 /// The same for a single number.
 Real sum(Real value);
+/// The `value` of every process, by rank, on every process.
+std::vector<Real> gather(Real value);
 /// True if `value` is true on every process.
 bool all(bool value);
 /// Broadcasts `values` (of equal size everywhere) from rank 0.

@@ -3,6 +3,7 @@
 #include "trifem/core/error.hpp"
 #include "trifem/io/csv_writer.hpp"
 #include "trifem/io/pvd_writer.hpp"
+#include "trifem/io/pvtu_writer.hpp"
 #include "trifem/io/vtu_writer.hpp"
 
 #include <gtest/gtest.h>
@@ -320,6 +321,54 @@ TEST_F(WriterTest, VtuRoundTripsHexAndQuadGridsInEveryEncoding) {
     expect_round_trip(dir_ / "hexes.vtu", hexes);
     expect_round_trip(dir_ / "quads.vtu", quads);
   }
+}
+
+TEST_F(WriterTest, PiecesHoldTheirCellsWithTheirPointsAndData) {
+  const UnstructuredGrid grid = two_hexes();
+  for (const Index cell : {0, 1}) {
+    SCOPED_TRACE(cell);
+    const std::array<Index, 1> cells = {cell};
+    const UnstructuredGrid piece = piece_of(grid, cells);
+    ASSERT_EQ(piece.cell_count(), 1u);
+    ASSERT_EQ(piece.points.size(), 8u); // the cell's points only
+    EXPECT_EQ(piece.types[0], vtk_cell::kHexahedron);
+    for (Index k = 0; k < 8; ++k) { // the same corners, in the same order
+      const Index original = grid.connectivity[8 * cell + k];
+      const Index local = piece.connectivity[k];
+      EXPECT_EQ(piece.points[local], grid.points[original]);
+      for (std::size_t a = 0; a < grid.point_data.size(); ++a) {
+        const int n = grid.point_data[a].components;
+        for (int c = 0; c < n; ++c)
+          EXPECT_EQ(piece.point_data[a].values[local * n + c],
+                    grid.point_data[a].values[original * n + c]);
+      }
+    }
+    const int n = grid.cell_data[0].components;
+    EXPECT_EQ(piece.cell_data[0].values,
+              std::vector<double>(grid.cell_data[0].values.begin() + cell * n,
+                                  grid.cell_data[0].values.begin() + (cell + 1) * n));
+    EXPECT_EQ(write_vtu(dir_ / "piece.vtu", piece), 0u); // a valid grid of its own
+  }
+  const std::array<Index, 2> both = {0, 1}; // all cells: the grid itself
+  const UnstructuredGrid whole = piece_of(grid, both);
+  EXPECT_EQ(whole.connectivity, grid.connectivity);
+  EXPECT_EQ(whole.point_data[1].values, grid.point_data[1].values);
+}
+
+TEST_F(WriterTest, PvtuListsThePiecesAndTheArraysOfTheGrid) {
+  const UnstructuredGrid grid = two_hexes();
+  write_pvtu(dir_ / "volume.pvtu", grid, {"volume_0.vtu", "volume_1.vtu"});
+  const std::string text = read_text(dir_ / "volume.pvtu");
+  EXPECT_NE(text.find(R"(<VTKFile type="PUnstructuredGrid")"), std::string::npos);
+  EXPECT_EQ(tags(text, "Piece").size(), 2u);
+  EXPECT_EQ(attribute(tags(text, "Piece").at(1), "Source"), "volume_1.vtu");
+  const auto arrays = tags(text, "PDataArray");
+  ASSERT_EQ(arrays.size(), 4u); // 2 point arrays, 1 cell array, the points
+  EXPECT_EQ(attribute(arrays[0], "Name"), "displacement [mm]");
+  EXPECT_EQ(attribute(arrays[0], "NumberOfComponents"), "3");
+  EXPECT_EQ(attribute(arrays[2], "Name"), "stress");
+  EXPECT_EQ(attribute(arrays[2], "NumberOfComponents"), "6");
+  EXPECT_NE(text.find("</VTKFile>"), std::string::npos);
 }
 
 TEST_F(WriterTest, VtuEscapesSpecialCharactersInNames) {

@@ -168,7 +168,11 @@ std::unique_ptr<linalg::LinearSolver> linear_solver_for(const io::CaseSpec& spec
 
 /// The sparse direct solver, and for "auto" the backend it takes for this many equations.
 void log_linear_solver(const std::string& name, Index equations) {
-  if (name != "auto")
+  if (parallel::active())
+    log::info("  linear solver: MUMPS on the distributed matrix ({} processes; the case names "
+              "'{}')",
+              parallel::size(), name);
+  else if (name != "auto")
     log::info("  linear solver: {}", name);
   else
     log::info("  linear solver: auto, {} for {} equations (sparselu below {}, unless its "

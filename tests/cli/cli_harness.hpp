@@ -142,8 +142,13 @@ protected:
 
   /// Runs trifem with `args` in the working directory, capturing stdout, stderr and exit code.
   Result trifem(std::initializer_list<std::string> args) const {
+    return run(shell_quoted(kExe.string()), args);
+  }
+
+  /// Runs `program` (a shell command prefix) with `args` in the working directory.
+  Result run(const std::string& program, std::initializer_list<std::string> args) const {
     Result r;
-    r.command = shell_quoted(kExe.string());
+    r.command = program;
     for (const auto& a : args) {
       r.command += ' ';
       r.command += shell_quoted(a);

@@ -28,20 +28,9 @@ protected:
 
   /// Runs trifem with `args` on `processes` processes through mpirun.
   Result mpirun(int processes, std::initializer_list<std::string> args) const {
-    const std::string command = shell_quoted(kMpiexec.string()) + " --oversubscribe -np " +
-                                std::to_string(processes) + " " + shell_quoted(kExe.string());
-    Result r;
-    r.command = command;
-    for (const auto& a : args)
-      r.command += ' ' + shell_quoted(a);
-    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
-    const std::string line = "cd " + shell_quoted(dir_.string()) + " && " + r.command + " >" +
-                             shell_quoted(out.string()) + " 2>" + shell_quoted(err.string());
-    const int status = std::system(line.c_str());
-    r.exit_code = status != -1 && WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    r.out = read_text(out);
-    r.err = read_text(err);
-    return r;
+    return run(shell_quoted(kMpiexec.string()) + " --oversubscribe -np " +
+                   std::to_string(processes) + " " + shell_quoted(kExe.string()),
+               args);
   }
 
   /// The example `name` as a case file of the working directory (its mesh file, if any, read
@@ -52,6 +41,24 @@ protected:
     if (const auto at = text.find(mesh); at != std::string::npos)
       text.insert(at + mesh.size(), (kExamples / name).string() + "/");
     return write_file(name + ".toml", text);
+  }
+
+  /// `parallel` has the columns and rows of `serial` and the same values to 1e-8 of the largest
+  /// magnitude of each unit (the Newton iteration counts aside).
+  static void expect_the_same_history(const History& serial, const History& parallel) {
+    ASSERT_EQ(parallel.names, serial.names);
+    const std::map<std::string, double> scale = unit_scales(serial);
+    for (std::size_t c = 0; c < serial.names.size(); ++c) {
+      if (serial.names[c] == "iterations")
+        continue;
+      const std::vector<double>& a = serial.columns[c];
+      const std::vector<double>& b = parallel.columns[c];
+      ASSERT_EQ(a.size(), b.size()) << serial.names[c] << ": the runs took other steps";
+      double diff = 0.0;
+      for (std::size_t i = 0; i < a.size(); ++i)
+        diff = std::max(diff, std::abs(a[i] - b[i]));
+      EXPECT_LE(diff, 1e-8 * scale.at(unit_of(serial.names[c]))) << serial.names[c];
+    }
   }
 
   /// The output states of `parallel` (a run on `processes` processes) are those of `serial`,
@@ -99,7 +106,6 @@ protected:
     ASSERT_EQ(one.exit_code, kSuccess) << one;
     const History serial = read_history(output() / "1" / "history.csv");
     ASSERT_GT(serial.names.size(), 4u);
-    const std::map<std::string, double> scale = unit_scales(serial);
     for (const int processes : {2, 3}) {
       SCOPED_TRACE(std::to_string(processes) + " processes");
       const fs::path out = output() / std::to_string(processes);
@@ -108,19 +114,7 @@ protected:
       EXPECT_EQ(count_of(r.out, "completed: "), 1u) << "one log, from rank 0" << r;
       EXPECT_TRUE(contains(r.out, "on each of " + std::to_string(processes) + " processes")) << r;
       EXPECT_TRUE(lines_of(r.err).empty()) << r;
-      const History parallel = read_history(out / "history.csv");
-      ASSERT_EQ(parallel.names, serial.names);
-      for (std::size_t c = 0; c < serial.names.size(); ++c) {
-        if (serial.names[c] == "iterations")
-          continue;
-        const std::vector<double>& a = serial.columns[c];
-        const std::vector<double>& b = parallel.columns[c];
-        ASSERT_EQ(a.size(), b.size()) << serial.names[c] << ": the runs took other steps";
-        double diff = 0.0;
-        for (std::size_t i = 0; i < a.size(); ++i)
-          diff = std::max(diff, std::abs(a[i] - b[i]));
-        EXPECT_LE(diff, 1e-8 * scale.at(unit_of(serial.names[c]))) << serial.names[c];
-      }
+      expect_the_same_history(serial, read_history(out / "history.csv"));
       expect_the_same_states_in_pieces(output() / "1", out, processes);
     }
   }
@@ -157,7 +151,6 @@ TEST_F(CliParallel, AContactInterfaceSplitBetweenProcessesGivesTheOneProcessAnsw
   const Result one = trifem({"run", file.string(), "-o", (output() / "1").string()});
   ASSERT_EQ(one.exit_code, kSuccess) << one;
   const History serial = read_history(output() / "1" / "history.csv");
-  const std::map<std::string, double> scale = unit_scales(serial);
   for (const int processes : {2, 3}) {
     SCOPED_TRACE(std::to_string(processes) + " processes");
     const fs::path out = output() / std::to_string(processes);
@@ -169,15 +162,7 @@ TEST_F(CliParallel, AContactInterfaceSplitBetweenProcessesGivesTheOneProcessAnsw
     std::smatch m;
     ASSERT_TRUE(std::regex_search(r.out, m, sides)) << r;
     EXPECT_NE(m[1].str(), m[2].str()) << "the interface must lie between processes" << r;
-    const History parallel = read_history(out / "history.csv");
-    ASSERT_EQ(parallel.names, serial.names);
-    for (std::size_t c = 0; c < serial.names.size(); ++c) {
-      ASSERT_EQ(parallel.columns[c].size(), serial.columns[c].size()) << serial.names[c];
-      for (std::size_t i = 0; i < serial.columns[c].size(); ++i)
-        EXPECT_NEAR(parallel.columns[c][i], serial.columns[c][i],
-                    1e-8 * scale.at(unit_of(serial.names[c])))
-            << serial.names[c];
-    }
+    expect_the_same_history(serial, read_history(out / "history.csv"));
   }
 }
 

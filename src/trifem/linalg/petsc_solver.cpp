@@ -113,34 +113,10 @@ public:
       if (!mumps_orders) // A's columns read as rows: the pattern of Aᵀ, the same graph
         order_ = nested_dissection_order({n_, A.outerIndexPtr(), A.innerIndexPtr()});
       matrix_ = std::make_unique<petsc::SeqAijMatrix>(A, order_);
-      check(MatCreateVecs(matrix_->mat(), &x_, &b_), "PETSc vectors");
-      check(KSPCreate(PETSC_COMM_SELF, &ksp_), "PETSc KSP");
-      if (reuse_) { // FGMRES on the current matrix, preconditioned by the last factorization
+      if (reuse_)
         factored_matrix_ = std::make_unique<petsc::SeqAijMatrix>(A, order_);
-        check(KSPSetOperators(ksp_, matrix_->mat(), factored_matrix_->mat()),
-              "PETSc KSP operators");
-        check(KSPSetType(ksp_, KSPFGMRES), "PETSc KSP type");
-        check(KSPGMRESSetRestart(ksp_, kMaxReuseIterations), "PETSc GMRES restart");
-        check(KSPSetTolerances(ksp_, kReuseTolerance, 0.0, PETSC_DEFAULT, kMaxReuseIterations),
-              "PETSc KSP tolerances");
-      } else {
-        check(KSPSetOperators(ksp_, matrix_->mat(), matrix_->mat()), "PETSc KSP operators");
-        check(KSPSetType(ksp_, KSPPREONLY), "PETSc KSP type");
-      }
-      refactor_ = true;
-      PC pc = nullptr;
-      check(KSPGetPC(ksp_, &pc), "PETSc PC");
-      check(PCSetType(pc, PCLU), "PETSc PC type");
-      check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS), "MUMPS");
-      check(PCFactorSetMatOrderingType(pc, mumps_orders ? MATORDERINGEXTERNAL : MATORDERINGNATURAL),
-            "PETSc ordering");
-      check(KSPSetFromOptions(ksp_), "PETSc options");
-      if (workspace_percent_ > 0) { // a retry after a too small workspace
-        Mat factor = nullptr;
-        check(PCFactorSetUpMatSolverType(pc), "MUMPS");
-        check(PCFactorGetMatrix(pc, &factor), "MUMPS");
-        check(MatMumpsSetIcntl(factor, 14, workspace_percent_), "MUMPS ICNTL(14)");
-      }
+      set_up_ksp(PETSC_COMM_SELF, matrix_->mat(), reuse_ ? factored_matrix_->mat() : nullptr,
+                 mumps_orders ? MATORDERINGEXTERNAL : MATORDERINGNATURAL);
     } catch (const petsc::PetscError& e) {
       failure_ = {e.what(), true};
       release();
@@ -242,36 +218,46 @@ private:
       else
         log::info("{}", text);
       told_ = true;
-      check(MatCreateVecs(mpi_matrix_->mat(), &x_, &b_), "PETSc vectors");
-      gather_ = std::make_unique<petsc::Gather>(x_);
-      check(KSPCreate(PETSC_COMM_WORLD, &ksp_), "PETSc KSP");
-      if (reuse_) {
+      if (reuse_)
         mpi_factored_ = std::make_unique<petsc::MpiAijMatrix>(A, *layout_);
-        check(KSPSetOperators(ksp_, mpi_matrix_->mat(), mpi_factored_->mat()),
-              "PETSc KSP operators");
-        check(KSPSetType(ksp_, KSPFGMRES), "PETSc KSP type");
-        check(KSPGMRESSetRestart(ksp_, kMaxReuseIterations), "PETSc GMRES restart");
-        check(KSPSetTolerances(ksp_, kReuseTolerance, 0.0, PETSC_DEFAULT, kMaxReuseIterations),
-              "PETSc KSP tolerances");
-      } else {
-        check(KSPSetOperators(ksp_, mpi_matrix_->mat(), mpi_matrix_->mat()), "PETSc KSP operators");
-        check(KSPSetType(ksp_, KSPPREONLY), "PETSc KSP type");
-      }
-      refactor_ = true;
-      PC pc = nullptr;
-      check(KSPGetPC(ksp_, &pc), "PETSc PC");
-      check(PCSetType(pc, PCLU), "PETSc PC type");
-      check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS), "MUMPS");
-      check(KSPSetFromOptions(ksp_), "PETSc options");
-      if (workspace_percent_ > 0) {
-        Mat factor = nullptr;
-        check(PCFactorSetUpMatSolverType(pc), "MUMPS");
-        check(PCFactorGetMatrix(pc, &factor), "MUMPS");
-        check(MatMumpsSetIcntl(factor, 14, workspace_percent_), "MUMPS ICNTL(14)");
-      }
+      set_up_ksp(PETSC_COMM_WORLD, mpi_matrix_->mat(), reuse_ ? mpi_factored_->mat() : nullptr,
+                 nullptr);
+      gather_ = std::make_unique<petsc::Gather>(x_);
     } catch (const petsc::PetscError& e) {
       failure_ = {e.what(), true};
       release();
+    }
+  }
+
+  /// The vectors and the KSP on `comm`: MUMPS LU of `A`, or with `factored` (reuse) FGMRES on
+  /// `A` preconditioned by the LU of `factored`. `ordering`: PETSc's ordering type (null: MUMPS's
+  /// own choice).
+  void set_up_ksp(MPI_Comm comm, Mat A, Mat factored, MatOrderingType ordering) {
+    check(MatCreateVecs(A, &x_, &b_), "PETSc vectors");
+    check(KSPCreate(comm, &ksp_), "PETSc KSP");
+    if (factored) { // FGMRES on the current matrix, preconditioned by the last factorization
+      check(KSPSetOperators(ksp_, A, factored), "PETSc KSP operators");
+      check(KSPSetType(ksp_, KSPFGMRES), "PETSc KSP type");
+      check(KSPGMRESSetRestart(ksp_, kMaxReuseIterations), "PETSc GMRES restart");
+      check(KSPSetTolerances(ksp_, kReuseTolerance, 0.0, PETSC_DEFAULT, kMaxReuseIterations),
+            "PETSc KSP tolerances");
+    } else {
+      check(KSPSetOperators(ksp_, A, A), "PETSc KSP operators");
+      check(KSPSetType(ksp_, KSPPREONLY), "PETSc KSP type");
+    }
+    refactor_ = true;
+    PC pc = nullptr;
+    check(KSPGetPC(ksp_, &pc), "PETSc PC");
+    check(PCSetType(pc, PCLU), "PETSc PC type");
+    check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS), "MUMPS");
+    if (ordering)
+      check(PCFactorSetMatOrderingType(pc, ordering), "PETSc ordering");
+    check(KSPSetFromOptions(ksp_), "PETSc options");
+    if (workspace_percent_ > 0) { // a retry after a too small workspace
+      Mat factor = nullptr;
+      check(PCFactorSetUpMatSolverType(pc), "MUMPS");
+      check(PCFactorGetMatrix(pc, &factor), "MUMPS");
+      check(MatMumpsSetIcntl(factor, 14, workspace_percent_), "MUMPS ICNTL(14)");
     }
   }
 

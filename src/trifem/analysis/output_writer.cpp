@@ -13,6 +13,7 @@
 #include "trifem/io/vtu_writer.hpp"
 #include "trifem/parallel/communicator.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 
@@ -66,24 +67,15 @@ io::UnstructuredGrid volume_grid(const model::Model& model) {
 }
 
 /// On several processes: the cells whose VTU piece process `rank` writes (a cell goes with the
-/// owner of the first displacement equation of its nodes; rank 0 if it has none).
+/// owner of its first node that has one; rank 0 if none has).
 std::vector<Index> cells_of_process(const model::Model& model, int rank) {
-  const std::vector<int>& owner = model.problem->equation_owners();
   std::vector<Index> mine;
   for (Index c = 0; c < model.mesh.num_cells(); ++c) {
-    int cell_owner = 0;
-    bool found = false;
-    for (Index node : model.mesh.cells()[c]) {
-      for (int k = 0; k < 3 && !found; ++k)
-        if (const Index eq = model.dofs.equation(model.dofs.dof(model.fields.u, node, k));
-            eq >= 0) {
-          cell_owner = owner[eq];
-          found = true;
-        }
-      if (found)
+    int cell_owner = -1;
+    for (Index node : model.mesh.cells()[c])
+      if ((cell_owner = model::node_owner(model, node)) >= 0)
         break;
-    }
-    if (cell_owner == rank)
+    if (std::max(cell_owner, 0) == rank)
       mine.push_back(c);
   }
   return mine;
@@ -97,8 +89,7 @@ OutputWriter::OutputWriter(const model::Model& model, const io::OutputSpec& spec
       next_default_(end_time / io::kDefaultOutputCount), writes_files_(parallel::is_root()) {
   if (model.mixture)
     balance_ = std::make_unique<MassBalance>(model);
-  if (parallel::active() && model.problem->equation_owners().size() ==
-                                static_cast<std::size_t>(model.dofs.num_equations()))
+  if (parallel::active())
     piece_cells_ = cells_of_process(model, parallel::rank());
   if (!writes_files_)
     return;

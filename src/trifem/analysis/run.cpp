@@ -181,21 +181,14 @@ void log_linear_solver(const std::string& name, Index equations) {
               equations, linalg::kAutoSparseLuLimit);
 }
 
-/// The processes that own the nodes of `nodes` (the owner of a node's first displacement
-/// equation), ascending, as "[0, 2]".
+/// The processes that own the nodes of `nodes` (model::node_owner), ascending, as "[0, 2]"
+/// ("[]": none has a displacement equation, e.g. the nodes of a rigid body).
 std::string owners_of(const model::Model& model, const std::vector<Index>& nodes) {
-  const std::vector<int>& owner = model.problem->equation_owners();
   std::set<int> found;
   for (Index node : nodes)
-    for (int c = 0; c < 3; ++c)
-      if (const Index eq = model.dofs.equation(model.dofs.dof(model.fields.u, node, c)); eq >= 0) {
-        found.insert(owner[eq]);
-        break;
-      }
-  std::string list;
-  for (int p : found)
-    list += (list.empty() ? "" : ", ") + std::to_string(p);
-  return "[" + list + "]";
+    if (const int owner = model::node_owner(model, node); owner >= 0)
+      found.insert(owner);
+  return fmt::format("[{}]", fmt::join(found, ", "));
 }
 
 /// On several processes: the equations of each, and where the sides of each contact pair live.

@@ -2,14 +2,12 @@
 #include "trifem/linalg/linear_solver.hpp"
 
 #include "trifem/core/error.hpp"
-
 #include "trifem/linalg/auto_solver.hpp"
 #include "trifem/linalg/krylov_solver.hpp"
 #include "trifem/linalg/petsc_solver.hpp"
 #include "trifem/linalg/sparse_lu_solver.hpp"
 #include "trifem/linalg/umfpack_solver.hpp"
 #include "trifem/parallel/communicator.hpp"
-#include <algorithm>
 
 namespace trifem::linalg {
 
@@ -34,8 +32,14 @@ std::unique_ptr<LinearSolver> make_linear_solver(const std::string& name,
         fmt::format("solver.petsc_options applies to the PETSc backends (mumps, krylov), "
                     "not to linear_solver = '{}'",
                     name));
-  if (parallel::active()) // the distributed direct solver stands in for every direct one
-    return make_distributed_solver(name, petsc_options, reuse_factorization);
+  if (parallel::active()) { // on several processes MUMPS stands in for every direct backend
+    if (name == "krylov")
+      throw InputError(fmt::format("linear_solver = 'krylov' runs on one process only; on {} "
+                                   "processes use 'mumps' or 'auto' (the distributed MUMPS)",
+                                   parallel::size()));
+    if (name == "auto" || name == "umfpack" || name == "sparselu" || name == "mumps")
+      return make_mumps_solver(petsc_options, reuse_factorization);
+  }
   if (name == "auto")
     return make_auto_solver();
   if (name == "umfpack")
@@ -48,24 +52,6 @@ std::unique_ptr<LinearSolver> make_linear_solver(const std::string& name,
     return make_krylov_solver(petsc_options);
   throw InputError(fmt::format(
       "unknown linear solver '{}' (expected auto, umfpack, sparselu, mumps or krylov)", name));
-}
-
-std::unique_ptr<LinearSolver> make_distributed_solver(const std::string& name,
-                                                      const std::string& petsc_options,
-                                                      bool reuse_factorization) {
-  const auto known = available_linear_solvers();
-  if (std::find(known.begin(), known.end(), name) == known.end())
-    throw InputError(fmt::format(
-        "unknown linear solver '{}' (expected auto, umfpack, sparselu, mumps or krylov)", name));
-  if (name == "krylov")
-    throw InputError(fmt::format("linear_solver = 'krylov' runs on one process only; on {} "
-                                 "processes use 'mumps' or 'auto' (the distributed MUMPS)",
-                                 parallel::size()));
-  if (name != "mumps" && !petsc_options.empty())
-    throw InputError(fmt::format("solver.petsc_options applies to the PETSc backends (mumps, "
-                                 "krylov), not to linear_solver = '{}'",
-                                 name));
-  return make_mumps_solver(petsc_options, reuse_factorization && name == "mumps");
 }
 
 } // namespace trifem::linalg

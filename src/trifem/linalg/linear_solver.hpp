@@ -60,15 +60,10 @@ std::vector<std::string> available_linear_solvers();
 /// does not use one of them).
 /// `reuse_factorization` (mumps only) lets one factorization serve several Newton iterations
 /// (make_mumps_solver).
+/// On several processes (parallel::active()) every direct backend's name gives MUMPS on the
+/// distributed matrix, and `krylov` is an InputError.
 std::unique_ptr<LinearSolver> make_linear_solver(const std::string& name,
                                                  const std::string& petsc_options = "",
                                                  bool reuse_factorization = false);
-
-/// The backend on several processes (parallel::active()): MUMPS on the distributed matrix for
-/// every direct backend's name (`auto`, `umfpack`, `sparselu`, `mumps`; reusing
-/// factorizations only when `mumps` asks for it); InputError for `krylov` and unknown names.
-std::unique_ptr<LinearSolver> make_distributed_solver(const std::string& name,
-                                                      const std::string& petsc_options,
-                                                      bool reuse_factorization);
 
 } // namespace trifem::linalg

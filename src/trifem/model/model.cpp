@@ -266,4 +266,14 @@ std::unique_ptr<Model> build_model(const io::CaseSpec& spec) {
   return model;
 }
 
+int node_owner(const Model& model, Index node) {
+  const std::vector<int>& owner = model.problem->equation_owners();
+  if (owner.empty())
+    return -1;
+  for (int c = 0; c < 3; ++c)
+    if (const Index eq = model.dofs.equation(model.dofs.dof(model.fields.u, node, c)); eq >= 0)
+      return owner[eq];
+  return -1;
+}
+
 } // namespace trifem::model

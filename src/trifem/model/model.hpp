@@ -114,4 +114,8 @@ mesh::Mesh build_mesh(const io::CaseSpec& spec, std::map<std::string, std::strin
 /// Builds the whole model, including its initial state. InputErrors name the case key.
 std::unique_ptr<Model> build_model(const io::CaseSpec& spec);
 
+/// On several processes: the process that owns mesh node `node` (the owner of its first
+/// displacement equation); -1 if it has none (all displacements prescribed) or on one process.
+int node_owner(const Model& model, Index node);
+
 } // namespace trifem::model

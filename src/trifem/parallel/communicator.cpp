@@ -80,11 +80,11 @@ int size() {
 void sum(Vector& values) {
   if (!active())
     return;
-  Vector total(values.size());
-  MPI_Reduce(values.data(), total.data(), static_cast<int>(values.size()), MPI_DOUBLE, MPI_SUM, 0,
-             MPI_COMM_WORLD);
-  if (is_root())
-    values = total;
+  const int count = static_cast<int>(values.size());
+  if (is_root()) // in place: no copy of the (whole-model) vector per call
+    MPI_Reduce(MPI_IN_PLACE, values.data(), count, MPI_DOUBLE, MPI_SUM, 0, MPI_COMM_WORLD);
+  else
+    MPI_Reduce(values.data(), nullptr, count, MPI_DOUBLE, MPI_SUM, 0, MPI_COMM_WORLD);
   MPI_Bcast(values.data(), static_cast<int>(values.size()), MPI_DOUBLE, 0, MPI_COMM_WORLD);
 }
 

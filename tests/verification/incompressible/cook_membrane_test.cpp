@@ -3,9 +3,12 @@
 // nu = 0.499), 100 N shear on the free edge: the mean-dilatation element converges to the
 // reference tip deflection (about 6.89 mm) while the displacement element locks.
 #include "case_runner.hpp"
+#include "run_to_run.hpp"
 #include "trifem/explicit/mesh_builders.hpp"
 
 #include <gtest/gtest.h>
+
+#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
@@ -90,7 +93,8 @@ dt_max = 0.25
 
 /// Vertical displacement of the top corner (48, 60) [mm] at the end of the run.
 Real tip_deflection(int n, const std::string& element) {
-  const fs::path dir = fs::temp_directory_path() / ("trifem_cook_" + std::to_string(n));
+  const fs::path dir = fs::temp_directory_path() /
+                       ("trifem_cook_" + std::to_string(getpid()) + "_" + std::to_string(n));
   fs::create_directories(dir);
   write_cook_mesh(n, dir / "cook.msh");
   const test::CaseRun run = test::run_case_text(cook_case(element), dir / "case.toml");
@@ -117,7 +121,7 @@ TEST(CookMembrane, MeanDilatationConvergesToTheReferenceWhereTheDisplacementElem
   const Real locked = tip_deflection(16, "displacement");
   EXPECT_LT(locked, 0.7 * tip[16]);
   // "auto" (no key) chooses the mean-dilatation element for nu = 0.499
-  EXPECT_EQ(tip_deflection(8, ""), tip[8]);
+  EXPECT_TRUE(test::same_run_to_run(tip_deflection(8, ""), tip[8], kReferenceTip));
   std::printf("tip deflection [mm]: mean dilatation 8x8 %.4f, 16x16 %.4f, 32x32 %.4f; "
               "displacement 16x16 %.4f\n",
               tip[8], tip[16], tip[32], locked);

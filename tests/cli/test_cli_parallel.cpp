@@ -2,9 +2,11 @@
 // Runs on several processes (mpirun -np 2 and -np 3, oversubscribed on small machines): every
 // quasi-static example (sliding_layers through its first stroke and back, with MUMPS) gives the
 // one-process history to 1e-8 of the largest magnitude of each unit, with one log, one set of
-// result files and its VTU states in one piece per process; a contact interface split between
-// processes gives the same answer; bad input fails with one error line; the explicit analysis and
-// the Krylov backend are refused.
+// result files and its VTU states (volume and contact surfaces) in one piece per process; a
+// contact interface split between processes gives the same answer; bad input and an unwritable
+// output directory fail with one error line; a write error or an input error of one process
+// alone stops them all, with one error line, and so does a signal to one process; the explicit
+// analysis and the Krylov backend are refused.
 #include "cli_harness.hpp"
 
 #include <cstdlib>
@@ -69,14 +71,16 @@ protected:
     }
   }
 
-  /// The output states of `parallel` (a run on `processes` processes) are those of `serial`,
-  /// each as a .pvtu file whose pieces, one per process, hold all the cells between them.
+  /// The output states of `parallel` (a run on `processes` processes) in the collection
+  /// `pvd` are those of `serial`, each as a .pvtu file whose pieces, one per process, hold all
+  /// the cells between them.
   static void expect_the_same_states_in_pieces(const fs::path& serial, const fs::path& parallel,
-                                               int processes) {
+                                               int processes, const std::string& pvd) {
+    SCOPED_TRACE(pvd);
     const std::regex dataset(R"re(timestep="([^"]*)"[^>]*file="([^"]*)")re");
     const auto states = [&](const fs::path& dir) {
       std::vector<std::pair<std::string, std::string>> found; // (time, file)
-      const std::string text = read_text(dir / "results.pvd");
+      const std::string text = read_text(dir / pvd);
       for (auto it = std::sregex_iterator(text.begin(), text.end(), dataset);
            it != std::sregex_iterator(); ++it)
         found.emplace_back((*it)[1].str(), (*it)[2].str());
@@ -105,6 +109,15 @@ protected:
     }
   }
 
+  /// The VTU collections of the one-process run in `serial`: results.pvd and one contact<i>.pvd
+  /// per contact pair.
+  static std::vector<std::string> collections(const fs::path& serial) {
+    std::vector<std::string> names = {"results.pvd"};
+    for (int i = 1; fs::exists(serial / ("contact" + std::to_string(i) + ".pvd")); ++i)
+      names.push_back("contact" + std::to_string(i) + ".pvd");
+    return names;
+  }
+
   /// Runs `name` (its lines replaced by `lines`: example()) on 1, 2 and 3 processes: the same
   /// steps and the same history to 1e-8 of each unit's scale; rank 0 alone writes the files and
   /// the log.
@@ -125,7 +138,8 @@ protected:
       EXPECT_TRUE(contains(r.out, "on each of " + std::to_string(processes) + " processes")) << r;
       EXPECT_TRUE(lines_of(r.err).empty()) << r;
       expect_the_same_history(serial, read_history(out / "history.csv"));
-      expect_the_same_states_in_pieces(output() / "1", out, processes);
+      for (const std::string& pvd : collections(output() / "1"))
+        expect_the_same_states_in_pieces(output() / "1", out, processes, pvd);
     }
   }
 };
@@ -195,6 +209,78 @@ TEST_F(CliParallel, BadInputFailsWithOneErrorLine) {
   ASSERT_EQ(errors.size(), 1u) << r;
   EXPECT_TRUE(contains(errors[0], "bogus")) << r;
   EXPECT_FALSE(fs::exists(output() / "history.csv")) << r;
+}
+
+TEST_F(CliParallel, AnUnwritableOutputDirectoryFailsWithOneErrorLine) {
+  // rank 0 alone creates the output directory; every process learns that it could not
+  const fs::path blocker = write_file("not_a_directory", "");
+  const Result r =
+      mpirun(2, {"run", example("cantilever").string(), "-o", (blocker / "out").string()});
+  EXPECT_EQ(r.exit_code, kInvalidInput) << r;
+  const std::vector<std::string> errors = error_lines(r.err);
+  ASSERT_EQ(errors.size(), 1u) << r;
+  EXPECT_TRUE(contains(errors[0], "cannot create the output directory")) << r;
+}
+
+TEST_F(CliParallel, AWriteErrorOfOneProcessStopsEveryProcessWithOneErrorLine) {
+  // process 1 alone cannot write its piece of the first VTU state (a directory stands in its
+  // way): every process learns it, and the run fails as on one process, with a summary
+  fs::create_directories(output() / "volume_0000_1.vtu");
+  const Result r = mpirun(2, {"run", example("cantilever").string(), "-o", output().string()});
+  EXPECT_EQ(r.exit_code, kAnalysisFailed) << r;
+  const std::vector<std::string> errors = error_lines(r.err);
+  ASSERT_EQ(errors.size(), 1u) << r;
+  EXPECT_TRUE(contains(errors[0], "the initial state could not be written")) << r;
+  EXPECT_TRUE(contains(errors[0], "volume_0000_1.vtu")) << r;
+  EXPECT_TRUE(contains(read_text(output() / "summary.json"), "\"status\": \"failed\"")) << r;
+}
+
+TEST_F(CliParallel, AnErrorOfOneProcessAloneStopsEveryProcess) {
+  // process 1 alone reads a bad case (two programs under one mpirun): process 0 goes on and
+  // waits for it in the first collective operation; process 1 reports its error with its rank
+  // and stops them both
+  const fs::path good = example("cantilever");
+  const fs::path bad = write_file("bad.toml", read_text(good) + "\n[bogus]\nkey = 1\n");
+  const std::string exe = shell_quoted(kExe.string());
+  const Result r = run(shell_quoted(kMpiexec.string()) + " --oversubscribe -np 1 " + exe + " run " +
+                           shell_quoted(good.string()) + " -o " + shell_quoted(output().string()) +
+                           " : -np 1 " + exe,
+                       {"run", bad.string(), "-o", output().string()});
+  EXPECT_NE(r.exit_code, kSuccess) << r;
+  std::vector<std::string> errors = lines_of(r.err);
+  std::erase_if(errors, [](const std::string& line) { return !line.starts_with("error"); });
+  ASSERT_EQ(errors.size(), 1u) << r;
+  EXPECT_TRUE(errors[0].starts_with("error (process 1 of 2): " + bad.string() + ": bogus")) << r;
+  EXPECT_TRUE(contains(errors[0], "bogus")) << r;
+  EXPECT_TRUE(contains(errors[0], "the other processes are stopped")) << r;
+  EXPECT_EQ(count_of(r.out, "completed: "), 0u) << r;
+}
+
+TEST_F(CliParallel, ASignalToOneProcessStopsEveryProcessAtTheSameIteration) {
+  // SIGTERM to process 1 alone, after a few steps of a long run: every process stops, rank 0
+  // reports the interruption and keeps the results (without the agreement process 0 would wait
+  // for process 1 for ever: the run is killed after 120 s)
+  const fs::path file = example("confined_column", {{"end_time", "end_time = 1e5"}});
+  const fs::path history = output() / "history.csv";
+  write_file("rank.sh", "echo $$ > pid_$OMPI_COMM_WORLD_RANK\nexec \"$@\"\n");
+  const std::string script =
+      "timeout -s KILL 120 " + shell_quoted(kMpiexec.string()) +
+      " --oversubscribe -np 2 sh rank.sh " + shell_quoted(kExe.string()) + " -q run " +
+      shell_quoted(file.string()) + " -o " + shell_quoted(output().string()) +
+      " 2>err.txt & job=$!; for i in $(seq 1200); do n=$(cat " + shell_quoted(history.string()) +
+      " 2>/dev/null | wc -l); [ \"$n\" -ge 5 ] && break; sleep 0.05; done; kill -TERM $(cat "
+      "pid_1); wait $job; exit $?";
+  const int status = std::system(
+      ("cd " + shell_quoted(dir_.string()) + " && sh -c " + shell_quoted(script)).c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_NE(WEXITSTATUS(status), 0);
+  EXPECT_NE(WEXITSTATUS(status), 137) << "killed after 120 s: a process was left waiting";
+  const std::string summary = read_text(output() / "summary.json");
+  EXPECT_TRUE(contains(summary, "\"status\": \"interrupted\"")) << summary;
+  EXPECT_GE(lines_of(read_text(history)).size(), 5u);
+  const std::string err = read_text(dir_ / "err.txt");
+  EXPECT_EQ(error_lines(err).size(), 1u) << err;
+  EXPECT_TRUE(contains(err, "interrupted")) << err;
 }
 
 TEST_F(CliParallel, TheExplicitAnalysisIsRefusedWithOneErrorLine) {

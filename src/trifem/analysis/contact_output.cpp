@@ -3,6 +3,8 @@
 
 #include "trifem/core/log.hpp"
 #include "trifem/io/csv_writer.hpp"
+#include "trifem/io/pvtu_writer.hpp"
+#include "trifem/parallel/communicator.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -85,6 +87,23 @@ std::string component_name(const std::string& name, char c) {
   if (unit == std::string::npos)
     return fmt::format("{}.{}", name, c);
   return fmt::format("{}.{}{}", name.substr(0, unit), c, name.substr(unit));
+}
+
+/// The slave facets of `pair` that process `rank` writes: those whose first node with an owner
+/// (model::node_owner) it owns; facets of nodes without one go to rank 0.
+std::vector<Index> facets_of_process(const model::Model& model, const contact::ContactTerm& pair,
+                                     int rank) {
+  std::vector<Index> mine;
+  const auto& facets = pair.slave().facets();
+  for (std::size_t f = 0; f < facets.size(); ++f) {
+    int owner = -1;
+    for (const Index node : facets[f].nodes)
+      if ((owner = model::node_owner(model, node)) >= 0)
+        break;
+    if (std::max(owner, 0) == rank)
+      mine.push_back(static_cast<Index>(f));
+  }
+  return mine;
 }
 
 std::vector<std::string> csv_columns(const std::vector<io::DataArray>& arrays) {
@@ -172,10 +191,14 @@ void append_contact_history(const model::Model& model, std::vector<double>& row)
   }
 }
 
-ContactOutput::ContactOutput(const model::Model& model, std::filesystem::path directory)
-    : model_(model), directory_(std::move(directory)) {
-  for (std::size_t i = 1; i <= model.contacts.size(); ++i)
+ContactOutput::ContactOutput(const model::Model& model, std::filesystem::path directory,
+                             bool writes_files)
+    : model_(model), directory_(std::move(directory)), writes_files_(writes_files) {
+  for (std::size_t i = 1; writes_files_ && i <= model.contacts.size(); ++i)
     pvd_.push_back(std::make_unique<io::PvdWriter>(directory_ / fmt::format("contact{}.pvd", i)));
+  if (parallel::active())
+    for (const contact::ContactTerm* pair : model.contacts)
+      piece_facets_.push_back(facets_of_process(model, *pair, parallel::rank()));
 }
 
 void ContactOutput::write(Real time, int number, bool vtu) {
@@ -183,17 +206,41 @@ void ContactOutput::write(Real time, int number, bool vtu) {
     const contact::ContactTerm& pair = *model_.contacts[i];
     const std::vector<SlaveNodeState> states = pair.slave_states(model_.problem->state());
     std::vector<io::DataArray> arrays = contact_arrays(model_, states);
-    write_csv(directory_ / fmt::format("contact{}_surface_{:04d}.csv", i + 1, number), time, pair,
-              states, arrays);
+    if (writes_files_)
+      write_csv(directory_ / fmt::format("contact{}_surface_{:04d}.csv", i + 1, number), time, pair,
+                states, arrays);
     if (!vtu)
       continue;
     io::UnstructuredGrid grid = surface_grid(pair, states);
     grid.point_data = std::move(arrays);
-    const auto file = directory_ / fmt::format("contact{}_{:04d}.vtu", i + 1, number);
-    if (const auto bad = io::write_vtu(file, grid); bad > 0)
-      log::warn("  {} non-finite values written to {}", bad, file.string());
-    pvd_[i]->add(time, file);
+    write_vtu(directory_ / fmt::format("contact{}_{:04d}", i + 1, number), time, i,
+              std::move(grid));
   }
+}
+
+void ContactOutput::write_vtu(const std::filesystem::path& stem, Real time, std::size_t pair,
+                              io::UnstructuredGrid grid) {
+  const auto warn_if_not_finite = [](const std::filesystem::path& file, std::size_t bad) {
+    if (bad > 0)
+      log::warn("  {} non-finite values written to {}", bad, file.string());
+  };
+  if (piece_facets_.empty()) { // one process: the whole surface
+    const auto file = stem.string() + ".vtu";
+    warn_if_not_finite(file, io::write_vtu(file, grid));
+    pvd_[pair]->add(time, file);
+    return;
+  }
+  const auto piece = [&](int p) { return fmt::format("{}_{}.vtu", stem.filename().string(), p); };
+  const auto mine = directory_ / piece(parallel::rank());
+  warn_if_not_finite(mine, io::write_vtu(mine, io::piece_of(grid, piece_facets_[pair])));
+  if (!writes_files_)
+    return;
+  std::vector<std::string> pieces;
+  for (int p = 0; p < parallel::size(); ++p)
+    pieces.push_back(piece(p));
+  const auto file = stem.string() + ".pvtu";
+  io::write_pvtu(file, grid, pieces);
+  pvd_[pair]->add(time, file);
 }
 
 void ContactOutput::write_csv(const std::filesystem::path& file, Real time,

@@ -91,11 +91,19 @@ OutputWriter::OutputWriter(const model::Model& model, const io::OutputSpec& spec
     balance_ = std::make_unique<MassBalance>(model);
   if (parallel::active())
     piece_cells_ = cells_of_process(model, parallel::rank());
-  if (!writes_files_)
+  parallel::agree_on_output([&] { // rank 0 creates the directory; every process learns if it could
+    if (!writes_files_)
+      return;
+    std::error_code ec;
+    std::filesystem::create_directories(directory_, ec);
+    TRIFEM_CHECK_OUTPUT(!ec, "cannot create the output directory {}: {}", directory_.string(),
+                        ec.message());
+  });
+  if (!writes_files_) { // another process than rank 0: its pieces of the VTU states only
+    if (!model.contacts.empty())
+      contact_ = std::make_unique<ContactOutput>(model, directory_, false);
     return;
-  std::error_code ec;
-  std::filesystem::create_directories(directory_, ec);
-  TRIFEM_CHECK(!ec, "cannot create the output directory {}: {}", directory_.string(), ec.message());
+  }
   pvd_ = std::make_unique<io::PvdWriter>(directory_ / "results.pvd");
   cells_ = std::make_unique<CellEvaluator>(model);
   std::vector<std::string> columns = history_columns(model);
@@ -103,7 +111,7 @@ OutputWriter::OutputWriter(const model::Model& model, const io::OutputSpec& spec
     add_body_columns(*balance_, columns);
   history_ = std::make_unique<io::CsvWriter>(history_file(), columns);
   if (!model.contacts.empty())
-    contact_ = std::make_unique<ContactOutput>(model, directory_);
+    contact_ = std::make_unique<ContactOutput>(model, directory_, true);
 }
 
 OutputWriter::~OutputWriter() = default;
@@ -162,12 +170,12 @@ std::vector<double> OutputWriter::history_row(Real time, int step, Real dt, int 
   return row;
 }
 
-void OutputWriter::write_vtu(Real time) {
+void OutputWriter::write_vtu(Real time, int number) {
   io::UnstructuredGrid grid = volume_grid(model_);
   grid.point_data = point_fields(model_);
   grid.cell_data = cell_fields(model_);
   if (piece_cells_) { // several processes: a piece each, listed by rank 0's .pvtu file
-    const auto piece = fmt::format("volume_{:04d}_{}.vtu", state_count_, parallel::rank());
+    const auto piece = fmt::format("volume_{:04d}_{}.vtu", number, parallel::rank());
     if (const auto bad = io::write_vtu(directory_ / piece, io::piece_of(grid, *piece_cells_));
         bad > 0)
       log::warn("  {} non-finite values written to {}", bad, piece);
@@ -175,14 +183,14 @@ void OutputWriter::write_vtu(Real time) {
       return;
     std::vector<std::string> pieces;
     for (int p = 0; p < parallel::size(); ++p)
-      pieces.push_back(fmt::format("volume_{:04d}_{}.vtu", state_count_, p));
-    const auto file = directory_ / fmt::format("volume_{:04d}.pvtu", state_count_);
+      pieces.push_back(fmt::format("volume_{:04d}_{}.vtu", number, p));
+    const auto file = directory_ / fmt::format("volume_{:04d}.pvtu", number);
     io::write_pvtu(file, grid, pieces);
     pvd_->add(time, file);
     ++vtu_count_;
     return;
   }
-  const auto file = directory_ / fmt::format("volume_{:04d}.vtu", state_count_);
+  const auto file = directory_ / fmt::format("volume_{:04d}.vtu", number);
   if (const auto bad = io::write_vtu(file, grid); bad > 0)
     log::warn("  {} non-finite values written to {}", bad, file.string());
   pvd_->add(time, file);
@@ -190,35 +198,30 @@ void OutputWriter::write_vtu(Real time) {
 }
 
 void OutputWriter::write_state(Real time) {
-  if (!writes_files_) { // rank 0 writes the files but for this process's VTU piece
-    if (spec_.vtu && piece_cells_)
-      write_vtu(time);
-    ++state_count_;
-    last_state_time_ = time;
-    return;
-  }
-  if (spec_.vtu)
-    write_vtu(time);
-  if (contact_)
-    contact_->write(time, state_count_, spec_.vtu);
-  ++state_count_;
+  const int number = state_count_++; // counted on every process, even if a write fails
   last_state_time_ = time;
+  if (spec_.vtu && (writes_files_ || piece_cells_))
+    write_vtu(time, number);
+  if (contact_ && (writes_files_ || spec_.vtu)) // others: their pieces of the VTU states only
+    contact_->write(time, number, spec_.vtu);
 }
 
 void OutputWriter::write_last_state(Real time) {
   if (state_count_ > 0 && last_state_time_ == time)
     return;
   const auto start = std::chrono::steady_clock::now();
-  write_state(time);
+  parallel::agree_on_output([&] { write_state(time); });
   seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 void OutputWriter::write(Real time, int step, Real dt, int iterations, bool volume) {
   const auto start = std::chrono::steady_clock::now();
-  if (writes_files_)
-    history_->write_row(history_row(time, step, dt, iterations));
-  if (volume)
-    write_state(time);
+  parallel::agree_on_output([&] { // all go on, or all stop, if one process cannot write
+    if (writes_files_)
+      history_->write_row(history_row(time, step, dt, iterations));
+    if (volume)
+      write_state(time);
+  });
   seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 

@@ -52,7 +52,9 @@ public:
   double seconds() const { return seconds_; }
 
 private:
-  void write_vtu(Real time);
+  /// The VTU state numbered `number` (on several processes: this process's piece, and on
+  /// rank 0 the .pvtu file).
+  void write_vtu(Real time, int number);
   void write_state(Real time);
   std::vector<double> history_row(Real time, int step, Real dt, int iterations) const;
 

@@ -422,8 +422,10 @@ int run_quasi_static_case(const io::CaseSpec& spec, const std::filesystem::path&
     resume = resume_from(options.restart_file, spec, *model);
   const bool write_restarts = options.write_restart || spec.output.restart;
   std::unique_ptr<linalg::LinearSolver> linear_solver = linear_solver_for(spec);
-  if (parallel::is_root()) // rank 0 writes every file of a parallel run
-    start_output_directory(output_dir, spec);
+  parallel::agree_on_output([&] { // rank 0 writes every file of a parallel run
+    if (parallel::is_root())
+      start_output_directory(output_dir, spec);
+  });
   OutputWriter output(*model, spec.output, output_dir, spec.time.end_time);
   if (parallel::is_root())
     log::add_file((output_dir / "run.log").string());
@@ -453,9 +455,12 @@ int run_quasi_static_case(const io::CaseSpec& spec, const std::filesystem::path&
       note_roundoff_floor(*model, info, noted);
       const bool volume = output.is_output_time(info.time) || controller->finished();
       output.write(info.time, info.step, info.dt, info.newton->iterations, volume);
-      if (volume && write_restarts && parallel::is_root())
-        write_restart(output_dir / fmt::format("restart_{:04d}.bin", output.last_state_index()),
-                      *model, {controller->time(), controller->dt(), info.step});
+      if (volume && write_restarts)
+        parallel::agree_on_output([&] {
+          if (parallel::is_root())
+            write_restart(output_dir / fmt::format("restart_{:04d}.bin", output.last_state_index()),
+                          *model, {controller->time(), controller->dt(), info.step});
+        });
     };
     run = run_steps(
         spec, *model, newton, observer, [&](const solver::StepController& c) { controller = &c; },

@@ -110,6 +110,29 @@ bool all(bool value) {
   return every != 0;
 }
 
+bool any(bool value) {
+  if (!active())
+    return value;
+  int mine = value ? 1 : 0, some = 0;
+  MPI_Allreduce(&mine, &some, 1, MPI_INT, MPI_LOR, MPI_COMM_WORLD);
+  return some != 0;
+}
+
+std::string first_message(const std::string& message) {
+  if (!active())
+    return message;
+  int mine = message.empty() ? size() : rank(), first = size();
+  MPI_Allreduce(&mine, &first, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD);
+  if (first == size())
+    return {};
+  std::string text = rank() == first ? message : std::string();
+  int length = static_cast<int>(text.size());
+  MPI_Bcast(&length, 1, MPI_INT, first, MPI_COMM_WORLD);
+  text.resize(static_cast<std::size_t>(length));
+  MPI_Bcast(text.data(), length, MPI_CHAR, first, MPI_COMM_WORLD);
+  return text;
+}
+
 void broadcast(std::vector<int>& values) {
   if (!active())
     return;
@@ -131,7 +154,10 @@ bool agree_on_failure(const std::string& message, double wait_seconds) {
   }
   if (done)
     return is_root();
-  std::cerr << "error (process " << rank() << " of " << size() << "): " << message
+  const std::string_view prefix = "error: "; // the line as printed on one process
+  const std::string_view text =
+      message.starts_with(prefix) ? std::string_view(message).substr(prefix.size()) : message;
+  std::cerr << "error (process " << rank() << " of " << size() << "): " << text
             << " (the other processes are stopped)\n"
             << std::flush;
   MPI_Abort(MPI_COMM_WORLD, 1);

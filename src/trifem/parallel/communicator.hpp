@@ -5,6 +5,7 @@
 // identity and MPI is not initialised by this module.
 #pragma once
 
+#include "trifem/core/error.hpp"
 #include "trifem/core/types.hpp"
 
 #include <string>
@@ -39,14 +40,40 @@ Real sum(Real value);
 std::vector<Real> gather(Real value);
 /// True if `value` is true on every process.
 bool all(bool value);
+/// True if `value` is true on some process.
+bool any(bool value);
+/// The non-empty `message` of the lowest rank that has one, on every process ("" if none).
+std::string first_message(const std::string& message);
 /// Broadcasts `values` (of equal size everywhere) from rank 0.
 void broadcast(std::vector<int>& values);
+
+/// Runs `write` (which writes files of the run) on this process. If it throws OutputError on
+/// some process, every process throws OutputError with the message of the lowest such rank, so
+/// that all take the same path afterwards (the run goes on, or stops, on every process).
+template <class F>
+void agree_on_output(F&& write);
 
 /// Called by a process that failed with `message`. If every process fails within
 /// `wait_seconds` (an error in the input, read by all), returns true on rank 0 and false
 /// elsewhere: rank 0 alone reports it, and all end normally. If some process does not fail
-/// (the error is this process's own), prints "error (process k): message" and aborts every
-/// process, so none is left waiting.
+/// (the error is this process's own), prints "error (process k of N): message" (`message`
+/// without its leading "error: ") and aborts every process, so none is left waiting.
 bool agree_on_failure(const std::string& message, double wait_seconds = 5.0);
+
+template <class F>
+void agree_on_output(F&& write) {
+  std::string failure;
+  try {
+    write();
+  } catch (const OutputError& e) {
+    if (!active())
+      throw;
+    failure = e.what();
+  }
+  if (active())
+    failure = first_message(failure);
+  if (!failure.empty())
+    throw OutputError(failure);
+}
 
 } // namespace trifem::parallel

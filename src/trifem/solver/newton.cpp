@@ -3,6 +3,7 @@
 
 #include "trifem/core/interrupt.hpp"
 #include "trifem/core/log.hpp"
+#include "trifem/parallel/communicator.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -228,7 +229,7 @@ NewtonReport NewtonSolver::solve(NonlinearProblem& problem, const std::vector<Re
       report.at_roundoff_floor = true;
       return report;
     }
-    if (interrupt::requested()) {
+    if (parallel::any(interrupt::requested())) { // the same iteration on every process
       report.status = SolveStatus::Interrupted;
       report.failure_reason = "interrupted";
       return report;

@@ -4,6 +4,7 @@
 #include "trifem/core/error.hpp"
 #include "trifem/core/interrupt.hpp"
 #include "trifem/core/log.hpp"
+#include "trifem/parallel/communicator.hpp"
 
 #include <new>
 
@@ -89,7 +90,7 @@ RunReport run_time_loop(TransientProblem& problem, NewtonSolver& newton, StepCon
                         const StepObserver& observer) {
   RunReport run;
   while (!controller.finished()) {
-    if (interrupt::requested()) {
+    if (parallel::any(interrupt::requested())) { // a signal to one process stops them all
       run.interrupted = true;
       return stop(run, controller, fmt::format("interrupted at t = {:.6g}", controller.time()));
     }
@@ -106,6 +107,8 @@ RunReport run_time_loop(TransientProblem& problem, NewtonSolver& newton, StepCon
         report = newton.solve(problem);
       }
     } catch (const std::bad_alloc&) { // no smaller step needs less memory: stop at once
+      if (parallel::active()) // the others wait in a collective operation: stop them all (main)
+        throw;
       report.status = SolveStatus::Unrecoverable;
       report.failure_reason = "out of memory (the model is too large for the memory available)";
     }

@@ -189,9 +189,9 @@ TEST_F(CliParallel, AContactInterfaceSplitBetweenProcessesGivesTheOneProcessAnsw
     const fs::path out = output() / std::to_string(processes);
     const Result r = mpirun(processes, {"run", file.string(), "-o", out.string()});
     ASSERT_EQ(r.exit_code, kSuccess) << r;
-    // "contact 1: slave nodes on processes [a], master nodes on [b]" with a != b
+    // "contact 1: slave nodes on processes [a], master nodes on processes [b]" with a != b
     const std::regex sides(
-        R"(contact 1: slave nodes on processes \[(\d)\], master nodes on \[(\d)\])");
+        R"(contact 1: slave nodes on processes \[(\d)\], master nodes on processes \[(\d)\])");
     std::smatch m;
     ASSERT_TRUE(std::regex_search(r.out, m, sides)) << r;
     EXPECT_NE(m[1].str(), m[2].str()) << "the interface must lie between processes" << r;

@@ -181,14 +181,16 @@ void log_linear_solver(const std::string& name, Index equations) {
               equations, linalg::kAutoSparseLuLimit);
 }
 
-/// The processes that own the nodes of `nodes` (model::node_owner), ascending, as "[0, 2]"
-/// ("[]": none has a displacement equation, e.g. the nodes of a rigid body).
+/// The processes that own the nodes of `nodes` (model::node_owner), ascending, as
+/// "processes [0, 2]"; "no process" if none has a displacement equation (a rigid body's nodes).
 std::string owners_of(const model::Model& model, const std::vector<Index>& nodes) {
   std::set<int> found;
   for (Index node : nodes)
     if (const int owner = model::node_owner(model, node); owner >= 0)
       found.insert(owner);
-  return fmt::format("[{}]", fmt::join(found, ", "));
+  if (found.empty())
+    return "no process (their displacements are prescribed or follow a rigid body)";
+  return fmt::format("processes [{}]", fmt::join(found, ", "));
 }
 
 /// On several processes: the equations of each, and where the sides of each contact pair live.
@@ -200,7 +202,7 @@ void log_partition(const model::Model& model) {
     ++count[owner];
   log::info("  processes: {}, equations of each: {}", parallel::size(), fmt::join(count, ", "));
   for (std::size_t k = 0; k < model.contacts.size(); ++k)
-    log::info("  contact {}: slave nodes on processes {}, master nodes on {}", k + 1,
+    log::info("  contact {}: slave nodes on {}, master nodes on {}", k + 1,
               owners_of(model, model.contacts[k]->slave().nodes()),
               owners_of(model, model.contacts[k]->master().nodes()));
 }

@@ -41,6 +41,13 @@ bool mpi_running() {
   return initialized && !finalized;
 }
 
+/// `value` of every process combined by the logical `op` (MPI_LAND, MPI_LOR), on every process.
+bool reduced_flag(bool value, MPI_Op op) {
+  int mine = value ? 1 : 0, combined = 0;
+  MPI_Allreduce(&mine, &combined, 1, MPI_INT, op, MPI_COMM_WORLD);
+  return combined != 0;
+}
+
 } // namespace
 
 bool launched_in_parallel() {
@@ -103,19 +110,11 @@ std::vector<Real> gather(Real value) {
 }
 
 bool all(bool value) {
-  if (!active())
-    return value;
-  int mine = value ? 1 : 0, every = 0;
-  MPI_Allreduce(&mine, &every, 1, MPI_INT, MPI_LAND, MPI_COMM_WORLD);
-  return every != 0;
+  return active() ? reduced_flag(value, MPI_LAND) : value;
 }
 
 bool any(bool value) {
-  if (!active())
-    return value;
-  int mine = value ? 1 : 0, some = 0;
-  MPI_Allreduce(&mine, &some, 1, MPI_INT, MPI_LOR, MPI_COMM_WORLD);
-  return some != 0;
+  return active() ? reduced_flag(value, MPI_LOR) : value;
 }
 
 std::string first_message(const std::string& message) {

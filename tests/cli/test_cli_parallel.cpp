@@ -251,7 +251,6 @@ TEST_F(CliParallel, AnErrorOfOneProcessAloneStopsEveryProcess) {
   std::erase_if(errors, [](const std::string& line) { return !line.starts_with("error"); });
   ASSERT_EQ(errors.size(), 1u) << r;
   EXPECT_TRUE(errors[0].starts_with("error (process 1 of 2): " + bad.string() + ": bogus")) << r;
-  EXPECT_TRUE(contains(errors[0], "bogus")) << r;
   EXPECT_TRUE(contains(errors[0], "the other processes are stopped")) << r;
   EXPECT_EQ(count_of(r.out, "completed: "), 0u) << r;
 }
@@ -262,7 +261,7 @@ TEST_F(CliParallel, ASignalToOneProcessStopsEveryProcessAtTheSameIteration) {
   // for process 1 for ever: the run is killed after 120 s)
   const fs::path file = example("confined_column", {{"end_time", "end_time = 1e5"}});
   const fs::path history = output() / "history.csv";
-  write_file("rank.sh", "echo $$ > pid_$OMPI_COMM_WORLD_RANK\nexec \"$@\"\n");
+  write_file("rank.sh", "echo $$ > pid_${OMPI_COMM_WORLD_RANK:-$PMI_RANK}\nexec \"$@\"\n");
   const std::string script =
       "timeout -s KILL 120 " + shell_quoted(kMpiexec.string()) +
       " --oversubscribe -np 2 sh rank.sh " + shell_quoted(kExe.string()) + " -q run " +

@@ -138,8 +138,8 @@ Stencils subset(const Stencils& stencils, const std::vector<Index>& which) {
 } // namespace
 
 Assembler::Assembler(const dofs::DofMap& map, std::vector<const physics::Term*> terms,
-                     const dofs::NodalFrames* frames)
-    : map_(map), terms_(std::move(terms)), frames_(frames) {
+                     const dofs::NodalFrames* frames, bool awaits_ownership)
+    : map_(map), terms_(std::move(terms)), frames_(frames), awaits_ownership_(awaits_ownership) {
   TRIFEM_VERIFY(map.finalized(), "the DOF map must be finalized before assembly");
   rebuild();
 }
@@ -147,6 +147,7 @@ Assembler::Assembler(const dofs::DofMap& map, std::vector<const physics::Term*> 
 void Assembler::set_ownership(std::vector<int> equation_owner, int rank) {
   equation_owner_ = std::move(equation_owner);
   rank_ = rank;
+  awaits_ownership_ = false;
   rebuild();
 }
 
@@ -156,6 +157,8 @@ void Assembler::rebuild() {
   std::vector<Stencils> owned; // on several processes: the stencils of this process's elements
   for (const physics::Term* t : terms_) {
     stencils_.push_back(collect_stencils(*t));
+    if (awaits_ownership_)
+      continue;
     if (equation_owner_.empty()) {
       colours_.push_back(colour_elements(stencils_.back(), map_));
       continue;
@@ -168,6 +171,8 @@ void Assembler::rebuild() {
         e = mine[e];
     colours_.push_back(std::move(colours));
   }
+  if (awaits_ownership_)
+    return;
   std::vector<const Stencils*> sets;
   for (const auto& s : equation_owner_.empty() ? stencils_ : owned)
     sets.push_back(&s);

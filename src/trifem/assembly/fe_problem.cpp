@@ -31,7 +31,9 @@ void FeProblem::build_assembler() {
   std::vector<const physics::Term*> views;
   for (const auto& t : terms_)
     views.push_back(t.get());
-  assembler_ = std::make_unique<Assembler>(map_, std::move(views), &frames_);
+  // on several processes the whole pattern is never built: each builds its part once the
+  // equations are split (partition)
+  assembler_ = std::make_unique<Assembler>(map_, std::move(views), &frames_, parallel::active());
   partition();
   system_ = assembler_->make_system();
   ++pattern_id_;

@@ -24,9 +24,11 @@ struct AssembledSystem {
 class Assembler {
 public:
   /// `frames` (optional, outlives the assembler): rotated nodal DOFs; element contributions
-  /// are rotated to the local frames before scattering.
+  /// are rotated to the local frames before scattering. `awaits_ownership`: a run on several
+  /// processes, whose colours and pattern set_ownership() builds (only the stencils are
+  /// collected here, for body_couplings()).
   Assembler(const dofs::DofMap& map, std::vector<const physics::Term*> terms,
-            const dofs::NodalFrames* frames = nullptr);
+            const dofs::NodalFrames* frames = nullptr, bool awaits_ownership = false);
   /// Assembles residual and (if with_jacobian) both Jacobian blocks. False if some element
   /// reported an inadmissible state.
   bool assemble(const physics::EvalState& state, AssembledSystem& out, bool with_jacobian) const;
@@ -52,6 +54,7 @@ private:
   const dofs::NodalFrames* frames_;
   std::vector<int> equation_owner_; ///< empty: this process assembles every element
   int rank_ = 0;
+  bool awaits_ownership_ = false; ///< until set_ownership(): stencils only
   std::vector<Stencils> stencils_;
   std::vector<std::vector<std::vector<Index>>> colours_;
   SystemPattern pattern_;

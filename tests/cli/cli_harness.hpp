@@ -122,6 +122,25 @@ inline std::map<std::string, double> unit_scales(const History& h) {
   return scale;
 }
 
+/// `other` has the columns and rows of `expected` and the same values to `relative` of the
+/// largest magnitude of each unit in `expected` (unit_scales); the columns `skipped` aside.
+inline void expect_the_same_history(const History& expected, const History& other, double relative,
+                                    std::initializer_list<std::string_view> skipped = {}) {
+  ASSERT_EQ(other.names, expected.names);
+  const std::map<std::string, double> scale = unit_scales(expected);
+  for (std::size_t c = 0; c < expected.names.size(); ++c) {
+    if (std::find(skipped.begin(), skipped.end(), expected.names[c]) != skipped.end())
+      continue;
+    const std::vector<double>& a = expected.columns[c];
+    const std::vector<double>& b = other.columns[c];
+    ASSERT_EQ(a.size(), b.size()) << expected.names[c] << ": the runs took other steps";
+    double diff = 0.0;
+    for (std::size_t i = 0; i < a.size(); ++i)
+      diff = std::max(diff, std::abs(a[i] - b[i]));
+    EXPECT_LE(diff, relative * scale.at(unit_of(expected.names[c]))) << expected.names[c];
+  }
+}
+
 /// Fixture: every test works in a fresh temporary directory, removed afterwards.
 class Cli : public ::testing::Test {
 protected:

@@ -66,20 +66,9 @@ protected:
     SCOPED_TRACE(name);
     const History umfpack = read_history(run_example(name, "umfpack"));
     ASSERT_GT(umfpack.names.size(), 1u);
-    const std::map<std::string, double> scale = unit_scales(umfpack);
     for (const std::string backend : {"mumps", "mumps+reuse", "krylov"}) {
       SCOPED_TRACE(backend);
-      const History other = read_history(run_example(name, backend));
-      ASSERT_EQ(umfpack.names, other.names);
-      for (std::size_t c = 0; c < umfpack.names.size(); ++c) {
-        const std::vector<double>& a = umfpack.columns[c];
-        const std::vector<double>& b = other.columns[c];
-        ASSERT_EQ(a.size(), b.size()) << umfpack.names[c] << ": the runs took other steps";
-        double diff = 0.0;
-        for (std::size_t i = 0; i < a.size(); ++i)
-          diff = std::max(diff, std::abs(a[i] - b[i]));
-        EXPECT_LE(diff, 1e-8 * scale.at(unit_of(umfpack.names[c]))) << umfpack.names[c];
-      }
+      expect_the_same_history(umfpack, read_history(run_example(name, backend)), 1e-8);
       // the same Newton iterations per step, within one per step
       const fs::path direct = output() / "umfpack" / "summary.json";
       const fs::path summary = output() / backend / "summary.json";
@@ -134,14 +123,7 @@ TEST_F(CliSolvers, MumpsFactorizesAgainWhenItsWorkspaceEstimateIsTooSmall) {
     }
     histories[backend] = read_history(out / "history.csv");
   }
-  const History& direct = histories.at("sparselu");
-  const std::map<std::string, double> scale = unit_scales(direct);
-  ASSERT_EQ(histories.at("mumps").names, direct.names);
-  for (std::size_t c = 0; c < direct.names.size(); ++c)
-    for (std::size_t i = 0; i < direct.columns[c].size(); ++i)
-      EXPECT_NEAR(histories.at("mumps").columns[c].at(i), direct.columns[c][i],
-                  1e-8 * scale.at(unit_of(direct.names[c])))
-          << direct.names[c];
+  expect_the_same_history(histories.at("sparselu"), histories.at("mumps"), 1e-8);
 }
 
 TEST_F(CliSolvers, UnknownPetscOptionIsNamed) {

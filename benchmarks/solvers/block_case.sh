@@ -2,15 +2,18 @@
 # SPDX-License-Identifier: MIT
 # Writes the case file of the 3-D triphasic block benchmark (docs/performance.md, "PETSc
 # backends on 3-D triphasic blocks") to standard output:
-#   block_case.sh CELLS SOLVER [PETSC_OPTIONS] [REUSE]
+#   block_case.sh CELLS SOLVER [PETSC_OPTIONS] [REUSE] [PRECONDITIONER] [INITIAL_STATE]
 # A 1 mm cube of CELLS^3 hex8 cells of the paper's cartilage, bottom fixed and impermeable, the
 # top compressed by 0.05 mm ramped over 50 s, one step of 2.5 s; SOLVER is any linear_solver,
-# REUSE "true" sets reuse_factorization.
+# REUSE "true" sets reuse_factorization, PRECONDITIONER the krylov preconditioner (lu, amg),
+# INITIAL_STATE the [analysis] initial_state (donnan, donnan-prestressed).
 set -euo pipefail
 cells=${1:?usage: block_case.sh CELLS SOLVER [PETSC_OPTIONS] [REUSE]}
 solver=${2:?usage: block_case.sh CELLS SOLVER [PETSC_OPTIONS] [REUSE]}
 options=${3:-}
 reuse=${4:-false}
+preconditioner=${5:-lu}
+initial_state=${6:-donnan}
 cat <<CASE
 title = "triphasic block ${cells}^3, ${solver}"
 
@@ -53,6 +56,9 @@ component = "z"
 value = -0.05
 curve = "ramp"
 
+[analysis]
+initial_state = "${initial_state}"
+
 [time]
 end_time = 2.5
 dt = 2.5
@@ -65,4 +71,5 @@ linear_solver = "${solver}"
 CASE
 [ -n "$options" ] && echo "petsc_options = \"${options}\""
 [ "$reuse" = true ] && echo "reuse_factorization = true"
+[ "$preconditioner" != lu ] && echo "preconditioner = \"${preconditioner}\""
 exit 0

@@ -44,12 +44,16 @@ class CliSolvers : public Cli {
 protected:
   /// Runs the example `name` with `backend`; the history.csv path (empty on failure).
   fs::path run_example(const std::string& name, const std::string& backend) const {
-    // "mumps+reuse": MUMPS with reuse_factorization
-    const bool reuse = backend == "mumps+reuse";
+    // "mumps+reuse": MUMPS with reuse_factorization; "krylov+amg": the multigrid preconditioner
+    const bool reuse = backend == "mumps+reuse", amg = backend == "krylov+amg";
     std::string text =
-        with_backend(read_text(kExamples / name / (name + ".toml")), reuse ? "mumps" : backend);
+        with_backend(read_text(kExamples / name / (name + ".toml")), reuse ? "mumps"
+                                                                     : amg ? "krylov"
+                                                                           : backend);
     if (reuse)
       text.insert(text.find("\n[solver]\n") + 10, "reuse_factorization = true\n");
+    if (amg)
+      text.insert(text.find("\n[solver]\n") + 10, "preconditioner = \"amg\"\n");
     const std::string mesh = "\nfile = \""; // a mesh file beside the example
     if (const auto at = text.find(mesh); at != std::string::npos)
       text.insert(at + mesh.size(), (kExamples / name).string() + "/");
@@ -62,11 +66,14 @@ protected:
 
   /// Runs the example `name` with UMFPACK and with every PETSc backend: the same history to
   /// 1e-8 of each unit's scale, and the same Newton iterations within one per step.
-  void expect_petsc_backends_give_the_umfpack_history(const std::string& name) const {
+  void expect_petsc_backends_give_the_umfpack_history(const std::string& name,
+                                                      const std::vector<std::string>& backends = {
+                                                          "mumps", "mumps+reuse", "krylov",
+                                                          "krylov+amg"}) const {
     SCOPED_TRACE(name);
     const History umfpack = read_history(run_example(name, "umfpack"));
     ASSERT_GT(umfpack.names.size(), 1u);
-    for (const std::string backend : {"mumps", "mumps+reuse", "krylov"}) {
+    for (const std::string& backend : backends) {
       SCOPED_TRACE(backend);
       expect_the_same_history(umfpack, read_history(run_example(name, backend)), 1e-8);
       // the same Newton iterations per step, within one per step
@@ -95,7 +102,9 @@ TEST_F(CliSolvers, PetscBackendsGiveTheUmfpackHistoryOnEveryExample) {
 }
 
 TEST_F(CliSolvers, PetscBackendsGiveTheUmfpackHistoryOnTheIndentationExample) {
-  expect_petsc_backends_give_the_umfpack_history("indentation"); // 3-D, contact, rigid body
+  // 3-D, contact, rigid body; the multigrid preconditioner is not yet efficient on contact
+  // (docs/theory/solvers.md §4)
+  expect_petsc_backends_give_the_umfpack_history("indentation", {"mumps", "mumps+reuse", "krylov"});
 }
 
 TEST_F(CliSolvers, MumpsFactorizesAgainWhenItsWorkspaceEstimateIsTooSmall) {

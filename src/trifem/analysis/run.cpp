@@ -160,7 +160,7 @@ std::unique_ptr<model::Model> build_model_for(const io::CaseSpec& spec) {
 std::unique_ptr<linalg::LinearSolver> linear_solver_for(const io::CaseSpec& spec) {
   try {
     return linalg::make_linear_solver(spec.solver.linear_solver, spec.solver.petsc_options,
-                                      spec.solver.reuse_factorization);
+                                      spec.solver.reuse_factorization, spec.solver.preconditioner);
   } catch (const InputError& e) {
     throw InputError(fmt::format("{}: {}", spec.file.string(), e.what()));
   }

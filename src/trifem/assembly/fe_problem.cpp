@@ -24,6 +24,41 @@ FeProblem::FeProblem(const dofs::DofMap& map, std::vector<dofs::DirichletConditi
   x_old_global_ = x_global_;
 }
 
+void FeProblem::set_node_positions(dofs::FieldId displacement, std::vector<Vec3> positions) {
+  TRIFEM_VERIFY(displacement.valid() &&
+                    map_.field(displacement).num_entities == static_cast<Index>(positions.size()),
+                "one position per node of the displacement field");
+  displacement_ = displacement;
+  node_positions_ = std::move(positions);
+}
+
+std::vector<Vector> FeProblem::rigid_body_modes() const {
+  if (!displacement_.valid() || map_.field(displacement_).components != 3)
+    return {};
+  Vec3 centre = Vec3::Zero(); // rotations about the centroid keep the modes well scaled
+  for (const Vec3& x : node_positions_)
+    centre += x;
+  centre /= std::max<Real>(1.0, static_cast<Real>(node_positions_.size()));
+  std::vector<Vector> modes;
+  for (int mode = 0; mode < 6; ++mode) {
+    Vector all = Vector::Zero(map_.num_dofs()); // global components at every DOF
+    for (Index node = 0; node < static_cast<Index>(node_positions_.size()); ++node) {
+      const Vec3 r = node_positions_[node] - centre;
+      const Vec3 motion = mode < 3 ? Vec3(Vec3::Unit(mode)) : Vec3(Vec3::Unit(mode - 3).cross(r));
+      for (int c = 0; c < 3; ++c)
+        all[map_.dof(displacement_, node, c)] = motion[c];
+    }
+    frames_.to_local(all);
+    Vector mode_vector = Vector::Zero(map_.num_equations());
+    for (Index dof = 0; dof < map_.num_dofs(); ++dof)
+      if (const Index eq = map_.equation(dof);
+          eq >= 0 && map_.leader(dof) == dof && map_.field_of(dof) == displacement_)
+        mode_vector[eq] = all[dof];
+    modes.push_back(std::move(mode_vector));
+  }
+  return modes;
+}
+
 void FeProblem::build_assembler() {
   equation_fields_.resize(map_.num_equations());
   for (Index eq = 0; eq < map_.num_equations(); ++eq)

@@ -76,6 +76,7 @@ public:
   const std::vector<solver::FieldScale>& field_scales() const override { return scales_; }
   int pattern_id() const override { return pattern_id_; }
   const std::vector<int>& equation_owners() const override { return equation_owner_; }
+  std::vector<Vector> rigid_body_modes() const override;
   solver::SolveStatus linearize(solver::Linearization& lin, bool with_jacobian) override;
   solver::SolveStatus update(const Vector& dx, Real step) override;
   bool constraints_satisfied() const override;
@@ -109,6 +110,9 @@ public:
   /// their DOFs constrained (DofMap::reset_constraints); the equations and the pattern are
   /// rebuilt and the state is kept.
   void set_conditions(std::vector<dofs::DirichletCondition> conditions);
+  /// The displacement field and the reference position of every node, from which
+  /// rigid_body_modes() builds the solid's rigid motions.
+  void set_node_positions(dofs::FieldId displacement, std::vector<Vec3> positions);
   /// Adds a term (between steps), e.g. the loads that replace released conditions.
   void add_term(std::unique_ptr<physics::Term> term);
   const std::vector<dofs::DirichletCondition>& conditions() const { return conditions_; }
@@ -132,7 +136,9 @@ private:
   std::vector<std::unique_ptr<physics::Term>> terms_;
   std::vector<solver::FieldScale> scales_;
   std::vector<int> equation_fields_;
-  std::vector<int> equation_owner_; ///< on several processes: the owner of each equation
+  dofs::FieldId displacement_;       ///< for rigid_body_modes()
+  std::vector<Vec3> node_positions_; ///< reference positions of the displacement's nodes
+  std::vector<int> equation_owner_;  ///< on several processes: the owner of each equation
   std::unique_ptr<Assembler> assembler_;
   AssembledSystem system_;
   dofs::NodalFrames frames_;

@@ -383,7 +383,7 @@ void read_solver(const Table& root, CaseSpec& spec) {
   if (!t)
     return;
   t->allow({"max_iterations", "residual_tolerance", "increment_tolerance", "line_search",
-            "linear_solver", "petsc_options", "reuse_factorization"});
+            "linear_solver", "petsc_options", "reuse_factorization", "preconditioner"});
   static const Options<std::string_view> solvers = {{"auto", "auto"},
                                                     {"umfpack", "umfpack"},
                                                     {"sparselu", "sparselu"},
@@ -409,6 +409,13 @@ void read_solver(const Table& root, CaseSpec& spec) {
   if (s.reuse_factorization && s.linear_solver != "mumps")
     fail(t->find("reuse_factorization"), t->path("reuse_factorization"),
          fmt::format("applies to linear_solver = \"mumps\", not to linear_solver = \"{}\"",
+                     s.linear_solver));
+  static const Options<std::string_view> preconditioners = {{"lu", "lu"}, {"amg", "amg"}};
+  s.preconditioner = std::string(t->choice("preconditioner", preconditioners,
+                                           std::optional<std::string_view>(s.preconditioner)));
+  if (s.preconditioner != "lu" && s.linear_solver != "krylov")
+    fail(t->find("preconditioner"), t->path("preconditioner"),
+         fmt::format("applies to linear_solver = \"krylov\", not to linear_solver = \"{}\"",
                      s.linear_solver));
 }
 

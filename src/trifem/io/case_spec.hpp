@@ -302,6 +302,7 @@ struct SolverSpec {
   std::string linear_solver = "auto"; ///< "auto", "umfpack", "sparselu", "mumps", "krylov"
   std::string petsc_options;          ///< "-key value ..." for the PETSc backends
   bool reuse_factorization = false;   ///< mumps: one factorization for several iterations
+  std::string preconditioner = "lu";  ///< krylov: "lu" (MUMPS blocks) or "amg" (multigrid)
 };
 
 /// [[output.reaction]]: total reaction force on a node set, in history.csv.

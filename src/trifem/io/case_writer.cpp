@@ -267,6 +267,8 @@ void write_solver(const SolverSpec& s, TomlText& t) {
   t.optional_string("petsc_options", s.petsc_options);
   if (s.reuse_factorization)
     t.raw("reuse_factorization", "true");
+  if (s.preconditioner != "lu")
+    t.optional_string("preconditioner", s.preconditioner);
 }
 
 void write_output(const OutputSpec& o, TomlText& t) {

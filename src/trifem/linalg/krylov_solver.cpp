@@ -2,6 +2,7 @@
 #include "trifem/linalg/krylov_solver.hpp"
 
 #include "trifem/core/error.hpp"
+#include "trifem/core/log.hpp"
 #include "trifem/linalg/block_split.hpp"
 #include "trifem/linalg/petsc_matrix.hpp"
 #include "trifem/linalg/petsc_session.hpp"
@@ -46,6 +47,67 @@ PC apply_once(KSP ksp, PCType type) {
   return pc;
 }
 
+/// The columns of `modes` restricted to the rows `rows` and orthonormalized (modified
+/// Gram–Schmidt; a column that adds nothing is dropped).
+std::vector<Vector> orthonormal_restriction(const std::vector<Vector>& modes,
+                                            const std::vector<Index>& rows) {
+  std::vector<Vector> basis;
+  for (const Vector& mode : modes) {
+    Vector v(static_cast<Index>(rows.size()));
+    for (std::size_t i = 0; i < rows.size(); ++i)
+      v[static_cast<Index>(i)] = mode[rows[i]];
+    const Real size = v.norm();
+    for (const Vector& q : basis)
+      v -= q.dot(v) * q;
+    if (size > 0.0 && v.norm() > 1e-8 * size)
+      basis.push_back(v / v.norm());
+  }
+  return basis;
+}
+
+/// Gives `matrix` the near-null space `basis` (orthonormal vectors over its rows), which
+/// GAMG builds its coarse spaces from.
+void attach_near_null_space(Mat matrix, const std::vector<Vector>& basis) {
+  if (basis.empty())
+    return;
+  std::vector<Vec> vectors(basis.size(), nullptr);
+  for (std::size_t k = 0; k < basis.size(); ++k) {
+    check(VecCreateSeq(PETSC_COMM_SELF, static_cast<PetscInt>(basis[k].size()), &vectors[k]),
+          "PETSc vector");
+    PetscScalar* values = nullptr;
+    check(VecGetArray(vectors[k], &values), "PETSc vector");
+    std::copy(basis[k].data(), basis[k].data() + basis[k].size(), values);
+    check(VecRestoreArray(vectors[k], &values), "PETSc vector");
+  }
+  MatNullSpace space = nullptr;
+  check(MatNullSpaceCreate(PETSC_COMM_SELF, PETSC_FALSE, static_cast<PetscInt>(vectors.size()),
+                           vectors.data(), &space),
+        "PETSc near-null space");
+  check(MatSetNearNullSpace(matrix, space), "PETSc near-null space");
+  MatNullSpaceDestroy(&space);
+  for (Vec& v : vectors)
+    VecDestroy(&v);
+}
+
+/// `ksp` is preconditioned by smoothed-aggregation multigrid (GAMG) whose coarse spaces carry
+/// `near_null` (the rigid-body modes of the rows of its matrix).
+void use_multigrid(KSP ksp, const std::vector<Vector>& near_null) {
+  PC pc = nullptr;
+  check(KSPGetPC(ksp, &pc), "PETSc PC");
+  check(PCSetType(pc, PCGAMG), "PETSc PC type");
+  PetscReal threshold = 0.01; // drop weak couplings when aggregating (GAMG's graph)
+  check(PCGAMGSetThreshold(pc, &threshold, 1), "PETSc GAMG");
+  Mat operators = nullptr, preconditioning = nullptr;
+  check(KSPGetOperators(ksp, &operators, &preconditioning), "PETSc KSP operators");
+  attach_near_null_space(preconditioning, near_null);
+}
+
+/// `ksp` applies one V-cycle of use_multigrid.
+void apply_multigrid(KSP ksp, const std::vector<Vector>& near_null) {
+  check(KSPSetType(ksp, KSPPREONLY), "PETSc KSP type");
+  use_multigrid(ksp, near_null);
+}
+
 /// FGMRES preconditioned by a Schur-complement fieldsplit (or by one preconditioner for a
 /// system of one kind).
 class KrylovSolver final : public LinearSolver {
@@ -59,7 +121,12 @@ public:
   void set_fields(const std::vector<int>& equation_fields,
                   const std::vector<std::string>& field_names) override {
     split_ = BlockSplit::from_fields(equation_fields, field_names);
+    equation_fields_ = equation_fields;
+    field_names_ = field_names;
+    fallback_.reset();
   }
+
+  void set_near_null_space(std::vector<Vector> modes) override { near_null_ = std::move(modes); }
 
   void analyze_pattern(const SparseMatrix& A) override {
     release();
@@ -88,6 +155,8 @@ public:
       return false; // the set-up failed: failure_ says why
     failure_ = {};
     ready_ = false;
+    matrix_values_ = &A;
+    fallback_ready_ = false;
     try {
       matrix_->update(A, row_sign_);
       check(KSPSetUp(ksp_), "PETSc KSP set-up");
@@ -121,7 +190,7 @@ public:
       iterations_ = static_cast<int>(iterations);
       if (reason < 0) {
         failure_ = {not_converged(reason), false};
-        return false;
+        return amg() && solve_with_lu_blocks(b, x);
       }
       petsc::get_vector(x_, x);
     } catch (const petsc::PetscError& e) {
@@ -171,6 +240,9 @@ private:
       check(PCFieldSplitSetSchurFactType(pc, PC_FIELDSPLIT_SCHUR_FACT_FULL), "PETSc fieldsplit");
       check(PCFieldSplitSetSchurPre(pc, PC_FIELDSPLIT_SCHUR_PRE_SELFP, nullptr),
             "PETSc fieldsplit");
+    } else if (amg()) { // one kind of unknown: the displacement
+      use_multigrid(ksp_, modes_over(all_equations()));
+      sub_solvers_configured_ = true;
     } else {
       check(PCSetType(pc, PCLU), "PETSc PC type");
       check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS), "MUMPS");
@@ -188,19 +260,23 @@ private:
     const std::vector<KSP> solvers = sub_solvers(pc);
     if (solvers.size() != 2)
       return;
-    apply_once(solvers[0], PCLU);
+    PC primal = apply_once(solvers[0], PCLU);
+    if (amg() && !split_.flux.empty())
+      check(PCSetType(primal, PCFIELDSPLIT), "PETSc fieldsplit");
+    else if (amg())
+      apply_multigrid(solvers[0], modes_over(primal_)); // the primal block: displacements
     check(KSPSetFromOptions(solvers[0]), "PETSc options");
-    PC primal = nullptr;
-    check(KSPGetPC(solvers[0], &primal), "PETSc PC");
     if (has_type(primal, PCFIELDSPLIT))
       split_primal(solvers[0], primal);
     apply_once(solvers[1], PCLU);
     check(KSPSetFromOptions(solvers[1]), "PETSc options");
   }
 
-  /// A fieldsplit of the primal block chosen through the options: displacement, then fluxes
-  /// (the flux rows depend on the displacement but not conversely, so the multiplicative
-  /// split is exact with exact sub-solves); AMG on the displacement and ILU on the fluxes.
+  /// A fieldsplit of the primal block (the "amg" preconditioner, or chosen through the
+  /// options): displacement, then fluxes (the flux rows depend on the displacement but not
+  /// conversely, so the multiplicative split is exact with exact sub-solves); algebraic
+  /// multigrid on the displacement (GAMG with the rigid-body modes for "amg", BoomerAMG
+  /// otherwise) and ILU(0) on the fluxes.
   void split_primal(KSP ksp, PC pc) {
     if (split_.flux.empty() || split_.displacement.empty())
       return;
@@ -216,10 +292,60 @@ private:
     const std::vector<KSP> solvers = sub_solvers(pc);
     if (solvers.size() != 2)
       return;
-    apply_once(solvers[0], PCHYPRE);
+    if (amg())
+      apply_multigrid(solvers[0], modes_over(split_.displacement));
+    else
+      apply_once(solvers[0], PCHYPRE);
     apply_once(solvers[1], PCILU);
     for (KSP s : solvers)
       check(KSPSetFromOptions(s), "PETSc options");
+  }
+
+  bool amg() const { return settings_.preconditioner == KrylovPreconditioner::amg; }
+
+  /// After multigrid failed (e.g. an indefinite displacement block: a body under an unbalanced
+  /// initial pressure): the same solve with the LU blocks, logged; false if that fails too.
+  bool solve_with_lu_blocks(const Vector& b, Vector& x) {
+    const std::string why = failure_.reason;
+    if (!fallback_) {
+      // the user's options are in force already (they were checked against this backend)
+      fallback_ = std::make_unique<KrylovSolver>(
+          "", KrylovSettings{.relative_tolerance = settings_.relative_tolerance,
+                             .max_iterations = settings_.max_iterations});
+      fallback_->set_fields(equation_fields_, field_names_);
+      fallback_->analyze_pattern(*matrix_values_);
+    }
+    if (!fallback_ready_ && !(fallback_ready_ = fallback_->factorize(*matrix_values_))) {
+      failure_ = {why + "; with the LU blocks: " + fallback_->failure().reason, false};
+      return false;
+    }
+    const int failed_iterations = iterations_;
+    if (!fallback_->solve(b, x)) {
+      failure_ = {why + "; with the LU blocks: " + fallback_->failure().reason, false};
+      return false;
+    }
+    iterations_ = failed_iterations + fallback_->last_iterations();
+    failure_ = {};
+    log::info("  linear solve: multigrid did not converge ({}); solved again with the LU blocks "
+              "in {} iterations",
+              why, fallback_->last_iterations());
+    return true;
+  }
+
+  std::vector<Index> all_equations() const {
+    std::vector<Index> all(static_cast<std::size_t>(n_));
+    for (Index i = 0; i < n_; ++i)
+      all[static_cast<std::size_t>(i)] = i;
+    return all;
+  }
+
+  /// The rigid-body modes on the equations `rows` (ascending), orthonormal; empty when the
+  /// problem gave none.
+  std::vector<Vector> modes_over(const std::vector<Index>& rows) const {
+    for (const Vector& mode : near_null_)
+      if (mode.size() != n_)
+        return {};
+    return orthonormal_restriction(near_null_, rows);
   }
 
   static bool has_type(PC pc, PCType type) {
@@ -264,6 +390,12 @@ private:
   petsc::ScopedOptions options_; // first: the options outlive the PETSc objects
   KrylovSettings settings_;
   BlockSplit split_;
+  std::vector<Vector> near_null_; ///< rigid-body modes over the equations (may be empty)
+  std::vector<int> equation_fields_;
+  std::vector<std::string> field_names_;
+  const SparseMatrix* matrix_values_ = nullptr; ///< the matrix of the last factorize
+  std::unique_ptr<LinearSolver> fallback_;      ///< "amg": LU blocks after a failed solve
+  bool fallback_ready_ = false;                 ///< fallback_ factorized matrix_values_
   std::vector<Index> primal_;
   std::vector<Real> row_sign_; ///< −1 on potential rows (empty: no negation)
   Index n_ = 0;
@@ -302,6 +434,14 @@ void check_options_are_used(const std::string& options, KrylovSettings settings)
 }
 
 } // namespace
+
+KrylovPreconditioner krylov_preconditioner(const std::string& name) {
+  if (name == "lu")
+    return KrylovPreconditioner::lu;
+  if (name == "amg")
+    return KrylovPreconditioner::amg;
+  throw InputError(fmt::format("unknown Krylov preconditioner '{}' (expected lu or amg)", name));
+}
 
 std::unique_ptr<LinearSolver> make_krylov_solver(const std::string& petsc_options,
                                                  KrylovSettings settings) {

@@ -15,9 +15,20 @@
 namespace trifem::linalg {
 
 /// Settings of the Krylov backend that are not PETSc options.
+/// How the fieldsplit preconditioner solves its blocks (docs/theory/solvers.md §3).
+enum class KrylovPreconditioner {
+  lu,  ///< MUMPS LU of the primal block and of the Schur approximation
+  amg, ///< primal block: algebraic multigrid (GAMG with the rigid-body modes) on the
+       ///< displacement, then ILU(0) on the fluxes; MUMPS LU of the Schur approximation
+};
+
+/// "lu" or "amg"; InputError otherwise.
+KrylovPreconditioner krylov_preconditioner(const std::string& name);
+
 struct KrylovSettings {
   double relative_tolerance = 1e-10; ///< residual reduction of each solve (-ksp_rtol overrides)
   int max_iterations = 1000;         ///< (-ksp_max_it overrides)
+  KrylovPreconditioner preconditioner = KrylovPreconditioner::lu;
 };
 
 /// The Krylov backend. `petsc_options` ("-ksp_rtol 1e-9 -fieldsplit_potential_pc_type ilu ...")

@@ -22,7 +22,12 @@ std::vector<std::string> available_linear_solvers() {
 
 std::unique_ptr<LinearSolver> make_linear_solver(const std::string& name,
                                                  const std::string& petsc_options,
-                                                 bool reuse_factorization) {
+                                                 bool reuse_factorization,
+                                                 const std::string& preconditioner) {
+  if (preconditioner != "lu" && name != "krylov")
+    throw InputError(fmt::format("solver.preconditioner applies to linear_solver = 'krylov', "
+                                 "not to '{}'",
+                                 name));
   if (reuse_factorization && name != "mumps")
     throw InputError(fmt::format("solver.reuse_factorization applies to linear_solver = 'mumps', "
                                  "not to '{}'",
@@ -49,7 +54,8 @@ std::unique_ptr<LinearSolver> make_linear_solver(const std::string& name,
   if (name == "mumps")
     return make_mumps_solver(petsc_options, reuse_factorization);
   if (name == "krylov")
-    return make_krylov_solver(petsc_options);
+    return make_krylov_solver(petsc_options,
+                              {.preconditioner = krylov_preconditioner(preconditioner)});
   throw InputError(fmt::format(
       "unknown linear solver '{}' (expected auto, umfpack, sparselu, mumps or krylov)", name));
 }

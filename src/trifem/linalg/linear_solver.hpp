@@ -36,6 +36,10 @@ public:
     (void)equation_fields;
     (void)field_names;
   }
+  /// The near-null space of the displacement block (the solid's rigid-body motions over the
+  /// equations), before analyze_pattern of a new pattern; algebraic multigrid uses it, the
+  /// other backends ignore it.
+  virtual void set_near_null_space(std::vector<Vector> modes) { (void)modes; }
   /// On several processes: the owner of every equation, before analyze_pattern of a new
   /// pattern; each process then gives its own part of the matrix (its elements' couplings)
   /// and the whole right-hand side, and receives the whole solution. Empty: one process.
@@ -62,8 +66,10 @@ std::vector<std::string> available_linear_solvers();
 /// (make_mumps_solver).
 /// On several processes (parallel::active()) every direct backend's name gives MUMPS on the
 /// distributed matrix, and `krylov` is an InputError.
+/// `preconditioner` (krylov only): "lu" or "amg" (KrylovPreconditioner).
 std::unique_ptr<LinearSolver> make_linear_solver(const std::string& name,
                                                  const std::string& petsc_options = "",
-                                                 bool reuse_factorization = false);
+                                                 bool reuse_factorization = false,
+                                                 const std::string& preconditioner = "lu");
 
 } // namespace trifem::linalg

@@ -250,6 +250,7 @@ std::unique_ptr<Model> build_model(const io::CaseSpec& spec) {
 
   model->problem = std::make_unique<assembly::FeProblem>(
       model->dofs, std::move(bcs), std::move(terms), field_scales(*model), std::move(frames));
+  model->problem->set_node_positions(model->fields.u, model->mesh.nodes());
   if (model->mixture) {
     Vector x = model->problem->state();
     const auto kind = spec.analysis.initial_state == io::InitialStateKind::DonnanPrestressed

@@ -120,6 +120,7 @@ SolveStatus NewtonSolver::factor_and_solve(NonlinearProblem& problem, Linearizat
     for (const FieldScale& f : problem.field_scales())
       names.push_back(f.name);
     linear_->set_fields(problem.equation_fields(), names);
+    linear_->set_near_null_space(problem.rigid_body_modes());
     linear_->set_partition(problem.equation_owners());
     linear_->analyze_pattern(lin.jacobian);
     analyzed_pattern_ = problem.pattern_id();

@@ -55,6 +55,10 @@ public:
     static const std::vector<int> none;
     return none;
   }
+  /// The rigid-body motions of the solid (three translations, three rotations) as vectors over
+  /// the equations, zero on equations that are not displacements: the near-null space of the
+  /// displacement block, for algebraic multigrid. Empty when unknown.
+  virtual std::vector<Vector> rigid_body_modes() const { return {}; }
   /// Evaluates residual and, if `with_jacobian`, Jacobian and constraint_rhs at the current
   /// state. Returns Inadmissible if the state cannot be evaluated.
   virtual SolveStatus linearize(Linearization& lin, bool with_jacobian) = 0;

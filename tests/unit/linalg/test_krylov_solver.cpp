@@ -96,6 +96,19 @@ TEST(KrylovSolver, SolvesAMixedSystemThroughTheSchurFieldsplit) {
   EXPECT_EQ(solver->name(), "krylov");
 }
 
+TEST(KrylovSolver, MultigridPreconditionerSolvesAMixedSystem) {
+  // "amg": GAMG on the displacement, ILU(0) on the fluxes, LU of the Schur approximation
+  const MixedSystem s = mixed_system(40);
+  auto solver = linalg::make_linear_solver("krylov", "", false, "amg");
+  EXPECT_LT(relative_residual(*solver, s), 1e-9);
+  EXPECT_GE(solver->last_iterations(), 1);
+  EXPECT_LE(solver->last_iterations(), 60);
+}
+
+TEST(KrylovSolver, MultigridPreconditionerIsOnlyForKrylov) {
+  EXPECT_THROW(linalg::make_linear_solver("mumps", "", false, "amg"), InputError);
+}
+
 TEST(KrylovSolver, OptionsSplitThePrimalBlockIntoDisplacementAndFluxes) {
   // the primal block as a fieldsplit: trifem supplies the displacement / flux index sets,
   // BoomerAMG on the displacement and ILU on the fluxes; a wrong set would fail the solve

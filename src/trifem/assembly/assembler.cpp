@@ -191,6 +191,13 @@ AssembledSystem Assembler::make_system() const {
   return {Vector::Zero(map_.num_dofs()), pattern_.Kff, pattern_.Kfc};
 }
 
+AssembledSystem Assembler::take_system() {
+  AssembledSystem system{Vector::Zero(map_.num_dofs()), {}, {}};
+  system.Kff.swap(pattern_.Kff);
+  system.Kfc.swap(pattern_.Kfc);
+  return system;
+}
+
 bool Assembler::assemble_term(std::size_t t, const physics::EvalState& state, AssembledSystem& out,
                               bool with_jacobian) const {
   const physics::Term& term = *terms_[t];

@@ -59,6 +59,23 @@ std::vector<Vector> FeProblem::rigid_body_modes() const {
   return modes;
 }
 
+void FeProblem::reclaim_jacobian(solver::Linearization& lin) {
+  if (!jacobian_lent_)
+    return;
+  jacobian_lent_ = false;
+  const SparseMatrix& lent = lin.jacobian;
+  if (lin.lender == this && lin.lent_pattern == pattern_id_ &&
+      lent.rows() == map_.num_equations() && lent.cols() == map_.num_equations() &&
+      lent.nonZeros() == lent_nonzeros_ && lent.isCompressed()) {
+    system_.Kff.swap(lin.jacobian);
+    lin.lender = nullptr;
+    return;
+  }
+  // lent to a linearization that is gone: the same pattern once more
+  assembler_->rebuild();
+  system_ = assembler_->take_system();
+}
+
 void FeProblem::build_assembler() {
   equation_fields_.resize(map_.num_equations());
   for (Index eq = 0; eq < map_.num_equations(); ++eq)
@@ -70,7 +87,8 @@ void FeProblem::build_assembler() {
   // equations are split (partition)
   assembler_ = std::make_unique<Assembler>(map_, std::move(views), &frames_, parallel::active());
   partition();
-  system_ = assembler_->make_system();
+  system_ = assembler_->take_system();
+  jacobian_lent_ = false;
   ++pattern_id_;
 }
 
@@ -121,9 +139,12 @@ solver::SolveStatus FeProblem::linearize(solver::Linearization& lin, bool with_j
     changed = t->prepare(eval_state()) || changed;
   if (changed) {
     assembler_->rebuild();
-    system_ = assembler_->make_system();
+    system_ = assembler_->take_system();
+    jacobian_lent_ = false;
     ++pattern_id_;
   }
+  if (with_jacobian)
+    reclaim_jacobian(lin);
   // on several processes each assembles its elements: the parts are summed (and every
   // process must agree that the state is admissible before any returns)
   if (!parallel::all(assembler_->assemble(eval_state(), system_, with_jacobian)))
@@ -143,7 +164,13 @@ solver::SolveStatus FeProblem::linearize(solver::Linearization& lin, bool with_j
   }
   lin.constraint_rhs = system_.Kfc * pending;
   parallel::sum(lin.constraint_rhs);
-  lin.jacobian = system_.Kff;
+  // the caller gets the assembled matrix itself, not a copy; the next linearize takes it back
+  lin.jacobian.swap(system_.Kff);
+  SparseMatrix().swap(system_.Kff);
+  jacobian_lent_ = true;
+  lent_nonzeros_ = lin.jacobian.nonZeros();
+  lin.lender = this;
+  lin.lent_pattern = pattern_id_;
   return solver::SolveStatus::Converged;
 }
 

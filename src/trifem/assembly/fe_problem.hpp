@@ -34,6 +34,8 @@ public:
   bool assemble(const physics::EvalState& state, AssembledSystem& out, bool with_jacobian) const;
   /// An AssembledSystem with the right sizes and patterns (values zero).
   AssembledSystem make_system() const;
+  /// The same, moving the pattern out (make_system is empty after it, until rebuild).
+  AssembledSystem take_system();
   /// The couplings between equations of every term but those that join bodies (the graph
   /// a parallel run is partitioned by).
   SparseMatrix body_couplings() const;
@@ -128,6 +130,9 @@ private:
   /// On several processes: splits the equations between them (METIS on the pattern, computed
   /// on rank 0 and broadcast) and restricts the assembler to this process's elements.
   void partition();
+  /// Before an assembly of the Jacobian: takes back the matrix storage lent to `lin` by the
+  /// last linearize, or builds the pattern anew if `lin` does not hold it.
+  void reclaim_jacobian(solver::Linearization& lin);
   /// Numbers the equations' fields and builds the assembler and its pattern.
   void build_assembler();
 
@@ -141,6 +146,8 @@ private:
   std::vector<int> equation_owner_;  ///< on several processes: the owner of each equation
   std::unique_ptr<Assembler> assembler_;
   AssembledSystem system_;
+  bool jacobian_lent_ = false; ///< system_.Kff's storage is with a Linearization (linearize)
+  Index lent_nonzeros_ = 0;    ///< the lent matrix's nonzeros
   dofs::NodalFrames frames_;
   Vector x_, x_old_, saved_, target_;
   Vector x_global_, x_old_global_;

@@ -11,6 +11,7 @@
 #include <petscksp.h>
 
 #include <algorithm>
+#include <cmath>
 
 namespace trifem::linalg {
 namespace {
@@ -108,6 +109,10 @@ void apply_multigrid(KSP ksp, const std::vector<Vector>& near_null) {
   use_multigrid(ksp, near_null);
 }
 
+/// Largest system for which "amg" repeats a failed solve with the LU blocks: their memory
+/// grows faster than the model's (a 405 000-equation block grew from 11 to 19 GB).
+constexpr Index kLuFallbackLimit = 100000;
+
 /// FGMRES preconditioned by a Schur-complement fieldsplit (or by one preconditioner for a
 /// system of one kind).
 class KrylovSolver final : public LinearSolver {
@@ -130,6 +135,7 @@ public:
 
   void analyze_pattern(const SparseMatrix& A) override {
     release();
+    fallback_.reset(); // set up for the old pattern
     broken_ = false;
     failure_ = {};
     n_ = static_cast<Index>(A.rows());
@@ -190,7 +196,7 @@ public:
       iterations_ = static_cast<int>(iterations);
       if (reason < 0) {
         failure_ = {not_converged(reason), false};
-        return amg() && solve_with_lu_blocks(b, x);
+        return amg() && n_ <= kLuFallbackLimit && solve_with_lu_blocks(b, x);
       }
       petsc::get_vector(x_, x);
     } catch (const petsc::PetscError& e) {
@@ -367,10 +373,15 @@ private:
     PetscReal residual = 0.0, initial = 0.0;
     KSPGetResidualNorm(ksp_, &residual);
     VecNorm(b_, NORM_2, &initial);
+    const Real reached = initial > 0.0 ? residual / initial : residual;
+    if (!std::isfinite(reached))
+      return fmt::format("the Krylov solver did not converge ({} after {} iterations; the "
+                         "residual is not finite)",
+                         KSPConvergedReasons[reason], iterations_);
     return fmt::format("the Krylov solver did not converge ({} after {} iterations; residual "
                        "reduced to {:.3g} of the right-hand side, tolerance {:.3g})",
-                       KSPConvergedReasons[reason], iterations_,
-                       initial > 0.0 ? residual / initial : residual, settings_.relative_tolerance);
+                       KSPConvergedReasons[reason], iterations_, reached,
+                       settings_.relative_tolerance);
   }
 
   void release() {

@@ -14,7 +14,6 @@
 
 namespace trifem::linalg {
 
-/// Settings of the Krylov backend that are not PETSc options.
 /// How the fieldsplit preconditioner solves its blocks (docs/theory/solvers.md §3).
 enum class KrylovPreconditioner {
   lu,  ///< MUMPS LU of the primal block and of the Schur approximation
@@ -25,6 +24,7 @@ enum class KrylovPreconditioner {
 /// "lu" or "amg"; InputError otherwise.
 KrylovPreconditioner krylov_preconditioner(const std::string& name);
 
+/// Settings of the Krylov backend that are not PETSc options.
 struct KrylovSettings {
   double relative_tolerance = 1e-10; ///< residual reduction of each solve (-ksp_rtol overrides)
   int max_iterations = 1000;         ///< (-ksp_max_it overrides)

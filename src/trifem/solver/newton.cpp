@@ -182,7 +182,7 @@ NewtonReport NewtonSolver::solve(NonlinearProblem& problem) {
 
 NewtonReport NewtonSolver::solve(NonlinearProblem& problem, const std::vector<Real>& reference) {
   NewtonReport report;
-  Linearization lin;
+  Linearization& lin = lin_; // kept between solves: the problem lends it its matrix storage
   auto start = Clock::now();
   if (problem.linearize(lin, true) != SolveStatus::Converged) {
     report.status = SolveStatus::Inadmissible;

@@ -77,6 +77,7 @@ private:
 
   NewtonSettings settings_;
   std::unique_ptr<linalg::LinearSolver> linear_;
+  Linearization lin_; ///< the linearization of the current solve (kept: see Linearization)
   int analyzed_pattern_ = -1;
   std::vector<Real> reference_; ///< per-field reference residual (running maximum)
   PhaseTimes times_;

@@ -36,6 +36,10 @@ struct Linearization {
   Vector residual;       ///< R at free equations
   Vector constraint_rhs; ///< K_fc * (pending increment of constrained DOFs)
   SparseMatrix jacobian; ///< dR/dx at free equations (pattern fixed while pattern_id is)
+  /// The problem whose assembly storage `jacobian` holds (it takes the storage back at its
+  /// next linearize instead of keeping a copy), and that problem's pattern_id then.
+  const void* lender = nullptr;
+  int lent_pattern = -1;
 };
 
 /// A nonlinear system R(x) = 0 over free equations, with prescribed DOFs that may still have

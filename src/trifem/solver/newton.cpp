@@ -248,7 +248,8 @@ NewtonReport NewtonSolver::solve(NonlinearProblem& problem, const std::vector<Re
       const std::string why = linear_->failure().reason;
       report.failure_reason = "the linear solve failed: " +
                               (why.empty() ? std::string("the Jacobian is singular") : why);
-      if (solved == SolveStatus::FactorizationFailed && k == 0)
+      // a singular first matrix (not an iterative solve that ran out of iterations)
+      if (solved == SolveStatus::FactorizationFailed && k == 0 && linear_->last_iterations() == 0)
         report.failure_reason +=
             " (at the first iteration: is every body supported against rigid motion, and "
             "every field constrained where it needs to be?)";

@@ -55,7 +55,40 @@ private:
   std::vector<solver::FieldScale> scales_{{"x", 1.0, 1.0}};
 };
 
+/// A linear solver that always fails: a singular factorization (direct, 0 iterations) or an
+/// iterative solve that stops after `iterations` without converging.
+class FailingSolver final : public linalg::LinearSolver {
+public:
+  explicit FailingSolver(int iterations) : iterations_(iterations) {}
+  void analyze_pattern(const SparseMatrix&) override {}
+  bool factorize(const SparseMatrix&) override { return iterations_ > 0; }
+  bool solve(const Vector&, Vector&) override { return false; }
+  int last_iterations() const override { return iterations_; }
+  std::string name() const override { return "failing"; }
+  linalg::LinearSolverFailure failure() const override {
+    return {iterations_ > 0 ? "the Krylov solver did not converge" : "singular matrix", false};
+  }
+
+private:
+  int iterations_;
+};
+
 } // namespace
+
+TEST(Newton, AFirstSingularMatrixAsksAboutSupportsButAnUnconvergedKrylovSolveDoesNot) {
+  const std::string hint = "is every body supported against rigid motion";
+  for (const int iterations : {0, 50}) {
+    CubicProblem problem(5);
+    solver::NewtonSolver newton({}, std::make_unique<FailingSolver>(iterations));
+    const auto report = newton.solve(problem);
+    EXPECT_EQ(report.status, solver::SolveStatus::FactorizationFailed);
+    const bool hinted = report.failure_reason.find(hint) != std::string::npos;
+    EXPECT_EQ(hinted, iterations == 0) << report.failure_reason;
+    EXPECT_NE(report.failure_reason.find(iterations == 0 ? "singular matrix" : "did not converge"),
+              std::string::npos)
+        << report.failure_reason;
+  }
+}
 
 TEST(Newton, SolvesACubicSystemQuadratically) {
   for (const auto& backend : linalg::available_linear_solvers()) {

@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 
 namespace trifem::linalg {
 namespace {
@@ -340,8 +341,7 @@ private:
 
   std::vector<Index> all_equations() const {
     std::vector<Index> all(static_cast<std::size_t>(n_));
-    for (Index i = 0; i < n_; ++i)
-      all[static_cast<std::size_t>(i)] = i;
+    std::iota(all.begin(), all.end(), Index{0});
     return all;
   }
 

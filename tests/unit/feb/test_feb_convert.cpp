@@ -11,6 +11,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <fstream>
+#include <iterator>
 
 #include <unistd.h>
 
@@ -131,6 +133,24 @@ TEST(TomlConvertRigid, RigidBodiesReadBackAsWritten) {
   EXPECT_EQ(b.drives[2].drive, io::RigidDrive::Force);
   EXPECT_EQ(b.drives[2].value, -0.25);
   EXPECT_EQ(b.drives[2].curve, body.drives[2].curve);
+  fs::remove_all(dir);
+}
+
+// The Krylov backend's preconditioner is written and reads back (the default is not written).
+TEST(TomlConvertSolver, KrylovPreconditionerReadsBackAsWritten) {
+  io::CaseSpec spec = analysis::read_case_file(kData / "uniaxial_neo_hookean.feb");
+  spec.solver.linear_solver = "krylov";
+  const fs::path dir = fresh_dir("krylov_amg");
+  io::write_case(spec, dir / "case.toml");
+  std::ifstream written(dir / "case.toml");
+  const std::string text{std::istreambuf_iterator<char>(written), {}};
+  EXPECT_NE(text.find("linear_solver = \"krylov\""), std::string::npos) << text;
+  EXPECT_EQ(text.find("preconditioner"), std::string::npos) << text;
+  spec.solver.preconditioner = "amg";
+  io::write_case(spec, dir / "case.toml");
+  const io::CaseSpec back = analysis::read_case_file(dir / "case.toml");
+  EXPECT_EQ(back.solver.linear_solver, "krylov");
+  EXPECT_EQ(back.solver.preconditioner, "amg");
   fs::remove_all(dir);
 }
 

@@ -65,7 +65,8 @@ protected:
   }
 
   /// Runs the example `name` with UMFPACK and with every PETSc backend: the same history to
-  /// 1e-8 of each unit's scale, and the same Newton iterations within one per step.
+  /// 1e-8 of each unit's scale, and the same Newton iterations within one in every step (an
+  /// iterative solve to Newton's forcing term may take one more or one fewer).
   void expect_petsc_backends_give_the_umfpack_history(const std::string& name,
                                                       const std::vector<std::string>& backends = {
                                                           "mumps", "mumps+reuse", "krylov",
@@ -75,7 +76,15 @@ protected:
     ASSERT_GT(umfpack.names.size(), 1u);
     for (const std::string& backend : backends) {
       SCOPED_TRACE(backend);
-      expect_the_same_history(umfpack, read_history(run_example(name, backend)), 1e-8);
+      const History other = read_history(run_example(name, backend));
+      expect_the_same_history(umfpack, other, 1e-8, {"iterations"});
+      const auto column = std::find(umfpack.names.begin(), umfpack.names.end(), "iterations");
+      ASSERT_NE(column, umfpack.names.end());
+      const auto c = static_cast<std::size_t>(column - umfpack.names.begin());
+      ASSERT_EQ(other.columns[c].size(), umfpack.columns[c].size());
+      for (std::size_t step = 0; step < umfpack.columns[c].size(); ++step)
+        EXPECT_LE(std::abs(other.columns[c][step] - umfpack.columns[c][step]), 1.0)
+            << "step " << step + 1;
       // the same Newton iterations per step, within one per step
       const fs::path direct = output() / "umfpack" / "summary.json";
       const fs::path summary = output() / backend / "summary.json";
@@ -88,9 +97,6 @@ protected:
         EXPECT_EQ(summary_integer(summary, "linear_iterations"), 0);
       else
         EXPECT_GE(summary_integer(summary, "linear_iterations"), newton);
-      EXPECT_LE(std::abs(summary_integer(summary, "newton_iterations") -
-                         summary_integer(direct, "newton_iterations")),
-                steps);
     }
   }
 };

@@ -5,6 +5,8 @@
 #include "trifem/linalg/petsc_solver.hpp"
 #include "trifem/linalg/sparse_lu_solver.hpp"
 
+#include <optional>
+
 namespace trifem::linalg {
 namespace {
 
@@ -14,6 +16,8 @@ public:
     const bool small = A.rows() < kAutoSparseLuLimit && !fill_heavy_;
     if (!backend_ || small != small_)
       backend_ = small ? make_sparse_lu_solver() : make_mumps_solver("", true);
+    if (tolerance_)
+      backend_->set_relative_tolerance(*tolerance_);
     small_ = small;
     backend_->analyze_pattern(A);
   }
@@ -33,6 +37,11 @@ public:
     analyze_pattern(A);
     return backend_->factorize(A);
   }
+  void set_relative_tolerance(Real tolerance) override {
+    tolerance_ = tolerance;
+    if (backend_)
+      backend_->set_relative_tolerance(tolerance);
+  }
   bool solve(const Vector& b, Vector& x) override { return backend_ && backend_->solve(b, x); }
   int last_iterations() const override { return backend_ ? backend_->last_iterations() : 0; }
   std::int64_t factor_nonzeros() const override {
@@ -48,7 +57,8 @@ public:
 private:
   std::unique_ptr<LinearSolver> backend_;
   bool small_ = false;
-  bool fill_heavy_ = false; ///< SparseLU's fill was measured too high: MUMPS at every size
+  std::optional<Real> tolerance_; ///< asked of MUMPS's FGMRES when it reuses factorizations
+  bool fill_heavy_ = false;       ///< SparseLU's fill was measured too high: MUMPS at every size
 };
 
 } // namespace

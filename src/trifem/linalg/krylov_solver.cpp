@@ -119,7 +119,8 @@ constexpr Index kLuFallbackLimit = 100000;
 class KrylovSolver final : public LinearSolver {
 public:
   KrylovSolver(const std::string& options, KrylovSettings settings)
-      : options_(options), settings_(settings) {}
+      : options_(options), settings_(settings), tolerance_(settings.relative_tolerance),
+        fixed_tolerance_(options_.has("-ksp_rtol")) {}
   ~KrylovSolver() override { release(); }
   KrylovSolver(const KrylovSolver&) = delete;
   KrylovSolver& operator=(const KrylovSolver&) = delete;
@@ -133,6 +134,14 @@ public:
   }
 
   void set_near_null_space(std::vector<Vector> modes) override { near_null_ = std::move(modes); }
+
+  void set_relative_tolerance(Real tolerance) override {
+    if (fixed_tolerance_)
+      return;
+    tolerance_ = tolerance;
+    if (fallback_)
+      fallback_->set_relative_tolerance(tolerance_);
+  }
 
   void analyze_pattern(const SparseMatrix& A) override {
     release();
@@ -189,6 +198,8 @@ public:
       return false;
     try {
       petsc::set_vector(b_, b, {}, row_sign_);
+      if (!fixed_tolerance_)
+        petsc::set_relative_tolerance(ksp_, tolerance_);
       check(KSPSolve(ksp_, b_, x_), "Krylov solve");
       KSPConvergedReason reason = KSP_CONVERGED_ITERATING;
       check(KSPGetConvergedReason(ksp_, &reason), "PETSc KSP");
@@ -317,11 +328,13 @@ private:
     if (!fallback_) {
       // the user's options are in force already (they were checked against this backend)
       fallback_ = std::make_unique<KrylovSolver>(
-          "", KrylovSettings{.relative_tolerance = settings_.relative_tolerance,
+          "", KrylovSettings{.relative_tolerance = tolerance_,
                              .max_iterations = settings_.max_iterations});
       fallback_->set_fields(equation_fields_, field_names_);
       fallback_->analyze_pattern(*matrix_values_);
     }
+    if (!fixed_tolerance_)
+      fallback_->set_relative_tolerance(tolerance_);
     if (!fallback_ready_ && !(fallback_ready_ = fallback_->factorize(*matrix_values_))) {
       failure_ = {why + "; with the LU blocks: " + fallback_->failure().reason, false};
       return false;
@@ -370,8 +383,9 @@ private:
   }
 
   std::string not_converged(KSPConvergedReason reason) const {
-    PetscReal residual = 0.0, initial = 0.0;
+    PetscReal residual = 0.0, initial = 0.0, tolerance = 0.0;
     KSPGetResidualNorm(ksp_, &residual);
+    KSPGetTolerances(ksp_, &tolerance, nullptr, nullptr, nullptr);
     VecNorm(b_, NORM_2, &initial);
     const Real reached = initial > 0.0 ? residual / initial : residual;
     if (!std::isfinite(reached))
@@ -380,8 +394,7 @@ private:
                          KSPConvergedReasons[reason], iterations_);
     return fmt::format("the Krylov solver did not converge ({} after {} iterations; residual "
                        "reduced to {:.3g} of the right-hand side, tolerance {:.3g})",
-                       KSPConvergedReasons[reason], iterations_, reached,
-                       settings_.relative_tolerance);
+                       KSPConvergedReasons[reason], iterations_, reached, tolerance);
   }
 
   void release() {
@@ -400,6 +413,8 @@ private:
 
   petsc::ScopedOptions options_; // first: the options outlive the PETSc objects
   KrylovSettings settings_;
+  Real tolerance_;             ///< relative tolerance of the next solves (Newton's forcing term)
+  const bool fixed_tolerance_; ///< -ksp_rtol among the options: it wins
   BlockSplit split_;
   std::vector<Vector> near_null_; ///< rigid-body modes over the equations (may be empty)
   std::vector<int> equation_fields_;

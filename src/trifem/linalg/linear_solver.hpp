@@ -45,6 +45,10 @@ public:
   /// and the whole right-hand side, and receives the whole solution. Empty: one process.
   /// Backends that run on one process only refuse a non-empty partition.
   virtual void set_partition(const std::vector<int>& equation_owner);
+  /// The residual reduction asked of the next solves of an iterative backend (Newton's forcing
+  /// term; ‖A x − b‖ ≤ tolerance ‖b‖); direct backends ignore it, and a tolerance given as a
+  /// PETSc option (-ksp_rtol) wins over it.
+  virtual void set_relative_tolerance(Real tolerance) { (void)tolerance; }
   /// Iterations of the last solve of an iterative backend (0 for a direct one).
   virtual int last_iterations() const { return 0; }
   /// Nonzeros of the factors of the last factorization of a direct backend that reports them

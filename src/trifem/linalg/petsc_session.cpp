@@ -91,6 +91,22 @@ ScopedOptions::ScopedOptions(std::string options) : options_(std::move(options))
   }
 }
 
+void set_relative_tolerance(KSP ksp, double tolerance) {
+  PetscReal relative = 0.0, absolute = 0.0, divergence = 0.0;
+  PetscInt iterations = 0;
+  check(KSPGetTolerances(ksp, &relative, &absolute, &divergence, &iterations),
+        "PETSc KSP tolerances");
+  check(KSPSetTolerances(ksp, tolerance, absolute, divergence, iterations), "PETSc KSP tolerances");
+}
+
+bool ScopedOptions::has(const std::string& key) const {
+  std::istringstream words(options_);
+  for (std::string word; words >> word;)
+    if (word == key)
+      return true;
+  return false;
+}
+
 void refuse_unused_options(const std::string& options, const char* backend) {
   const std::string unused = take_unused_options();
   if (!unused.empty())

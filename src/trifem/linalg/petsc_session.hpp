@@ -3,6 +3,8 @@
 // and finalised at exit. A run that never selects a PETSc backend never starts MPI.
 #pragma once
 
+#include <petscksp.h>
+
 #include <stdexcept>
 #include <string>
 
@@ -34,12 +36,17 @@ class ScopedOptions {
 public:
   explicit ScopedOptions(std::string options);
   ~ScopedOptions() { clear_options(options_); }
+  /// Whether the options name `key` ("-ksp_rtol").
+  bool has(const std::string& key) const;
   ScopedOptions(const ScopedOptions&) = delete;
   ScopedOptions& operator=(const ScopedOptions&) = delete;
 
 private:
   std::string options_;
 };
+
+/// Sets the relative tolerance of `ksp`'s solves, its other tolerances unchanged.
+void set_relative_tolerance(KSP ksp, double tolerance);
 
 /// InputError naming every option of the database that no PETSc object has read (after a
 /// probe solve with `options` by the backend `backend`); the unused ones are removed.

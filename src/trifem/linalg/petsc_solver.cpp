@@ -86,7 +86,8 @@ const char* pc_failure_text(PCFailedReason reason) {
 /// all the processes of the run, each giving its part of the matrix.
 class MumpsSolver final : public LinearSolver {
 public:
-  MumpsSolver(const std::string& options, bool reuse) : options_(options), reuse_(reuse) {}
+  MumpsSolver(const std::string& options, bool reuse)
+      : options_(options), reuse_(reuse), fixed_tolerance_(options_.has("-ksp_rtol")) {}
   ~MumpsSolver() override { release(); }
   MumpsSolver(const MumpsSolver&) = delete;
   MumpsSolver& operator=(const MumpsSolver&) = delete;
@@ -149,6 +150,11 @@ public:
     }
   }
 
+  void set_relative_tolerance(Real tolerance) override {
+    if (!fixed_tolerance_)
+      reuse_tolerance_ = tolerance;
+  }
+
   bool solve(const Vector& b, Vector& x) override {
     x.resize(n_);
     if (n_ == 0)
@@ -157,6 +163,8 @@ public:
       return false;
     try {
       to_petsc(b);
+      if (reuse_ && !fixed_tolerance_)
+        petsc::set_relative_tolerance(ksp_, reuse_tolerance_);
       check(KSPSolve(ksp_, b_, x_), "MUMPS solve");
       KSPConvergedReason reason = KSP_CONVERGED_ITERATING;
       check(KSPGetConvergedReason(ksp_, &reason), "PETSc KSP");
@@ -371,9 +379,11 @@ private:
   std::unique_ptr<petsc::MpiAijMatrix> mpi_matrix_, mpi_factored_; ///< ... and the matrices
   std::unique_ptr<petsc::Gather> gather_; ///< ... and the gathering of the solution
   bool told_ = false;                     ///< the distributed matrix's size was logged
-  bool reuse_ = false;   ///< precondition later matrices with an earlier factorization
-  bool refactor_ = true; ///< the next factorize() factorizes
-  bool stale_ = false;   ///< the factorization in use is of an earlier matrix
+  bool reuse_ = false;         ///< precondition later matrices with an earlier factorization
+  const bool fixed_tolerance_; ///< -ksp_rtol among the options: it wins
+  Real reuse_tolerance_ = kReuseTolerance; ///< of the FGMRES solves when reusing (forcing term)
+  bool refactor_ = true;                   ///< the next factorize() factorizes
+  bool stale_ = false;                     ///< the factorization in use is of an earlier matrix
   int iterations_ = 0;
   Vec x_ = nullptr, b_ = nullptr;
   KSP ksp_ = nullptr;
@@ -391,14 +401,15 @@ private:
   LinearSolverFailure failure_;
 };
 
-/// Solves a 2×2 system with a solver made with `options`, then refuses options nobody read.
-void check_options_are_used(const std::string& options) {
+/// Solves a 2×2 system with a solver made with `options` (reusing factorizations or not: the
+/// FGMRES of reuse reads -ksp_* options), then refuses options nobody read.
+void check_options_are_used(const std::string& options, bool reuse) {
   SparseMatrix A(2, 2);
   A.insert(0, 0) = 2.0;
   A.insert(1, 0) = 1.0;
   A.insert(1, 1) = 3.0;
   A.makeCompressed();
-  MumpsSolver probe(options, false);
+  MumpsSolver probe(options, reuse);
   probe.analyze_pattern(A);
   Vector x;
   if (!probe.factorize(A) || !probe.solve(Vector::Ones(2), x))
@@ -413,7 +424,7 @@ void check_options_are_used(const std::string& options) {
 std::unique_ptr<LinearSolver> make_mumps_solver(const std::string& petsc_options,
                                                 bool reuse_factorization) {
   if (!petsc_options.empty())
-    check_options_are_used(petsc_options);
+    check_options_are_used(petsc_options, reuse_factorization);
   return std::make_unique<MumpsSolver>(petsc_options, reuse_factorization);
 }
 

@@ -108,8 +108,46 @@ bool NewtonSolver::increment_converged(const NonlinearProblem& problem, const Ve
   return true;
 }
 
+Real NewtonSolver::linear_reduction(const std::vector<Real>& history) const {
+  const Real loosest = settings_.linear_tolerance_max, tightest = settings_.linear_tolerance_min;
+  if (!settings_.adaptive_linear_tolerance || history.empty())
+    return tightest;
+  const std::size_t k = history.size() - 1;
+  Real tolerance = loosest;
+  // Eisenstat-Walker choice 2: 0.9 (|R_k| / |R_k-1|)^2, the reduction quadratic convergence
+  // would give
+  if (k > 0 && history[k - 1] > 0.0)
+    tolerance = 0.9 * std::pow(history[k] / history[k - 1], 2);
+  // no more than the residual tolerance needs, with a margin of ten
+  if (history[k] > 0.0)
+    tolerance = std::max(tolerance, 0.1 * settings_.residual_tolerance / history[k]);
+  return std::clamp(tolerance, tightest, loosest);
+}
+
+Real NewtonSolver::in_linear_norm(const NonlinearProblem& problem, const Vector& rhs,
+                                  Real reduction) const {
+  // The Krylov solvers measure ‖J dx − rhs‖₂ against ‖rhs‖₂, Newton ‖W R‖₂ with the weights
+  // W = 1/reference per field. ‖W r‖₂ ≤ max W ‖r‖₂, so ‖r‖₂ ≤ t ‖rhs‖₂ with
+  // t = reduction ‖W rhs‖₂ / (max W ‖rhs‖₂) gives ‖W r‖₂ ≤ reduction ‖W rhs‖₂.
+  const std::vector<Real> norms = field_norms(problem, rhs, false);
+  std::vector<bool> present(norms.size(), false);
+  for (const int f : problem.equation_fields())
+    present[f] = true;
+  Real weighted = 0.0, plain = 0.0, largest_weight = 0.0;
+  for (std::size_t f = 0; f < norms.size(); ++f) {
+    if (!present[f])
+      continue;
+    weighted += std::pow(norms[f] / reference_[f], 2);
+    plain += norms[f] * norms[f];
+    largest_weight = std::max(largest_weight, 1.0 / reference_[f]);
+  }
+  if (plain == 0.0 || largest_weight == 0.0)
+    return reduction;
+  return reduction * std::sqrt(weighted) / (largest_weight * std::sqrt(plain));
+}
+
 SolveStatus NewtonSolver::factor_and_solve(NonlinearProblem& problem, Linearization& lin,
-                                           Vector& dx) {
+                                           Vector& dx, Real reduction) {
   if (problem.num_equations() == 0) { // every unknown is prescribed: nothing to solve
     dx.resize(0);
     return SolveStatus::Converged;
@@ -131,6 +169,8 @@ SolveStatus NewtonSolver::factor_and_solve(NonlinearProblem& problem, Linearizat
     return linear_failure_status();
   start = Clock::now();
   const Vector rhs = -(lin.residual + lin.constraint_rhs);
+  linear_->set_relative_tolerance(
+      std::max(in_linear_norm(problem, rhs, reduction), settings_.linear_tolerance_min));
   const bool solved = linear_->solve(rhs, dx);
   times_.solve += seconds_since(start);
   return solved ? SolveStatus::Converged : linear_failure_status();
@@ -241,7 +281,8 @@ NewtonReport NewtonSolver::solve(NonlinearProblem& problem, const std::vector<Re
           fmt::format("no convergence in {} iterations (residual {:.3e})", k, merit);
       return report;
     }
-    const SolveStatus solved = factor_and_solve(problem, lin, dx);
+    const Real reduction = linear_reduction(report.residual_history);
+    const SolveStatus solved = factor_and_solve(problem, lin, dx, reduction);
     report.linear_iterations += linear_->last_iterations();
     if (solved != SolveStatus::Converged) {
       report.status = solved;
@@ -262,8 +303,14 @@ NewtonReport NewtonSolver::solve(NonlinearProblem& problem, const std::vector<Re
       report.failure_reason = "every trial step of the line search inverts an element (J <= 0)";
       return report;
     }
-    log::debug("    iteration {:2d}: residual {:.3e}, step {:.3g}", k + 1,
-               scaled_residual(problem, lin.residual), step);
+    if (linear_->last_iterations() > 0)
+      log::debug("    iteration {:2d}: residual {:.3e}, step {:.3g}, {} linear iterations "
+                 "(reduction {:.1e} asked)",
+                 k + 1, scaled_residual(problem, lin.residual), step, linear_->last_iterations(),
+                 reduction);
+    else
+      log::debug("    iteration {:2d}: residual {:.3e}, step {:.3g}", k + 1,
+                 scaled_residual(problem, lin.residual), step);
   }
 }
 

@@ -20,6 +20,13 @@ struct NewtonSettings {
   bool line_search = true;
   Real line_search_tolerance = 0.9; ///< accept s when |dx.R(s)| <= tol |dx.R(0)|
   int max_backtracks = 8;
+  /// Inexact Newton for iterative linear solvers: the relative tolerance of each linear solve
+  /// follows the convergence of the residual (the forcing term of Eisenstat & Walker, SIAM J.
+  /// Sci. Comput. 17 (1996) 16-32, choice 2), between linear_tolerance_max and
+  /// linear_tolerance_min; false: linear_tolerance_min for every solve.
+  bool adaptive_linear_tolerance = true;
+  Real linear_tolerance_max = 1e-4;
+  Real linear_tolerance_min = 1e-10;
 };
 
 /// Wall-clock time spent per phase [s].
@@ -69,7 +76,15 @@ private:
   /// residual above the tolerance), and the solve is accepted.
   bool at_roundoff_floor(const NonlinearProblem& problem, const Vector& dx, Real step,
                          const std::vector<Real>& history) const;
-  SolveStatus factor_and_solve(NonlinearProblem& problem, Linearization& lin, Vector& dx);
+  /// The reduction of the scaled residual asked of the next linear solve (the forcing term),
+  /// from the scaled residuals of this solve so far.
+  Real linear_reduction(const std::vector<Real>& history) const;
+  /// The relative tolerance of an iterative solve of J dx = rhs (in the 2-norm) that reduces
+  /// the scaled residual (per field over its reference) by at least `reduction`.
+  Real in_linear_norm(const NonlinearProblem& problem, const Vector& rhs, Real reduction) const;
+  /// Factorizes and solves, the solve of an iterative backend to `reduction` (in_linear_norm).
+  SolveStatus factor_and_solve(NonlinearProblem& problem, Linearization& lin, Vector& dx,
+                               Real reduction);
   /// FactorizationFailed, or Unrecoverable if the linear solver says no step can cure it.
   SolveStatus linear_failure_status() const;
   SolveStatus line_search(NonlinearProblem& problem, const Vector& dx, const Vector& r0, Real& step,

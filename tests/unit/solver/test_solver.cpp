@@ -4,20 +4,31 @@
 #include "trifem/solver/newton.hpp"
 #include "trifem/solver/step_controller.hpp"
 
+#include <Eigen/SparseLU>
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <optional>
 
 using namespace trifem;
 
 namespace {
 
-/// R_i(x) = x_i^3 + x_{i+1} - b_i: a small nonlinear system with a known root x = 1.
+/// R_i(x) = x_i^3 + x_{i+1} - b_i: a small nonlinear system with a known root x = 1. With
+/// `odd_scale` the odd equations are a second field, multiplied by that factor.
 class CubicProblem final : public solver::NonlinearProblem {
 public:
-  explicit CubicProblem(Index n) : x_(Vector::Constant(n, 3.0)), fields_(n, 0) {
+  explicit CubicProblem(Index n, std::optional<Real> odd_scale = {})
+      : x_(Vector::Constant(n, 3.0)), fields_(n, 0), scale_(Vector::Ones(n)) {
     b_ = Vector::Constant(n, 2.0);
     b_[n - 1] = 1.0;
+    if (odd_scale) {
+      scales_.push_back({"y", *odd_scale, 1.0});
+      for (Index i = 1; i < n; i += 2) {
+        fields_[i] = 1;
+        scale_[i] = *odd_scale;
+      }
+    }
   }
   Index num_equations() const override { return x_.size(); }
   const std::vector<int>& equation_fields() const override { return fields_; }
@@ -27,12 +38,13 @@ public:
     const Index n = x_.size();
     lin.residual = x_.array().cube().matrix() - b_;
     lin.residual.head(n - 1) += x_.tail(n - 1);
+    lin.residual = lin.residual.cwiseProduct(scale_);
     if (with_jacobian) {
       std::vector<Eigen::Triplet<Real>> t;
       for (Index i = 0; i < n; ++i) {
-        t.emplace_back(i, i, 3 * x_[i] * x_[i]);
+        t.emplace_back(i, i, scale_[i] * 3 * x_[i] * x_[i]);
         if (i + 1 < n)
-          t.emplace_back(i, i + 1, 1.0);
+          t.emplace_back(i, i + 1, scale_[i]);
       }
       lin.jacobian.resize(n, n);
       lin.jacobian.setFromTriplets(t.begin(), t.end());
@@ -52,6 +64,7 @@ public:
 private:
   Vector x_, saved_, b_;
   std::vector<int> fields_;
+  Vector scale_; ///< of each equation
   std::vector<solver::FieldScale> scales_{{"x", 1.0, 1.0}};
 };
 
@@ -73,7 +86,97 @@ private:
   int iterations_;
 };
 
+/// An iterative solver that stops just at the tolerance it is asked for: the exact solution of
+/// A x = b + tolerance |b| e (e a fixed unit vector), so |A x - b| = tolerance |b|. Records the
+/// tolerances asked.
+class InexactSolver final : public linalg::LinearSolver {
+public:
+  void analyze_pattern(const SparseMatrix& A) override { lu_.analyzePattern(A); }
+  bool factorize(const SparseMatrix& A) override {
+    lu_.factorize(A);
+    return lu_.info() == Eigen::Success;
+  }
+  void set_relative_tolerance(Real tolerance) override { tolerance_ = tolerance; }
+  bool solve(const Vector& b, Vector& x) override {
+    asked.push_back(tolerance_);
+    const Vector e = Vector::Ones(b.size()).normalized();
+    x = lu_.solve(b + tolerance_ * b.norm() * e);
+    return true;
+  }
+  int last_iterations() const override { return 1; }
+  std::string name() const override { return "inexact"; }
+  std::vector<Real> asked;
+
+private:
+  Eigen::SparseLU<SparseMatrix> lu_;
+  Real tolerance_ = 0.0;
+};
+
 } // namespace
+
+TEST(Newton, AnIterativeSolveAsksNoMoreAccuracyThanTheResidualNeeds) {
+  CubicProblem exact_problem(5);
+  solver::NewtonSolver exact({}, linalg::make_linear_solver("sparselu"));
+  const auto direct = exact.solve(exact_problem);
+  ASSERT_EQ(direct.status, solver::SolveStatus::Converged);
+
+  const solver::NewtonSettings settings;
+  CubicProblem problem(5);
+  auto inexact = std::make_unique<InexactSolver>();
+  const InexactSolver& solver = *inexact;
+  solver::NewtonSolver newton(settings, std::move(inexact));
+  const auto report = newton.solve(problem);
+  ASSERT_EQ(report.status, solver::SolveStatus::Converged);
+  // the same root to the Newton tolerance, in at most one more iteration
+  EXPECT_LE((problem.x() - exact_problem.x()).norm(), 1e-7);
+  EXPECT_LE(report.iterations, direct.iterations + 1);
+  // the first solve at the loosest tolerance, every one within the bounds
+  ASSERT_EQ(solver.asked.size(), static_cast<std::size_t>(report.iterations));
+  EXPECT_DOUBLE_EQ(solver.asked.front(), settings.linear_tolerance_max);
+  for (const Real tolerance : solver.asked) {
+    EXPECT_LE(tolerance, settings.linear_tolerance_max);
+    EXPECT_GE(tolerance, settings.linear_tolerance_min);
+  }
+}
+
+TEST(Newton, AnIterativeSolveOfFieldsOfDifferentScalesIsTightEnoughForTheSmallOne) {
+  // the odd equations a million times smaller: a 2-norm tolerance of the whole right-hand side
+  // must be tight enough for their residual too
+  for (const Real odd_scale : {1.0, 1e-6}) {
+    SCOPED_TRACE(odd_scale);
+    CubicProblem exact_problem(6, odd_scale);
+    solver::NewtonSolver exact({}, linalg::make_linear_solver("sparselu"));
+    const auto direct = exact.solve(exact_problem);
+    ASSERT_EQ(direct.status, solver::SolveStatus::Converged);
+    const solver::NewtonSettings settings;
+    CubicProblem problem(6, odd_scale);
+    auto inexact = std::make_unique<InexactSolver>();
+    const InexactSolver& solver = *inexact;
+    solver::NewtonSolver newton(settings, std::move(inexact));
+    const auto report = newton.solve(problem);
+    ASSERT_EQ(report.status, solver::SolveStatus::Converged);
+    EXPECT_LE((problem.x() - exact_problem.x()).norm(), 1e-7);
+    EXPECT_LE(report.iterations, direct.iterations + 1);
+    if (odd_scale < 1.0) // the first solve asked about odd_scale times the loosest tolerance
+      EXPECT_LE(solver.asked.front(), 10 * odd_scale * settings.linear_tolerance_max);
+    else
+      EXPECT_GE(solver.asked.front(), 0.1 * settings.linear_tolerance_max);
+  }
+}
+
+TEST(Newton, WithoutTheForcingTermEveryIterativeSolveAsksTheTightestTolerance) {
+  solver::NewtonSettings settings;
+  settings.adaptive_linear_tolerance = false;
+  CubicProblem problem(5);
+  auto inexact = std::make_unique<InexactSolver>();
+  const InexactSolver& solver = *inexact;
+  solver::NewtonSolver newton(settings, std::move(inexact));
+  ASSERT_EQ(newton.solve(problem).status, solver::SolveStatus::Converged);
+  ASSERT_FALSE(solver.asked.empty());
+  for (const Real tolerance : solver.asked)
+    EXPECT_DOUBLE_EQ(tolerance, settings.linear_tolerance_min);
+  EXPECT_LE((problem.x() - Vector::Ones(5)).norm(), 1e-10);
+}
 
 TEST(Newton, AFirstSingularMatrixAsksAboutSupportsButAnUnconvergedKrylovSolveDoesNot) {
   const std::string hint = "is every body supported against rigid motion";

@@ -43,6 +43,7 @@ public:
       backend_->set_relative_tolerance(tolerance);
   }
   bool solve(const Vector& b, Vector& x) override { return backend_ && backend_->solve(b, x); }
+  bool refine(const Vector& b, Vector& x) override { return backend_ && backend_->refine(b, x); }
   int last_iterations() const override { return backend_ ? backend_->last_iterations() : 0; }
   std::int64_t factor_nonzeros() const override {
     return backend_ ? backend_->factor_nonzeros() : 0;

@@ -190,14 +190,30 @@ public:
     }
   }
 
-  bool solve(const Vector& b, Vector& x) override {
-    x.resize(n_);
+  bool solve(const Vector& b, Vector& x) override { return solve_from(b, x, false); }
+
+  bool refine(const Vector& b, Vector& x) override {
+    return x.size() == n_ ? solve_from(b, x, true) : solve(b, x);
+  }
+
+  std::string name() const override { return "krylov"; }
+  LinearSolverFailure failure() const override { return failure_; }
+  int last_iterations() const override { return iterations_; }
+
+private:
+  /// A solve from zero, or (`warm`) from x.
+  bool solve_from(const Vector& b, Vector& x, bool warm) {
+    if (!warm)
+      x.resize(n_);
     if (n_ == 0)
       return true;
     if (!ready_)
       return false;
     try {
       petsc::set_vector(b_, b, {}, row_sign_);
+      if (warm)
+        petsc::set_vector(x_, x);
+      check(KSPSetInitialGuessNonzero(ksp_, warm ? PETSC_TRUE : PETSC_FALSE), "PETSc KSP");
       if (!fixed_tolerance_)
         petsc::set_relative_tolerance(ksp_, tolerance_);
       check(KSPSolve(ksp_, b_, x_), "Krylov solve");
@@ -222,11 +238,6 @@ public:
     return false;
   }
 
-  std::string name() const override { return "krylov"; }
-  LinearSolverFailure failure() const override { return failure_; }
-  int last_iterations() const override { return iterations_; }
-
-private:
   void set_up(const SparseMatrix& A) {
     const bool blocks = !split_.potential.empty() && split_.potential.size() < std::size_t(n_);
     row_sign_.clear();

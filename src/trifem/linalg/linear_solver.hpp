@@ -49,6 +49,10 @@ public:
   /// term; ‖A x − b‖ ≤ tolerance ‖b‖); direct backends ignore it, and a tolerance given as a
   /// PETSc option (-ksp_rtol) wins over it.
   virtual void set_relative_tolerance(Real tolerance) { (void)tolerance; }
+  /// Continues the last solve of an iterative backend (same matrix, same `b`) from its result
+  /// `x` to the tolerance now set (set_relative_tolerance); false on failure. Direct backends
+  /// solve again.
+  virtual bool refine(const Vector& b, Vector& x) { return solve(b, x); }
   /// Iterations of the last solve of an iterative backend (0 for a direct one).
   virtual int last_iterations() const { return 0; }
   /// Nonzeros of the factors of the last factorization of a direct backend that reports them

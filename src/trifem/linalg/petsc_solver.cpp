@@ -155,14 +155,27 @@ public:
       reuse_tolerance_ = tolerance;
   }
 
-  bool solve(const Vector& b, Vector& x) override {
-    x.resize(n_);
+  bool solve(const Vector& b, Vector& x) override { return solve_from(b, x, false); }
+
+  bool refine(const Vector& b, Vector& x) override {
+    const bool warm = reuse_ && !layout_ && x.size() == n_;
+    return solve_from(b, x, warm);
+  }
+
+  /// A solve (reusing: FGMRES from zero, or with `warm` from x).
+  bool solve_from(const Vector& b, Vector& x, bool warm) {
+    if (!warm)
+      x.resize(n_);
     if (n_ == 0)
       return true;
     if (!factored_)
       return false;
     try {
       to_petsc(b);
+      if (warm)
+        petsc::set_vector(x_, x, order_);
+      if (reuse_)
+        check(KSPSetInitialGuessNonzero(ksp_, warm ? PETSC_TRUE : PETSC_FALSE), "PETSc KSP");
       if (reuse_ && !fixed_tolerance_)
         petsc::set_relative_tolerance(ksp_, reuse_tolerance_);
       check(KSPSolve(ksp_, b_, x_), "MUMPS solve");

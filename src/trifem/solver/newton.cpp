@@ -68,6 +68,19 @@ Real NewtonSolver::scaled_residual(const NonlinearProblem& problem, const Vector
   return std::sqrt(sum);
 }
 
+Real NewtonSolver::convergence_weight(const NonlinearProblem& problem, std::size_t f) const {
+  return 1.0 / std::max(settings_.residual_tolerance * reference_[f],
+                        settings_.absolute_floor * problem.field_scales()[f].residual);
+}
+
+Real NewtonSolver::convergence_norm(const NonlinearProblem& problem, const Vector& r) const {
+  const std::vector<Real> norms = field_norms(problem, r, false);
+  Real sum = 0.0;
+  for (std::size_t f = 0; f < norms.size(); ++f)
+    sum += std::pow(norms[f] * convergence_weight(problem, f), 2);
+  return std::sqrt(sum);
+}
+
 bool NewtonSolver::residual_converged(const NonlinearProblem& problem, const Vector& r) const {
   const std::vector<Real> norms = field_norms(problem, r, false);
   const auto& scales = problem.field_scales();
@@ -118,16 +131,16 @@ Real NewtonSolver::linear_reduction(const std::vector<Real>& history) const {
   // would give
   if (k > 0 && history[k - 1] > 0.0)
     tolerance = 0.9 * std::pow(history[k] / history[k - 1], 2);
-  // no more than the residual tolerance needs, with a margin of ten
+  // no more than convergence needs (a norm of 1), with a margin of ten
   if (history[k] > 0.0)
-    tolerance = std::max(tolerance, 0.1 * settings_.residual_tolerance / history[k]);
+    tolerance = std::max(tolerance, 0.1 / history[k]);
   return std::clamp(tolerance, tightest, loosest);
 }
 
 Real NewtonSolver::in_linear_norm(const NonlinearProblem& problem, const Vector& rhs,
                                   Real reduction) const {
-  // The Krylov solvers measure ‖J dx − rhs‖₂ against ‖rhs‖₂, Newton ‖W R‖₂ with the weights
-  // W = 1/reference per field. ‖W r‖₂ ≤ max W ‖r‖₂, so ‖r‖₂ ≤ t ‖rhs‖₂ with
+  // The Krylov solvers measure ‖J dx − rhs‖₂ against ‖rhs‖₂, Newton ‖W R‖₂ with the
+  // convergence weights W per field. ‖W r‖₂ ≤ max W ‖r‖₂, so ‖r‖₂ ≤ t ‖rhs‖₂ with
   // t = reduction ‖W rhs‖₂ / (max W ‖rhs‖₂) gives ‖W r‖₂ ≤ reduction ‖W rhs‖₂.
   const std::vector<Real> norms = field_norms(problem, rhs, false);
   std::vector<bool> present(norms.size(), false);
@@ -137,17 +150,60 @@ Real NewtonSolver::in_linear_norm(const NonlinearProblem& problem, const Vector&
   for (std::size_t f = 0; f < norms.size(); ++f) {
     if (!present[f])
       continue;
-    weighted += std::pow(norms[f] / reference_[f], 2);
+    const Real weight = convergence_weight(problem, f);
+    weighted += std::pow(norms[f] * weight, 2);
     plain += norms[f] * norms[f];
-    largest_weight = std::max(largest_weight, 1.0 / reference_[f]);
+    largest_weight = std::max(largest_weight, weight);
   }
   if (plain == 0.0 || largest_weight == 0.0)
     return reduction;
   return reduction * std::sqrt(weighted) / (largest_weight * std::sqrt(plain));
 }
 
+bool NewtonSolver::solve_to(const NonlinearProblem& problem, const SparseMatrix& jacobian,
+                            const Vector& rhs, Vector& dx, Real reduction, bool first) {
+  // the first iteration of a step (its right-hand side carries the new loads) and the later
+  // ones differ in how the residual spreads over the fields: each keeps its own record
+  Real& amplification = amplification_[first ? 0 : 1];
+  const Real tightest = settings_.linear_tolerance_min;
+  const bool distributed = !problem.equation_owners().empty(); // the jacobian is this part
+  // the 2-norm tolerance expected to reduce the convergence norm by `reduction`
+  Real tolerance =
+      distributed ? in_linear_norm(problem, rhs, reduction) : reduction / amplification;
+  tolerance = settings_.adaptive_linear_tolerance
+                  ? std::clamp(tolerance, tightest, settings_.linear_tolerance_max)
+                  : tightest;
+  linear_->set_relative_tolerance(tolerance);
+  bool solved = linear_->solve(rhs, dx);
+  linear_iterations_ = linear_->last_iterations();
+  if (!solved || linear_iterations_ == 0 || distributed)
+    return solved; // a direct solve, or no check possible
+  // the reduction of the convergence norm reached; continued to a tighter tolerance if too
+  // little
+  const Real scaled_rhs = convergence_norm(problem, rhs);
+  if (scaled_rhs == 0.0)
+    return true;
+  constexpr int kMaxRefinements = 3;
+  for (int refinement = 0;; ++refinement) {
+    const Real reached = convergence_norm(problem, jacobian * dx - rhs) / scaled_rhs;
+    if (refinement == 0) // (a continued solve overshoots its tolerance: not representative)
+      amplification = std::max(reached / tolerance, 1e-3);
+    if (reached <= reduction || tolerance <= tightest || refinement == kMaxRefinements)
+      return true;
+    tolerance = std::max(tightest, 0.5 * reduction / amplification);
+    linear_->set_relative_tolerance(tolerance);
+    solved = linear_->refine(rhs, dx);
+    linear_iterations_ += linear_->last_iterations();
+    log::debug("    the linear residual in the convergence norm fell to {:.2e} of the "
+               "right-hand side, {:.1e} asked: solve continued to a 2-norm tolerance of {:.1e}",
+               reached, reduction, tolerance);
+    if (!solved)
+      return false;
+  }
+}
+
 SolveStatus NewtonSolver::factor_and_solve(NonlinearProblem& problem, Linearization& lin,
-                                           Vector& dx, Real reduction) {
+                                           Vector& dx, Real reduction, bool first) {
   if (problem.num_equations() == 0) { // every unknown is prescribed: nothing to solve
     dx.resize(0);
     return SolveStatus::Converged;
@@ -169,9 +225,7 @@ SolveStatus NewtonSolver::factor_and_solve(NonlinearProblem& problem, Linearizat
     return linear_failure_status();
   start = Clock::now();
   const Vector rhs = -(lin.residual + lin.constraint_rhs);
-  linear_->set_relative_tolerance(
-      std::max(in_linear_norm(problem, rhs, reduction), settings_.linear_tolerance_min));
-  const bool solved = linear_->solve(rhs, dx);
+  const bool solved = solve_to(problem, lin.jacobian, rhs, dx, reduction, first);
   times_.solve += seconds_since(start);
   return solved ? SolveStatus::Converged : linear_failure_status();
 }
@@ -244,6 +298,7 @@ NewtonReport NewtonSolver::solve(NonlinearProblem& problem, const std::vector<Re
 
   Vector dx = Vector::Zero(problem.num_equations());
   Real step = 1.0;
+  std::vector<Real> convergence_history; ///< convergence_norm of the residual per iteration
   for (int k = 0;; ++k) {
     if (!lin.residual.allFinite()) {
       report.status = SolveStatus::Diverged;
@@ -256,6 +311,7 @@ NewtonReport NewtonSolver::solve(NonlinearProblem& problem, const std::vector<Re
       reference_[f] = std::max(reference_[f], norms[f]);
     const Real merit = scaled_residual(problem, lin.residual);
     report.residual_history.push_back(merit);
+    convergence_history.push_back(convergence_norm(problem, lin.residual));
     report.final_residual = merit;
     report.iterations = k;
     const bool increment_ok = k == 0 || increment_converged(problem, dx, step);
@@ -281,16 +337,16 @@ NewtonReport NewtonSolver::solve(NonlinearProblem& problem, const std::vector<Re
           fmt::format("no convergence in {} iterations (residual {:.3e})", k, merit);
       return report;
     }
-    const Real reduction = linear_reduction(report.residual_history);
-    const SolveStatus solved = factor_and_solve(problem, lin, dx, reduction);
-    report.linear_iterations += linear_->last_iterations();
+    const Real reduction = linear_reduction(convergence_history);
+    const SolveStatus solved = factor_and_solve(problem, lin, dx, reduction, k == 0);
+    report.linear_iterations += linear_iterations_;
     if (solved != SolveStatus::Converged) {
       report.status = solved;
       const std::string why = linear_->failure().reason;
       report.failure_reason = "the linear solve failed: " +
                               (why.empty() ? std::string("the Jacobian is singular") : why);
       // a singular first matrix (not an iterative solve that ran out of iterations)
-      if (solved == SolveStatus::FactorizationFailed && k == 0 && linear_->last_iterations() == 0)
+      if (solved == SolveStatus::FactorizationFailed && k == 0 && linear_iterations_ == 0)
         report.failure_reason +=
             " (at the first iteration: is every body supported against rigid motion, and "
             "every field constrained where it needs to be?)";
@@ -303,10 +359,10 @@ NewtonReport NewtonSolver::solve(NonlinearProblem& problem, const std::vector<Re
       report.failure_reason = "every trial step of the line search inverts an element (J <= 0)";
       return report;
     }
-    if (linear_->last_iterations() > 0)
+    if (linear_iterations_ > 0)
       log::debug("    iteration {:2d}: residual {:.3e}, step {:.3g}, {} linear iterations "
                  "(reduction {:.1e} asked)",
-                 k + 1, scaled_residual(problem, lin.residual), step, linear_->last_iterations(),
+                 k + 1, scaled_residual(problem, lin.residual), step, linear_iterations_,
                  reduction);
     else
       log::debug("    iteration {:2d}: residual {:.3e}, step {:.3g}", k + 1,

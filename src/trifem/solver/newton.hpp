@@ -5,6 +5,7 @@
 #include "trifem/linalg/linear_solver.hpp"
 #include "trifem/solver/nonlinear_problem.hpp"
 
+#include <array>
 #include <chrono>
 #include <memory>
 #include <vector>
@@ -68,6 +69,11 @@ private:
   Real scaled_residual(const NonlinearProblem& problem, const Vector& r) const;
   std::vector<Real> field_norms(const NonlinearProblem& problem, const Vector& v, bool inf) const;
   bool residual_converged(const NonlinearProblem& problem, const Vector& r) const;
+  /// 1 over what convergence asks of field f's residual norm: the larger of the relative
+  /// tolerance times its reference and the absolute floor.
+  Real convergence_weight(const NonlinearProblem& problem, std::size_t f) const;
+  /// sqrt of the sum over fields of (‖r_f‖ convergence_weight)²: about 1 at convergence.
+  Real convergence_norm(const NonlinearProblem& problem, const Vector& r) const;
   bool increment_converged(const NonlinearProblem& problem, const Vector& dx, Real step) const;
   /// The round-off floor of the discrete system: the residual stalls (not halved in two
   /// iterations) while the Newton increments change every field by less than 1e4 eps of the
@@ -76,15 +82,21 @@ private:
   /// residual above the tolerance), and the solve is accepted.
   bool at_roundoff_floor(const NonlinearProblem& problem, const Vector& dx, Real step,
                          const std::vector<Real>& history) const;
-  /// The reduction of the scaled residual asked of the next linear solve (the forcing term),
-  /// from the scaled residuals of this solve so far.
+  /// The reduction of the convergence norm asked of the next linear solve (the forcing term),
+  /// from the convergence norms of the residuals of this solve so far.
   Real linear_reduction(const std::vector<Real>& history) const;
   /// The relative tolerance of an iterative solve of J dx = rhs (in the 2-norm) that reduces
-  /// the scaled residual (per field over its reference) by at least `reduction`.
+  /// the convergence norm by at least `reduction`, whatever the
+  /// residual's distribution over the fields (for distributed solves, which cannot check).
   Real in_linear_norm(const NonlinearProblem& problem, const Vector& rhs, Real reduction) const;
-  /// Factorizes and solves, the solve of an iterative backend to `reduction` (in_linear_norm).
+  /// Solves J dx = rhs after the factorization; an iterative solve until the convergence norm
+  /// of its residual has fallen by `reduction` (checked after the solve, and the solve continued
+  /// to a tighter tolerance if needed). Sets linear_iterations_.
+  bool solve_to(const NonlinearProblem& problem, const SparseMatrix& jacobian, const Vector& rhs,
+                Vector& dx, Real reduction, bool first);
+  /// Factorizes and solves (solve_to).
   SolveStatus factor_and_solve(NonlinearProblem& problem, Linearization& lin, Vector& dx,
-                               Real reduction);
+                               Real reduction, bool first);
   /// FactorizationFailed, or Unrecoverable if the linear solver says no step can cure it.
   SolveStatus linear_failure_status() const;
   SolveStatus line_search(NonlinearProblem& problem, const Vector& dx, const Vector& r0, Real& step,
@@ -95,6 +107,11 @@ private:
   Linearization lin_; ///< the linearization of the current solve (kept: see Linearization)
   int analyzed_pattern_ = -1;
   std::vector<Real> reference_; ///< per-field reference residual (running maximum)
+  /// The reduction of the convergence norm over the 2-norm tolerance, at the last iterative solve
+  /// (how much weaker Newton's norm converged than the solver's), for the first iteration of a
+  /// solve and for the later ones; guides the next tolerance.
+  std::array<Real, 2> amplification_{1.0, 1.0};
+  int linear_iterations_ = 0; ///< of the last solve_to (0: a direct solve)
   PhaseTimes times_;
 };
 

@@ -105,6 +105,33 @@ TEST(KrylovSolver, MultigridPreconditionerSolvesAMixedSystem) {
   EXPECT_LE(solver->last_iterations(), 60);
 }
 
+TEST(KrylovSolver, ASolveToALooseToleranceIsContinuedToATightOne) {
+  // Newton's forcing term: a solve to 1e-3, then continued from its result to 1e-10; a
+  // tolerance among the PETSc options wins over the ones asked
+  const MixedSystem s = mixed_system(40);
+  const Vector b = right_hand_side(s.A.rows());
+  for (const std::string preconditioner : {"lu", "amg"}) {
+    SCOPED_TRACE(preconditioner);
+    auto solver = linalg::make_linear_solver("krylov", "", false, preconditioner);
+    solver->set_fields(s.fields, s.names);
+    solver->analyze_pattern(s.A);
+    ASSERT_TRUE(solver->factorize(s.A)) << solver->failure().reason;
+    Vector x;
+    solver->set_relative_tolerance(1e-3);
+    ASSERT_TRUE(solver->solve(b, x)) << solver->failure().reason;
+    const Real loose = (s.A * x - b).norm() / b.norm();
+    EXPECT_LE(loose, 1e-3);
+    EXPECT_GT(loose, 1e-10); // stopped early
+    solver->set_relative_tolerance(1e-10);
+    ASSERT_TRUE(solver->refine(b, x)) << solver->failure().reason;
+    EXPECT_LE((s.A * x - b).norm() / b.norm(), 1e-9);
+    EXPECT_GE(solver->last_iterations(), 1);
+  }
+  auto fixed = linalg::make_linear_solver("krylov", "-ksp_rtol 1e-11");
+  fixed->set_relative_tolerance(1e-2); // ignored
+  EXPECT_LT(relative_residual(*fixed, s), 1e-10);
+}
+
 TEST(KrylovSolver, MultigridPreconditionerIsOnlyForKrylov) {
   EXPECT_THROW(linalg::make_linear_solver("mumps", "", false, "amg"), InputError);
 }

@@ -224,6 +224,30 @@ TEST(LinearSolver, MumpsReusingAFactorizationSolvesLaterMatricesToTheKrylovToler
   EXPECT_LT((far * x - b).norm(), 1e-9 * b.norm());
 }
 
+TEST(LinearSolver, MumpsReusingAFactorizationContinuesASolveToATighterTolerance) {
+  // the FGMRES of reuse stops at the tolerance Newton asks for, and continues from its result
+  const SparseMatrix S = saddle_point(600, 3);
+  const Vector b = right_hand_side(S.rows());
+  auto solver = linalg::make_linear_solver("mumps", "", true);
+  solver->analyze_pattern(S);
+  ASSERT_TRUE(solver->factorize(S)) << solver->failure().reason;
+  Vector x;
+  ASSERT_TRUE(solver->solve(b, x));
+  SparseMatrix near = S;
+  for (Index k = 0; k < near.nonZeros(); ++k)
+    near.valuePtr()[k] *= 1.0 + 0.01 * std::sin(1.7 * k);
+  ASSERT_TRUE(solver->factorize(near));
+  solver->set_relative_tolerance(1e-3);
+  ASSERT_TRUE(solver->solve(b, x));
+  const Real loose = (near * x - b).norm() / b.norm();
+  EXPECT_LE(loose, 1e-3);
+  EXPECT_GT(loose, 1e-10);
+  solver->set_relative_tolerance(1e-10);
+  ASSERT_TRUE(solver->refine(b, x)) << solver->failure().reason;
+  EXPECT_LE((near * x - b).norm() / b.norm(), 1e-9);
+  EXPECT_GE(solver->last_iterations(), 1);
+}
+
 TEST(LinearSolver, MumpsReportsASingularMatrixAsCurable) {
   SparseMatrix S = saddle_point(60, 3);
   for (Index k = S.outerIndexPtr()[5]; k < S.outerIndexPtr()[6]; ++k)

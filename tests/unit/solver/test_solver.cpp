@@ -105,7 +105,7 @@ public:
   }
   int last_iterations() const override { return 1; }
   std::string name() const override { return "inexact"; }
-  std::vector<Real> asked;
+  std::vector<Real> asked; ///< the tolerance of every solve (refine: solve again)
 
 private:
   Eigen::SparseLU<SparseMatrix> lu_;
@@ -131,7 +131,6 @@ TEST(Newton, AnIterativeSolveAsksNoMoreAccuracyThanTheResidualNeeds) {
   EXPECT_LE((problem.x() - exact_problem.x()).norm(), 1e-7);
   EXPECT_LE(report.iterations, direct.iterations + 1);
   // the first solve at the loosest tolerance, every one within the bounds
-  ASSERT_EQ(solver.asked.size(), static_cast<std::size_t>(report.iterations));
   EXPECT_DOUBLE_EQ(solver.asked.front(), settings.linear_tolerance_max);
   for (const Real tolerance : solver.asked) {
     EXPECT_LE(tolerance, settings.linear_tolerance_max);
@@ -157,10 +156,10 @@ TEST(Newton, AnIterativeSolveOfFieldsOfDifferentScalesIsTightEnoughForTheSmallOn
     ASSERT_EQ(report.status, solver::SolveStatus::Converged);
     EXPECT_LE((problem.x() - exact_problem.x()).norm(), 1e-7);
     EXPECT_LE(report.iterations, direct.iterations + 1);
-    if (odd_scale < 1.0) // the first solve asked about odd_scale times the loosest tolerance
-      EXPECT_LE(solver.asked.front(), 10 * odd_scale * settings.linear_tolerance_max);
-    else
-      EXPECT_GE(solver.asked.front(), 0.1 * settings.linear_tolerance_max);
+    // the fields of different scales: the scaled residual fell less than the 2-norm, and
+    // a solve was continued to a tighter tolerance
+    if (odd_scale < 1.0)
+      EXPECT_GT(solver.asked.size(), static_cast<std::size_t>(report.iterations));
   }
 }
 

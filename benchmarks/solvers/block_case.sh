@@ -2,9 +2,9 @@
 # SPDX-License-Identifier: MIT
 # Writes the case file of the 3-D triphasic block benchmark (docs/performance.md, "PETSc
 # backends on 3-D triphasic blocks") to standard output:
-#   block_case.sh CELLS SOLVER [PETSC_OPTIONS] [REUSE] [PRECONDITIONER] [INITIAL_STATE]
+#   block_case.sh CELLS SOLVER [PETSC_OPTIONS] [REUSE] [PRECONDITIONER] [INITIAL_STATE] [DT]
 # A 1 mm cube of CELLS^3 hex8 cells of the paper's cartilage, bottom fixed and impermeable, the
-# top compressed by 0.05 mm ramped over 50 s, one step of 2.5 s; SOLVER is any linear_solver,
+# top compressed by 0.05 mm ramped over 50 s, one step of DT s (default 2.5); SOLVER is any linear_solver,
 # REUSE "true" sets reuse_factorization, PRECONDITIONER the krylov preconditioner (lu, amg),
 # INITIAL_STATE the [analysis] initial_state (donnan, donnan-prestressed).
 set -euo pipefail
@@ -14,6 +14,7 @@ options=${3:-}
 reuse=${4:-false}
 preconditioner=${5:-lu}
 initial_state=${6:-donnan}
+dt=${7:-2.5}
 cat <<CASE
 title = "triphasic block ${cells}^3, ${solver}"
 
@@ -60,8 +61,8 @@ curve = "ramp"
 initial_state = "${initial_state}"
 
 [time]
-end_time = 2.5
-dt = 2.5
+end_time = ${dt}
+dt = ${dt}
 
 [output]
 vtu = false

@@ -7,9 +7,9 @@
 
 namespace trifem::linalg::petsc {
 
-CsrPattern::CsrPattern(const SparseMatrix& A, const std::vector<Index>& order) {
+CsrPattern::CsrPattern(const SparseMatrix& A, const std::vector<Index>& new_to_old)
+    : order(new_to_old) {
   const Index n = static_cast<Index>(A.rows());
-  std::vector<Index> position; // position[old] = new
   if (!order.empty()) {
     position.resize(n);
     for (Index i = 0; i < n; ++i)
@@ -22,23 +22,31 @@ CsrPattern::CsrPattern(const SparseMatrix& A, const std::vector<Index>& order) {
   for (Index i = 0; i < n; ++i)
     row_start[i + 1] += row_start[i];
   column.resize(A.nonZeros());
-  source.resize(A.nonZeros());
   std::vector<PetscInt> next(row_start.begin(), row_start.end() - 1);
   for (Index j = 0; j < A.cols(); ++j) { // new columns in order: each row's come sorted
     const Index old = order.empty() ? j : order[j];
+    for (Index k = A.outerIndexPtr()[old]; k < A.outerIndexPtr()[old + 1]; ++k)
+      column[next[to_new(A.innerIndexPtr()[k])]++] = static_cast<PetscInt>(j);
+  }
+}
+
+void CsrPattern::scatter(const SparseMatrix& A, PetscScalar* to,
+                         const std::vector<Real>& row_factor) const {
+  const Index n = static_cast<Index>(row_start.size()) - 1;
+  const Real* v = A.valuePtr();
+  std::vector<PetscInt> next(row_start.begin(), row_start.end() - 1);
+  for (Index j = 0; j < n; ++j) { // the order in which the pattern was built
+    const Index old = order.empty() ? j : order[j];
     for (Index k = A.outerIndexPtr()[old]; k < A.outerIndexPtr()[old + 1]; ++k) {
-      const PetscInt at = next[to_new(A.innerIndexPtr()[k])]++;
-      column[at] = j;
-      source[at] = k;
+      const Index row = position.empty() ? A.innerIndexPtr()[k] : position[A.innerIndexPtr()[k]];
+      to[next[row]++] = (row_factor.empty() ? 1.0 : row_factor[row]) * v[k];
     }
   }
 }
 
 SeqAijMatrix::SeqAijMatrix(const SparseMatrix& A, const std::vector<Index>& order)
     : pattern_(A, order), values_(A.nonZeros(), 0.0) {
-  const Real* v = A.valuePtr();
-  for (std::size_t k = 0; k < values_.size(); ++k)
-    values_[k] = v[pattern_.source[k]];
+  pattern_.scatter(A, values_.data());
   check(MatCreateSeqAIJWithArrays(PETSC_COMM_SELF, static_cast<PetscInt>(A.rows()),
                                   static_cast<PetscInt>(A.cols()), pattern_.row_start.data(),
                                   pattern_.column.data(), values_.data(), &matrix_),
@@ -54,13 +62,7 @@ void SeqAijMatrix::update(const SparseMatrix& A, const std::vector<Real>& row_si
   // through Get/RestoreArray, so PETSc knows the values changed
   PetscScalar* to = nullptr;
   check(MatSeqAIJGetArray(matrix_, &to), "PETSc matrix");
-  const Real* v = A.valuePtr();
-  const Index rows = static_cast<Index>(pattern_.row_start.size()) - 1;
-  for (Index i = 0; i < rows; ++i) {
-    const Real sign = row_sign.empty() ? 1.0 : row_sign[i];
-    for (PetscInt k = pattern_.row_start[i]; k < pattern_.row_start[i + 1]; ++k)
-      to[k] = sign * v[pattern_.source[k]];
-  }
+  pattern_.scatter(A, to, row_sign);
   check(MatSeqAIJRestoreArray(matrix_, &to), "PETSc matrix");
 }
 

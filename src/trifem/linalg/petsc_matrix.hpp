@@ -12,13 +12,18 @@
 namespace trifem::linalg::petsc {
 
 /// The pattern of a column-major matrix in compressed rows, optionally symmetrically permuted
-/// (row and column `order[i]` of A become row and column i), and, per CSR entry, the position
-/// of its value in the column-major storage.
+/// (row and column `order[i]` of A become row and column i).
 struct CsrPattern {
   std::vector<PetscInt> row_start, column;
-  std::vector<Index> source; ///< csr entry k holds A.valuePtr()[source[k]]
+  std::vector<Index> order;    ///< new → old (empty: the identity)
+  std::vector<Index> position; ///< old → new (empty: the identity)
 
   explicit CsrPattern(const SparseMatrix& A, const std::vector<Index>& order = {});
+  /// Writes the values of A (this pattern) in compressed-row order into `to`, row i (new)
+  /// multiplied by row_factor[i] when row_factor is not empty. A pass over A's columns in the
+  /// new order, as the pattern was built: no map per entry is stored.
+  void scatter(const SparseMatrix& A, PetscScalar* to,
+               const std::vector<Real>& row_factor = {}) const;
 };
 
 /// Writes sign[i] · b[order[i]] into `v` (an empty `order` is the identity, an empty `sign` 1).
@@ -38,7 +43,7 @@ public:
   SeqAijMatrix& operator=(const SeqAijMatrix&) = delete;
 
   /// Copies the values of `A` (the pattern given at construction), multiplying row i (of the
-  /// PETSc matrix) by row_sign[i] when row_sign is not empty.
+  /// PETSc matrix) by row_sign[i] when row_sign is not empty (CsrPattern::scatter).
   void update(const SparseMatrix& A, const std::vector<Real>& row_sign = {});
   /// Copies the values of `other`, a matrix of the same pattern.
   void assign_values(const SeqAijMatrix& other);

@@ -20,8 +20,9 @@ namespace {
 
 using petsc::check;
 
-/// Factorization reuse: each solve reduces the residual to kReuseTolerance of the right-hand
-/// side with FGMRES preconditioned by the last factorization; more than kRefactorAfter
+/// Factorization reuse: each solve reduces the residual to the tolerance Newton asks for
+/// (kReuseTolerance until it asks) of the right-hand side with FGMRES preconditioned by the
+/// last factorization; more than kRefactorAfter
 /// iterations make the next Newton iteration factorize again, and a solve that has not
 /// converged after kMaxReuseIterations is repeated with a new factorization.
 constexpr double kReuseTolerance = 1e-10;
@@ -162,6 +163,18 @@ public:
     return solve_from(b, x, warm);
   }
 
+  void set_partition(const std::vector<int>& equation_owner) override {
+    layout_.reset();
+    if (!equation_owner.empty())
+      layout_ =
+          std::make_unique<petsc::RowLayout>(equation_owner, parallel::rank(), parallel::size());
+  }
+
+  std::string name() const override { return "mumps"; }
+  int last_iterations() const override { return iterations_; }
+  LinearSolverFailure failure() const override { return failure_; }
+
+private:
   /// A solve (reusing: FGMRES from zero, or with `warm` from x).
   bool solve_from(const Vector& b, Vector& x, bool warm) {
     if (!warm)
@@ -212,18 +225,6 @@ public:
     return false;
   }
 
-  void set_partition(const std::vector<int>& equation_owner) override {
-    layout_.reset();
-    if (!equation_owner.empty())
-      layout_ =
-          std::make_unique<petsc::RowLayout>(equation_owner, parallel::rank(), parallel::size());
-  }
-
-  std::string name() const override { return "mumps"; }
-  int last_iterations() const override { return iterations_; }
-  LinearSolverFailure failure() const override { return failure_; }
-
-private:
   /// The set-up on several processes: a distributed matrix, MUMPS's own (parallel) analysis.
   void analyze_distributed(const SparseMatrix& A) {
     try {

@@ -114,13 +114,19 @@ void apply_multigrid(KSP ksp, const std::vector<Vector>& near_null) {
 /// grows faster than the model's (a 405 000-equation block grew from 11 to 19 GB).
 constexpr Index kLuFallbackLimit = 100000;
 
+/// Iterations a multigrid solve gets before it is repeated with the LU blocks (unless the
+/// options fix -ksp_max_it): multigrid solves that converge take 25-60 (docs/performance.md),
+/// and one on an indefinite displacement block crawls (570 to 1e-4 on the 8^3 block).
+constexpr int kMultigridAttempt = 200;
+
 /// FGMRES preconditioned by a Schur-complement fieldsplit (or by one preconditioner for a
 /// system of one kind).
 class KrylovSolver final : public LinearSolver {
 public:
   KrylovSolver(const std::string& options, KrylovSettings settings)
       : options_(options), settings_(settings), tolerance_(settings.relative_tolerance),
-        fixed_tolerance_(options_.has("-ksp_rtol")) {}
+        fixed_tolerance_(options_.has("-ksp_rtol")),
+        fixed_iterations_(options_.has("-ksp_max_it")) {}
   ~KrylovSolver() override { release(); }
   KrylovSolver(const KrylovSolver&) = delete;
   KrylovSolver& operator=(const KrylovSolver&) = delete;
@@ -209,6 +215,11 @@ private:
       return true;
     if (!ready_)
       return false;
+    if (fallback_ready_) { // multigrid failed on this matrix already
+      failure_ = {};
+      iterations_ = 0;
+      return solve_with_lu_blocks(b, x, warm);
+    }
     try {
       petsc::set_vector(b_, b, {}, row_sign_);
       if (warm)
@@ -216,6 +227,10 @@ private:
       check(KSPSetInitialGuessNonzero(ksp_, warm ? PETSC_TRUE : PETSC_FALSE), "PETSc KSP");
       if (!fixed_tolerance_)
         petsc::set_relative_tolerance(ksp_, tolerance_);
+      if (!fixed_iterations_) // with the LU blocks to fall back on, kMultigridAttempt
+        petsc::set_max_iterations(ksp_, can_fall_back()
+                                            ? std::min(settings_.max_iterations, kMultigridAttempt)
+                                            : settings_.max_iterations);
       check(KSPSolve(ksp_, b_, x_), "Krylov solve");
       KSPConvergedReason reason = KSP_CONVERGED_ITERATING;
       check(KSPGetConvergedReason(ksp_, &reason), "PETSc KSP");
@@ -224,7 +239,7 @@ private:
       iterations_ = static_cast<int>(iterations);
       if (reason < 0) {
         failure_ = {not_converged(reason), false};
-        return amg() && n_ <= kLuFallbackLimit && solve_with_lu_blocks(b, x);
+        return can_fall_back() && solve_with_lu_blocks(b, x, warm);
       }
       petsc::get_vector(x_, x);
     } catch (const petsc::PetscError& e) {
@@ -332,10 +347,16 @@ private:
 
   bool amg() const { return settings_.preconditioner == KrylovPreconditioner::amg; }
 
+  /// A solve multigrid does not converge is repeated with the LU blocks.
+  bool can_fall_back() const { return amg() && n_ <= kLuFallbackLimit; }
+
   /// After multigrid failed (e.g. an indefinite displacement block: a body under an unbalanced
-  /// initial pressure): the same solve with the LU blocks, logged; false if that fails too.
-  bool solve_with_lu_blocks(const Vector& b, Vector& x) {
+  /// initial pressure): the same solve (`warm`: continued from x) with the LU blocks, logged;
+  /// false if that fails too. Later solves of the same matrix go to the LU blocks directly.
+  bool solve_with_lu_blocks(const Vector& b, Vector& x, bool warm) {
     const std::string why = failure_.reason;
+    const std::string failed =
+        why.empty() ? "with the LU blocks: " : why + "; with the LU blocks: ";
     if (!fallback_) {
       // the user's options are in force already (they were checked against this backend)
       fallback_ = std::make_unique<KrylovSolver>(
@@ -347,19 +368,20 @@ private:
     if (!fixed_tolerance_)
       fallback_->set_relative_tolerance(tolerance_);
     if (!fallback_ready_ && !(fallback_ready_ = fallback_->factorize(*matrix_values_))) {
-      failure_ = {why + "; with the LU blocks: " + fallback_->failure().reason, false};
+      failure_ = {failed + fallback_->failure().reason, false};
       return false;
     }
     const int failed_iterations = iterations_;
-    if (!fallback_->solve(b, x)) {
-      failure_ = {why + "; with the LU blocks: " + fallback_->failure().reason, false};
+    if (!(warm ? fallback_->refine(b, x) : fallback_->solve(b, x))) {
+      failure_ = {failed + fallback_->failure().reason, false};
       return false;
     }
     iterations_ = failed_iterations + fallback_->last_iterations();
     failure_ = {};
-    log::info("  linear solve: multigrid did not converge ({}); solved again with the LU blocks "
-              "in {} iterations",
-              why, fallback_->last_iterations());
+    if (!why.empty())
+      log::info("  linear solve: multigrid did not converge ({}); solved again with the LU "
+                "blocks in {} iterations",
+                why, fallback_->last_iterations());
     return true;
   }
 
@@ -424,15 +446,16 @@ private:
 
   petsc::ScopedOptions options_; // first: the options outlive the PETSc objects
   KrylovSettings settings_;
-  Real tolerance_;             ///< relative tolerance of the next solves (Newton's forcing term)
-  const bool fixed_tolerance_; ///< -ksp_rtol among the options: it wins
+  Real tolerance_;              ///< relative tolerance of the next solves (Newton's forcing term)
+  const bool fixed_tolerance_;  ///< -ksp_rtol among the options: it wins
+  const bool fixed_iterations_; ///< -ksp_max_it among the options: it wins
   BlockSplit split_;
   std::vector<Vector> near_null_; ///< rigid-body modes over the equations (may be empty)
   std::vector<int> equation_fields_;
   std::vector<std::string> field_names_;
   const SparseMatrix* matrix_values_ = nullptr; ///< the matrix of the last factorize
   std::unique_ptr<LinearSolver> fallback_;      ///< "amg": LU blocks after a failed solve
-  bool fallback_ready_ = false;                 ///< fallback_ factorized matrix_values_
+  bool fallback_ready_ = false; ///< fallback_ factorized matrix_values_ (and serves it)
   std::vector<Index> primal_;
   std::vector<Real> row_sign_; ///< −1 on potential rows (empty: no negation)
   Index n_ = 0;

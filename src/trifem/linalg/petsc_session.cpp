@@ -99,6 +99,13 @@ void set_relative_tolerance(KSP ksp, double tolerance) {
   check(KSPSetTolerances(ksp, tolerance, absolute, divergence, iterations), "PETSc KSP tolerances");
 }
 
+void set_max_iterations(KSP ksp, int iterations) {
+  PetscReal relative = 0.0, absolute = 0.0, divergence = 0.0;
+  PetscInt old = 0;
+  check(KSPGetTolerances(ksp, &relative, &absolute, &divergence, &old), "PETSc KSP tolerances");
+  check(KSPSetTolerances(ksp, relative, absolute, divergence, iterations), "PETSc KSP tolerances");
+}
+
 bool ScopedOptions::has(const std::string& key) const {
   std::istringstream words(options_);
   for (std::string word; words >> word;)

@@ -48,6 +48,9 @@ private:
 /// Sets the relative tolerance of `ksp`'s solves, its other tolerances unchanged.
 void set_relative_tolerance(KSP ksp, double tolerance);
 
+/// Sets the iteration limit of `ksp`'s solves, its tolerances unchanged.
+void set_max_iterations(KSP ksp, int iterations);
+
 /// InputError naming every option of the database that no PETSc object has read (after a
 /// probe solve with `options` by the backend `backend`); the unused ones are removed.
 void refuse_unused_options(const std::string& options, const char* backend);

@@ -7,8 +7,11 @@
 #include "trifem/linalg/linear_solver.hpp"
 
 #include <gtest/gtest.h>
+#include <spdlog/sinks/ostream_sink.h>
+#include <spdlog/spdlog.h>
 
 #include <cmath>
+#include <sstream>
 #include <vector>
 
 using namespace trifem;
@@ -24,7 +27,9 @@ struct MixedSystem {
   std::vector<std::string> names{"displacement", "fluid_flux", "pressure"};
 };
 
-MixedSystem mixed_system(Index cells) {
+/// `support`: the displacement block's diagonal shift over the number of cells (negative: an
+/// indefinite block, as under an unbalanced initial pressure).
+MixedSystem mixed_system(Index cells, Real support = 0.01) {
   const Index n = cells + 1; // nodes: displacement and flux per node, pressure per cell
   std::vector<Eigen::Triplet<Real>> t;
   const Index u = 0, w = n, p = 2 * n;
@@ -44,7 +49,7 @@ MixedSystem mixed_system(Index cells) {
     }
   }
   for (Index i = 0; i < n; ++i)
-    t.emplace_back(u + i, u + i, 0.01 * cells); // supported: no rigid translation
+    t.emplace_back(u + i, u + i, support * cells); // supported: no rigid translation
   MixedSystem s;
   s.A.resize(2 * n + cells, 2 * n + cells);
   s.A.setFromTriplets(t.begin(), t.end());
@@ -103,6 +108,32 @@ TEST(KrylovSolver, MultigridPreconditionerSolvesAMixedSystem) {
   EXPECT_LT(relative_residual(*solver, s), 1e-9);
   EXPECT_GE(solver->last_iterations(), 1);
   EXPECT_LE(solver->last_iterations(), 60);
+}
+
+TEST(KrylovSolver, WhereMultigridFailsTheSolveIsRepeatedWithTheLuBlocks) {
+  // an indefinite displacement block: multigrid gives up after its 200 iterations, the solve
+  // is repeated with the LU blocks and the log says so; a second solve of the same matrix goes
+  // to the LU blocks directly
+  const MixedSystem s = mixed_system(400, -1.0);
+  const Vector b = right_hand_side(s.A.rows());
+  std::ostringstream log;
+  spdlog::default_logger()->sinks().push_back(
+      std::make_shared<spdlog::sinks::ostream_sink_st>(log));
+  auto solver = linalg::make_linear_solver("krylov", "", false, "amg");
+  solver->set_fields(s.fields, s.names);
+  solver->analyze_pattern(s.A);
+  ASSERT_TRUE(solver->factorize(s.A)) << solver->failure().reason;
+  Vector x;
+  const bool solved = solver->solve(b, x);
+  spdlog::default_logger()->sinks().pop_back();
+  ASSERT_TRUE(solved) << solver->failure().reason;
+  EXPECT_LE((s.A * x - b).norm() / b.norm(), 1e-9);
+  EXPECT_GT(solver->last_iterations(), 200); // multigrid's attempt, then the LU blocks'
+  EXPECT_NE(log.str().find("solved again with the LU blocks"), std::string::npos) << log.str();
+  Vector again;
+  ASSERT_TRUE(solver->solve(b, again)) << solver->failure().reason;
+  EXPECT_LE((s.A * again - b).norm() / b.norm(), 1e-9);
+  EXPECT_LT(solver->last_iterations(), 100);
 }
 
 TEST(KrylovSolver, ASolveToALooseToleranceIsContinuedToATightOne) {

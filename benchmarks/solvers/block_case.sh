@@ -2,11 +2,12 @@
 # SPDX-License-Identifier: MIT
 # Writes the case file of the 3-D triphasic block benchmark (docs/performance.md, "PETSc
 # backends on 3-D triphasic blocks") to standard output:
-#   block_case.sh CELLS SOLVER [PETSC_OPTIONS] [REUSE] [PRECONDITIONER] [INITIAL_STATE] [DT]
+#   block_case.sh CELLS SOLVER [PETSC_OPTIONS] [REUSE] [PRECONDITIONER] [INITIAL_STATE] [DT] [STEPS]
 # A 1 mm cube of CELLS^3 hex8 cells of the paper's cartilage, bottom fixed and impermeable, the
-# top compressed by 0.05 mm ramped over 50 s, one step of DT s (default 2.5); SOLVER is any linear_solver,
-# REUSE "true" sets reuse_factorization, PRECONDITIONER the krylov preconditioner (lu, amg),
-# INITIAL_STATE the [analysis] initial_state (donnan, donnan-prestressed).
+# top compressed by 0.05 mm ramped over 50 s, STEPS steps (default 1) of DT s (default 2.5);
+# SOLVER is any linear_solver, REUSE "true" sets reuse_factorization, PRECONDITIONER the krylov
+# preconditioner (lu, amg), INITIAL_STATE the [analysis] initial_state (donnan,
+# donnan-prestressed).
 set -euo pipefail
 cells=${1:?usage: block_case.sh CELLS SOLVER [PETSC_OPTIONS] [REUSE]}
 solver=${2:?usage: block_case.sh CELLS SOLVER [PETSC_OPTIONS] [REUSE]}
@@ -15,6 +16,8 @@ reuse=${4:-false}
 preconditioner=${5:-lu}
 initial_state=${6:-donnan}
 dt=${7:-2.5}
+steps=${8:-1}
+end_time=$(awk -v dt="$dt" -v n="$steps" 'BEGIN { print dt * n }')
 cat <<CASE
 title = "triphasic block ${cells}^3, ${solver}"
 
@@ -61,7 +64,7 @@ curve = "ramp"
 initial_state = "${initial_state}"
 
 [time]
-end_time = ${dt}
+end_time = ${end_time}
 dt = ${dt}
 
 [output]

@@ -227,10 +227,8 @@ private:
       check(KSPSetInitialGuessNonzero(ksp_, warm ? PETSC_TRUE : PETSC_FALSE), "PETSc KSP");
       if (!fixed_tolerance_)
         petsc::set_relative_tolerance(ksp_, tolerance_);
-      if (!fixed_iterations_) // with the LU blocks to fall back on, kMultigridAttempt
-        petsc::set_max_iterations(ksp_, can_fall_back()
-                                            ? std::min(settings_.max_iterations, kMultigridAttempt)
-                                            : settings_.max_iterations);
+      if (can_fall_back() && !fixed_iterations_) // with the LU blocks to fall back on
+        petsc::set_max_iterations(ksp_, std::min(settings_.max_iterations, kMultigridAttempt));
       check(KSPSolve(ksp_, b_, x_), "Krylov solve");
       KSPConvergedReason reason = KSP_CONVERGED_ITERATING;
       check(KSPGetConvergedReason(ksp_, &reason), "PETSc KSP");

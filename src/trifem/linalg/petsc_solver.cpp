@@ -22,9 +22,9 @@ using petsc::check;
 
 /// Factorization reuse: each solve reduces the residual to the tolerance Newton asks for
 /// (kReuseTolerance until it asks) of the right-hand side with FGMRES preconditioned by the
-/// last factorization; more than kRefactorAfter
-/// iterations make the next Newton iteration factorize again, and a solve that has not
-/// converged after kMaxReuseIterations is repeated with a new factorization.
+/// last factorization; more than kRefactorAfter iterations make the next Newton iteration
+/// factorize again, and a solve that has not converged after kMaxReuseIterations is repeated
+/// with a new factorization.
 constexpr double kReuseTolerance = 1e-10;
 constexpr int kRefactorAfter = 8;
 constexpr int kMaxReuseIterations = 15;

@@ -34,6 +34,14 @@ find_package(MPI REQUIRED COMPONENTS CXX)
 add_library(trifem_petsc INTERFACE)
 target_link_libraries(trifem_petsc INTERFACE PkgConfig::PETSC MPI::MPI_CXX)
 
+# MUMPS in single precision (preconditioning factorizations), called directly: PETSc's build is
+# double precision only. Debian's libmumps-dev, which petsc-dev brings.
+find_path(SMUMPS_INCLUDE_DIR smumps_c.h REQUIRED)
+find_library(SMUMPS_LIBRARY smumps REQUIRED)
+add_library(trifem_smumps INTERFACE)
+target_include_directories(trifem_smumps SYSTEM INTERFACE ${SMUMPS_INCLUDE_DIR})
+target_link_libraries(trifem_smumps INTERFACE ${SMUMPS_LIBRARY} MPI::MPI_CXX)
+
 if(TRIFEM_BUILD_TESTS)
   find_package(GTest REQUIRED)
 endif()

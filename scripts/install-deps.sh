@@ -9,7 +9,7 @@ packages=(
   libeigen3-dev libsuitesparse-dev libopenblas0-pthread
   libtomlplusplus-dev libcli11-dev libfmt-dev libspdlog-dev nlohmann-json3-dev
   libpugixml-dev
-  petsc-dev libmetis-dev
+  petsc-dev libmumps-dev libmetis-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   gnuplot-nox
 )

@@ -44,14 +44,17 @@ class CliSolvers : public Cli {
 protected:
   /// Runs the example `name` with `backend`; the history.csv path (empty on failure).
   fs::path run_example(const std::string& name, const std::string& backend) const {
-    // "mumps+reuse": MUMPS with reuse_factorization; "krylov+amg": the multigrid preconditioner
-    const bool reuse = backend == "mumps+reuse", amg = backend == "krylov+amg";
+    // "mumps+reuse": MUMPS with reuse_factorization (single-precision factorizations, or with
+    // "+double" double-precision ones); "krylov+amg": the multigrid preconditioner
+    const bool reuse = backend.starts_with("mumps+reuse"), amg = backend == "krylov+amg";
     std::string text =
         with_backend(read_text(kExamples / name / (name + ".toml")), reuse ? "mumps"
                                                                      : amg ? "krylov"
                                                                            : backend);
     if (reuse)
       text.insert(text.find("\n[solver]\n") + 10, "reuse_factorization = true\n");
+    if (backend == "mumps+reuse+double")
+      text.insert(text.find("\n[solver]\n") + 10, "factorization_precision = \"double\"\n");
     if (amg)
       text.insert(text.find("\n[solver]\n") + 10, "preconditioner = \"amg\"\n");
     const std::string mesh = "\nfile = \""; // a mesh file beside the example
@@ -104,7 +107,8 @@ protected:
 TEST_F(CliSolvers, PetscBackendsGiveTheUmfpackHistoryOnEveryExample) {
   for (const std::string name : {"biphasic_creep", "cantilever", "confined_column",
                                  "contact_column", "contact_patch", "free_swelling"})
-    expect_petsc_backends_give_the_umfpack_history(name);
+    expect_petsc_backends_give_the_umfpack_history(
+        name, {"mumps", "mumps+reuse", "mumps+reuse+double", "krylov", "krylov+amg"});
 }
 
 TEST_F(CliSolvers, PetscBackendsGiveTheUmfpackHistoryOnTheIndentationExample) {

@@ -160,25 +160,31 @@ std::unique_ptr<model::Model> build_model_for(const io::CaseSpec& spec) {
 std::unique_ptr<linalg::LinearSolver> linear_solver_for(const io::CaseSpec& spec) {
   try {
     return linalg::make_linear_solver(spec.solver.linear_solver, spec.solver.petsc_options,
-                                      spec.solver.reuse_factorization, spec.solver.preconditioner);
+                                      spec.solver.reuse_factorization, spec.solver.preconditioner,
+                                      factor_precision(spec.solver));
   } catch (const InputError& e) {
     throw InputError(fmt::format("{}: {}", spec.file.string(), e.what()));
   }
 }
 
 /// The sparse direct solver, and for "auto" the backend it takes for this many equations.
-void log_linear_solver(const std::string& name, Index equations) {
+void log_linear_solver(const io::SolverSpec& solver, Index equations) {
+  const std::string& name = solver.linear_solver;
+  const std::string reusing =
+      fmt::format("mumps reusing {}-precision factorizations", solver.factorization_precision);
   if (parallel::active())
     log::info("  linear solver: MUMPS on the distributed matrix ({} processes; the case names "
               "'{}')",
               parallel::size(), name);
+  else if (name == "mumps" && solver.reuse_factorization)
+    log::info("  linear solver: {}", reusing);
   else if (name != "auto")
     log::info("  linear solver: {}", name);
   else
     log::info("  linear solver: auto, {} for {} equations (sparselu below {}, unless its "
               "factors fill up)",
-              equations < linalg::kAutoSparseLuLimit ? "sparselu" : "mumps reusing factorizations",
-              equations, linalg::kAutoSparseLuLimit);
+              equations < linalg::kAutoSparseLuLimit ? "sparselu" : reusing, equations,
+              linalg::kAutoSparseLuLimit);
 }
 
 /// The processes that own the nodes of `nodes` (model::node_owner), ascending, as
@@ -389,6 +395,11 @@ solver::RunReport run_steps(const io::CaseSpec& spec, model::Model& model,
   return run;
 }
 
+linalg::FactorPrecision factor_precision(const io::SolverSpec& s) {
+  return s.factorization_precision == "double" ? linalg::FactorPrecision::full
+                                               : linalg::FactorPrecision::single;
+}
+
 solver::NewtonSettings newton_settings(const io::SolverSpec& s) {
   solver::NewtonSettings n;
   n.max_iterations = s.max_iterations;
@@ -435,7 +446,7 @@ int run_quasi_static_case(const io::CaseSpec& spec, const std::filesystem::path&
   log_partition(*model);
 
   solver::NewtonSolver newton(newton_settings(spec.solver), std::move(linear_solver));
-  log_linear_solver(spec.solver.linear_solver, model->problem->num_equations());
+  log_linear_solver(spec.solver, model->problem->num_equations());
   const solver::StepController* controller = nullptr; // of the current analysis step
   solver::RunReport run;
   solver::Linearization initial;

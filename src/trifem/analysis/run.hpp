@@ -4,6 +4,7 @@
 
 #include "trifem/analysis/restart.hpp"
 #include "trifem/io/case_spec.hpp"
+#include "trifem/linalg/linear_solver.hpp"
 #include "trifem/model/model.hpp"
 #include "trifem/solver/newton.hpp"
 #include "trifem/solver/step_controller.hpp"
@@ -50,6 +51,9 @@ solver::RunReport run_steps(const io::CaseSpec& spec, model::Model& model,
 
 /// Newton settings of a case ([solver]).
 solver::NewtonSettings newton_settings(const io::SolverSpec& s);
+
+/// The precision of the factorizations MUMPS reuses ([solver] factorization_precision).
+linalg::FactorPrecision factor_precision(const io::SolverSpec& s);
 
 /// Options of `trifem run` beyond the case file.
 struct RunOptions {

@@ -383,7 +383,8 @@ void read_solver(const Table& root, CaseSpec& spec) {
   if (!t)
     return;
   t->allow({"max_iterations", "residual_tolerance", "increment_tolerance", "line_search",
-            "linear_solver", "petsc_options", "reuse_factorization", "preconditioner"});
+            "linear_solver", "petsc_options", "reuse_factorization", "preconditioner",
+            "factorization_precision"});
   static const Options<std::string_view> solvers = {{"auto", "auto"},
                                                     {"umfpack", "umfpack"},
                                                     {"sparselu", "sparselu"},
@@ -417,6 +418,14 @@ void read_solver(const Table& root, CaseSpec& spec) {
     fail(t->find("preconditioner"), t->path("preconditioner"),
          fmt::format("applies to linear_solver = \"krylov\", not to linear_solver = \"{}\"",
                      s.linear_solver));
+  static const Options<std::string_view> precisions = {{"single", "single"}, {"double", "double"}};
+  s.factorization_precision =
+      std::string(t->choice("factorization_precision", precisions,
+                            std::optional<std::string_view>(s.factorization_precision)));
+  if (t->find("factorization_precision") && s.linear_solver != "auto" && !s.reuse_factorization)
+    fail(t->find("factorization_precision"), t->path("factorization_precision"),
+         "applies to reused factorizations: linear_solver = \"auto\", or \"mumps\" with "
+         "reuse_factorization = true");
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -303,6 +303,8 @@ struct SolverSpec {
   std::string petsc_options;          ///< "-key value ..." for the PETSc backends
   bool reuse_factorization = false;   ///< mumps: one factorization for several iterations
   std::string preconditioner = "lu";  ///< krylov: "lu" (MUMPS blocks) or "amg" (multigrid)
+  /// of the factorizations MUMPS reuses (mumps with reuse_factorization, auto): "single", "double"
+  std::string factorization_precision = "single";
 };
 
 /// [[output.reaction]]: total reaction force on a node set, in history.csv.

@@ -269,6 +269,8 @@ void write_solver(const SolverSpec& s, TomlText& t) {
     t.raw("reuse_factorization", "true");
   if (s.preconditioner != "lu")
     t.optional_string("preconditioner", s.preconditioner);
+  if (s.factorization_precision != "single")
+    t.string("factorization_precision", s.factorization_precision);
 }
 
 void write_output(const OutputSpec& o, TomlText& t) {

@@ -12,10 +12,11 @@ namespace {
 
 class AutoSolver final : public LinearSolver {
 public:
+  explicit AutoSolver(FactorPrecision precision) : precision_(precision) {}
   void analyze_pattern(const SparseMatrix& A) override {
     const bool small = A.rows() < kAutoSparseLuLimit && !fill_heavy_;
     if (!backend_ || small != small_)
-      backend_ = small ? make_sparse_lu_solver() : make_mumps_solver("", true);
+      backend_ = small ? make_sparse_lu_solver() : make_mumps_solver("", true, precision_);
     if (tolerance_)
       backend_->set_relative_tolerance(*tolerance_);
     small_ = small;
@@ -56,6 +57,7 @@ public:
   }
 
 private:
+  const FactorPrecision precision_;
   std::unique_ptr<LinearSolver> backend_;
   bool small_ = false;
   std::optional<Real> tolerance_; ///< asked of MUMPS's FGMRES when it reuses factorizations
@@ -64,8 +66,8 @@ private:
 
 } // namespace
 
-std::unique_ptr<LinearSolver> make_auto_solver() {
-  return std::make_unique<AutoSolver>();
+std::unique_ptr<LinearSolver> make_auto_solver(FactorPrecision precision) {
+  return std::make_unique<AutoSolver>(precision);
 }
 
 } // namespace trifem::linalg

@@ -27,7 +27,7 @@ constexpr Real kAutoFillRatio = 3.0;
 
 /// Chooses the backend in analyze_pattern from the number of rows (again for every new
 /// pattern), and from SparseLU's fill after its first factorization; name() is
-/// "auto (sparselu)" or "auto (mumps)" once chosen.
-std::unique_ptr<LinearSolver> make_auto_solver();
+/// "auto (sparselu)" or "auto (mumps)" once chosen. `precision`: of MUMPS's factorizations.
+std::unique_ptr<LinearSolver> make_auto_solver(FactorPrecision precision = FactorPrecision::single);
 
 } // namespace trifem::linalg

@@ -23,7 +23,8 @@ std::vector<std::string> available_linear_solvers() {
 std::unique_ptr<LinearSolver> make_linear_solver(const std::string& name,
                                                  const std::string& petsc_options,
                                                  bool reuse_factorization,
-                                                 const std::string& preconditioner) {
+                                                 const std::string& preconditioner,
+                                                 FactorPrecision precision) {
   if (preconditioner != "lu" && name != "krylov")
     throw InputError(fmt::format("solver.preconditioner applies to linear_solver = 'krylov', "
                                  "not to '{}'",
@@ -43,16 +44,16 @@ std::unique_ptr<LinearSolver> make_linear_solver(const std::string& name,
                                    "processes use 'mumps' or 'auto' (the distributed MUMPS)",
                                    parallel::size()));
     if (name == "auto" || name == "umfpack" || name == "sparselu" || name == "mumps")
-      return make_mumps_solver(petsc_options, reuse_factorization);
+      return make_mumps_solver(petsc_options, reuse_factorization, precision);
   }
   if (name == "auto")
-    return make_auto_solver();
+    return make_auto_solver(precision);
   if (name == "umfpack")
     return make_umfpack_solver();
   if (name == "sparselu")
     return make_sparse_lu_solver();
   if (name == "mumps")
-    return make_mumps_solver(petsc_options, reuse_factorization);
+    return make_mumps_solver(petsc_options, reuse_factorization, precision);
   if (name == "krylov")
     return make_krylov_solver(petsc_options,
                               {.preconditioner = krylov_preconditioner(preconditioner)});

@@ -7,12 +7,14 @@
 #include "trifem/linalg/petsc_matrix.hpp"
 #include "trifem/linalg/petsc_mpi_matrix.hpp"
 #include "trifem/linalg/petsc_session.hpp"
+#include "trifem/linalg/single_precision_lu.hpp"
 #include "trifem/parallel/communicator.hpp"
 
 #include <fmt/format.h>
 #include <petscksp.h>
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 namespace trifem::linalg {
@@ -28,6 +30,10 @@ using petsc::check;
 constexpr double kReuseTolerance = 1e-10;
 constexpr int kRefactorAfter = 8;
 constexpr int kMaxReuseIterations = 15;
+/// From this many iterations on, a solve preconditioned by an earlier factorization is stopped
+/// (and repeated with a new one) as soon as the reduction so far, extrapolated geometrically,
+/// would not reach its tolerance within kMaxReuseIterations.
+constexpr int kRateCheckIterations = 3;
 
 /// A factorization whose workspace estimate was too small (INFOG(1) = -8, -9, -14, -15, -17,
 /// -20: pivots delayed by the numerical pivoting of the saddle-point rows need more room than
@@ -87,8 +93,9 @@ const char* pc_failure_text(PCFailedReason reason) {
 /// all the processes of the run, each giving its part of the matrix.
 class MumpsSolver final : public LinearSolver {
 public:
-  MumpsSolver(const std::string& options, bool reuse)
-      : options_(options), reuse_(reuse), fixed_tolerance_(options_.has("-ksp_rtol")) {}
+  MumpsSolver(const std::string& options, bool reuse, FactorPrecision precision)
+      : options_(options), reuse_(reuse), fixed_tolerance_(options_.has("-ksp_rtol")),
+        single_asked_(reuse && precision == FactorPrecision::single), single_(single_asked_) {}
   ~MumpsSolver() override { release(); }
   MumpsSolver(const MumpsSolver&) = delete;
   MumpsSolver& operator=(const MumpsSolver&) = delete;
@@ -115,6 +122,10 @@ public:
       if (!mumps_orders) // A's columns read as rows: the pattern of Aᵀ, the same graph
         order_ = nested_dissection_order({n_, A.outerIndexPtr(), A.innerIndexPtr()});
       matrix_ = std::make_unique<petsc::SeqAijMatrix>(A, order_);
+      if (single_) {
+        set_up_ksp(PETSC_COMM_SELF, matrix_->mat(), matrix_->mat(), nullptr);
+        return;
+      }
       if (reuse_)
         factored_matrix_ = std::make_unique<petsc::SeqAijMatrix>(A, order_);
       set_up_ksp(PETSC_COMM_SELF, matrix_->mat(), reuse_ ? factored_matrix_->mat() : nullptr,
@@ -168,6 +179,7 @@ public:
     if (!equation_owner.empty())
       layout_ =
           std::make_unique<petsc::RowLayout>(equation_owner, parallel::rank(), parallel::size());
+    single_ = single_asked_ && !layout_; // SinglePrecisionLu runs on one process
   }
 
   std::string name() const override { return "mumps"; }
@@ -175,6 +187,26 @@ public:
   LinearSolverFailure failure() const override { return failure_; }
 
 private:
+  /// PETSc's default test, and the stop of a stale factorization's hopeless solve (from zero:
+  /// the tolerance is relative to the first residual).
+  static PetscErrorCode reuse_convergence_test(KSP ksp, PetscInt it, PetscReal rnorm,
+                                               KSPConvergedReason* reason, void* context) {
+    auto* self = static_cast<MumpsSolver*>(context);
+    PetscCall(KSPConvergedDefault(ksp, it, rnorm, reason, self->default_test_));
+    if (it == 0)
+      self->first_residual_ = rnorm;
+    if (*reason != KSP_CONVERGED_ITERATING || !self->check_rate_ || it < kRateCheckIterations)
+      return 0;
+    PetscReal rtol = 0.0, abstol = 0.0, dtol = 0.0;
+    PetscInt max_it = 0;
+    PetscCall(KSPGetTolerances(ksp, &rtol, &abstol, &dtol, &max_it));
+    const Real reduction = rnorm / self->first_residual_;
+    if (reduction >= 1.0 ||
+        static_cast<Real>(it) * std::log(rtol) / std::log(reduction) > kMaxReuseIterations)
+      *reason = KSP_DIVERGED_ITS;
+    return 0;
+  }
+
   /// A solve (reusing: FGMRES from zero, or with `warm` from x).
   bool solve_from(const Vector& b, Vector& x, bool warm) {
     if (!warm)
@@ -191,6 +223,7 @@ private:
         check(KSPSetInitialGuessNonzero(ksp_, warm ? PETSC_TRUE : PETSC_FALSE), "PETSc KSP");
       if (reuse_ && !fixed_tolerance_)
         petsc::set_relative_tolerance(ksp_, reuse_tolerance_);
+      check_rate_ = stale_ && !warm;
       check(KSPSolve(ksp_, b_, x_), "MUMPS solve");
       KSPConvergedReason reason = KSP_CONVERGED_ITERATING;
       check(KSPGetConvergedReason(ksp_, &reason), "PETSc KSP");
@@ -199,9 +232,24 @@ private:
         check(KSPGetIterationNumber(ksp_, &iterations), "PETSc KSP");
         iterations_ = static_cast<int>(iterations);
         if (reason < 0 && stale_) { // the old factorization no longer serves: a new one
+          check_rate_ = false;
           if (!refactorize())
             return false;
           to_petsc(b); // a workspace retry sets the vectors up anew
+          check(KSPSolve(ksp_, b_, x_), "MUMPS solve");
+          check(KSPGetConvergedReason(ksp_, &reason), "PETSc KSP");
+          check(KSPGetIterationNumber(ksp_, &iterations), "PETSc KSP");
+          iterations_ += static_cast<int>(iterations);
+        }
+        if (reason < 0 && single_) { // a fresh single-precision factorization does not serve
+          PetscReal residual = 0.0;
+          check(KSPGetResidualNorm(ksp_, &residual), "PETSc KSP");
+          if (!factorize_in_double_precision(
+                  fmt::format("FGMRES preconditioned by a new single-precision factorization "
+                              "stopped at a residual of {:.2e} after {} iterations",
+                              residual, iterations)))
+            return false;
+          to_petsc(b);
           check(KSPSolve(ksp_, b_, x_), "MUMPS solve");
           check(KSPGetConvergedReason(ksp_, &reason), "PETSc KSP");
           check(KSPGetIterationNumber(ksp_, &iterations), "PETSc KSP");
@@ -263,6 +311,11 @@ private:
       check(KSPGMRESSetRestart(ksp_, kMaxReuseIterations), "PETSc GMRES restart");
       check(KSPSetTolerances(ksp_, kReuseTolerance, 0.0, PETSC_DEFAULT, kMaxReuseIterations),
             "PETSc KSP tolerances");
+      void* default_test = nullptr;
+      check(KSPConvergedDefaultCreate(&default_test), "PETSc KSP");
+      default_test_ = default_test;
+      check(KSPSetConvergenceTest(ksp_, reuse_convergence_test, this, nullptr),
+            "PETSc KSP convergence test");
     } else {
       check(KSPSetOperators(ksp_, A, A), "PETSc KSP operators");
       check(KSPSetType(ksp_, KSPPREONLY), "PETSc KSP type");
@@ -270,6 +323,13 @@ private:
     refactor_ = true;
     PC pc = nullptr;
     check(KSPGetPC(ksp_, &pc), "PETSc PC");
+    if (single_) { // the single-precision factors, applied by a shell
+      check(PCSetType(pc, PCSHELL), "PETSc PC type");
+      check(PCShellSetContext(pc, this), "PETSc PC");
+      check(PCShellSetApply(pc, apply_single_precision_lu), "PETSc PC");
+      check(KSPSetFromOptions(ksp_), "PETSc options");
+      return;
+    }
     check(PCSetType(pc, PCLU), "PETSc PC type");
     check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS), "MUMPS");
     if (ordering)
@@ -325,8 +385,63 @@ private:
     }
   }
 
+  static PetscErrorCode apply_single_precision_lu(PC pc, Vec b, Vec x) {
+    void* context = nullptr;
+    PetscCall(PCShellGetContext(pc, &context));
+    auto* self = static_cast<MumpsSolver*>(context);
+    const PetscScalar* from = nullptr;
+    PetscScalar* to = nullptr;
+    PetscCall(VecGetArrayRead(b, &from));
+    PetscCall(VecGetArray(x, &to));
+    const bool solved = self->single_lu_->solve(from, to);
+    PetscCall(VecRestoreArray(x, &to));
+    PetscCall(VecRestoreArrayRead(b, &from));
+    return solved ? 0 : PETSC_ERR_LIB;
+  }
+
+  /// For the rest of the run: factorizations in double precision (the matrix is too badly
+  /// conditioned for single precision: `why`), beginning with one of the current matrix.
+  bool factorize_in_double_precision(const std::string& why) {
+    log::info("  MUMPS: {}; factorizing in double precision from here", why);
+    single_ = false;
+    analyze_pattern(*matrix_values_);
+    if (!ksp_)
+      return false;
+    check_rate_ = false;
+    return refactorize();
+  }
+
+  /// One numeric factorization in single precision.
+  bool factorize_single() {
+    const PetscScalar* values = nullptr;
+    check(MatSeqAIJGetArrayRead(matrix_->mat(), &values), "PETSc matrix");
+    bool done = true;
+    if (!single_lu_) {
+      single_lu_ = std::make_unique<SinglePrecisionLu>();
+      const auto& pattern = matrix_->pattern();
+      done = single_lu_->analyze(n_, pattern.row_start.data(), pattern.column.data(), values);
+    }
+    done = done && single_lu_->factorize(values);
+    check(MatSeqAIJRestoreArrayRead(matrix_->mat(), &values), "PETSc matrix");
+    if (!done) {
+      const PetscInt infog1 = single_lu_->infog1(), infog2 = single_lu_->infog2();
+      single_lu_.reset();
+      if (infog1 == -13) { // out of memory: double precision would need more
+        failure_ = mumps_failure(infog1, infog2);
+        return false;
+      }
+      return factorize_in_double_precision(fmt::format(
+          "the single-precision factorization failed ({})", mumps_failure(infog1, infog2).reason));
+    }
+    refactor_ = stale_ = false;
+    factored_ = true;
+    return true;
+  }
+
   /// One numeric factorization of the current matrix.
   bool factorize_once() {
+    if (single_)
+      return factorize_single();
     workspace_failed_ = false;
     if (reuse_ && layout_) {
       mpi_factored_->assign_values(*mpi_matrix_);
@@ -370,11 +485,15 @@ private:
   void release() {
     if (ksp_)
       KSPDestroy(&ksp_);
+    if (default_test_)
+      KSPConvergedDefaultDestroy(default_test_);
+    default_test_ = nullptr;
     if (x_)
       VecDestroy(&x_);
     if (b_)
       VecDestroy(&b_);
     gather_.reset();
+    single_lu_.reset();
     matrix_.reset();
     factored_matrix_.reset();
     mpi_matrix_.reset();
@@ -397,8 +516,14 @@ private:
   const bool fixed_tolerance_; ///< -ksp_rtol among the options: it wins
   Real reuse_tolerance_ = kReuseTolerance; ///< of the FGMRES solves when reusing (forcing term)
   bool refactor_ = true;                   ///< the next factorize() factorizes
-  bool stale_ = false;                     ///< the factorization in use is of an earlier matrix
+  const bool single_asked_; ///< reusing: factorize in single precision where possible
+  bool single_;             ///< ... and here (on one process)
+  std::unique_ptr<SinglePrecisionLu> single_lu_;
+  bool stale_ = false; ///< the factorization in use is of an earlier matrix
   int iterations_ = 0;
+  void* default_test_ = nullptr; ///< the context of PETSc's default convergence test (reuse)
+  PetscReal first_residual_ = 0.0;
+  bool check_rate_ = false; ///< the solve under way may stop early (reuse_convergence_test)
   Vec x_ = nullptr, b_ = nullptr;
   KSP ksp_ = nullptr;
   bool factored_ = false; ///< the symbolic analysis runs with the first factorization
@@ -417,13 +542,19 @@ private:
 
 /// Solves a 2×2 system with a solver made with `options` (reusing factorizations or not: the
 /// FGMRES of reuse reads -ksp_* options), then refuses options nobody read.
-void check_options_are_used(const std::string& options, bool reuse) {
+void check_options_are_used(const std::string& options, bool reuse, FactorPrecision precision) {
+  if (reuse && precision == FactorPrecision::single &&
+      options.find("-mat_mumps_") != std::string::npos)
+    throw InputError(fmt::format("solver.petsc_options = '{}': the -mat_mumps_* options set "
+                                 "MUMPS in double precision, but reused factorizations are in "
+                                 "single precision; add factorization_precision = \"double\"",
+                                 options));
   SparseMatrix A(2, 2);
   A.insert(0, 0) = 2.0;
   A.insert(1, 0) = 1.0;
   A.insert(1, 1) = 3.0;
   A.makeCompressed();
-  MumpsSolver probe(options, reuse);
+  MumpsSolver probe(options, reuse, precision);
   probe.analyze_pattern(A);
   Vector x;
   if (!probe.factorize(A) || !probe.solve(Vector::Ones(2), x))
@@ -436,10 +567,11 @@ void check_options_are_used(const std::string& options, bool reuse) {
 } // namespace
 
 std::unique_ptr<LinearSolver> make_mumps_solver(const std::string& petsc_options,
-                                                bool reuse_factorization) {
+                                                bool reuse_factorization,
+                                                FactorPrecision precision) {
   if (!petsc_options.empty())
-    check_options_are_used(petsc_options, reuse_factorization);
-  return std::make_unique<MumpsSolver>(petsc_options, reuse_factorization);
+    check_options_are_used(petsc_options, reuse_factorization, precision);
+  return std::make_unique<MumpsSolver>(petsc_options, reuse_factorization, precision);
 }
 
 } // namespace trifem::linalg

@@ -14,7 +14,11 @@ namespace trifem::linalg {
 /// system, so a typo fails before the run). With `reuse_factorization`, a factorization
 /// preconditions FGMRES (to 1e-10) on the following matrices of the same pattern until a solve
 /// takes more than 8 iterations; one that does not converge is repeated with a new one.
-std::unique_ptr<LinearSolver> make_mumps_solver(const std::string& petsc_options = "",
-                                                bool reuse_factorization = false);
+/// Reused factorizations are in `precision` on one process (SinglePrecisionLu), in double
+/// precision on several; the -mat_mumps_* options set the double-precision MUMPS, so with
+/// single-precision reuse they are an InputError that says so.
+std::unique_ptr<LinearSolver>
+make_mumps_solver(const std::string& petsc_options = "", bool reuse_factorization = false,
+                  FactorPrecision precision = FactorPrecision::single);
 
 } // namespace trifem::linalg

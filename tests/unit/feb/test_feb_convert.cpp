@@ -154,6 +154,21 @@ TEST(TomlConvertSolver, KrylovPreconditionerReadsBackAsWritten) {
   fs::remove_all(dir);
 }
 
+TEST(TomlConvertSolver, FactorizationPrecisionReadsBackAsWritten) {
+  io::CaseSpec spec = analysis::read_case_file(kData / "uniaxial_neo_hookean.feb");
+  spec.solver.linear_solver = "mumps";
+  spec.solver.reuse_factorization = true;
+  const fs::path dir = fresh_dir("factorization_precision");
+  io::write_case(spec, dir / "case.toml");
+  EXPECT_EQ(analysis::read_case_file(dir / "case.toml").solver.factorization_precision, "single");
+  spec.solver.factorization_precision = "double";
+  io::write_case(spec, dir / "case.toml");
+  const io::CaseSpec back = analysis::read_case_file(dir / "case.toml");
+  EXPECT_TRUE(back.solver.reuse_factorization);
+  EXPECT_EQ(back.solver.factorization_precision, "double");
+  fs::remove_all(dir);
+}
+
 // A refined case is written with its [mesh] refine and reads back to the same refined model.
 TEST(TomlConvertRefined, MeshRefinementReadsBackAsWritten) {
   io::CaseSpec spec = analysis::read_case_file(kData / "uniaxial_neo_hookean.feb");

@@ -574,6 +574,13 @@ const std::vector<BadCase> kBadCases = {
     {"preconditioner_without_krylov",
      kBase + "[solver]\nlinear_solver = \"mumps\"\npreconditioner = \"amg\"\n",
      {"solver.preconditioner", "applies to linear_solver = \"krylov\"", "mumps"}},
+    {"precision_without_reuse",
+     kBase + "[solver]\nlinear_solver = \"umfpack\"\nfactorization_precision = \"double\"\n",
+     {"solver.factorization_precision", "applies to reused factorizations"}},
+    {"unknown_precision",
+     kBase + "[solver]\nfactorization_precision = \"half\"\n",
+     {"solver.factorization_precision = 'half': unknown value (expected one of: single, "
+      "double)"}},
     {"unknown_preconditioner",
      kBase + "[solver]\nlinear_solver = \"krylov\"\npreconditioner = \"ilu\"\n",
      {"solver.preconditioner = 'ilu': unknown value (expected one of: lu, amg)"}},

@@ -3,11 +3,13 @@
 # Writes the case file of the 3-D triphasic block benchmark (docs/performance.md, "PETSc
 # backends on 3-D triphasic blocks") to standard output:
 #   block_case.sh CELLS SOLVER [PETSC_OPTIONS] [REUSE] [PRECONDITIONER] [INITIAL_STATE] [DT] [STEPS]
+#                 [PRECISION]
 # A 1 mm cube of CELLS^3 hex8 cells of the paper's cartilage, bottom fixed and impermeable, the
 # top compressed by 0.05 mm ramped over 50 s, STEPS steps (default 1) of DT s (default 2.5);
 # SOLVER is any linear_solver, REUSE "true" sets reuse_factorization, PRECONDITIONER the krylov
 # preconditioner (lu, amg), INITIAL_STATE the [analysis] initial_state (donnan,
-# donnan-prestressed).
+# donnan-prestressed), PRECISION the factorization_precision of reused factorizations (single,
+# double).
 set -euo pipefail
 cells=${1:?usage: block_case.sh CELLS SOLVER [PETSC_OPTIONS] [REUSE]}
 solver=${2:?usage: block_case.sh CELLS SOLVER [PETSC_OPTIONS] [REUSE]}
@@ -17,6 +19,7 @@ preconditioner=${5:-lu}
 initial_state=${6:-donnan}
 dt=${7:-2.5}
 steps=${8:-1}
+precision=${9:-single}
 end_time=$(awk -v dt="$dt" -v n="$steps" 'BEGIN { print dt * n }')
 cat <<CASE
 title = "triphasic block ${cells}^3, ${solver}"
@@ -76,4 +79,5 @@ CASE
 [ -n "$options" ] && echo "petsc_options = \"${options}\""
 [ "$reuse" = true ] && echo "reuse_factorization = true"
 [ "$preconditioner" != lu ] && echo "preconditioner = \"${preconditioner}\""
+[ "$precision" != single ] && echo "factorization_precision = \"${precision}\""
 exit 0

@@ -6,6 +6,7 @@
 # factorization and solve time [s], all from the run's summary.json.
 #   run_blocks.sh [TRIFEM] [SIZES] [BACKENDS]
 # defaults: build/bin/trifem, "6 10 14", "umfpack mumps mumps+reuse krylov"
+# (mumps+reuse: single-precision factorizations; mumps+reuse+double: double-precision ones)
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 trifem=${1:-$here/../../build/bin/trifem}
@@ -22,10 +23,14 @@ printf '| cells | backend | equations | Newton its | linear its | wall [s] | pea
 printf '|---|---|---|---|---|---|---|---|---|\n'
 for n in $sizes; do
   for backend in $backends; do
-    solver=${backend%+reuse}
+    precision=single
+    solver=${backend%+double}
+    [ "$backend" != "$solver" ] && precision=double
+    solver=${solver%+reuse}
     reuse=false
     [ "$backend" != "$solver" ] && reuse=true
-    bash "$here/block_case.sh" "$n" "$solver" "" "$reuse" > "$work/case.toml"
+    bash "$here/block_case.sh" "$n" "$solver" "" "$reuse" lu donnan 2.5 1 "$precision" \
+      > "$work/case.toml"
     "$trifem" -q run "$work/case.toml" -o "$work/out" > /dev/null 2>&1 || true
     s="$work/out/summary.json"
     printf '| %s³ | %s | %s | %s | %s | %.2f | %.0f | %.2f | %.2f |\n' "$n" "$backend" \

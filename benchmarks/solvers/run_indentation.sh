@@ -8,6 +8,7 @@
 # time.
 #   run_indentation.sh [TRIFEM] ["N:NZ ..."] [BACKENDS] [REPEATS] [PROCESSES]
 # defaults: build/bin/trifem, "8:4 16:4 24:6", "umfpack mumps mumps+reuse", 1, 1
+# (mumps+reuse: single-precision factorizations; mumps+reuse+double: double-precision ones)
 # PROCESSES > 1: each run through mpirun -np PROCESSES (the distributed MUMPS whatever the
 # backend; memory: the sum of the processes' peaks)
 # (python3 writes the meshes with examples/indentation/make_mesh.py)
@@ -31,13 +32,16 @@ value() { # value KEY FILE: the number after "KEY": in a summary.json
   sed -n "s/.*\"$1\": \([0-9.e+-]*\).*/\1/p" "$2" | head -1
 }
 
-# case FILE SOLVER REUSE: the example on the mesh FILE, its first step only, no VTU output
+# case FILE SOLVER REUSE PRECISION: the example on the mesh FILE, its first step only, no VTU
+# output
 write_case() {
   sed -e "s|^file = .*|file = \"$1\"|" -e '/^\[solver\]/,/^$/d' -e '/^# MUMPS reusing/,/^# 8 000/d' \
     "$example/indentation.toml" |
     awk '/^\[\[step\]\]/ && seen++ { exit } { print }' |
     sed -e 's/^end_time = 10.0/end_time = 1.0/'
   printf '\n[output]\nvtu = false\n\n[solver]\nlinear_solver = "%s"\nreuse_factorization = %s\n' "$2" "$3"
+  [ "$3" = true ] && printf 'factorization_precision = "%s"\n' "$4"
+  return 0
 }
 
 printf '| cells (N×N×NZ) | backend | equations | Newton its | linear its | wall [s] | peak memory [MB] | factorization [s] | solve [s] |\n'
@@ -47,10 +51,13 @@ for size in $sizes; do
   nz=${size#*:}
   python3 "$example/make_mesh.py" --cells "$n" --layers "$nz" -o "$work/mesh.msh" > /dev/null
   for backend in $backends; do
-    solver=${backend%+reuse}
+    precision=single # "mumps+reuse+double": double-precision factorizations
+    solver=${backend%+double}
+    [ "$backend" != "$solver" ] && precision=double
+    solver=${solver%+reuse}
     reuse=false
     [ "$backend" != "$solver" ] && reuse=true
-    write_case "$work/mesh.msh" "$solver" "$reuse" > "$work/case.toml"
+    write_case "$work/mesh.msh" "$solver" "$reuse" "$precision" > "$work/case.toml"
     for r in $(seq "$repeats"); do
       "${launch[@]}" "$trifem" -q run "$work/case.toml" -o "$work/out$r" > /dev/null 2>&1 || true
       echo "$(value total "$work/out$r/summary.json") $r"

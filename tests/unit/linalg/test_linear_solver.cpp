@@ -63,6 +63,29 @@ Real solve_residual(const std::string& name, const SparseMatrix& S, std::string*
   return (S2 * x - b).norm() / b.norm();
 }
 
+/// R S R_c and R b for the saddle point system S x = b of 600 + 200 unknowns, R and R_c
+/// diagonal with powers of two from 2^-40 to 2^40 (exact scalings: x = R_c y solves S x = b
+/// when y solves the scaled system).
+struct BadlyScaled {
+  SparseMatrix S, scaled;
+  Vector b, scaled_b, column_scale;
+};
+
+BadlyScaled badly_scaled_saddle_point() {
+  BadlyScaled p;
+  p.S = saddle_point(600, 3);
+  p.b = right_hand_side(p.S.rows());
+  Vector row(p.S.rows());
+  p.column_scale.resize(p.S.cols());
+  for (Index i = 0; i < p.S.rows(); ++i) {
+    row[i] = std::ldexp(1.0, static_cast<int>(std::lround(40.0 * std::sin(2.3 * i))));
+    p.column_scale[i] = std::ldexp(1.0, static_cast<int>(std::lround(40.0 * std::cos(1.1 * i))));
+  }
+  p.scaled = row.asDiagonal() * p.S * p.column_scale.asDiagonal();
+  p.scaled_b = row.asDiagonal() * p.b;
+  return p;
+}
+
 } // namespace
 
 TEST(LinearSolver, EveryDirectBackendSolvesAnUnsymmetricSaddlePointSystem) {
@@ -83,15 +106,7 @@ TEST(LinearSolver, EveryDirectBackendSolvesAnUnsymmetricSaddlePointSystem) {
 // the nested-dissection order) to a residual of 8e-12 and a solution 3e-11 from the unscaled
 // one. (An exact power-of-two equilibration of the matrix before MUMPS made this worse, 4e-7.)
 TEST(LinearSolver, EveryDirectBackendSolvesABadlyScaledSystem) {
-  const SparseMatrix S = saddle_point(600, 3);
-  const Vector b = right_hand_side(S.rows());
-  Vector row(S.rows()), col(S.cols());
-  for (Index i = 0; i < S.rows(); ++i) {
-    row[i] = std::ldexp(1.0, static_cast<int>(std::lround(40.0 * std::sin(2.3 * i))));
-    col[i] = std::ldexp(1.0, static_cast<int>(std::lround(40.0 * std::cos(1.1 * i))));
-  }
-  const SparseMatrix scaled = row.asDiagonal() * S * col.asDiagonal();
-  const Vector scaled_b = row.asDiagonal() * b;
+  const auto [S, scaled, b, scaled_b, col] = badly_scaled_saddle_point();
   for (const std::string& name : linalg::available_linear_solvers()) {
     if (name == "krylov")
       continue;
@@ -276,15 +291,9 @@ TEST(LinearSolver, MumpsReusingSinglePrecisionFactorizationsSolvesABadlyScaledSy
   // the scaling of EveryDirectBackendSolvesABadlyScaledSystem (entries from 2^-80 to 2^80 of
   // the unscaled ones, within single precision's range): MUMPS's own scaling before the
   // single-precision factorization, FGMRES in double precision to 1e-10
-  const SparseMatrix S = saddle_point(600, 3);
-  const Vector b = right_hand_side(S.rows());
-  Vector row(S.rows()), col(S.cols());
-  for (Index i = 0; i < S.rows(); ++i) {
-    row[i] = std::ldexp(1.0, static_cast<int>(std::lround(40.0 * std::sin(2.3 * i))));
-    col[i] = std::ldexp(1.0, static_cast<int>(std::lround(40.0 * std::cos(1.1 * i))));
-  }
-  const SparseMatrix scaled = row.asDiagonal() * S * col.asDiagonal();
-  const Vector scaled_b = row.asDiagonal() * b;
+  const BadlyScaled system = badly_scaled_saddle_point();
+  const SparseMatrix& scaled = system.scaled;
+  const Vector& scaled_b = system.scaled_b;
   auto solver =
       linalg::make_linear_solver("mumps", "", true, "lu", linalg::FactorPrecision::single);
   Vector y;

@@ -66,8 +66,8 @@ public:
 
 /// The precision of the factorizations that precondition FGMRES where MUMPS reuses them
 /// (reuse_factorization, "auto"): single precision halves the memory of the factors and about
-/// halves the time of factorizations and solves; FGMRES still iterates in double precision, to
-/// the tolerance Newton asks for.
+/// the time of a factorization, and cuts that of a solve by a third (measured on a 44 413-equation
+/// block); FGMRES still iterates in double precision, to the tolerance Newton asks for.
 enum class FactorPrecision { single, full };
 
 /// Names of the available backends.

@@ -207,6 +207,16 @@ private:
     return 0;
   }
 
+  /// The solve repeated after a new factorization (its vectors may be new: a workspace retry or
+  /// the turn to double precision sets the KSP up anew), its iterations added to iterations_.
+  void solve_again(const Vector& b, KSPConvergedReason& reason, PetscInt& iterations) {
+    to_petsc(b);
+    check(KSPSolve(ksp_, b_, x_), "MUMPS solve");
+    check(KSPGetConvergedReason(ksp_, &reason), "PETSc KSP");
+    check(KSPGetIterationNumber(ksp_, &iterations), "PETSc KSP");
+    iterations_ += static_cast<int>(iterations);
+  }
+
   /// A solve (reusing: FGMRES from zero, or with `warm` from x).
   bool solve_from(const Vector& b, Vector& x, bool warm) {
     if (!warm)
@@ -235,11 +245,7 @@ private:
           check_rate_ = false;
           if (!refactorize())
             return false;
-          to_petsc(b); // a workspace retry sets the vectors up anew
-          check(KSPSolve(ksp_, b_, x_), "MUMPS solve");
-          check(KSPGetConvergedReason(ksp_, &reason), "PETSc KSP");
-          check(KSPGetIterationNumber(ksp_, &iterations), "PETSc KSP");
-          iterations_ += static_cast<int>(iterations);
+          solve_again(b, reason, iterations);
         }
         if (reason < 0 && single_) { // a fresh single-precision factorization does not serve
           PetscReal residual = 0.0;
@@ -249,11 +255,7 @@ private:
                               "stopped at a residual of {:.2e} after {} iterations",
                               residual, iterations)))
             return false;
-          to_petsc(b);
-          check(KSPSolve(ksp_, b_, x_), "MUMPS solve");
-          check(KSPGetConvergedReason(ksp_, &reason), "PETSc KSP");
-          check(KSPGetIterationNumber(ksp_, &iterations), "PETSc KSP");
-          iterations_ += static_cast<int>(iterations);
+          solve_again(b, reason, iterations);
         }
         refactor_ = iterations > kRefactorAfter; // cheaper to factorize again next time
       }

@@ -45,18 +45,22 @@ protected:
   /// Runs the example `name` with `backend`; the history.csv path (empty on failure).
   fs::path run_example(const std::string& name, const std::string& backend) const {
     // "mumps+reuse": MUMPS with reuse_factorization (single-precision factorizations, or with
-    // "+double" double-precision ones); "krylov+amg": the multigrid preconditioner
-    const bool reuse = backend.starts_with("mumps+reuse"), amg = backend == "krylov+amg";
-    std::string text =
-        with_backend(read_text(kExamples / name / (name + ".toml")), reuse ? "mumps"
-                                                                     : amg ? "krylov"
-                                                                           : backend);
+    // "+double" double-precision ones); "krylov+amg": the multigrid preconditioner;
+    // "krylov...+drained": the drained Schur approximation
+    const bool reuse = backend.starts_with("mumps+reuse"), amg = backend.starts_with("krylov+amg"),
+               drained = backend.ends_with("+drained");
+    std::string text = with_backend(read_text(kExamples / name / (name + ".toml")),
+                                    reuse                           ? "mumps"
+                                    : backend.starts_with("krylov") ? "krylov"
+                                                                    : backend);
     if (reuse)
       text.insert(text.find("\n[solver]\n") + 10, "reuse_factorization = true\n");
     if (backend == "mumps+reuse+double")
       text.insert(text.find("\n[solver]\n") + 10, "factorization_precision = \"double\"\n");
     if (amg)
       text.insert(text.find("\n[solver]\n") + 10, "preconditioner = \"amg\"\n");
+    if (drained)
+      text.insert(text.find("\n[solver]\n") + 10, "schur_approximation = \"drained\"\n");
     const std::string mesh = "\nfile = \""; // a mesh file beside the example
     if (const auto at = text.find(mesh); at != std::string::npos)
       text.insert(at + mesh.size(), (kExamples / name).string() + "/");
@@ -107,14 +111,16 @@ protected:
 TEST_F(CliSolvers, PetscBackendsGiveTheUmfpackHistoryOnEveryExample) {
   for (const std::string name : {"biphasic_creep", "cantilever", "confined_column",
                                  "contact_column", "contact_patch", "free_swelling"})
-    expect_petsc_backends_give_the_umfpack_history(
-        name, {"mumps", "mumps+reuse", "mumps+reuse+double", "krylov", "krylov+amg"});
+    expect_petsc_backends_give_the_umfpack_history(name,
+                                                   {"mumps", "mumps+reuse", "mumps+reuse+double",
+                                                    "krylov", "krylov+amg", "krylov+amg+drained"});
 }
 
 TEST_F(CliSolvers, PetscBackendsGiveTheUmfpackHistoryOnTheIndentationExample) {
   // 3-D, contact, rigid body; the multigrid preconditioner is not yet efficient on contact
   // (docs/theory/solvers.md §4)
-  expect_petsc_backends_give_the_umfpack_history("indentation", {"mumps", "mumps+reuse", "krylov"});
+  expect_petsc_backends_give_the_umfpack_history(
+      "indentation", {"mumps", "mumps+reuse", "krylov", "krylov+drained"});
 }
 
 TEST_F(CliSolvers, MumpsFactorizesAgainWhenItsWorkspaceEstimateIsTooSmall) {

@@ -59,6 +59,47 @@ std::vector<Vector> FeProblem::rigid_body_modes() const {
   return modes;
 }
 
+void FeProblem::to_equations(const physics::CellTransport& cell, linalg::TransportCell& out) const {
+  const auto equation = [&](Index dof) { return dof >= 0 ? map_.equation(dof) : Index(-1); };
+  for (int i = 0; i < 2; ++i)
+    out.potential[i] = equation(cell.potential[i]);
+  out.divergence.setZero();
+  for (int a = 0; a < 8; ++a)
+    for (int field = 0; field < cell.flux_dof.cols(); ++field) {
+      const Vec3 g = cell.area.row(a).transpose();
+      for (int k = 0; k < 3; ++k) {
+        const Index dof = cell.flux_dof(3 * a + k, field);
+        out.flux_equation(3 * a + k, field) = equation(dof);
+        // in a rotated frame (global = Q local) the local component k enters g · Q e_k
+        const int frame = dof >= 0 ? frames_.frame_of(dof) : -1;
+        if (frame < 0) {
+          out.divergence(3 * a + k, field) = g[k];
+          continue;
+        }
+        const dofs::NodalFrame& f = frames_.frames()[frame];
+        const auto local = std::find(f.dofs.begin(), f.dofs.end(), dof) - f.dofs.begin();
+        out.divergence(3 * a + k, field) = g.dot(f.Q.col(local));
+      }
+    }
+  out.coupling = cell.coupling;
+  out.friction = cell.friction;
+  out.gamma = cell.gamma;
+  out.node = cell.node;
+  out.lumped_mass = cell.lumped_mass;
+}
+
+linalg::TransportCells FeProblem::transport_cells() const {
+  if (parallel::active()) // each process holds only its part of the matrix
+    return {};
+  std::vector<physics::CellTransport> cells;
+  for (const auto& t : terms_)
+    t->transport_cells(eval_state(), cells);
+  linalg::TransportCells out(cells.size());
+  for (std::size_t c = 0; c < cells.size(); ++c)
+    to_equations(cells[c], out[c]);
+  return out;
+}
+
 void FeProblem::reclaim_jacobian(solver::Linearization& lin) {
   if (!jacobian_lent_)
     return;

@@ -79,6 +79,8 @@ public:
   int pattern_id() const override { return pattern_id_; }
   const std::vector<int>& equation_owners() const override { return equation_owner_; }
   std::vector<Vector> rigid_body_modes() const override;
+  /// Empty on several processes (each holds only its part of the matrix).
+  linalg::TransportCells transport_cells() const override;
   solver::SolveStatus linearize(solver::Linearization& lin, bool with_jacobian) override;
   solver::SolveStatus update(const Vector& dx, Real step) override;
   bool constraints_satisfied() const override;
@@ -135,6 +137,8 @@ private:
   void reclaim_jacobian(solver::Linearization& lin);
   /// Numbers the equations' fields and builds the assembler and its pattern.
   void build_assembler();
+  /// A term's cell over the equations (divergences in the rotated frames' components).
+  void to_equations(const physics::CellTransport& cell, linalg::TransportCell& out) const;
 
   const dofs::DofMap& map_;
   std::vector<dofs::DirichletCondition> conditions_;

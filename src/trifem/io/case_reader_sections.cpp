@@ -384,7 +384,7 @@ void read_solver(const Table& root, CaseSpec& spec) {
     return;
   t->allow({"max_iterations", "residual_tolerance", "increment_tolerance", "line_search",
             "linear_solver", "petsc_options", "reuse_factorization", "preconditioner",
-            "factorization_precision"});
+            "factorization_precision", "schur_approximation"});
   static const Options<std::string_view> solvers = {{"auto", "auto"},
                                                     {"umfpack", "umfpack"},
                                                     {"sparselu", "sparselu"},
@@ -416,6 +416,13 @@ void read_solver(const Table& root, CaseSpec& spec) {
                                            std::optional<std::string_view>(s.preconditioner)));
   if (s.preconditioner != "lu" && s.linear_solver != "krylov")
     fail(t->find("preconditioner"), t->path("preconditioner"),
+         fmt::format("applies to linear_solver = \"krylov\", not to linear_solver = \"{}\"",
+                     s.linear_solver));
+  static const Options<std::string_view> schurs = {{"selfp", "selfp"}, {"drained", "drained"}};
+  s.schur_approximation = std::string(t->choice(
+      "schur_approximation", schurs, std::optional<std::string_view>(s.schur_approximation)));
+  if (t->find("schur_approximation") && s.linear_solver != "krylov")
+    fail(t->find("schur_approximation"), t->path("schur_approximation"),
          fmt::format("applies to linear_solver = \"krylov\", not to linear_solver = \"{}\"",
                      s.linear_solver));
   static const Options<std::string_view> precisions = {{"single", "single"}, {"double", "double"}};

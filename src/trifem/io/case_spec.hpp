@@ -299,10 +299,11 @@ struct SolverSpec {
   Real residual_tolerance = 1e-8;  ///< relative to the characteristic residual of each field
   Real increment_tolerance = 1e-8; ///< relative to the characteristic size of each field
   bool line_search = true;
-  std::string linear_solver = "auto"; ///< "auto", "umfpack", "sparselu", "mumps", "krylov"
-  std::string petsc_options;          ///< "-key value ..." for the PETSc backends
-  bool reuse_factorization = false;   ///< mumps: one factorization for several iterations
-  std::string preconditioner = "lu";  ///< krylov: "lu" (MUMPS blocks) or "amg" (multigrid)
+  std::string linear_solver = "auto";        ///< "auto", "umfpack", "sparselu", "mumps", "krylov"
+  std::string petsc_options;                 ///< "-key value ..." for the PETSc backends
+  bool reuse_factorization = false;          ///< mumps: one factorization for several iterations
+  std::string preconditioner = "lu";         ///< krylov: "lu" (MUMPS blocks) or "amg" (multigrid)
+  std::string schur_approximation = "selfp"; ///< krylov: "selfp" or "drained"
   /// of the factorizations MUMPS reuses (mumps with reuse_factorization, auto): "single", "double"
   std::string factorization_precision = "single";
 };

@@ -269,6 +269,8 @@ void write_solver(const SolverSpec& s, TomlText& t) {
     t.raw("reuse_factorization", "true");
   if (s.preconditioner != "lu")
     t.optional_string("preconditioner", s.preconditioner);
+  if (s.schur_approximation != "selfp")
+    t.string("schur_approximation", s.schur_approximation);
   if (s.factorization_precision != "single")
     t.string("factorization_precision", s.factorization_precision);
 }

@@ -4,6 +4,7 @@
 #include "trifem/core/error.hpp"
 #include "trifem/core/log.hpp"
 #include "trifem/linalg/block_split.hpp"
+#include "trifem/linalg/drained_schur.hpp"
 #include "trifem/linalg/petsc_matrix.hpp"
 #include "trifem/linalg/petsc_session.hpp"
 
@@ -110,6 +111,9 @@ void apply_multigrid(KSP ksp, const std::vector<Vector>& near_null) {
   use_multigrid(ksp, near_null);
 }
 
+/// Options prefix of the solver of the drained Schur approximation's augmented system.
+constexpr const char* kDrainedSchurPrefix = "drained_schur_";
+
 /// Largest system for which "amg" repeats a failed solve with the LU blocks: their memory
 /// grows faster than the model's (a 405 000-equation block grew from 11 to 19 GB).
 constexpr Index kLuFallbackLimit = 100000;
@@ -140,6 +144,13 @@ public:
   }
 
   void set_near_null_space(std::vector<Vector> modes) override { near_null_ = std::move(modes); }
+
+  bool wants_transport_cells() const override {
+    return settings_.schur == SchurApproximation::drained && !split_.flux.empty() &&
+           !split_.potential.empty();
+  }
+
+  void set_transport_cells(TransportCells cells) override { cells_ = std::move(cells); }
 
   void set_relative_tolerance(Real tolerance) override {
     if (fixed_tolerance_)
@@ -187,6 +198,8 @@ public:
       check(PCSetUp(pc), "preconditioner set-up");
       if (!sub_solvers_configured_)
         configure_sub_solvers(pc);
+      if (drained_)
+        factorize_drained_schur(A);
       ready_ = true;
       return true;
     } catch (const petsc::PetscError& e) {
@@ -310,8 +323,91 @@ private:
     check(KSPSetFromOptions(solvers[0]), "PETSc options");
     if (has_type(primal, PCFIELDSPLIT))
       split_primal(solvers[0], primal);
-    apply_once(solvers[1], PCLU);
+    drained_ = wants_transport_cells() && !cells_.empty();
+    if (wants_transport_cells())
+      log::debug(
+          drained_ ? fmt::format("  Schur approximation: drained, {} mixture cells", cells_.size())
+                   : std::string("  Schur approximation: selfp (no mixture cells given)"));
+    if (drained_)
+      use_drained_schur(solvers[1]);
+    else
+      apply_once(solvers[1], PCLU);
     check(KSPSetFromOptions(solvers[1]), "PETSc options");
+  }
+
+  /// The Schur block's solver applies the drained Schur approximation (a shell around the
+  /// factorization of the augmented system, factorize_drained_schur).
+  void use_drained_schur(KSP ksp) {
+    PC pc = apply_once(ksp, PCSHELL);
+    check(PCShellSetContext(pc, this), "PETSc shell preconditioner");
+    check(PCShellSetApply(pc, &KrylovSolver::apply_drained_schur), "PETSc shell preconditioner");
+    check(PCShellSetName(pc, "drained Schur approximation (augmented system, MUMPS LU)"),
+          "PETSc shell preconditioner");
+  }
+
+  /// Builds the augmented system of drained_schur.hpp for the matrix `A` and the cells of its
+  /// state, and factorizes it (the symbolic analysis is kept while its pattern is unchanged).
+  void factorize_drained_schur(const SparseMatrix& A) {
+    const SparseMatrix system = drained_schur_system(A, split_, cells_);
+    const std::vector<Index> pattern = pattern_of(system);
+    if (schur_matrix_ && pattern == schur_pattern_) {
+      schur_matrix_->update(system);
+    } else {
+      release_drained_schur();
+      schur_matrix_ = std::make_unique<petsc::SeqAijMatrix>(system);
+      schur_pattern_ = pattern;
+      check(MatCreateVecs(schur_matrix_->mat(), &schur_x_, &schur_b_), "PETSc vectors");
+      check(KSPCreate(PETSC_COMM_SELF, &schur_ksp_), "PETSc KSP");
+      check(KSPSetOptionsPrefix(schur_ksp_, kDrainedSchurPrefix), "PETSc KSP");
+      apply_once(schur_ksp_, PCLU);
+      check(KSPSetFromOptions(schur_ksp_), "PETSc options");
+    }
+    check(KSPSetOperators(schur_ksp_, schur_matrix_->mat(), schur_matrix_->mat()),
+          "PETSc KSP operators");
+    check(KSPSetUp(schur_ksp_), "drained Schur approximation: factorization");
+  }
+
+  /// The column starts and row indices of a compressed matrix, in one list.
+  static std::vector<Index> pattern_of(const SparseMatrix& m) {
+    std::vector<Index> pattern(m.outerIndexPtr(), m.outerIndexPtr() + m.outerSize() + 1);
+    pattern.insert(pattern.end(), m.innerIndexPtr(), m.innerIndexPtr() + m.nonZeros());
+    return pattern;
+  }
+
+  /// y = Ŝ⁻¹ x: the augmented system solved with right-hand side (x, 0), its potentials.
+  static PetscErrorCode apply_drained_schur(PC pc, Vec x, Vec y) {
+    void* context = nullptr;
+    PetscCall(PCShellGetContext(pc, &context));
+    auto* self = static_cast<KrylovSolver*>(context);
+    PetscInt potentials = 0;
+    PetscCall(VecGetLocalSize(x, &potentials));
+    PetscCall(VecSet(self->schur_b_, 0.0));
+    const PetscScalar* from = nullptr;
+    PetscScalar* to = nullptr;
+    PetscCall(VecGetArrayRead(x, &from));
+    PetscCall(VecGetArray(self->schur_b_, &to));
+    std::copy(from, from + potentials, to);
+    PetscCall(VecRestoreArray(self->schur_b_, &to));
+    PetscCall(VecRestoreArrayRead(x, &from));
+    PetscCall(KSPSolve(self->schur_ksp_, self->schur_b_, self->schur_x_));
+    PetscCall(VecGetArrayRead(self->schur_x_, &from));
+    PetscCall(VecGetArray(y, &to));
+    std::copy(from, from + potentials, to);
+    PetscCall(VecRestoreArray(y, &to));
+    PetscCall(VecRestoreArrayRead(self->schur_x_, &from));
+    return 0;
+  }
+
+  void release_drained_schur() {
+    if (schur_ksp_)
+      KSPDestroy(&schur_ksp_);
+    if (schur_x_)
+      VecDestroy(&schur_x_);
+    if (schur_b_)
+      VecDestroy(&schur_b_);
+    schur_matrix_.reset();
+    schur_ksp_ = nullptr;
+    schur_x_ = schur_b_ = nullptr;
   }
 
   /// A fieldsplit of the primal block (the "amg" preconditioner, or chosen through the
@@ -429,6 +525,8 @@ private:
   }
 
   void release() {
+    release_drained_schur();
+    drained_ = false;
     if (ksp_)
       KSPDestroy(&ksp_);
     if (x_)
@@ -460,12 +558,49 @@ private:
   std::unique_ptr<petsc::SeqAijMatrix> matrix_;
   Vec x_ = nullptr, b_ = nullptr;
   KSP ksp_ = nullptr;
+  TransportCells cells_; ///< the mixture cells at the state of the next matrix
+  bool drained_ = false; ///< the Schur block applies the drained approximation
+  std::unique_ptr<petsc::SeqAijMatrix> schur_matrix_; ///< its augmented system
+  std::vector<Index> schur_pattern_; ///< its pattern (pattern_of)
+  Vec schur_x_ = nullptr, schur_b_ = nullptr;
+  KSP schur_ksp_ = nullptr;
   bool ready_ = false;
   bool sub_solvers_configured_ = false;
   bool broken_ = false; ///< a PETSc error interrupted an operation: set up anew (as MUMPS)
   int iterations_ = 0;
   LinearSolverFailure failure_;
 };
+
+/// Lets the solver of the drained Schur approximation's augmented system (options prefix
+/// `drained_schur_`) read its options, on a 2 × 2 system: the probe system of
+/// check_options_are_used has no mixture cells to build it from.
+void read_drained_schur_options(const std::string& options) {
+  SparseMatrix I(2, 2);
+  I.setIdentity();
+  petsc::SeqAijMatrix matrix(I);
+  KSP ksp = nullptr;
+  Vec x = nullptr, b = nullptr;
+  try {
+    check(MatCreateVecs(matrix.mat(), &x, &b), "PETSc vectors");
+    check(VecSet(b, 1.0), "PETSc vector");
+    check(KSPCreate(PETSC_COMM_SELF, &ksp), "PETSc KSP");
+    check(KSPSetOptionsPrefix(ksp, kDrainedSchurPrefix), "PETSc KSP");
+    check(KSPSetOperators(ksp, matrix.mat(), matrix.mat()), "PETSc KSP operators");
+    apply_once(ksp, PCLU);
+    check(KSPSetFromOptions(ksp), "PETSc options");
+    check(KSPSolve(ksp, b, x), "drained Schur approximation: the options' test solve");
+  } catch (const petsc::PetscError& e) {
+    KSPDestroy(&ksp);
+    VecDestroy(&x);
+    VecDestroy(&b);
+    throw InputError(fmt::format("solver.petsc_options = '{}': the solver of the drained Schur "
+                                 "approximation could not be set up with these options: {}",
+                                 options, e.what()));
+  }
+  KSPDestroy(&ksp);
+  VecDestroy(&x);
+  VecDestroy(&b);
+}
 
 /// Solves a small system of every block kind with `options`, then refuses options nobody read
 /// (or a set-up that fails with them).
@@ -488,10 +623,21 @@ void check_options_are_used(const std::string& options, KrylovSettings settings)
                                  options, probe.failure().reason));
   Vector x;
   probe.solve(Vector::Ones(5), x); // reads the options of the solve; convergence is not asked
+  if (settings.schur == SchurApproximation::drained)
+    read_drained_schur_options(options);
   petsc::refuse_unused_options(options, "krylov");
 }
 
 } // namespace
+
+SchurApproximation schur_approximation(const std::string& name) {
+  if (name == "selfp")
+    return SchurApproximation::selfp;
+  if (name == "drained")
+    return SchurApproximation::drained;
+  throw InputError(
+      fmt::format("unknown Schur approximation '{}' (expected selfp or drained)", name));
+}
 
 KrylovPreconditioner krylov_preconditioner(const std::string& name) {
   if (name == "lu")

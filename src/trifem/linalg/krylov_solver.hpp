@@ -24,11 +24,23 @@ enum class KrylovPreconditioner {
 /// "lu" or "amg"; InputError otherwise.
 KrylovPreconditioner krylov_preconditioner(const std::string& name);
 
+/// How the fieldsplit approximates the potentials' Schur complement (docs/theory/solvers.md §4).
+enum class SchurApproximation {
+  selfp,   ///< PETSc's selfp: C − B diag(A)⁻¹ Bᵀ, factorized by MUMPS
+  drained, ///< selfp's undrained part, and the drained part of the mixture cells with the flux
+           ///< block's friction lumped, through the augmented system of drained_schur.hpp
+           ///< (factorized by MUMPS); selfp where the model gives no mixture cells
+};
+
+/// "selfp" or "drained"; InputError otherwise.
+SchurApproximation schur_approximation(const std::string& name);
+
 /// Settings of the Krylov backend that are not PETSc options.
 struct KrylovSettings {
   double relative_tolerance = 1e-10; ///< residual reduction of each solve (-ksp_rtol overrides)
   int max_iterations = 1000;         ///< (-ksp_max_it overrides)
   KrylovPreconditioner preconditioner = KrylovPreconditioner::lu;
+  SchurApproximation schur = SchurApproximation::selfp;
 };
 
 /// The Krylov backend. `petsc_options` ("-ksp_rtol 1e-9 -fieldsplit_potential_pc_type ilu ...")

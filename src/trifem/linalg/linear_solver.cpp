@@ -20,14 +20,17 @@ std::vector<std::string> available_linear_solvers() {
   return {"auto", "umfpack", "sparselu", "mumps", "krylov"};
 }
 
-std::unique_ptr<LinearSolver> make_linear_solver(const std::string& name,
-                                                 const std::string& petsc_options,
-                                                 bool reuse_factorization,
-                                                 const std::string& preconditioner,
-                                                 FactorPrecision precision) {
+std::unique_ptr<LinearSolver>
+make_linear_solver(const std::string& name, const std::string& petsc_options,
+                   bool reuse_factorization, const std::string& preconditioner,
+                   FactorPrecision precision, const std::string& schur) {
   if (preconditioner != "lu" && name != "krylov")
     throw InputError(fmt::format("solver.preconditioner applies to linear_solver = 'krylov', "
                                  "not to '{}'",
+                                 name));
+  if (schur != "selfp" && name != "krylov")
+    throw InputError(fmt::format("solver.schur_approximation applies to linear_solver = "
+                                 "'krylov', not to '{}'",
                                  name));
   if (reuse_factorization && name != "mumps")
     throw InputError(fmt::format("solver.reuse_factorization applies to linear_solver = 'mumps', "
@@ -56,7 +59,8 @@ std::unique_ptr<LinearSolver> make_linear_solver(const std::string& name,
     return make_mumps_solver(petsc_options, reuse_factorization, precision);
   if (name == "krylov")
     return make_krylov_solver(petsc_options,
-                              {.preconditioner = krylov_preconditioner(preconditioner)});
+                              {.preconditioner = krylov_preconditioner(preconditioner),
+                               .schur = schur_approximation(schur)});
   throw InputError(fmt::format(
       "unknown linear solver '{}' (expected auto, umfpack, sparselu, mumps or krylov)", name));
 }

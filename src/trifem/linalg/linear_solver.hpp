@@ -4,6 +4,7 @@
 #pragma once
 
 #include "trifem/core/types.hpp"
+#include "trifem/linalg/transport_cells.hpp"
 
 #include <cstdint>
 #include <memory>
@@ -40,6 +41,11 @@ public:
   /// equations), before analyze_pattern of a new pattern; algebraic multigrid uses it, the
   /// other backends ignore it.
   virtual void set_near_null_space(std::vector<Vector> modes) { (void)modes; }
+  /// True if the backend's preconditioner uses the mixture cells' transport data
+  /// (set_transport_cells before every factorize); computing them costs a pass over the cells.
+  virtual bool wants_transport_cells() const { return false; }
+  /// The mixture cells at the state of the next matrix, before its factorize.
+  virtual void set_transport_cells(TransportCells cells) { (void)cells; }
   /// On several processes: the owner of every equation, before analyze_pattern of a new
   /// pattern; each process then gives its own part of the matrix (its elements' couplings)
   /// and the whole right-hand side, and receives the whole solution. Empty: one process.
@@ -82,9 +88,11 @@ std::vector<std::string> available_linear_solvers();
 /// distributed matrix, and `krylov` is an InputError.
 /// `preconditioner` (krylov only): "lu" or "amg" (KrylovPreconditioner).
 /// `precision`: of the reused factorizations (mumps reusing them, and auto's mumps).
+/// `schur` (krylov only): "selfp" or "drained" (SchurApproximation).
 std::unique_ptr<LinearSolver>
 make_linear_solver(const std::string& name, const std::string& petsc_options = "",
                    bool reuse_factorization = false, const std::string& preconditioner = "lu",
-                   FactorPrecision precision = FactorPrecision::single);
+                   FactorPrecision precision = FactorPrecision::single,
+                   const std::string& schur = "selfp");
 
 } // namespace trifem::linalg

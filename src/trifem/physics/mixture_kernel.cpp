@@ -293,6 +293,38 @@ void tangent(const Integrals& I, const MixtureChemistry& c, const MixtureUnknown
     K.row(L.eta()) = (d.Qp - d.Qm).head(n).transpose();
 }
 
+/// Fields of MixtureFluxBlock's rows and columns.
+enum FluxField { kWater = 0, kCation = 1, kAnion = 2 };
+
+/// The friction blocks of tangent(): K(f_i(a,k), f_j(b,k)) = friction(i,j) m_ab.
+Mat3 friction_matrix(const MixtureChemistry& c, bool ions) {
+  Mat3 f = Mat3::Zero();
+  f(kWater, kWater) = -c.A_ww;
+  if (!ions)
+    return f;
+  f(kWater, kCation) = f(kCation, kWater) = c.A_wp;
+  f(kWater, kAnion) = f(kAnion, kWater) = c.A_wm;
+  f(kCation, kCation) = -c.A_pp;
+  f(kAnion, kAnion) = -c.A_mm;
+  return f;
+}
+
+/// The rank-one terms g_a ⊗ dμ̄_i of tangent() on the flux columns: the concentrations depend on
+/// the ion fluxes through the outflows, dc±/dj±_b = −Δt g_b / V_w, and dμ̄_w/dc± = −RTΦ,
+/// dμ̄_±/dc± = RT/c± (chemistry_gradients()); nothing depends on w.
+Mat3 divergence_matrix(const MixtureChemistry& c, const material::MixtureProperties& mat,
+                       const MixtureStep& step, bool ions) {
+  Mat3 gamma = Mat3::Zero();
+  if (!ions)
+    return gamma;
+  const Real RT = step.chem->RT();
+  const Real dc = -step.dt / c.Vw; // dc±/d(Σ_b g_b · j±_b)
+  gamma(kWater, kCation) = gamma(kWater, kAnion) = -RT * mat.osmotic * dc;
+  gamma(kCation, kCation) = (RT / c.c_plus) * dc;
+  gamma(kAnion, kAnion) = (RT / c.c_minus) * dc;
+  return gamma;
+}
+
 } // namespace
 
 bool mixture_hex8(const fe::HexGeometry& geo, const MixtureUnknowns& x,
@@ -313,6 +345,29 @@ bool mixture_hex8(const fe::HexGeometry& geo, const MixtureUnknowns& x,
   if (K)
     tangent(I, c, x, history, mat, step, layout, K_solid, *K);
   return true;
+}
+
+std::optional<MixtureFluxBlock>
+mixture_hex8_flux_block(const fe::HexGeometry& geo, const MixtureUnknowns& x,
+                        const MixtureHistory& history, const material::MixtureProperties& mat,
+                        const MixtureStep& step, const MixtureLayout& layout) {
+  Integrals I;
+  if (!integrate(geo, x, layout.ions, I))
+    return std::nullopt;
+  const MixtureChemistry c = chemistry(I, x, history, mat, step, layout.ions);
+  if (!c.admissible)
+    return std::nullopt;
+  MixtureFluxBlock out;
+  out.friction = friction_matrix(c, layout.ions);
+  out.gamma = divergence_matrix(c, mat, step, layout.ions);
+  out.coupling(0, kWater) = 1.0; // K^pw = g
+  if (layout.ions) {
+    out.coupling(1, kCation) = 1.0; // K^η± = ±g
+    out.coupling(1, kAnion) = -1.0;
+  }
+  out.area = I.g;
+  out.lumped_mass = I.m.rowwise().sum();
+  return out;
 }
 
 MixtureCellOutput mixture_hex8_output(const fe::HexGeometry& geo, const MixtureUnknowns& x,

@@ -7,6 +7,8 @@
 #include "trifem/material/mixture.hpp"
 #include "trifem/physics/term.hpp"
 
+#include <optional>
+
 namespace trifem::physics {
 
 /// Local DOF layout, field-major: u (24), w (24), [j+ (24), j- (24)], p, [eta].
@@ -64,6 +66,30 @@ bool mixture_hex8(const fe::HexGeometry& geo, const MixtureUnknowns& x,
                   const MixtureHistory& history, const material::MixtureProperties& mat,
                   const MixtureStep& step, const MixtureLayout& layout, LocalVector& r,
                   LocalMatrix* K);
+
+/// The parts of the element's flux block that do not depend on the flux values, in natural
+/// units (docs/theory/triphasic.md §4, docs/theory/solvers.md §4). Over the fields
+/// i, j ∈ (w, j+, j−) and the components k, l, the tangent's flux block is
+///
+///     K(f_i(a,k), f_j(b,l)) = δ_kl m_ab friction(i,j) + g_a[k] gamma(i,j) g_b[l]
+///
+/// plus terms proportional to the fluxes (the derivatives of the resistances times W, P, M),
+/// and the rows (p, η) of the flux columns are coupling · (g_b[l] for each field). Biphasic
+/// elements fill the w entries only.
+struct MixtureFluxBlock {
+  Mat3 friction = Mat3::Zero(); ///< the friction coefficients −A_ww, A_w±, −A_±±
+  Mat3 gamma = Mat3::Zero();    ///< the concentration terms dμ̄_i/dc dc/d(div j_j)
+  Eigen::Matrix<Real, 2, 3> coupling = Eigen::Matrix<Real, 2, 3>::Zero();    ///< K^pw, K^η± per g
+  Eigen::Matrix<Real, 8, 3> area = Eigen::Matrix<Real, 8, 3>::Zero();        ///< g_a (rows: nodes)
+  Eigen::Matrix<Real, 8, 1> lumped_mass = Eigen::Matrix<Real, 8, 1>::Zero(); ///< Σ_b m_ab
+};
+
+/// The flux block of the element at a state (the inputs of mixture_hex8); nothing if the state
+/// is inadmissible (J <= 0 at a Gauss point, water volume or ion moles <= 0).
+std::optional<MixtureFluxBlock>
+mixture_hex8_flux_block(const fe::HexGeometry& geo, const MixtureUnknowns& x,
+                        const MixtureHistory& history, const material::MixtureProperties& mat,
+                        const MixtureStep& step, const MixtureLayout& layout);
 
 /// Element chemistry and volume-averaged fluxes at a state (for output and initial states).
 struct MixtureCellOutput {

@@ -33,6 +33,27 @@ Real current_volume(const fe::HexGeometry& geo, const fe::HexCoords& u) {
   return V;
 }
 
+/// Row and column factors of the scaled equations (docs/theory/triphasic.md §5); the other rows
+/// and columns keep a factor 1.
+struct Scaling {
+  Real water_row, ion_row, ion_column, p_row, eta_row, eta_column;
+};
+
+Scaling scaling(Real dt, Real c_ref) {
+  return {-dt, -dt * c_ref, c_ref, -dt, -dt / c_ref, 1.0 / c_ref};
+}
+
+/// The flux block in the scaled rows (w, j+, j−, p, η) and columns (w, ĵ+, ĵ−).
+MixtureFluxBlock scaled(MixtureFluxBlock b, Real dt, Real c_ref) {
+  const Scaling f = scaling(dt, c_ref);
+  const Vec3 row(f.water_row, f.ion_row, f.ion_row), col(1.0, f.ion_column, f.ion_column);
+  const Eigen::Vector2d potential_row(f.p_row, f.eta_row);
+  b.friction = row.asDiagonal() * b.friction * col.asDiagonal();
+  b.gamma = row.asDiagonal() * b.gamma * col.asDiagonal();
+  b.coupling = potential_row.asDiagonal() * b.coupling * col.asDiagonal();
+  return b;
+}
+
 } // namespace
 
 MixtureTerm::MixtureTerm(const mesh::Mesh& mesh, const dofs::DofMap& dofs, MixtureFields fields,
@@ -115,14 +136,15 @@ MixtureStep MixtureTerm::step(Index e, Real dt) const {
 void MixtureTerm::scale(Index e, Real dt, LocalVector& r, LocalMatrix* K) const {
   const MixtureLayout L{ions(e)};
   const int n = L.size();
+  const Scaling f = scaling(dt, chem_.c_ref);
   Eigen::VectorXd row = Eigen::VectorXd::Ones(n), col = Eigen::VectorXd::Ones(n);
-  row.segment(24, 24).setConstant(-dt);
-  row[L.p()] = -dt;
+  row.segment(24, 24).setConstant(f.water_row);
+  row[L.p()] = f.p_row;
   if (L.ions) {
-    row.segment(48, 48).setConstant(-dt * chem_.c_ref);
-    col.segment(48, 48).setConstant(chem_.c_ref);
-    row[L.eta()] = -dt / chem_.c_ref;
-    col[L.eta()] = 1.0 / chem_.c_ref;
+    row.segment(48, 48).setConstant(f.ion_row);
+    col.segment(48, 48).setConstant(f.ion_column);
+    row[L.eta()] = f.eta_row;
+    col[L.eta()] = f.eta_column;
   }
   r.array() *= row.array();
   if (K)
@@ -136,6 +158,40 @@ bool MixtureTerm::evaluate(Index e, const EvalState& state, LocalVector& r, Loca
     return false;
   scale(e, s.dt, r, K);
   return true;
+}
+
+CellTransport MixtureTerm::cell_transport(Index e, const MixtureFluxBlock& scaled_block) const {
+  const bool charged = ions(e);
+  CellTransport t;
+  t.potential = {dofs_.dof(fields_.p, cells_[e], 0),
+                 charged ? dofs_.dof(fields_.eta, cells_[e], 0) : Index(-1)};
+  t.coupling = scaled_block.coupling;
+  t.friction = scaled_block.friction;
+  t.gamma = scaled_block.gamma;
+  t.area = scaled_block.area;
+  t.lumped_mass = scaled_block.lumped_mass;
+  t.flux_dof.setConstant(-1);
+  const auto& nodes = mesh_.cell(cells_[e]);
+  const std::array<dofs::FieldId, 3> flux = {fields_.w, fields_.j_plus, fields_.j_minus};
+  for (int a = 0; a < 8; ++a) {
+    t.node[a] = nodes[a];
+    for (int field = 0; field < (charged ? 3 : 1); ++field)
+      for (int k = 0; k < 3; ++k)
+        t.flux_dof(3 * a + k, field) = dofs_.dof(flux[field], nodes[a], k);
+  }
+  return t;
+}
+
+void MixtureTerm::transport_cells(const EvalState& state, std::vector<CellTransport>& out) const {
+  out.reserve(out.size() + cells_.size());
+  for (Index e = 0; e < num_elements(); ++e) {
+    const MixtureStep s = step(e, state.dt);
+    const std::optional<MixtureFluxBlock> block =
+        mixture_hex8_flux_block(geometry_[e], unknowns(e, state.x), history_at(e, state.time),
+                                *props_[e], s, MixtureLayout{ions(e)});
+    if (block) // always, at a state the term could evaluate
+      out.push_back(cell_transport(e, scaled(*block, s.dt, chem_.c_ref)));
+  }
 }
 
 MixtureCellOutput MixtureTerm::output(Index e, const Vector& x) const {

@@ -46,6 +46,8 @@ public:
   /// The committed MixtureHistory of every element (6 numbers each).
   std::vector<double> history() const override;
   void restore_history(const std::vector<double>& values) override;
+  /// Every cell's flux block in the scaled rows and unknowns (docs/theory/solvers.md §4).
+  void transport_cells(const EvalState& state, std::vector<CellTransport>& out) const override;
 
   /// Sets p, eta (and the ion moles) of every element to the Donnan equilibrium with the
   /// reference bath at the configuration in x, at time `time` (fixed charge from the curve).
@@ -72,6 +74,8 @@ private:
   MixtureStep step(Index e, Real dt) const;
   bool ions(Index e) const { return has_ions() && props_[e]->charged; }
   void scale(Index e, Real dt, LocalVector& r, LocalMatrix* K) const;
+  /// The CellTransport of element e from its scaled flux block.
+  CellTransport cell_transport(Index e, const MixtureFluxBlock& scaled_block) const;
 
   const mesh::Mesh& mesh_;
   const dofs::DofMap& dofs_;

@@ -6,6 +6,8 @@
 #include "trifem/core/types.hpp"
 
 #include <Eigen/Dense>
+
+#include <array>
 #include <string>
 #include <vector>
 
@@ -21,6 +23,24 @@ struct EvalState {
 
 using LocalVector = Eigen::VectorXd;
 using LocalMatrix = Eigen::MatrixXd;
+
+/// What a Schur approximation of the drained part needs of one hex8 mixture cell, in the scaled
+/// rows and unknowns of the assembled system (docs/theory/solvers.md §4). Over the fields
+/// (fluid, cation, anion flux) and the components, the cell's flux block is
+///
+///     F_e = m_ab ⊗ friction + (g_a ⊗ g_b) gamma      (plus terms proportional to the fluxes)
+///
+/// and its potential rows (p, η) are coupling · (Σ_a g_a·w_a, Σ_a g_a·ĵ+_a, Σ_a g_a·ĵ−_a).
+struct CellTransport {
+  std::array<Index, 2> potential{-1, -1}; ///< DOFs of p and η (−1: none)
+  Eigen::Matrix<Real, 2, 3> coupling;     ///< rows (p, η), columns: fields
+  Eigen::Matrix3d friction;               ///< per unit mass (fields x fields)
+  Eigen::Matrix3d gamma;                  ///< of the divergences (fields x fields)
+  std::array<Index, 8> node{};            ///< mesh nodes of the flux fields
+  Eigen::Matrix<Real, 8, 3> area;         ///< g_a (rows: nodes)
+  Eigen::Matrix<Real, 8, 1> lumped_mass;  ///< Σ_b m_ab
+  Eigen::Matrix<Index, 24, 3> flux_dof;   ///< row 3a + k, column field: DOF or −1
+};
 
 /// Residual R = f_int - f_ext and dR/dx of a set of elements. Implementations hold only
 /// immutable data; history variables live in the state vectors or in explicit state arrays.
@@ -55,6 +75,10 @@ public:
   /// Sets the committed history back from history() of a term of the same model; throws
   /// InputError if `values` do not fit.
   virtual void restore_history(const std::vector<double>& /*values*/) {}
+  /// Appends the CellTransport of every mixture cell of the term at `state`, in a fixed order
+  /// (terms without mixture cells append nothing).
+  virtual void transport_cells(const EvalState& /*state*/,
+                               std::vector<CellTransport>& /*out*/) const {}
 };
 
 } // namespace trifem::physics

@@ -222,6 +222,8 @@ SolveStatus NewtonSolver::factor_and_solve(NonlinearProblem& problem, Linearizat
     linear_->analyze_pattern(lin.jacobian);
     analyzed_pattern_ = problem.pattern_id();
   }
+  if (linear_->wants_transport_cells())
+    linear_->set_transport_cells(problem.transport_cells());
   const bool factored = linear_->factorize(lin.jacobian);
   times_.factorization += seconds_since(start);
   if (!factored)

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "trifem/core/types.hpp"
+#include "trifem/linalg/transport_cells.hpp"
 
 #include <string>
 #include <vector>
@@ -63,6 +64,10 @@ public:
   /// the equations, zero on equations that are not displacements: the near-null space of the
   /// displacement block, for algebraic multigrid. Empty when unknown.
   virtual std::vector<Vector> rigid_body_modes() const { return {}; }
+  /// The mixture cells' flux-block data at the current state, over the equations (for the
+  /// preconditioners that ask for them, linalg::LinearSolver::wants_transport_cells). Empty when
+  /// the problem has none or they would not describe the Jacobian.
+  virtual linalg::TransportCells transport_cells() const { return {}; }
   /// Evaluates residual and, if `with_jacobian`, Jacobian and constraint_rhs at the current
   /// state. Returns Inadmissible if the state cannot be evaluated.
   virtual SolveStatus linearize(Linearization& lin, bool with_jacobian) = 0;

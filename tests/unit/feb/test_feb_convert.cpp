@@ -169,6 +169,18 @@ TEST(TomlConvertSolver, FactorizationPrecisionReadsBackAsWritten) {
   fs::remove_all(dir);
 }
 
+TEST(TomlConvertSolver, SchurApproximationReadsBackAsWritten) {
+  io::CaseSpec spec = analysis::read_case_file(kData / "uniaxial_neo_hookean.feb");
+  spec.solver.linear_solver = "krylov";
+  const fs::path dir = fresh_dir("schur_approximation");
+  io::write_case(spec, dir / "case.toml");
+  EXPECT_EQ(analysis::read_case_file(dir / "case.toml").solver.schur_approximation, "selfp");
+  spec.solver.schur_approximation = "drained";
+  io::write_case(spec, dir / "case.toml");
+  EXPECT_EQ(analysis::read_case_file(dir / "case.toml").solver.schur_approximation, "drained");
+  fs::remove_all(dir);
+}
+
 // A refined case is written with its [mesh] refine and reads back to the same refined model.
 TEST(TomlConvertRefined, MeshRefinementReadsBackAsWritten) {
   io::CaseSpec spec = analysis::read_case_file(kData / "uniaxial_neo_hookean.feb");

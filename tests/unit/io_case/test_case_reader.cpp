@@ -581,6 +581,12 @@ const std::vector<BadCase> kBadCases = {
      kBase + "[solver]\nfactorization_precision = \"half\"\n",
      {"solver.factorization_precision = 'half': unknown value (expected one of: single, "
       "double)"}},
+    {"schur_without_krylov",
+     kBase + "[solver]\nlinear_solver = \"mumps\"\nschur_approximation = \"drained\"\n",
+     {"solver.schur_approximation", "applies to linear_solver = \"krylov\"", "mumps"}},
+    {"unknown_schur_approximation",
+     kBase + "[solver]\nlinear_solver = \"krylov\"\nschur_approximation = \"lsc\"\n",
+     {"solver.schur_approximation = 'lsc': unknown value (expected one of: selfp, drained)"}},
     {"unknown_preconditioner",
      kBase + "[solver]\nlinear_solver = \"krylov\"\npreconditioner = \"ilu\"\n",
      {"solver.preconditioner = 'ilu': unknown value (expected one of: lu, amg)"}},

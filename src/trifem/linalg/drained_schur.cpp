@@ -1,0 +1,201 @@
+// SPDX-License-Identifier: MIT
+#include "trifem/linalg/drained_schur.hpp"
+
+#include <Eigen/Dense>
+
+#include <cstdint>
+#include <unordered_map>
+
+namespace trifem::linalg {
+namespace {
+
+using Triplets = std::vector<Eigen::Triplet<Real, Index>>;
+
+enum class Role : char { displacement, flux, potential };
+
+/// Every equation's role and its position within its group.
+struct Groups {
+  std::vector<Role> role;
+  std::vector<Index> position;
+  Index displacements = 0, fluxes = 0, potentials = 0;
+
+  Groups(const BlockSplit& split, Index n) : role(n, Role::displacement), position(n, -1) {
+    place(split.displacement, Role::displacement, displacements);
+    place(split.flux, Role::flux, fluxes);
+    place(split.potential, Role::potential, potentials);
+  }
+
+private:
+  void place(const std::vector<Index>& equations, Role r, Index& count) {
+    for (Index eq : equations) {
+      role[eq] = r;
+      position[eq] = count++;
+    }
+  }
+};
+
+/// The couplings of the potentials with the primal groups, and the primal diagonals.
+struct Blocks {
+  SparseMatrix pu, up, pf, fp, pp; ///< rows × columns: potential, displacement, flux
+  Vector du, df;                   ///< diagonals of the displacement and flux blocks
+};
+
+SparseMatrix from_triplets(Index rows, Index cols, const Triplets& t) {
+  SparseMatrix m(rows, cols);
+  m.setFromTriplets(t.begin(), t.end());
+  return m;
+}
+
+Blocks split_blocks(const SparseMatrix& A, const Groups& g) {
+  Triplets pu, up, pf, fp, pp;
+  Blocks b;
+  b.du = Vector::Zero(g.displacements);
+  b.df = Vector::Zero(g.fluxes);
+  for (Index j = 0; j < A.outerSize(); ++j)
+    for (SparseMatrix::InnerIterator it(A, j); it; ++it) {
+      const Index i = it.row();
+      const Index pi = g.position[i], pj = g.position[j];
+      const Role ri = g.role[i], rj = g.role[j];
+      if (i == j && ri == Role::displacement)
+        b.du[pi] = it.value();
+      else if (i == j && ri == Role::flux)
+        b.df[pi] = it.value();
+      if (ri == Role::potential) {
+        Triplets& t = rj == Role::displacement ? pu : rj == Role::flux ? pf : pp;
+        t.emplace_back(pi, pj, it.value());
+      } else if (rj == Role::potential) {
+        (ri == Role::displacement ? up : fp).emplace_back(pi, pj, it.value());
+      }
+    }
+  b.pu = from_triplets(g.potentials, g.displacements, pu);
+  b.up = from_triplets(g.displacements, g.potentials, up);
+  b.pf = from_triplets(g.potentials, g.fluxes, pf);
+  b.fp = from_triplets(g.fluxes, g.potentials, fp);
+  b.pp = from_triplets(g.potentials, g.potentials, pp);
+  return b;
+}
+
+Vector inverse_or_zero(const Vector& d) {
+  return d.unaryExpr([](Real v) { return v != 0.0 ? 1.0 / v : 0.0; });
+}
+
+/// Ŝ_u: the diagonal approximation of the undrained part, and of the drained part where a
+/// row or a column is a potential of no transport cell.
+SparseMatrix undrained_part(const Blocks& b, const std::vector<char>& transport_potential) {
+  const SparseMatrix up = inverse_or_zero(b.du).asDiagonal() * b.up;
+  const SparseMatrix fp = inverse_or_zero(b.df).asDiagonal() * b.fp;
+  SparseMatrix drained = b.pf * fp;
+  drained.prune(
+      [&](Index i, Index j, Real) { return !(transport_potential[i] && transport_potential[j]); });
+  return SparseMatrix(-b.pp + b.pu * up + drained);
+}
+
+/// The lumped friction of one node and component: a fields × fields block and the flux
+/// equations (group positions) of its fields.
+struct Site {
+  Eigen::Matrix3d friction = Eigen::Matrix3d::Zero();
+  std::array<Index, 3> flux{-1, -1, -1};
+};
+
+/// D⁻¹ (fluxes × fluxes): each site's friction block inverted over its free fields.
+SparseMatrix lumped_friction_inverse(const TransportCells& cells, const Groups& g) {
+  std::unordered_map<std::int64_t, Site> sites;
+  for (const TransportCell& c : cells)
+    for (int a = 0; a < 8; ++a)
+      for (int k = 0; k < 3; ++k) {
+        Site& s = sites[3 * static_cast<std::int64_t>(c.node[a]) + k];
+        s.friction += c.lumped_mass[a] * c.friction;
+        for (int f = 0; f < 3; ++f)
+          if (const Index eq = c.flux_equation(3 * a + k, f); eq >= 0)
+            s.flux[f] = g.position[eq];
+      }
+  Triplets t;
+  for (const auto& [key, s] : sites) {
+    std::array<int, 3> free{};
+    int n = 0;
+    for (int f = 0; f < 3; ++f)
+      if (s.flux[f] >= 0)
+        free[n++] = f;
+    Eigen::MatrixXd block(n, n);
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j)
+        block(i, j) = s.friction(free[i], free[j]);
+    const Eigen::FullPivLU<Eigen::MatrixXd> lu(block);
+    if (n == 0 || !lu.isInvertible())
+      continue;
+    const Eigen::MatrixXd inverse = lu.inverse();
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j)
+        t.emplace_back(s.flux[free[i]], s.flux[free[j]], inverse(i, j));
+  }
+  return from_triplets(g.fluxes, g.fluxes, t);
+}
+
+/// G (3 per cell × fluxes): the cells' divergences of each flux field.
+SparseMatrix divergences(const TransportCells& cells, const Groups& g) {
+  Triplets t;
+  for (std::size_t c = 0; c < cells.size(); ++c)
+    for (int a = 0; a < 8; ++a)
+      for (int k = 0; k < 3; ++k)
+        for (int f = 0; f < 3; ++f)
+          if (const Index eq = cells[c].flux_equation(3 * a + k, f); eq >= 0)
+            t.emplace_back(static_cast<Index>(3 * c + f), g.position[eq],
+                           cells[c].divergence(3 * a + k, f));
+  return from_triplets(static_cast<Index>(3 * cells.size()), g.fluxes, t);
+}
+
+/// T (potentials × 3 per cell) and Γ (3 per cell, block diagonal).
+void cell_maps(const TransportCells& cells, const Groups& g, SparseMatrix& T, SparseMatrix& Gamma,
+               std::vector<char>& transport_potential) {
+  Triplets tt, tg;
+  transport_potential.assign(g.potentials, 0);
+  for (std::size_t c = 0; c < cells.size(); ++c) {
+    const Index z = static_cast<Index>(3 * c);
+    for (int r = 0; r < 2; ++r)
+      if (const Index eq = cells[c].potential[r]; eq >= 0 && g.role[eq] == Role::potential) {
+        transport_potential[g.position[eq]] = 1;
+        for (int f = 0; f < 3; ++f)
+          tt.emplace_back(g.position[eq], z + f, cells[c].coupling(r, f));
+      }
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j)
+        tg.emplace_back(z + i, z + j, cells[c].gamma(i, j));
+  }
+  const Index nz = static_cast<Index>(3 * cells.size());
+  T = from_triplets(g.potentials, nz, tt);
+  Gamma = from_triplets(nz, nz, tg);
+}
+
+void append(Triplets& t, const SparseMatrix& m, Index row, Index col, Real factor) {
+  for (Index j = 0; j < m.outerSize(); ++j)
+    for (SparseMatrix::InnerIterator it(m, j); it; ++it)
+      t.emplace_back(row + it.row(), col + j, factor * it.value());
+}
+
+} // namespace
+
+SparseMatrix drained_schur_system(const SparseMatrix& A, const BlockSplit& split,
+                                  const TransportCells& cells) {
+  const Groups g(split, static_cast<Index>(A.rows()));
+  const Blocks b = split_blocks(A, g);
+  SparseMatrix T, Gamma;
+  std::vector<char> transport_potential;
+  cell_maps(cells, g, T, Gamma, transport_potential);
+  const SparseMatrix G = divergences(cells, g);
+  const SparseMatrix DinvGt = lumped_friction_inverse(cells, g) * SparseMatrix(G.transpose());
+  const SparseMatrix L = G * DinvGt;
+  const SparseMatrix LTt = L * SparseMatrix(T.transpose());
+  const SparseMatrix LGamma = L * Gamma;
+
+  const Index P = g.potentials, Z = static_cast<Index>(3 * cells.size());
+  Triplets t;
+  append(t, undrained_part(b, transport_potential), 0, 0, 1.0);
+  append(t, T, 0, P, 1.0);
+  append(t, LTt, P, 0, -1.0);
+  append(t, LGamma, P, P, 1.0);
+  for (Index i = 0; i < Z; ++i)
+    t.emplace_back(P + i, P + i, 1.0);
+  return from_triplets(P + Z, P + Z, t);
+}
+
+} // namespace trifem::linalg

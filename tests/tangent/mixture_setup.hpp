@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
-// The distorted, deformed hex8 mixture element of the tangent tests: a non-equilibrium state with
-// non-zero fluxes, a non-Donnan ion content, Phi = 0.93 and a prestress.
+// The distorted hex8 cell of the tangent tests, and the deformed mixture element on it: a
+// non-equilibrium state with non-zero fluxes, a non-Donnan ion content, Phi = 0.93 and a
+// prestress.
 #pragma once
 
 #include "trifem/material/registry.hpp"
@@ -10,6 +11,19 @@
 #include <string>
 
 namespace trifem::test {
+
+/// The unit cube's corners moved by up to ±0.075 each, from std::rand seeded with `seed`
+/// (later std::rand draws continue that sequence).
+inline fe::HexCoords distorted_unit_cube(unsigned seed) {
+  std::srand(seed);
+  fe::HexCoords X;
+  const Real r[8][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
+                        {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
+  for (int a = 0; a < 8; ++a)
+    for (int k = 0; k < 3; ++k)
+      X(a, k) = r[a][k] + 0.15 * (std::rand() / Real(RAND_MAX) - 0.5);
+  return X;
+}
 
 /// The inputs of mixture_hex8 (step.chem points to chem: set it again after a copy).
 struct Setup {
@@ -26,14 +40,7 @@ struct Setup {
 inline Setup make_setup(bool ions, const std::string& solid,
                         const material::ParameterValues& laws = {}) {
   Setup s;
-  std::srand(ions ? 3 : 4);
-  fe::HexCoords X;
-  const Real r[8][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
-                        {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
-  for (int a = 0; a < 8; ++a)
-    for (int k = 0; k < 3; ++k)
-      X(a, k) = r[a][k] + 0.15 * (std::rand() / Real(RAND_MAX) - 0.5);
-  s.geo = *fe::hex8_geometry(X);
+  s.geo = *fe::hex8_geometry(distorted_unit_cube(ions ? 3 : 4));
   s.x.u = 0.08 * fe::HexCoords::Random();
   s.x.w = 2e-5 * fe::HexCoords::Random();
   s.x.jp = 3e-9 * fe::HexCoords::Random();

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Finite-difference checks of element tangents at random deformed states on distorted cells.
+#include "mixture_setup.hpp"
 #include "trifem/material/registry.hpp"
 #include "trifem/mesh/box.hpp"
 #include "trifem/physics/mean_dilatation_kernel.hpp"
@@ -9,19 +10,9 @@
 #include <gtest/gtest.h>
 
 using namespace trifem;
+using trifem::test::distorted_unit_cube;
 
 namespace {
-
-fe::HexCoords distorted_unit_cube(unsigned seed) {
-  std::srand(seed);
-  fe::HexCoords X;
-  const Real r[8][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
-                        {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
-  for (int a = 0; a < 8; ++a)
-    for (int k = 0; k < 3; ++k)
-      X(a, k) = r[a][k] + 0.15 * (std::rand() / Real(RAND_MAX) - 0.5);
-  return X;
-}
 
 /// Central-difference Jacobian of f(u) (24 -> 24), step relative to the displacement scale.
 template <class F>

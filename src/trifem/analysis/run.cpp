@@ -159,10 +159,9 @@ std::unique_ptr<model::Model> build_model_for(const io::CaseSpec& spec) {
 /// the case file.
 std::unique_ptr<linalg::LinearSolver> linear_solver_for(const io::CaseSpec& spec) {
   try {
-    return linalg::make_linear_solver(spec.solver.linear_solver, spec.solver.petsc_options,
-                                      spec.solver.reuse_factorization, spec.solver.preconditioner,
-                                      factor_precision(spec.solver),
-                                      spec.solver.schur_approximation);
+    return linalg::make_linear_solver(
+        spec.solver.linear_solver, spec.solver.petsc_options, spec.solver.reuse_factorization,
+        spec.solver.preconditioner, factor_precision(spec.solver), spec.solver.schur_approximation);
   } catch (const InputError& e) {
     throw InputError(fmt::format("{}: {}", spec.file.string(), e.what()));
   }

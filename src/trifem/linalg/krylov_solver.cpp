@@ -561,7 +561,7 @@ private:
   TransportCells cells_; ///< the mixture cells at the state of the next matrix
   bool drained_ = false; ///< the Schur block applies the drained approximation
   std::unique_ptr<petsc::SeqAijMatrix> schur_matrix_; ///< its augmented system
-  std::vector<Index> schur_pattern_; ///< its pattern (pattern_of)
+  std::vector<Index> schur_pattern_;                  ///< its pattern (pattern_of)
   Vec schur_x_ = nullptr, schur_b_ = nullptr;
   KSP schur_ksp_ = nullptr;
   bool ready_ = false;

@@ -52,9 +52,11 @@ Real get_unknown(const physics::MixtureUnknowns& x, const physics::MixtureLayout
   return (*fields[i / 24])((i % 24) / 3, i % 3);
 }
 
-void check_tangent(bool ions, const std::string& solid,
-                   const material::ParameterValues& laws = {}) {
+void check_tangent(bool ions, const std::string& solid, const material::ParameterValues& laws = {},
+                   bool lumped = false) {
   Setup s = make_setup(ions, solid, laws);
+  s.step.chem = &s.chem;
+  s.step.lumped_flux_mass = lumped;
   const physics::MixtureLayout L{ions};
   LocalVector r;
   LocalMatrix K;
@@ -140,4 +142,15 @@ TEST(MixtureHex8, TriphasicTangentWithAllStrainDependentLaws) {
   material::ParameterValues laws = kHolmesMow;
   laws.insert(kMackieMeares.begin(), kMackieMeares.end());
   check_tangent(true, "neo-hookean", laws);
+}
+
+// [analysis] flux_mass = "lumped": the friction terms with diag(∫ N_a dv), and the shape
+// derivatives of their mass products with the nodal fluxes
+TEST(MixtureHex8, TriphasicTangentWithLumpedFluxMass) {
+  material::ParameterValues laws = kHolmesMow;
+  laws.insert(kMackieMeares.begin(), kMackieMeares.end());
+  check_tangent(true, "neo-hookean", laws, true);
+}
+TEST(MixtureHex8, BiphasicTangentWithLumpedFluxMass) {
+  check_tangent(false, "saint-venant-kirchhoff", kHolmesMow, true);
 }

@@ -39,9 +39,11 @@ Real top_displacement(const test::MixtureModel& m) {
 
 const exact::ConfinedLayer kLayer{1.0, 0.3, 1.07e-3};
 
-/// Relative error of u_top at t = 400 s for n cells and step dt.
-Real creep_error(int n, Real dt) {
+/// Relative error of u_top at t = 400 s for n cells and step dt (`lumped`: [analysis]
+/// flux_mass = "lumped").
+Real creep_error(int n, Real dt, bool lumped = false) {
   test::MixtureModel m = creep_column(n, test::paper_tissue(false));
+  m.mixture->set_lumped_flux_mass(lumped);
   const solver::RunReport run = m.run(400.0, dt, dt, {});
   EXPECT_TRUE(run.success) << run.failure;
   const Real exact = exact::creep_surface_displacement(kLayer, kSigma0, 400.0);
@@ -58,6 +60,19 @@ TEST(ConfinedCreep, BiphasicMatchesTerzaghiAndConvergesUnderRefinement) {
   const Real fine = creep_error(40, 1.25);
   std::cout << "relative error of u_top(400 s): " << coarse << ", " << medium << ", " << fine
             << "\n";
+  EXPECT_LT(fine, 5e-3);
+  EXPECT_LT(medium, coarse);
+  EXPECT_LT(fine, medium);
+}
+
+/// The same with the friction terms' mass lumped (docs/theory/solvers.md §4): the same accuracy
+/// and convergence.
+TEST(ConfinedCreep, BiphasicWithLumpedFluxMassMatchesTerzaghiAndConvergesUnderRefinement) {
+  const Real coarse = creep_error(10, 5.0, true);
+  const Real medium = creep_error(20, 2.5, true);
+  const Real fine = creep_error(40, 1.25, true);
+  std::cout << "relative error of u_top(400 s), lumped flux mass: " << coarse << ", " << medium
+            << ", " << fine << "\n";
   EXPECT_LT(fine, 5e-3);
   EXPECT_LT(medium, coarse);
   EXPECT_LT(fine, medium);

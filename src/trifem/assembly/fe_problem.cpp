@@ -64,21 +64,24 @@ void FeProblem::to_equations(const physics::CellTransport& cell, linalg::Transpo
   for (int i = 0; i < 2; ++i)
     out.potential[i] = equation(cell.potential[i]);
   out.divergence.setZero();
+  out.flux_rate.setZero();
   for (int a = 0; a < 8; ++a)
     for (int field = 0; field < cell.flux_dof.cols(); ++field) {
       const Vec3 g = cell.area.row(a).transpose();
       for (int k = 0; k < 3; ++k) {
         const Index dof = cell.flux_dof(3 * a + k, field);
         out.flux_equation(3 * a + k, field) = equation(dof);
-        // in a rotated frame (global = Q local) the local component k enters g · Q e_k
-        const int frame = dof >= 0 ? frames_.frame_of(dof) : -1;
-        if (frame < 0) {
-          out.divergence(3 * a + k, field) = g[k];
-          continue;
+        // in a rotated frame (global = Q local) the local component k enters v · Q e_k, for
+        // the area vector as for the rates of the equations of node a
+        Vec3 axis = Vec3::Unit(k);
+        if (const int frame = dof >= 0 ? frames_.frame_of(dof) : -1; frame >= 0) {
+          const dofs::NodalFrame& f = frames_.frames()[frame];
+          axis = f.Q.col(std::find(f.dofs.begin(), f.dofs.end(), dof) - f.dofs.begin());
         }
-        const dofs::NodalFrame& f = frames_.frames()[frame];
-        const auto local = std::find(f.dofs.begin(), f.dofs.end(), dof) - f.dofs.begin();
-        out.divergence(3 * a + k, field) = g.dot(f.Q.col(local));
+        out.divergence(3 * a + k, field) = g.dot(axis);
+        for (int other = 0; other < 3; ++other)
+          out.flux_rate(3 * a + k, 3 * field + other) =
+              cell.flux_rate.block<3, 1>(3 * a, 3 * field + other).dot(axis);
       }
     }
   out.coupling = cell.coupling;

@@ -159,7 +159,8 @@ void require_mixture(const Table& t, const CaseSpec& spec) {
 
 /// The [analysis] keys of mixture models (`type`, read first, applies to every model).
 void check_analysis_keys(const Table& t, const CaseSpec& spec) {
-  static const std::vector<std::string_view> mixture_keys = {"initial_state", "fixed_charge_curve"};
+  static const std::vector<std::string_view> mixture_keys = {"initial_state", "fixed_charge_curve",
+                                                             "flux_mass"};
   t.allow(mixture_keys, {"type"});
   const auto [key, node] = t.first_key([](std::string_view k) { return k != "type"; });
   if (node && !model_fields(spec).fluxes)
@@ -258,6 +259,9 @@ void read_analysis(const Table& root, CaseSpec& spec) {
   AnalysisSpec& a = spec.analysis;
   a.initial_state =
       t->choice("initial_state", states, std::optional(a.initial_state), "initial state");
+  static const Options<FluxMass> masses = {{"consistent", FluxMass::Consistent},
+                                           {"lumped", FluxMass::Lumped}};
+  a.flux_mass = t->choice("flux_mass", masses, std::optional(a.flux_mass), "flux mass");
   a.fixed_charge_curve = t->name("fixed_charge_curve", false);
   if (a.fixed_charge_curve.empty())
     return;

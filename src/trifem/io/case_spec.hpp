@@ -220,9 +220,16 @@ enum class AnalysisType {
 };
 
 /// [analysis]: the analysis type (any model) and the options of mixture models.
+/// The mass of the mixture's friction terms ([analysis] flux_mass).
+enum class FluxMass {
+  Consistent, ///< m_ab = ∫ N_a N_b dv (default)
+  Lumped      ///< diag(∫ N_a dv): the drained preconditioner's flux block is then exact
+};
+
 struct AnalysisSpec {
   AnalysisType type = AnalysisType::QuasiStatic;
   InitialStateKind initial_state = InitialStateKind::Donnan;
+  FluxMass flux_mass = FluxMass::Consistent;
   std::string fixed_charge_curve; ///< curve scaling every fixed charge in time (free swelling)
 };
 

@@ -202,11 +202,14 @@ void write_rigid_bodies(const CaseSpec& spec, TomlText& t) {
 /// check_supported refuses the others).
 void write_analysis(const CaseSpec& spec, TomlText& t) {
   const AnalysisSpec& a = spec.analysis;
-  if (a.initial_state == InitialStateKind::Donnan && a.fixed_charge_curve.empty())
+  if (a.initial_state == InitialStateKind::Donnan && a.fixed_charge_curve.empty() &&
+      a.flux_mass == FluxMass::Consistent)
     return;
   t.header("[analysis]");
   t.string("initial_state",
            a.initial_state == InitialStateKind::Donnan ? "donnan" : "donnan-prestressed");
+  if (a.flux_mass == FluxMass::Lumped)
+    t.string("flux_mass", "lumped");
   t.optional_string("fixed_charge_curve", a.fixed_charge_curve);
 }
 

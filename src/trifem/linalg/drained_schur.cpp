@@ -3,6 +3,8 @@
 
 #include <Eigen/Dense>
 
+#include <algorithm>
+
 #include <cstdint>
 #include <unordered_map>
 
@@ -90,6 +92,33 @@ SparseMatrix undrained_part(const Blocks& b, const std::vector<char>& transport_
   return SparseMatrix(-b.pp + b.pu * up + drained);
 }
 
+/// The fixed-stress term, filtered of the checkerboards: Σ_nodes β̄_a / (8 n_a) over the pairs
+/// of the n_a cells around node a, β̄_a the mean over them of the pressure's diagonal β_c in the
+/// undrained part (≈ V_c / H_c, H_c the constrained modulus). A smooth pressure sees β_c; a
+/// checkerboard, which the divergences do not see either, sums to zero at the inner nodes.
+SparseMatrix fixed_stress_part(const SparseMatrix& undrained, const TransportCells& cells,
+                               const Groups& g) {
+  std::vector<std::pair<Index, Index>> node_pressure; // (mesh node, pressure position)
+  for (const TransportCell& c : cells)
+    if (const Index eq = c.potential[0]; eq >= 0 && g.role[eq] == Role::potential)
+      for (Index node : c.node)
+        node_pressure.emplace_back(node, g.position[eq]);
+  std::sort(node_pressure.begin(), node_pressure.end());
+  Triplets t;
+  for (auto first = node_pressure.begin(); first != node_pressure.end();) {
+    auto last = first;
+    Real beta = 0.0;
+    for (; last != node_pressure.end() && last->first == first->first; ++last)
+      beta += undrained.coeff(last->second, last->second);
+    const Real n = static_cast<Real>(last - first);
+    for (auto i = first; i != last; ++i)
+      for (auto j = first; j != last; ++j)
+        t.emplace_back(i->second, j->second, beta / (8.0 * n * n));
+    first = last;
+  }
+  return from_triplets(g.potentials, g.potentials, t);
+}
+
 /// The lumped friction of one node and component: a fields × fields block and the flux
 /// equations (group positions) of its fields.
 struct Site {
@@ -144,10 +173,27 @@ SparseMatrix divergences(const TransportCells& cells, const Groups& g) {
   return from_triplets(static_cast<Index>(3 * cells.size()), g.fluxes, t);
 }
 
-/// T (potentials × 3 per cell) and Γ (3 per cell, block diagonal).
-void cell_maps(const TransportCells& cells, const Groups& g, SparseMatrix& T, SparseMatrix& Gamma,
+/// R (fluxes × 3 per cell): the flux equations' derivatives by the cells' divergences,
+/// Gᵀ Γ + the rates proportional to the fluxes.
+SparseMatrix divergence_rates(const TransportCells& cells, const Groups& g) {
+  Triplets t;
+  for (std::size_t c = 0; c < cells.size(); ++c)
+    for (int a = 0; a < 8; ++a)
+      for (int k = 0; k < 3; ++k)
+        for (int f = 0; f < 3; ++f)
+          if (const Index eq = cells[c].flux_equation(3 * a + k, f); eq >= 0)
+            for (int h = 0; h < 3; ++h)
+              if (const Real rate = cells[c].divergence(3 * a + k, f) * cells[c].gamma(f, h) +
+                                    cells[c].flux_rate(3 * a + k, 3 * f + h);
+                  rate != 0.0)
+                t.emplace_back(g.position[eq], static_cast<Index>(3 * c + h), rate);
+  return from_triplets(g.fluxes, static_cast<Index>(3 * cells.size()), t);
+}
+
+/// T (potentials × 3 per cell).
+void cell_maps(const TransportCells& cells, const Groups& g, SparseMatrix& T,
                std::vector<char>& transport_potential) {
-  Triplets tt, tg;
+  Triplets tt;
   transport_potential.assign(g.potentials, 0);
   for (std::size_t c = 0; c < cells.size(); ++c) {
     const Index z = static_cast<Index>(3 * c);
@@ -157,13 +203,8 @@ void cell_maps(const TransportCells& cells, const Groups& g, SparseMatrix& T, Sp
         for (int f = 0; f < 3; ++f)
           tt.emplace_back(g.position[eq], z + f, cells[c].coupling(r, f));
       }
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j)
-        tg.emplace_back(z + i, z + j, cells[c].gamma(i, j));
   }
-  const Index nz = static_cast<Index>(3 * cells.size());
-  T = from_triplets(g.potentials, nz, tt);
-  Gamma = from_triplets(nz, nz, tg);
+  T = from_triplets(g.potentials, static_cast<Index>(3 * cells.size()), tt);
 }
 
 void append(Triplets& t, const SparseMatrix& m, Index row, Index col, Real factor) {
@@ -172,30 +213,95 @@ void append(Triplets& t, const SparseMatrix& m, Index row, Index col, Real facto
       t.emplace_back(row + it.row(), col + j, factor * it.value());
 }
 
+/// The products the augmented system and the transport solve share.
+struct Parts {
+  const TransportCells& cells;
+  Groups g;
+  Blocks b;
+  SparseMatrix T, G, R, Dinv;
+  std::vector<char> transport_potential;
+
+  Parts(const SparseMatrix& A, const BlockSplit& split, const TransportCells& transport_cells)
+      : cells(transport_cells), g(split, static_cast<Index>(A.rows())), b(split_blocks(A, g)) {
+    cell_maps(cells, g, T, transport_potential);
+    G = divergences(cells, g);
+    R = divergence_rates(cells, g);
+    Dinv = lumped_friction_inverse(cells, g);
+  }
+
+  SparseMatrix system(Real fixed_stress) const {
+    const SparseMatrix GDinv = G * Dinv;
+    const SparseMatrix LTt = GDinv * SparseMatrix(G.transpose()) * SparseMatrix(T.transpose());
+    const SparseMatrix LR = GDinv * R;
+    const Index P = g.potentials, Z = static_cast<Index>(G.rows());
+    Triplets t;
+    const SparseMatrix undrained = undrained_part(b, transport_potential);
+    append(t, undrained, 0, 0, 1.0);
+    if (fixed_stress != 0.0)
+      append(t, fixed_stress_part(undrained, cells, g), 0, 0, fixed_stress);
+    append(t, T, 0, P, 1.0);
+    append(t, LTt, P, 0, -1.0);
+    append(t, LR, P, P, 1.0);
+    for (Index i = 0; i < Z; ++i)
+      t.emplace_back(P + i, P + i, 1.0);
+    return from_triplets(P + Z, P + Z, t);
+  }
+
+  /// D⁻¹, with 1 / diag(A_ff) on the fluxes of no cell (or of a singular friction block).
+  SparseMatrix flux_inverse() const {
+    Vector covered = Vector::Zero(g.fluxes);
+    for (Index j = 0; j < Dinv.outerSize(); ++j)
+      for (SparseMatrix::InnerIterator it(Dinv, j); it; ++it)
+        covered[it.row()] = 1.0;
+    Triplets t;
+    const Vector diagonal = inverse_or_zero(b.df);
+    for (Index i = 0; i < g.fluxes; ++i)
+      if (covered[i] == 0.0)
+        t.emplace_back(i, i, diagonal[i]);
+    return SparseMatrix(Dinv + from_triplets(g.fluxes, g.fluxes, t));
+  }
+
+  /// K_πf on the potentials of no transport cell (rows negated as in the solver), zero on the
+  /// others.
+  SparseMatrix multiplier_flux_coupling() const {
+    SparseMatrix m = -b.pf;
+    m.prune([&](Index i, Index, Real) { return !transport_potential[i]; });
+    return m;
+  }
+};
+
 } // namespace
 
 SparseMatrix drained_schur_system(const SparseMatrix& A, const BlockSplit& split,
-                                  const TransportCells& cells) {
-  const Groups g(split, static_cast<Index>(A.rows()));
-  const Blocks b = split_blocks(A, g);
-  SparseMatrix T, Gamma;
-  std::vector<char> transport_potential;
-  cell_maps(cells, g, T, Gamma, transport_potential);
-  const SparseMatrix G = divergences(cells, g);
-  const SparseMatrix DinvGt = lumped_friction_inverse(cells, g) * SparseMatrix(G.transpose());
-  const SparseMatrix L = G * DinvGt;
-  const SparseMatrix LTt = L * SparseMatrix(T.transpose());
-  const SparseMatrix LGamma = L * Gamma;
+                                  const TransportCells& cells, Real fixed_stress) {
+  return Parts(A, split, cells).system(fixed_stress);
+}
 
-  const Index P = g.potentials, Z = static_cast<Index>(3 * cells.size());
-  Triplets t;
-  append(t, undrained_part(b, transport_potential), 0, 0, 1.0);
-  append(t, T, 0, P, 1.0);
-  append(t, LTt, P, 0, -1.0);
-  append(t, LGamma, P, P, 1.0);
-  for (Index i = 0; i < Z; ++i)
-    t.emplace_back(P + i, P + i, 1.0);
-  return from_triplets(P + Z, P + Z, t);
+DrainedTransport::DrainedTransport(const SparseMatrix& A, const BlockSplit& split,
+                                   const TransportCells& cells, Real fixed_stress) {
+  const Parts parts(A, split, cells);
+  system_ = parts.system(fixed_stress);
+  flux_inverse_ = parts.flux_inverse();
+  divergence_ = parts.G;
+  divergence_rate_ = parts.R;
+  flux_potential_ = parts.b.fp;
+  multiplier_flux_ = parts.multiplier_flux_coupling();
+}
+
+Vector DrainedTransport::right_hand_side(const Vector& r_flux, const Vector& r_potential) const {
+  const Vector lumped = flux_inverse_ * r_flux;
+  Vector rhs(system_.rows());
+  const Index P = r_potential.size();
+  rhs.head(P) = r_potential - multiplier_flux_ * lumped;
+  rhs.tail(rhs.size() - P) = -(divergence_ * lumped);
+  return rhs;
+}
+
+Vector DrainedTransport::fluxes(const Vector& r_flux, const Vector& solution) const {
+  const Index P = flux_potential_.cols();
+  const Vector b = r_flux + divergence_rate_ * solution.tail(solution.size() - P) -
+                   flux_potential_ * solution.head(P);
+  return flux_inverse_ * b;
 }
 
 } // namespace trifem::linalg

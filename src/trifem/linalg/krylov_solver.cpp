@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <numeric>
 
 namespace trifem::linalg {
@@ -283,7 +284,10 @@ private:
           "PETSc KSP tolerances");
     PC pc = nullptr;
     check(KSPGetPC(ksp_, &pc), "PETSc PC");
-    if (blocks) {
+    transport_split_ = wants_transport_cells() && !split_.displacement.empty() && !has_contact();
+    if (transport_split_) {
+      split_displacement_from_transport(pc);
+    } else if (blocks) {
       check(PCSetType(pc, PCFIELDSPLIT), "PETSc fieldsplit");
       primal_ = split_.primal();
       IS primal = make_index_set(primal_), potential = make_index_set(split_.potential);
@@ -306,6 +310,26 @@ private:
     check(KSPSetFromOptions(ksp_), "PETSc options");
   }
 
+  /// The drained approximation's fieldsplit: the displacement, then the transport block
+  /// (fluxes and potentials) through its Schur complement, which the shell of
+  /// use_drained_schur approximates (no product is formed for it: A11 is its matrix).
+  void split_displacement_from_transport(PC pc) {
+    check(PCSetType(pc, PCFIELDSPLIT), "PETSc fieldsplit");
+    transport_.clear();
+    std::merge(split_.flux.begin(), split_.flux.end(), split_.potential.begin(),
+               split_.potential.end(), std::back_inserter(transport_));
+    transport_flux_ = positions_in(split_.flux, transport_);
+    transport_potential_ = positions_in(split_.potential, transport_);
+    IS displacement = make_index_set(split_.displacement), transport = make_index_set(transport_);
+    check(PCFieldSplitSetIS(pc, "displacement", displacement), "PETSc fieldsplit");
+    check(PCFieldSplitSetIS(pc, "transport", transport), "PETSc fieldsplit");
+    ISDestroy(&displacement);
+    ISDestroy(&transport);
+    check(PCFieldSplitSetType(pc, PC_COMPOSITE_SCHUR), "PETSc fieldsplit");
+    check(PCFieldSplitSetSchurFactType(pc, PC_FIELDSPLIT_SCHUR_FACT_FULL), "PETSc fieldsplit");
+    check(PCFieldSplitSetSchurPre(pc, PC_FIELDSPLIT_SCHUR_PRE_A11, nullptr), "PETSc fieldsplit");
+  }
+
   /// Defaults of the solvers inside the fieldsplit (they exist after its first set-up), then
   /// the user's options over them.
   void configure_sub_solvers(PC pc) {
@@ -315,6 +339,10 @@ private:
     const std::vector<KSP> solvers = sub_solvers(pc);
     if (solvers.size() != 2)
       return;
+    if (transport_split_) {
+      configure_drained_solvers(solvers[0], solvers[1]);
+      return;
+    }
     PC primal = apply_once(solvers[0], PCLU);
     if (amg() && !split_.flux.empty())
       check(PCSetType(primal, PCFIELDSPLIT), "PETSc fieldsplit");
@@ -323,32 +351,100 @@ private:
     check(KSPSetFromOptions(solvers[0]), "PETSc options");
     if (has_type(primal, PCFIELDSPLIT))
       split_primal(solvers[0], primal);
-    drained_ = wants_transport_cells() && !cells_.empty();
-    if (wants_transport_cells())
-      log::debug(
-          drained_ ? fmt::format("  Schur approximation: drained, {} mixture cells", cells_.size())
-                   : std::string("  Schur approximation: selfp (no mixture cells given)"));
-    if (drained_)
-      use_drained_schur(solvers[1]);
-    else
+    if (wants_transport_cells()) { // with contact multipliers: the potentials' Schur block
+      use_drained_schur(solvers[1], &KrylovSolver::apply_drained_potentials);
+      drained_ = true;
+    } else {
       apply_once(solvers[1], PCLU);
+    }
     check(KSPSetFromOptions(solvers[1]), "PETSc options");
   }
 
-  /// The Schur block's solver applies the drained Schur approximation (a shell around the
-  /// factorization of the augmented system, factorize_drained_schur).
-  void use_drained_schur(KSP ksp) {
+  /// The model has contact multipliers (active or not; a field the model leaves unnamed, as it
+  /// does them, counts): the displacement block alone may then hold a body only the contact
+  /// supports, and the drained transport block does not hold the multipliers.
+  bool has_contact() const {
+    return std::any_of(field_names_.begin(), field_names_.end(), [](const std::string& field) {
+      return field.empty() || field.rfind("contact_multipliers", 0) == 0;
+    });
+  }
+
+  /// The displacement block: multigrid ("amg") or MUMPS LU; the transport block: the drained
+  /// approximation.
+  void configure_drained_solvers(KSP displacement, KSP transport) {
+    if (amg())
+      apply_multigrid(displacement, modes_over(split_.displacement));
+    else
+      apply_once(displacement, PCLU);
+    check(KSPSetFromOptions(displacement), "PETSc options");
+    use_drained_schur(transport, &KrylovSolver::apply_drained_transport);
+    check(KSPSetFromOptions(transport), "PETSc options");
+    drained_ = true;
+  }
+
+  using ShellApply = PetscErrorCode (*)(PC, Vec, Vec);
+
+  /// The solver `ksp` (of the transport block, or of the potentials' Schur complement)
+  /// applies the drained approximation: a shell around the factorization of the augmented
+  /// system (factorize_drained_schur).
+  void use_drained_schur(KSP ksp, ShellApply apply) {
     PC pc = apply_once(ksp, PCSHELL);
     check(PCShellSetContext(pc, this), "PETSc shell preconditioner");
-    check(PCShellSetApply(pc, &KrylovSolver::apply_drained_schur), "PETSc shell preconditioner");
-    check(PCShellSetName(pc, "drained Schur approximation (augmented system, MUMPS LU)"),
+    check(PCShellSetApply(pc, apply), "PETSc shell preconditioner");
+    check(PCShellSetName(pc, "drained approximation (augmented system, MUMPS LU)"),
           "PETSc shell preconditioner");
+  }
+
+  /// x → the augmented system's solution for the right-hand side `rhs`.
+  PetscErrorCode solve_augmented(const Vector& rhs, Vector& solution) {
+    PetscScalar* to = nullptr;
+    PetscCall(VecGetArray(schur_b_, &to));
+    std::copy(rhs.data(), rhs.data() + rhs.size(), to);
+    PetscCall(VecRestoreArray(schur_b_, &to));
+    PetscCall(KSPSolve(schur_ksp_, schur_b_, schur_x_));
+    solution.resize(rhs.size());
+    const PetscScalar* from = nullptr;
+    PetscCall(VecGetArrayRead(schur_x_, &from));
+    std::copy(from, from + solution.size(), solution.data());
+    PetscCall(VecRestoreArrayRead(schur_x_, &from));
+    return 0;
+  }
+
+  /// y = Ŝ⁻¹ x for the potentials' Schur block (models with contact multipliers): the
+  /// augmented system solved with right-hand side (x, 0), its potentials.
+  static PetscErrorCode apply_drained_potentials(PC pc, Vec x, Vec y) {
+    void* context = nullptr;
+    PetscCall(PCShellGetContext(pc, &context));
+    auto* self = static_cast<KrylovSolver*>(context);
+    PetscInt potentials = 0;
+    PetscCall(VecGetLocalSize(x, &potentials));
+    Vector rhs = Vector::Zero(self->transport_solve_->system().rows());
+    const PetscScalar* from = nullptr;
+    PetscCall(VecGetArrayRead(x, &from));
+    std::copy(from, from + potentials, rhs.data());
+    PetscCall(VecRestoreArrayRead(x, &from));
+    Vector solution;
+    PetscCall(self->solve_augmented(rhs, solution));
+    PetscScalar* to = nullptr;
+    PetscCall(VecGetArray(y, &to));
+    std::copy(solution.data(), solution.data() + potentials, to);
+    PetscCall(VecRestoreArray(y, &to));
+    return 0;
   }
 
   /// Builds the augmented system of drained_schur.hpp for the matrix `A` and the cells of its
   /// state, and factorizes it (the symbolic analysis is kept while its pattern is unchanged).
   void factorize_drained_schur(const SparseMatrix& A) {
-    const SparseMatrix system = drained_schur_system(A, split_, cells_);
+    log::debug(cells_.empty()
+                   ? std::string("  drained approximation: no mixture cells given (diagonal "
+                                 "flux block)")
+                   : fmt::format("  drained approximation: {} mixture cells", cells_.size()));
+    PetscReal fixed_stress = 1.0; // -drained_schur_fixed_stress: the term's weight
+    check(
+        PetscOptionsGetReal(nullptr, kDrainedSchurPrefix, "-fixed_stress", &fixed_stress, nullptr),
+        "PETSc options");
+    transport_solve_ = std::make_unique<DrainedTransport>(A, split_, cells_, fixed_stress);
+    const SparseMatrix& system = transport_solve_->system();
     const std::vector<Index> pattern = pattern_of(system);
     if (schur_matrix_ && pattern == schur_pattern_) {
       schur_matrix_->update(system);
@@ -374,27 +470,35 @@ private:
     return pattern;
   }
 
-  /// y = Ŝ⁻¹ x: the augmented system solved with right-hand side (x, 0), its potentials.
-  static PetscErrorCode apply_drained_schur(PC pc, Vec x, Vec y) {
+  /// y = the drained approximation of the transport block's inverse applied to x
+  /// (DrainedTransport: the augmented system's solve between two sparse products).
+  static PetscErrorCode apply_drained_transport(PC pc, Vec x, Vec y) {
     void* context = nullptr;
     PetscCall(PCShellGetContext(pc, &context));
     auto* self = static_cast<KrylovSolver*>(context);
-    PetscInt potentials = 0;
-    PetscCall(VecGetLocalSize(x, &potentials));
-    PetscCall(VecSet(self->schur_b_, 0.0));
+    const std::vector<Index>& at_flux = self->transport_flux_;
+    const std::vector<Index>& at_potential = self->transport_potential_;
+    Vector r_flux(static_cast<Index>(at_flux.size()));
+    Vector r_potential(static_cast<Index>(at_potential.size()));
     const PetscScalar* from = nullptr;
-    PetscScalar* to = nullptr;
     PetscCall(VecGetArrayRead(x, &from));
-    PetscCall(VecGetArray(self->schur_b_, &to));
-    std::copy(from, from + potentials, to);
-    PetscCall(VecRestoreArray(self->schur_b_, &to));
+    for (std::size_t i = 0; i < at_flux.size(); ++i)
+      r_flux[static_cast<Index>(i)] = from[at_flux[i]];
+    for (std::size_t i = 0; i < at_potential.size(); ++i)
+      r_potential[static_cast<Index>(i)] = from[at_potential[i]];
     PetscCall(VecRestoreArrayRead(x, &from));
-    PetscCall(KSPSolve(self->schur_ksp_, self->schur_b_, self->schur_x_));
-    PetscCall(VecGetArrayRead(self->schur_x_, &from));
+
+    Vector solution;
+    PetscCall(self->solve_augmented(self->transport_solve_->right_hand_side(r_flux, r_potential),
+                                    solution));
+    const Vector fluxes = self->transport_solve_->fluxes(r_flux, solution);
+    PetscScalar* to = nullptr;
     PetscCall(VecGetArray(y, &to));
-    std::copy(from, from + potentials, to);
+    for (std::size_t i = 0; i < at_flux.size(); ++i)
+      to[at_flux[i]] = fluxes[static_cast<Index>(i)];
+    for (std::size_t i = 0; i < at_potential.size(); ++i)
+      to[at_potential[i]] = solution[static_cast<Index>(i)];
     PetscCall(VecRestoreArray(y, &to));
-    PetscCall(VecRestoreArrayRead(self->schur_x_, &from));
     return 0;
   }
 
@@ -526,6 +630,7 @@ private:
 
   void release() {
     release_drained_schur();
+    transport_solve_.reset();
     drained_ = false;
     if (ksp_)
       KSPDestroy(&ksp_);
@@ -558,8 +663,12 @@ private:
   std::unique_ptr<petsc::SeqAijMatrix> matrix_;
   Vec x_ = nullptr, b_ = nullptr;
   KSP ksp_ = nullptr;
-  TransportCells cells_; ///< the mixture cells at the state of the next matrix
-  bool drained_ = false; ///< the Schur block applies the drained approximation
+  TransportCells cells_;         ///< the mixture cells at the state of the next matrix
+  bool transport_split_ = false; ///< the fieldsplit is displacement | transport (drained)
+  std::vector<Index> transport_; ///< the transport block's equations (fluxes, potentials)
+  std::vector<Index> transport_flux_, transport_potential_; ///< their positions in it
+  bool drained_ = false; ///< the transport block applies the drained approximation
+  std::unique_ptr<DrainedTransport> transport_solve_; ///< its products
   std::unique_ptr<petsc::SeqAijMatrix> schur_matrix_; ///< its augmented system
   std::vector<Index> schur_pattern_;                  ///< its pattern (pattern_of)
   Vec schur_x_ = nullptr, schur_b_ = nullptr;
@@ -570,37 +679,6 @@ private:
   int iterations_ = 0;
   LinearSolverFailure failure_;
 };
-
-/// Lets the solver of the drained Schur approximation's augmented system (options prefix
-/// `drained_schur_`) read its options, on a 2 × 2 system: the probe system of
-/// check_options_are_used has no mixture cells to build it from.
-void read_drained_schur_options(const std::string& options) {
-  SparseMatrix I(2, 2);
-  I.setIdentity();
-  petsc::SeqAijMatrix matrix(I);
-  KSP ksp = nullptr;
-  Vec x = nullptr, b = nullptr;
-  try {
-    check(MatCreateVecs(matrix.mat(), &x, &b), "PETSc vectors");
-    check(VecSet(b, 1.0), "PETSc vector");
-    check(KSPCreate(PETSC_COMM_SELF, &ksp), "PETSc KSP");
-    check(KSPSetOptionsPrefix(ksp, kDrainedSchurPrefix), "PETSc KSP");
-    check(KSPSetOperators(ksp, matrix.mat(), matrix.mat()), "PETSc KSP operators");
-    apply_once(ksp, PCLU);
-    check(KSPSetFromOptions(ksp), "PETSc options");
-    check(KSPSolve(ksp, b, x), "drained Schur approximation: the options' test solve");
-  } catch (const petsc::PetscError& e) {
-    KSPDestroy(&ksp);
-    VecDestroy(&x);
-    VecDestroy(&b);
-    throw InputError(fmt::format("solver.petsc_options = '{}': the solver of the drained Schur "
-                                 "approximation could not be set up with these options: {}",
-                                 options, e.what()));
-  }
-  KSPDestroy(&ksp);
-  VecDestroy(&x);
-  VecDestroy(&b);
-}
 
 /// Solves a small system of every block kind with `options`, then refuses options nobody read
 /// (or a set-up that fails with them).
@@ -623,8 +701,6 @@ void check_options_are_used(const std::string& options, KrylovSettings settings)
                                  options, probe.failure().reason));
   Vector x;
   probe.solve(Vector::Ones(5), x); // reads the options of the solve; convergence is not asked
-  if (settings.schur == SchurApproximation::drained)
-    read_drained_schur_options(options);
   petsc::refuse_unused_options(options, "krylov");
 }
 

@@ -27,9 +27,11 @@ KrylovPreconditioner krylov_preconditioner(const std::string& name);
 /// How the fieldsplit approximates the potentials' Schur complement (docs/theory/solvers.md §4).
 enum class SchurApproximation {
   selfp,   ///< PETSc's selfp: C − B diag(A)⁻¹ Bᵀ, factorized by MUMPS
-  drained, ///< selfp's undrained part, and the drained part of the mixture cells with the flux
-           ///< block's friction lumped, through the augmented system of drained_schur.hpp
-           ///< (factorized by MUMPS); selfp where the model gives no mixture cells
+  drained, ///< the split displacement | transport (fluxes and potentials), the transport block
+           ///< solved through the augmented system of drained_schur.hpp (factorized by MUMPS):
+           ///< exact flux block up to the lumping of its friction, selfp's undrained part plus
+           ///< a fixed-stress term; with contact multipliers the split primal | potential and
+           ///< the augmented system for the potentials' Schur complement
 };
 
 /// "selfp" or "drained"; InputError otherwise.

@@ -15,7 +15,7 @@ namespace trifem::linalg {
 
 /// One hex8 mixture cell in the scaled equations of the Jacobian. Its flux block is
 ///
-///     F_e = m_ab ⊗ friction ⊗ I + Gᵀ γ G      (plus terms proportional to the fluxes)
+///     F_e = m_ab ⊗ friction ⊗ I + (Gᵀ γ + flux_rate) G
 ///
 /// over the fields (fluid, cation, anion flux), the nodes and the components, m_ab the cell's
 /// mass matrix and G its divergences (Σ_a g_a·w_a, Σ_a g_a·ĵ+_a, Σ_a g_a·ĵ−_a with the area
@@ -26,8 +26,12 @@ struct TransportCell {
   Eigen::Matrix<Real, 2, 3> coupling;     ///< rows (p, η), columns (w, ĵ+, ĵ−)
   Eigen::Matrix3d friction;               ///< per unit mass (rows and columns: fields)
   Eigen::Matrix3d gamma;                  ///< of the divergences (rows and columns: fields)
-  std::array<Index, 8> node{};            ///< mesh nodes of the flux fields
-  Eigen::Matrix<Real, 8, 1> lumped_mass;  ///< Σ_b m_ab
+  /// Row 3a + k (local components, as flux_equation), column 3 field + field': the flux
+  /// equation's derivative by the divergence of field' beyond its divergence coefficient times
+  /// gamma (proportional to the fluxes)
+  Eigen::Matrix<Real, 24, 9> flux_rate = Eigen::Matrix<Real, 24, 9>::Zero();
+  std::array<Index, 8> node{};           ///< mesh nodes of the flux fields
+  Eigen::Matrix<Real, 8, 1> lumped_mass; ///< Σ_b m_ab
   /// Row 3a + k (node a, component k of the equations: local in a rotated nodal frame),
   /// column field: the equation (−1: prescribed or absent) and its coefficient in G (g_a[k]
   /// in global components).

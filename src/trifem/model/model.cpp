@@ -113,6 +113,7 @@ bulk_terms(const io::CaseSpec& spec, const std::vector<CellMaterial>& materials,
       ramp = make_curve(spec, spec.analysis.fixed_charge_curve);
     auto t = std::make_unique<physics::MixtureTerm>(model.mesh, model.dofs, model.fields,
                                                     mixture_cells, mixtures, model.chem, ramp);
+    t->set_lumped_flux_mass(spec.analysis.flux_mass == io::FluxMass::Lumped);
     model.mixture = t.get();
     terms.push_back(std::move(t));
   }

@@ -26,6 +26,7 @@ struct Integrals {
   Real V = 0.0;
   Node3 g = Node3::Zero();                                         ///< g_a = int b_a dv
   Eigen::Matrix<Real, 8, 8> m = Eigen::Matrix<Real, 8, 8>::Zero(); ///< int N_a N_b dv
+  bool lumped = false; ///< m is the lumped mass diag(int N_a dv) (MixtureStep::lumped_flux_mass)
 };
 
 const std::array<fe::HexShape, 8>& shape_at_gauss_points() {
@@ -38,7 +39,8 @@ const std::array<fe::HexShape, 8>& shape_at_gauss_points() {
   return N;
 }
 
-bool integrate(const fe::HexGeometry& geo, const MixtureUnknowns& x, bool ions, Integrals& I) {
+bool integrate(const fe::HexGeometry& geo, const MixtureUnknowns& x, bool ions, bool lumped,
+               Integrals& I) {
   for (int q = 0; q < 8; ++q) {
     PointData& d = I.qp[q];
     const Mat3 F = deformation_gradient(geo.dN_dX[q], x.u);
@@ -59,6 +61,11 @@ bool integrate(const fe::HexGeometry& geo, const MixtureUnknowns& x, bool ions, 
     I.V += d.dv;
     I.g += d.b * d.dv;
     I.m += d.N * d.N.transpose() * d.dv;
+  }
+  if (lumped) {
+    const Eigen::Matrix<Real, 8, 1> row_sums = I.m.rowwise().sum();
+    I.m = row_sums.asDiagonal();
+    I.lumped = true;
   }
   return true;
 }
@@ -272,13 +279,17 @@ void tangent(const Integrals& I, const MixtureChemistry& c, const MixtureUnknown
     }
   }
   // shape derivatives of the mass-matrix products: d(sum_b m_ab x_b)/du_c = int N_a x_h (x) b_c dv
-  for (const PointData& q : I.qp) {
-    const Vec3 zw = -c.A_ww * q.w + (L.ions ? Vec3(c.A_wp * q.jp + c.A_wm * q.jm) : Vec3::Zero());
-    const Vec3 zp = c.A_wp * q.w - c.A_pp * q.jp;
-    const Vec3 zm = c.A_wm * q.w - c.A_mm * q.jm;
-    for (int a = 0; a < 8; ++a)
+  // (lumped: d(l_a x_a)/du_c = int N_a x_a (x) b_c dv, the nodal values in place of x_h)
+  for (const PointData& q : I.qp)
+    for (int a = 0; a < 8; ++a) {
+      const Vec3 w = I.lumped ? Vec3(x.w.row(a).transpose()) : q.w;
+      const Vec3 jp = !L.ions ? Vec3::Zero() : I.lumped ? Vec3(x.jp.row(a).transpose()) : q.jp;
+      const Vec3 jm = !L.ions ? Vec3::Zero() : I.lumped ? Vec3(x.jm.row(a).transpose()) : q.jm;
+      const Vec3 zw = -c.A_ww * w + (L.ions ? Vec3(c.A_wp * jp + c.A_wm * jm) : Vec3::Zero());
+      const Vec3 zp = c.A_wp * w - c.A_pp * jp;
+      const Vec3 zm = c.A_wm * w - c.A_mm * jm;
+      const Real s = q.N[a] * q.dv;
       for (int cc = 0; cc < 8; ++cc) {
-        const Real s = q.N[a] * q.dv;
         const Eigen::RowVector3d bc = q.b.row(cc);
         K.block<3, 3>(L.w(a, 0), L.u(cc, 0)) += s * zw * bc;
         if (L.ions) {
@@ -286,7 +297,7 @@ void tangent(const Integrals& I, const MixtureChemistry& c, const MixtureUnknown
           K.block<3, 3>(L.jm(a, 0), L.u(cc, 0)) += s * zm * bc;
         }
       }
-  }
+    }
   add_area_derivative(I, {-(x.p - step.prestress), c.mu_w, c.mu_plus, c.mu_minus}, {0, 24, 48, 72},
                       L.ions ? 4 : 2, K);
   if (L.ions)
@@ -325,6 +336,42 @@ Mat3 divergence_matrix(const MixtureChemistry& c, const material::MixturePropert
   return gamma;
 }
 
+/// d(coefficient)/d(div j) of a chemistry gradient `d` over the flux columns `column(b, k)` of
+/// one field: their entries are that derivative times g_b[k] (read at the largest |g_b[k]|).
+template <typename Column>
+Real divergence_slope(const Grad& d, const Integrals& I, Column column) {
+  Eigen::Index b = 0, k = 0;
+  const Real g = I.g.cwiseAbs().maxCoeff(&b, &k);
+  return g > 0.0 ? d[column(static_cast<int>(b), static_cast<int>(k))] / I.g(b, k) : 0.0;
+}
+
+/// MixtureFluxBlock::flux_rate: the tangent's rows W ⊗ dA_ww, P ⊗ dA_wp, … restricted to the ion
+/// flux columns, which are multiples of g_b (the concentrations depend on the ion fluxes through
+/// the cell's outflows; nothing depends on div w).
+Eigen::Matrix<Real, 24, 9> flux_rate(const Integrals& I, const ChemistryGradients& d,
+                                     const MixtureUnknowns& x, const MixtureLayout& L) {
+  Eigen::Matrix<Real, 24, 9> rate = Eigen::Matrix<Real, 24, 9>::Zero();
+  if (!L.ions)
+    return rate;
+  const Node3 W = mass_product(I, x.w), P = mass_product(I, x.jp), M = mass_product(I, x.jm);
+  for (int j = kCation; j <= kAnion; ++j) {
+    const auto slope = [&](const Grad& g) {
+      return j == kCation ? divergence_slope(g, I, [&](int b, int k) { return L.jp(b, k); })
+                          : divergence_slope(g, I, [&](int b, int k) { return L.jm(b, k); });
+    };
+    const Real ww = slope(d.A_ww), wp = slope(d.A_wp), wm = slope(d.A_wm);
+    const Real pp = slope(d.A_pp), mm = slope(d.A_mm);
+    for (int a = 0; a < 8; ++a)
+      for (int k = 0; k < 3; ++k) {
+        const int row = 3 * a + k;
+        rate(row, 3 * kWater + j) = -W(a, k) * ww + P(a, k) * wp + M(a, k) * wm;
+        rate(row, 3 * kCation + j) = W(a, k) * wp - P(a, k) * pp;
+        rate(row, 3 * kAnion + j) = W(a, k) * wm - M(a, k) * mm;
+      }
+  }
+  return rate;
+}
+
 } // namespace
 
 bool mixture_hex8(const fe::HexGeometry& geo, const MixtureUnknowns& x,
@@ -332,7 +379,7 @@ bool mixture_hex8(const fe::HexGeometry& geo, const MixtureUnknowns& x,
                   const MixtureStep& step, const MixtureLayout& layout, LocalVector& r,
                   LocalMatrix* K) {
   Integrals I;
-  if (!integrate(geo, x, layout.ions, I))
+  if (!integrate(geo, x, layout.ions, step.lumped_flux_mass, I))
     return false;
   const MixtureChemistry c = chemistry(I, x, history, mat, step, layout.ions);
   if (!c.admissible)
@@ -352,7 +399,7 @@ mixture_hex8_flux_block(const fe::HexGeometry& geo, const MixtureUnknowns& x,
                         const MixtureHistory& history, const material::MixtureProperties& mat,
                         const MixtureStep& step, const MixtureLayout& layout) {
   Integrals I;
-  if (!integrate(geo, x, layout.ions, I))
+  if (!integrate(geo, x, layout.ions, step.lumped_flux_mass, I))
     return std::nullopt;
   const MixtureChemistry c = chemistry(I, x, history, mat, step, layout.ions);
   if (!c.admissible)
@@ -360,6 +407,8 @@ mixture_hex8_flux_block(const fe::HexGeometry& geo, const MixtureUnknowns& x,
   MixtureFluxBlock out;
   out.friction = friction_matrix(c, layout.ions);
   out.gamma = divergence_matrix(c, mat, step, layout.ions);
+  if (layout.ions)
+    out.flux_rate = flux_rate(I, chemistry_gradients(I, c, history, mat, step, layout), x, layout);
   out.coupling(0, kWater) = 1.0; // K^pw = g
   if (layout.ions) {
     out.coupling(1, kCation) = 1.0; // K^η± = ±g
@@ -376,7 +425,7 @@ MixtureCellOutput mixture_hex8_output(const fe::HexGeometry& geo, const MixtureU
                                       const MixtureStep& step, bool ions) {
   MixtureCellOutput out;
   Integrals I;
-  if (!integrate(geo, x, ions, I))
+  if (!integrate(geo, x, ions, step.lumped_flux_mass, I))
     return out;
   out.chem = chemistry(I, x, history, mat, step, ions);
   for (const PointData& d : I.qp) {

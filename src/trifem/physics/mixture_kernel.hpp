@@ -45,6 +45,9 @@ struct MixtureStep {
   Real dt = 1.0;        ///< step size [s]
   Real prestress = 0.0; ///< constant Cauchy prestress Pi0: momentum uses p - Pi0 (IC-3a)
   const material::Electrochemistry* chem = nullptr;
+  /// The friction terms with the lumped mass diag(∫ N_a dv) in place of m_ab = ∫ N_a N_b dv
+  /// ([analysis] flux_mass = "lumped", docs/theory/solvers.md §4)
+  bool lumped_flux_mass = false;
 };
 
 /// Element-constant chemistry derived from the unknowns (also used for output).
@@ -73,12 +76,17 @@ bool mixture_hex8(const fe::HexGeometry& geo, const MixtureUnknowns& x,
 ///
 ///     K(f_i(a,k), f_j(b,l)) = δ_kl m_ab friction(i,j) + g_a[k] gamma(i,j) g_b[l]
 ///
-/// plus terms proportional to the fluxes (the derivatives of the resistances times W, P, M),
-/// and the rows (p, η) of the flux columns are coupling · (g_b[l] for each field). Biphasic
-/// elements fill the w entries only.
+///     + flux_rate(3a + k, 3i + j) g_b[l]
+///
+/// where flux_rate, proportional to the fluxes, holds the resistances' derivatives by the
+/// divergences times the mass products W, P, M; and the rows (p, η) of the flux columns are
+/// coupling · (g_b[l] for each field). Biphasic elements fill the w entries only.
 struct MixtureFluxBlock {
   Mat3 friction = Mat3::Zero(); ///< the friction coefficients −A_ww, A_w±, −A_±±
   Mat3 gamma = Mat3::Zero();    ///< the concentration terms dμ̄_i/dc dc/d(div j_j)
+  /// Row 3a + k, column 3i + j: d(flux equation i at node a, component k)/d(div j_j) beyond
+  /// g_a[k] gamma(i, j)
+  Eigen::Matrix<Real, 24, 9> flux_rate = Eigen::Matrix<Real, 24, 9>::Zero();
   Eigen::Matrix<Real, 2, 3> coupling = Eigen::Matrix<Real, 2, 3>::Zero();    ///< K^pw, K^η± per g
   Eigen::Matrix<Real, 8, 3> area = Eigen::Matrix<Real, 8, 3>::Zero();        ///< g_a (rows: nodes)
   Eigen::Matrix<Real, 8, 1> lumped_mass = Eigen::Matrix<Real, 8, 1>::Zero(); ///< Σ_b m_ab

@@ -50,6 +50,9 @@ MixtureFluxBlock scaled(MixtureFluxBlock b, Real dt, Real c_ref) {
   const Eigen::Vector2d potential_row(f.p_row, f.eta_row);
   b.friction = row.asDiagonal() * b.friction * col.asDiagonal();
   b.gamma = row.asDiagonal() * b.gamma * col.asDiagonal();
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      b.flux_rate.col(3 * i + j) *= row[i] * col[j];
   b.coupling = potential_row.asDiagonal() * b.coupling * col.asDiagonal();
   return b;
 }
@@ -130,7 +133,7 @@ MixtureHistory MixtureTerm::history_at(Index e, Real time) const {
 }
 
 MixtureStep MixtureTerm::step(Index e, Real dt) const {
-  return {dt > 0.0 ? dt : 1.0, prestress_[e], &chem_};
+  return {dt > 0.0 ? dt : 1.0, prestress_[e], &chem_, lumped_flux_mass_};
 }
 
 void MixtureTerm::scale(Index e, Real dt, LocalVector& r, LocalMatrix* K) const {
@@ -168,6 +171,7 @@ CellTransport MixtureTerm::cell_transport(Index e, const MixtureFluxBlock& scale
   t.coupling = scaled_block.coupling;
   t.friction = scaled_block.friction;
   t.gamma = scaled_block.gamma;
+  t.flux_rate = scaled_block.flux_rate;
   t.area = scaled_block.area;
   t.lumped_mass = scaled_block.lumped_mass;
   t.flux_dof.setConstant(-1);
@@ -196,7 +200,7 @@ void MixtureTerm::transport_cells(const EvalState& state, std::vector<CellTransp
 
 MixtureCellOutput MixtureTerm::output(Index e, const Vector& x) const {
   // dt = 0: concentrations from the committed moles, without a pending flux update
-  const MixtureStep s{0.0, prestress_[e], &chem_};
+  const MixtureStep s{0.0, prestress_[e], &chem_, lumped_flux_mass_};
   return mixture_hex8_output(geometry_[e], unknowns(e, x), history_[e], *props_[e], s, ions(e));
 }
 

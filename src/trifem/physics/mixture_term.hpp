@@ -67,6 +67,8 @@ public:
   const MixtureHistory& history(Index e) const { return history_[e]; }
   /// Overrides the committed history of an element (non-equilibrium initial states).
   void set_history(Index e, const MixtureHistory& h) { history_[e] = h; }
+  /// Friction terms with the lumped mass ([analysis] flux_mass = "lumped").
+  void set_lumped_flux_mass(bool lumped) { lumped_flux_mass_ = lumped; }
 
 private:
   MixtureUnknowns unknowns(Index e, const Vector& x) const;
@@ -84,6 +86,7 @@ private:
   std::vector<std::shared_ptr<const material::MixtureProperties>> props_;
   material::Electrochemistry chem_;
   std::optional<dofs::LoadCurve> fixed_charge_curve_;
+  bool lumped_flux_mass_ = false;
   std::vector<fe::HexGeometry> geometry_;
   std::vector<MixtureHistory> history_;
   std::vector<Real> prestress_;

@@ -36,10 +36,13 @@ struct CellTransport {
   Eigen::Matrix<Real, 2, 3> coupling;     ///< rows (p, η), columns: fields
   Eigen::Matrix3d friction;               ///< per unit mass (fields x fields)
   Eigen::Matrix3d gamma;                  ///< of the divergences (fields x fields)
-  std::array<Index, 8> node{};            ///< mesh nodes of the flux fields
-  Eigen::Matrix<Real, 8, 3> area;         ///< g_a (rows: nodes)
-  Eigen::Matrix<Real, 8, 1> lumped_mass;  ///< Σ_b m_ab
-  Eigen::Matrix<Index, 24, 3> flux_dof;   ///< row 3a + k, column field: DOF or −1
+  /// Row 3a + k, column 3 field + field': the flux equation's derivative by the divergence of
+  /// field' beyond g_a[k] gamma (proportional to the fluxes; global components)
+  Eigen::Matrix<Real, 24, 9> flux_rate;
+  std::array<Index, 8> node{};           ///< mesh nodes of the flux fields
+  Eigen::Matrix<Real, 8, 3> area;        ///< g_a (rows: nodes)
+  Eigen::Matrix<Real, 8, 1> lumped_mass; ///< Σ_b m_ab
+  Eigen::Matrix<Index, 24, 3> flux_dof;  ///< row 3a + k, column field: DOF or −1
 };
 
 /// Residual R = f_int - f_ext and dR/dx of a set of elements. Implementations hold only

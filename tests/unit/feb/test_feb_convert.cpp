@@ -154,6 +154,18 @@ TEST(TomlConvertSolver, KrylovPreconditionerReadsBackAsWritten) {
   fs::remove_all(dir);
 }
 
+TEST(TomlConvertAnalysis, LumpedFluxMassReadsBackAsWritten) {
+  io::CaseSpec spec = analysis::read_case_file(kData / "confined_biphasic_ramp.feb");
+  const fs::path dir = fresh_dir("flux_mass");
+  io::write_case(spec, dir / "case.toml");
+  EXPECT_EQ(analysis::read_case_file(dir / "case.toml").analysis.flux_mass,
+            io::FluxMass::Consistent);
+  spec.analysis.flux_mass = io::FluxMass::Lumped;
+  io::write_case(spec, dir / "case.toml");
+  EXPECT_EQ(analysis::read_case_file(dir / "case.toml").analysis.flux_mass, io::FluxMass::Lumped);
+  fs::remove_all(dir);
+}
+
 TEST(TomlConvertSolver, FactorizationPrecisionReadsBackAsWritten) {
   io::CaseSpec spec = analysis::read_case_file(kData / "uniaxial_neo_hookean.feb");
   spec.solver.linear_solver = "mumps";

@@ -807,6 +807,10 @@ const std::vector<BadCase> kMixtureBadCases = {
      kBase + kCartilage + "[analysis]\ninitial_state = \"donan\"\n",
      {"analysis.initial_state = 'donan': unknown initial state (expected one of: donnan, "
       "donnan-prestressed); did you mean 'donnan'? (line 31)"}},
+    {"unknown_flux_mass",
+     kBase + kCartilage + "[analysis]\nflux_mass = \"lump\"\n",
+     {"analysis.flux_mass = 'lump': unknown flux mass (expected one of: consistent, lumped); did "
+      "you mean 'lumped'? (line 31)"}},
     {"undefined_fixed_charge_curve",
      kBase + kCartilage + "[analysis]\nfixed_charge_curve = \"rmp\"\n",
      {"analysis.fixed_charge_curve = 'rmp': undefined curve (defined: ramp); did you mean "

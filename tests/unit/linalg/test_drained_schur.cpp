@@ -25,7 +25,7 @@ struct TwoCells {
   TransportCells cells;
   BlockSplit split;
   SparseMatrix A;
-  Dense expected; ///< −A_ππ + A_πu diag(A_uu)⁻¹ A_uπ + the drained part
+  Dense expected; ///< −A_ππ + A_πu diag(A_uu)⁻¹ A_uπ + fixed stress + the drained part
 };
 
 Dense random_matrix(std::mt19937& rng, Index rows, Index cols) {
@@ -134,6 +134,14 @@ TwoCells make_two_cells(bool undrained = true) {
   const Dense F = J.block(nu, nu, s.fluxes, s.fluxes);
   const Eigen::VectorXd du = J.diagonal().head(nu), df = J.diagonal().segment(nu, s.fluxes);
   s.expected = -App + Apu * du.cwiseInverse().asDiagonal() * Aup;
+  // the filtered fixed-stress term on the pressures (positions 0 and 2): nodes 0-3 and 8-11 in
+  // one cell, nodes 4-7 in both
+  const Real beta[2] = {s.expected(0, 0), s.expected(2, 2)};
+  for (int c = 0; c < 2; ++c)
+    s.expected(2 * c, 2 * c) += 4 * beta[c] / 8.0; // four nodes of its own, n = 1
+  for (int c = 0; c < 2; ++c)
+    for (int d = 0; d < 2; ++d) // four shared nodes, n = 2, mean of the two β
+      s.expected(2 * c, 2 * d) += 4 * (beta[0] + beta[1]) / 2.0 / 16.0;
   const Dense exact = Apf * F.lu().solve(Afp);
   const Dense diagonal = Apf * df.cwiseInverse().asDiagonal() * Afp;
   for (Index i = 0; i < s.potentials; ++i)

@@ -3,13 +3,14 @@
 # Writes the case file of the 3-D triphasic block benchmark (docs/performance.md, "PETSc
 # backends on 3-D triphasic blocks") to standard output:
 #   block_case.sh CELLS SOLVER [PETSC_OPTIONS] [REUSE] [PRECONDITIONER] [INITIAL_STATE] [DT] [STEPS]
-#                 [PRECISION] [SCHUR]
+#                 [PRECISION] [SCHUR] [FLUX_MASS]
 # A 1 mm cube of CELLS^3 hex8 cells of the paper's cartilage, bottom fixed and impermeable, the
 # top compressed by 0.05 mm ramped over 50 s, STEPS steps (default 1) of DT s (default 2.5);
 # SOLVER is any linear_solver, REUSE "true" sets reuse_factorization, PRECONDITIONER the krylov
 # preconditioner (lu, amg), INITIAL_STATE the [analysis] initial_state (donnan,
 # donnan-prestressed), PRECISION the factorization_precision of reused factorizations (single,
-# double), SCHUR the krylov schur_approximation (selfp, drained).
+# double), SCHUR the krylov schur_approximation (selfp, drained), FLUX_MASS the [analysis]
+# flux_mass (consistent, lumped).
 set -euo pipefail
 cells=${1:?usage: block_case.sh CELLS SOLVER [PETSC_OPTIONS] [REUSE]}
 solver=${2:?usage: block_case.sh CELLS SOLVER [PETSC_OPTIONS] [REUSE]}
@@ -21,6 +22,7 @@ dt=${7:-2.5}
 steps=${8:-1}
 precision=${9:-single}
 schur=${10:-selfp}
+flux_mass=${11:-consistent}
 end_time=$(awk -v dt="$dt" -v n="$steps" 'BEGIN { print dt * n }')
 cat <<CASE
 title = "triphasic block ${cells}^3, ${solver}"
@@ -66,6 +68,7 @@ curve = "ramp"
 
 [analysis]
 initial_state = "${initial_state}"
+flux_mass = "${flux_mass}"
 
 [time]
 end_time = ${end_time}

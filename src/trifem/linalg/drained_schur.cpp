@@ -160,16 +160,22 @@ SparseMatrix lumped_friction_inverse(const TransportCells& cells, const Groups& 
   return from_triplets(g.fluxes, g.fluxes, t);
 }
 
+/// Calls visit(cell, row 3a + k, field, flux position) for every free flux equation of the cells.
+template <typename Visit>
+void for_each_flux_equation(const TransportCells& cells, const Groups& g, Visit visit) {
+  for (std::size_t c = 0; c < cells.size(); ++c)
+    for (int row = 0; row < 24; ++row)
+      for (int f = 0; f < 3; ++f)
+        if (const Index eq = cells[c].flux_equation(row, f); eq >= 0)
+          visit(c, row, f, g.position[eq]);
+}
+
 /// G (3 per cell × fluxes): the cells' divergences of each flux field.
 SparseMatrix divergences(const TransportCells& cells, const Groups& g) {
   Triplets t;
-  for (std::size_t c = 0; c < cells.size(); ++c)
-    for (int a = 0; a < 8; ++a)
-      for (int k = 0; k < 3; ++k)
-        for (int f = 0; f < 3; ++f)
-          if (const Index eq = cells[c].flux_equation(3 * a + k, f); eq >= 0)
-            t.emplace_back(static_cast<Index>(3 * c + f), g.position[eq],
-                           cells[c].divergence(3 * a + k, f));
+  for_each_flux_equation(cells, g, [&](std::size_t c, int row, int f, Index flux) {
+    t.emplace_back(static_cast<Index>(3 * c + f), flux, cells[c].divergence(row, f));
+  });
   return from_triplets(static_cast<Index>(3 * cells.size()), g.fluxes, t);
 }
 
@@ -177,16 +183,13 @@ SparseMatrix divergences(const TransportCells& cells, const Groups& g) {
 /// Gᵀ Γ + the rates proportional to the fluxes.
 SparseMatrix divergence_rates(const TransportCells& cells, const Groups& g) {
   Triplets t;
-  for (std::size_t c = 0; c < cells.size(); ++c)
-    for (int a = 0; a < 8; ++a)
-      for (int k = 0; k < 3; ++k)
-        for (int f = 0; f < 3; ++f)
-          if (const Index eq = cells[c].flux_equation(3 * a + k, f); eq >= 0)
-            for (int h = 0; h < 3; ++h)
-              if (const Real rate = cells[c].divergence(3 * a + k, f) * cells[c].gamma(f, h) +
-                                    cells[c].flux_rate(3 * a + k, 3 * f + h);
-                  rate != 0.0)
-                t.emplace_back(g.position[eq], static_cast<Index>(3 * c + h), rate);
+  for_each_flux_equation(cells, g, [&](std::size_t c, int row, int f, Index flux) {
+    for (int h = 0; h < 3; ++h)
+      if (const Real rate = cells[c].divergence(row, f) * cells[c].gamma(f, h) +
+                            cells[c].flux_rate(row, 3 * f + h);
+          rate != 0.0)
+        t.emplace_back(flux, static_cast<Index>(3 * c + h), rate);
+  });
   return from_triplets(g.fluxes, static_cast<Index>(3 * cells.size()), t);
 }
 

@@ -288,17 +288,9 @@ private:
     if (transport_split_) {
       split_displacement_from_transport(pc);
     } else if (blocks) {
-      check(PCSetType(pc, PCFIELDSPLIT), "PETSc fieldsplit");
       primal_ = split_.primal();
-      IS primal = make_index_set(primal_), potential = make_index_set(split_.potential);
-      check(PCFieldSplitSetIS(pc, "primal", primal), "PETSc fieldsplit");
-      check(PCFieldSplitSetIS(pc, "potential", potential), "PETSc fieldsplit");
-      ISDestroy(&primal);
-      ISDestroy(&potential);
-      check(PCFieldSplitSetType(pc, PC_COMPOSITE_SCHUR), "PETSc fieldsplit");
-      check(PCFieldSplitSetSchurFactType(pc, PC_FIELDSPLIT_SCHUR_FACT_FULL), "PETSc fieldsplit");
-      check(PCFieldSplitSetSchurPre(pc, PC_FIELDSPLIT_SCHUR_PRE_SELFP, nullptr),
-            "PETSc fieldsplit");
+      schur_split(pc, {"primal", primal_}, {"potential", split_.potential},
+                  PC_FIELDSPLIT_SCHUR_PRE_SELFP);
     } else if (amg()) { // one kind of unknown: the displacement
       use_multigrid(ksp_, modes_over(all_equations()));
       sub_solvers_configured_ = true;
@@ -314,20 +306,30 @@ private:
   /// (fluxes and potentials) through its Schur complement, which the shell of
   /// use_drained_schur approximates (no product is formed for it: A11 is its matrix).
   void split_displacement_from_transport(PC pc) {
-    check(PCSetType(pc, PCFIELDSPLIT), "PETSc fieldsplit");
     transport_.clear();
     std::merge(split_.flux.begin(), split_.flux.end(), split_.potential.begin(),
                split_.potential.end(), std::back_inserter(transport_));
     transport_flux_ = positions_in(split_.flux, transport_);
     transport_potential_ = positions_in(split_.potential, transport_);
-    IS displacement = make_index_set(split_.displacement), transport = make_index_set(transport_);
-    check(PCFieldSplitSetIS(pc, "displacement", displacement), "PETSc fieldsplit");
-    check(PCFieldSplitSetIS(pc, "transport", transport), "PETSc fieldsplit");
-    ISDestroy(&displacement);
-    ISDestroy(&transport);
+    schur_split(pc, {"displacement", split_.displacement}, {"transport", transport_},
+                PC_FIELDSPLIT_SCHUR_PRE_A11);
+  }
+
+  using NamedSplit = std::pair<const char*, const std::vector<Index>&>;
+
+  /// `pc` becomes a fieldsplit of `first` and `second` in the full Schur factorization, the
+  /// Schur complement's preconditioning matrix `pre`.
+  static void schur_split(PC pc, NamedSplit first, NamedSplit second,
+                          PCFieldSplitSchurPreType pre) {
+    check(PCSetType(pc, PCFIELDSPLIT), "PETSc fieldsplit");
+    for (const NamedSplit& split : {first, second}) {
+      IS is = make_index_set(split.second);
+      check(PCFieldSplitSetIS(pc, split.first, is), "PETSc fieldsplit");
+      ISDestroy(&is);
+    }
     check(PCFieldSplitSetType(pc, PC_COMPOSITE_SCHUR), "PETSc fieldsplit");
     check(PCFieldSplitSetSchurFactType(pc, PC_FIELDSPLIT_SCHUR_FACT_FULL), "PETSc fieldsplit");
-    check(PCFieldSplitSetSchurPre(pc, PC_FIELDSPLIT_SCHUR_PRE_A11, nullptr), "PETSc fieldsplit");
+    check(PCFieldSplitSetSchurPre(pc, pre, nullptr), "PETSc fieldsplit");
   }
 
   /// Defaults of the solvers inside the fieldsplit (they exist after its first set-up), then

@@ -820,7 +820,8 @@ const std::vector<BadCase> kMixtureBadCases = {
      {"analysis.fixed_charge_curve = 'ramp': only applies to triphasic materials"}},
     {"unknown_analysis_key",
      kBase + kCartilage + "[analysis]\ninitial = \"donnan\"\n",
-     {"analysis.initial: unknown key (expected one of: initial_state, fixed_charge_curve)"}},
+     {"analysis.initial: unknown key (expected one of: initial_state, fixed_charge_curve, "
+      "flux_mass)"}},
     {"non_positive_temperature",
      kBase + kCartilage + "[electrochemistry]\nT = -1\n",
      {"electrochemistry.T = -1: out of range, expected a value in (0, inf) K (line 31)"}},

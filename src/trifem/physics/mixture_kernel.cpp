@@ -26,7 +26,6 @@ struct Integrals {
   Real V = 0.0;
   Node3 g = Node3::Zero();                                         ///< g_a = int b_a dv
   Eigen::Matrix<Real, 8, 8> m = Eigen::Matrix<Real, 8, 8>::Zero(); ///< int N_a N_b dv
-  bool lumped = false; ///< m is the lumped mass diag(int N_a dv) (MixtureStep::lumped_flux_mass)
 };
 
 const std::array<fe::HexShape, 8>& shape_at_gauss_points() {
@@ -65,7 +64,6 @@ bool integrate(const fe::HexGeometry& geo, const MixtureUnknowns& x, bool ions, 
   if (lumped) {
     const Eigen::Matrix<Real, 8, 1> row_sums = I.m.rowwise().sum();
     I.m = row_sums.asDiagonal();
-    I.lumped = true;
   }
   return true;
 }
@@ -282,9 +280,13 @@ void tangent(const Integrals& I, const MixtureChemistry& c, const MixtureUnknown
   // (lumped: d(l_a x_a)/du_c = int N_a x_a (x) b_c dv, the nodal values in place of x_h)
   for (const PointData& q : I.qp)
     for (int a = 0; a < 8; ++a) {
-      const Vec3 w = I.lumped ? Vec3(x.w.row(a).transpose()) : q.w;
-      const Vec3 jp = !L.ions ? Vec3::Zero() : I.lumped ? Vec3(x.jp.row(a).transpose()) : q.jp;
-      const Vec3 jm = !L.ions ? Vec3::Zero() : I.lumped ? Vec3(x.jm.row(a).transpose()) : q.jm;
+      const Vec3 w = step.lumped_flux_mass ? Vec3(x.w.row(a).transpose()) : q.w;
+      const Vec3 jp = !L.ions                 ? Vec3::Zero()
+                      : step.lumped_flux_mass ? Vec3(x.jp.row(a).transpose())
+                                              : q.jp;
+      const Vec3 jm = !L.ions                 ? Vec3::Zero()
+                      : step.lumped_flux_mass ? Vec3(x.jm.row(a).transpose())
+                                              : q.jm;
       const Vec3 zw = -c.A_ww * w + (L.ions ? Vec3(c.A_wp * jp + c.A_wm * jm) : Vec3::Zero());
       const Vec3 zp = c.A_wp * w - c.A_pp * jp;
       const Vec3 zm = c.A_wm * w - c.A_mm * jm;

@@ -16,6 +16,9 @@ NodeContact ActiveSet::wanted(Index k, const NodeStatus& s) const {
     return s.gap <= settings_.gap_tolerance ? NodeContact::Sealed : NodeContact::Open;
   if (current == NodeContact::Open)
     return s.indicator < 0 ? NodeContact::Sealed : NodeContact::Open;
+  if (current == NodeContact::Wetted && s.indicator < -settings_.release_threshold &&
+      !wetted_in_step_[k])
+    return NodeContact::Sealed; // pressed again: the surfaces close the interface to the bath
   if (s.indicator <= settings_.release_threshold)
     return current; // compressive or at most ε_t of tension: stays
   return current == NodeContact::Sealed && s.wettable ? NodeContact::Wetted : NodeContact::Open;
@@ -36,6 +39,7 @@ Index ActiveSet::update(Real time, const std::vector<NodeStatus>& nodes) {
     flips_step_ = 0;
     new_step_ = false;
     time_ = time;
+    std::fill(wetted_in_step_.begin(), wetted_in_step_.end(), 0);
   }
   ++evaluations_;
   std::vector<std::pair<Index, NodeContact>> wanted_flips;
@@ -59,6 +63,8 @@ Index ActiveSet::update(Real time, const std::vector<NodeStatus>& nodes) {
   pending_ = allow || !settings_.update ? 0 : static_cast<Index>(wanted_flips.size());
   if (allow)
     for (const auto& [k, target] : wanted_flips) {
+      if (target == NodeContact::Wetted)
+        wetted_in_step_[k] = 1; // no re-seal in this step: sealed it would pull (chatter)
       active_[k] = static_cast<char>(target);
       ++flips;
     }
@@ -70,6 +76,7 @@ Index ActiveSet::update(Real time, const std::vector<NodeStatus>& nodes) {
 void ActiveSet::assign(std::vector<char> active) {
   TRIFEM_VERIFY(active.size() == active_.size(), "one flag per slave node");
   active_ = std::move(active);
+  std::fill(wetted_in_step_.begin(), wetted_in_step_.end(), 0);
   initialized_ = true;
 }
 

@@ -45,7 +45,11 @@ enum class NodeContact : char {
 ///     would carry tension lets the bath in while the surfaces still touch (Wetted: gap row,
 ///     free-draining potentials); a wetted node is released (Open) when it carries tension as
 ///     well. A sealed interface that goes tensile would otherwise chatter: released, it drains
-///     to the bath, swells and penetrates; closed, it pulls (the separation test);
+///     to the bath, swells and penetrates; closed, it pulls (the separation test). A wetted
+///     node re-seals when it is pressed (t_k + c_N g_k < −ε_t), except in the step in which it
+///     was released from sealed: there the sealed state was just found to pull, and re-sealing
+///     would cycle. So layers that were wetted while their traction was about zero (free
+///     swelling) close the interface again when a platen compresses them;
 ///   * after `max_updates` evaluations of a step the set is frozen (only non-admissible nodes
 ///     are still released) until it has *settled*: every active node has |g_k| ≤
 ///     gap_tolerance, i.e. Newton has converged for the frozen set. Then the rule is applied
@@ -58,7 +62,7 @@ enum class NodeContact : char {
 class ActiveSet {
 public:
   ActiveSet(Index num_nodes, ActiveSetSettings settings)
-      : settings_(settings), active_(num_nodes, 0) {}
+      : settings_(settings), active_(num_nodes, 0), wetted_in_step_(num_nodes, 0) {}
 
   /// Applies the rules above at an evaluation at `time`; returns the number of flips.
   Index update(Real time, const std::vector<NodeStatus>& nodes);
@@ -89,6 +93,7 @@ private:
 
   ActiveSetSettings settings_;
   std::vector<char> active_;
+  std::vector<char> wetted_in_step_; ///< released from sealed to wetted in the current step
   bool initialized_ = false;
   bool new_step_ = true;
   Real time_ = 0;

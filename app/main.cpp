@@ -2,9 +2,12 @@
 // trifem command-line interface: run, check, convert, --version.
 #include "trifem/analysis/case_file.hpp"
 #include "trifem/analysis/run.hpp"
+#include "trifem/core/digest.hpp"
 #include "trifem/core/error.hpp"
 #include "trifem/core/interrupt.hpp"
 #include "trifem/core/log.hpp"
+#include "trifem/core/printable.hpp"
+#include "trifem/core/standard_streams.hpp"
 #include "trifem/parallel/communicator.hpp"
 
 #include <CLI/CLI.hpp>
@@ -12,6 +15,8 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <cstring>
+#include <fstream>
 #include <iostream>
 #include <new>
 
@@ -23,8 +28,9 @@ namespace {
 /// prints it once if all failed together (an input error, read by all); a failure of this
 /// process alone is printed with its rank and stops the others (parallel::agree_on_failure).
 int fail(const std::string& line, int code) {
-  if (parallel::agree_on_failure(line))
-    std::cerr << line << '\n';
+  const std::string shown = printable(line); // no control characters of the input
+  if (parallel::agree_on_failure(shown, code))
+    std::cerr << shown << '\n';
   return code;
 }
 
@@ -66,9 +72,32 @@ void check_command_name(int argc, char** argv) {
   }
 }
 
+/// Under mpirun every process must run the same command on the same case: processes that read
+/// different models (an MPMD launch with other options, a stale copy of the case on one host)
+/// would wait for each other forever or exchange messages of different sizes. InputError on
+/// every process if one differs from process 0 (its command line or its case file's bytes).
+void check_processes_agree(int argc, char** argv, const std::string& case_file) {
+  if (!parallel::active())
+    return;
+  Fnv1a64 digest;
+  for (int i = 1; i < argc; ++i)
+    digest.add(argv[i], std::strlen(argv[i]) + 1); // with its NUL: "ab" "c" differs from "a" "bc"
+  std::ifstream in(case_file, std::ios::binary);
+  std::string text(std::size_t{1} << 16, '\0');
+  while (in && in.read(text.data(), static_cast<std::streamsize>(text.size())).gcount() > 0)
+    digest.add(text.data(), static_cast<std::size_t>(in.gcount()));
+  const int other = parallel::first_rank_differing(digest.value());
+  TRIFEM_CHECK(other < 0,
+               "the processes disagree: process {} of {} was started with another command line "
+               "than process 0, or reads another case file {} (every process of mpirun must run "
+               "the same command on the same files)",
+               other, parallel::size(), case_file);
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
+  guard_standard_streams();         // before anything opens a file
   parallel::initialize(argc, argv); // under mpirun: one analysis shared by the processes
   share_cores();
   CLI::App cli{"trifem: finite elements for charged-hydrated soft tissues"};
@@ -125,6 +154,7 @@ int main(int argc, char** argv) {
         log::info("wrote {}", file.string());
       return static_cast<int>(analysis::kSuccess);
     }
+    check_processes_agree(argc, argv, case_file);
     io::CaseSpec spec = analysis::read_case_file(case_file);
     analysis::refine_case(spec, refinement);
     if (check->parsed())

@@ -215,12 +215,17 @@ TEST_F(CliParallel, AWriteErrorOfOneProcessStopsEveryProcessWithOneErrorLine) {
   EXPECT_TRUE(contains(errors[0], "the initial state could not be written")) << r;
   EXPECT_TRUE(contains(errors[0], "volume_0000_1.vtu")) << r;
   EXPECT_TRUE(contains(read_text(output() / "summary.json"), "\"status\": \"failed\"")) << r;
+  // no list names the state whose piece is missing
+  EXPECT_FALSE(fs::exists(output() / "volume_0000.pvtu")) << r;
+  if (fs::exists(output() / "results.pvd")) {
+    EXPECT_FALSE(contains(read_text(output() / "results.pvd"), "volume_0000")) << r;
+  }
 }
 
-TEST_F(CliParallel, AnErrorOfOneProcessAloneStopsEveryProcess) {
-  // process 1 alone reads a bad case (two programs under one mpirun): process 0 goes on and
-  // waits for it in the first collective operation; process 1 reports its error with its rank
-  // and stops them both
+TEST_F(CliParallel, ProcessesThatReadDifferentCasesAreRefused) {
+  // process 1 alone reads another case (two programs under one mpirun, or a stale copy of the
+  // case on one host): the processes compare their command lines and case files first, and
+  // all refuse the run instead of waiting for each other in different places
   const fs::path good = example("cantilever");
   const fs::path bad = write_file("bad.toml", read_text(good) + "\n[bogus]\nkey = 1\n");
   const std::string exe = shell_quoted(kExe.string());
@@ -228,11 +233,40 @@ TEST_F(CliParallel, AnErrorOfOneProcessAloneStopsEveryProcess) {
                            shell_quoted(good.string()) + " -o " + shell_quoted(output().string()) +
                            " : -np 1 " + exe,
                        {"run", bad.string(), "-o", output().string()});
-  EXPECT_NE(r.exit_code, kSuccess) << r;
+  EXPECT_EQ(r.exit_code, kInvalidInput) << r;
+  const std::vector<std::string> errors = error_lines(r.err);
+  ASSERT_EQ(errors.size(), 1u) << r;
+  EXPECT_TRUE(contains(errors[0], "the processes disagree: process 1 of 2")) << r;
+  EXPECT_FALSE(fs::exists(output())) << "nothing is written";
+}
+
+TEST_F(CliParallel, AnErrorOfOneProcessAloneStopsEveryProcess) {
+  // the same command on the same case file, run from another directory by each process: the
+  // Gmsh mesh the case names exists for process 0 only. Process 0 goes on and waits for
+  // process 1 in the next collective operation; process 1 reports its error with its rank and
+  // stops them both, with the exit code of invalid input
+  const std::string text = "[[mesh.gmsh]]\nfile = \"mesh.msh\"\nmaterials = { cartilage = "
+                           "\"soft\" }\n\n[materials.soft]\ntype = \"neo-hookean\"\nE = 1.0\n\n"
+                           "[[boundary.fixed]]\nset = \"cartilage\"\n\n[time]\nend_time = 1.0\n"
+                           "dt = 0.5\n";
+  const fs::path dir =
+      write_file("rank.sh", "cd r${OMPI_COMM_WORLD_RANK:-$PMI_RANK} && exec \"$@\"\n")
+          .parent_path();
+  for (const char* rank : {"r0", "r1"}) {
+    fs::create_directories(dir / rank);
+    write_file(std::string(rank) + "/case.toml", text);
+  }
+  fs::copy_file(fs::path(TRIFEM_SOURCE_DIR) / "tests/unit/mesh/data/two_hex_v22.msh",
+                dir / "r0" / "mesh.msh");
+  const Result r = run(shell_quoted(kMpiexec.string()) + " --oversubscribe -np 2 sh rank.sh " +
+                           shell_quoted(kExe.string()),
+                       {"run", "case.toml", "-o", "out"});
+  EXPECT_EQ(r.exit_code, kInvalidInput) << r;
   std::vector<std::string> errors = lines_of(r.err);
   std::erase_if(errors, [](const std::string& line) { return !line.starts_with("error"); });
   ASSERT_EQ(errors.size(), 1u) << r;
-  EXPECT_TRUE(errors[0].starts_with("error (process 1 of 2): " + bad.string() + ": bogus")) << r;
+  EXPECT_TRUE(errors[0].starts_with("error (process 1 of 2): case.toml")) << r;
+  EXPECT_TRUE(contains(errors[0], "mesh.msh")) << r;
   EXPECT_TRUE(contains(errors[0], "the other processes are stopped")) << r;
   EXPECT_EQ(count_of(r.out, "completed: "), 0u) << r;
 }

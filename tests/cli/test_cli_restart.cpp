@@ -3,13 +3,23 @@
 // restart file with --restart, gives the history of the uninterrupted run at every time after
 // the restart to 1e-12 of the largest magnitude of the columns of the same unit (steps, Newton
 // iterations and time steps identical). Bad restart files and restarts of other cases are input
-// errors.
+// errors (exit 2, one error line naming the restart file): files of another case with the same
+// number of degrees of freedom (the part of the case that differs is named), damaged files
+// (checksum), consistently damaged values (time, time step, array lengths, active step, offsets,
+// released reactions) and files of restart format 1. Settings that do not change the state
+// (title, output, solver, the end of the run) may differ.
 #include "cli_harness.hpp"
+#include "restart_file_layout.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <functional>
+#include <limits>
 #include <map>
+#include <string>
+#include <string_view>
+#include <vector>
 
 namespace trifem::cli_test {
 namespace {
@@ -114,7 +124,10 @@ TEST_F(Cli, RestartOfAnotherCaseOrAtTheEndIsAnInputError) {
   Result r = trifem({"run", example_case("biphasic_creep").string(), "-o",
                      (output() / "other").string(), "--restart", files.front().string()});
   EXPECT_EQ(r.exit_code, kInvalidInput) << r;
-  EXPECT_TRUE(contains(r.err, "degrees of freedom")) << r;
+  EXPECT_TRUE(contains(r.err, files.front().string() + ": the restart file was written for "
+                                                       "another case (it differs from this "
+                                                       "case in its mesh, degrees of freedom"))
+      << r;
   r = trifem({"run", example_case("confined_column").string(), "-o", (output() / "end").string(),
               "--restart", files.back().string()});
   EXPECT_EQ(r.exit_code, kInvalidInput) << r;
@@ -123,6 +136,167 @@ TEST_F(Cli, RestartOfAnotherCaseOrAtTheEndIsAnInputError) {
               (output() / "explicit").string(), "--write-restart"});
   EXPECT_EQ(r.exit_code, kInvalidInput) << r;
   EXPECT_TRUE(contains(r.err, "quasi-static analyses only")) << r;
+}
+
+/// The two-step case of the restart tests (its restart files hold offsets and released
+/// reactions).
+std::string steps_case() {
+  return read_text(kData / "restart_steps.toml");
+}
+
+/// `text` with its one occurrence of `from` replaced by `to` (the text unchanged, and a test
+/// failure, if there is not exactly one).
+std::string replaced(std::string_view text, std::string_view from, std::string_view to) {
+  std::string out(text);
+  const auto at = out.find(from);
+  EXPECT_TRUE(at != std::string::npos && out.find(from, at + 1) == std::string::npos)
+      << "the case has not exactly one '" << from << "'";
+  return at == std::string::npos ? out : out.replace(at, from.size(), to);
+}
+
+using test::get;
+using test::put;
+using test::RestartLayout;
+
+class CliRestartFile : public Cli {
+protected:
+  void SetUp() override {
+    Cli::SetUp();
+    steps_case_ = write_file("steps.toml", steps_case());
+    const Result r = trifem(
+        {"-q", "run", steps_case_.string(), "-o", (dir_ / "ref").string(), "--write-restart"});
+    ASSERT_EQ(r.exit_code, kSuccess) << r;
+    restart_ = dir_ / "ref" / "restart_0007.bin"; // t = 1.75 s, in the second step
+    bytes_ = read_text(restart_);
+    ASSERT_FALSE(bytes_.empty()) << restart_;
+  }
+
+  /// Runs `case_file` from `restart` into a new output directory.
+  Result run_from(const fs::path& case_file, const fs::path& restart) const {
+    return trifem(
+        {"-q", "run", case_file.string(), "-o", output().string(), "--restart", restart.string()});
+  }
+
+  /// A copy of the restart file changed by `edit`, with its header resealed if `reseal`.
+  fs::path changed_copy(const std::string& name,
+                        const std::function<void(std::string&, const RestartLayout&)>& edit,
+                        bool reseal) const {
+    std::string bytes = bytes_;
+    edit(bytes, test::restart_layout(bytes_));
+    if (reseal)
+      test::reseal(bytes);
+    return write_file(name, bytes);
+  }
+
+  /// Exit code 2, one error line that starts with the restart file and holds `part`, and no
+  /// output directory.
+  void expect_rejected(const Result& r, const fs::path& restart, std::string_view part) const {
+    EXPECT_EQ(r.exit_code, kInvalidInput) << r;
+    const std::vector<std::string> errors = error_lines(r.err);
+    ASSERT_EQ(errors.size(), 1u) << r;
+    EXPECT_TRUE(errors[0].starts_with("error: " + restart.string() + ": ")) << r;
+    EXPECT_TRUE(contains(errors[0], part)) << "'" << part << "' is not named" << r;
+    EXPECT_FALSE(fs::exists(output())) << "an invalid restart must not create the output";
+  }
+
+  fs::path steps_case_, restart_;
+  std::string bytes_;
+};
+
+TEST_F(CliRestartFile, ACaseWithOtherMaterialsOrGeometryNamesTheFileAndThePart) {
+  const fs::path stiff = write_file("stiff.toml", replaced(steps_case(), "E = 1.0", "E = 100.0"));
+  expect_rejected(run_from(stiff, restart_), restart_,
+                  "the restart file was written for another case (it differs from this case in "
+                  "its materials): restart with the case that wrote the file");
+  const fs::path flat = write_file(
+      "flat.toml", replaced(steps_case(), "size = [1.0, 1.0, 1.0]", "size = [3.0, 3.0, 0.5]"));
+  expect_rejected(run_from(flat, restart_), restart_,
+                  "(it differs from this case in its mesh): restart with the case that wrote the "
+                  "file");
+}
+
+TEST_F(CliRestartFile, SettingsThatDoNotChangeTheStateMayDiffer) {
+  std::string text = replaced(steps_case(), "restart steps case", "another title");
+  text = replaced(text, "interval = 0.25", "interval = 0.5");
+  text = replaced(text, "end_time = 2.0", "end_time = 3.0");
+  text = replaced(text, "[output]", "[solver]\nresidual_tolerance = 1e-10\n\n[output]");
+  const Result r = run_from(write_file("longer.toml", text), restart_);
+  ASSERT_EQ(r.exit_code, kSuccess) << r;
+  const History h = read_history(output() / "history.csv");
+  ASSERT_GE(h.columns[0].size(), 2u);
+  EXPECT_EQ(h.columns[0].front(), 1.75) << "the first row is the restart state";
+  EXPECT_EQ(h.columns[0].back(), 3.0) << "the run goes on to the new end";
+}
+
+TEST_F(CliRestartFile, ADamagedFileIsAnInputErrorNamingIt) {
+  const fs::path damaged = changed_copy(
+      "damaged.bin", [](std::string& b, const RestartLayout&) { b[b.size() / 2] ^= 0x10; }, false);
+  expect_rejected(run_from(steps_case_, damaged), damaged,
+                  "the restart file is damaged: its checksum does not match its contents");
+  const fs::path truncated = write_file("truncated.bin", bytes_.substr(0, bytes_.size() - 8));
+  expect_rejected(run_from(steps_case_, truncated), truncated, "is truncated or damaged");
+}
+
+/// The header fields of restart_header_fields.sh, damaged as there (the checksum then fails)
+/// and consistently (resealed: the checks of the values fail).
+TEST_F(CliRestartFile, DamagedHeaderFieldsAreInputErrors) {
+  struct Field {
+    std::string name;
+    std::function<void(std::string&, const RestartLayout&)> edit;
+    std::string resealed_message;
+  };
+  const std::vector<Field> fields = {
+      {"time_zero", [](auto& b, auto&) { put(b, RestartLayout::kTime, 0.0); },
+       "its time is t = 0 s"},
+      {"dt_nan",
+       [](auto& b, auto&) { put(b, RestartLayout::kDt, std::numeric_limits<double>::quiet_NaN()); },
+       "its next time step is nan s, not a positive number"},
+      {"len_2e29",
+       [](auto& b, auto&) { put<std::int64_t>(b, RestartLayout::kStateLength, 1 << 29); },
+       "the state vector gives 536870912 entries where the"},
+  };
+  for (const Field& f : fields) {
+    SCOPED_TRACE(f.name);
+    const fs::path plain = changed_copy(f.name + ".bin", f.edit, false);
+    expect_rejected(run_from(steps_case_, plain), plain, "is damaged: its checksum");
+    const fs::path resealed = changed_copy(f.name + "_resealed.bin", f.edit, true);
+    expect_rejected(run_from(steps_case_, resealed), resealed, f.resealed_message);
+  }
+}
+
+/// The corruptions of restart_released_dof_segv.sh, restart_offsets_short_silent.sh and
+/// restart_active_step_unclear.sh, resealed so that the checks behind the checksum see them.
+TEST_F(CliRestartFile, TheCampaignsCorruptionsAreInputErrorsNamingTheFile) {
+  const fs::path released = changed_copy(
+      "released.bin",
+      [](auto& b, auto& l) { put<std::int64_t>(b, l.released_count + 8, 1'000'000'000); }, true);
+  expect_rejected(
+      run_from(steps_case_, released), released,
+      "on degree of freedom 1000000000, not a finite force on a free degree of freedom");
+  const fs::path offsets = changed_copy(
+      "offsets.bin",
+      [](auto& b, auto& l) {
+        const auto n = get<std::int64_t>(b, l.offsets[0]);
+        put<std::int64_t>(b, l.offsets[0], 0);
+        b.erase(l.offsets[0] + 8, 8 * static_cast<std::size_t>(n));
+      },
+      true);
+  expect_rejected(run_from(steps_case_, offsets), offsets,
+                  "holds 0 offsets for step[2].boundary.prescribed");
+  const fs::path step = changed_copy(
+      "step.bin", [](auto& b, auto& l) { put<std::int64_t>(b, l.active_step, 0); }, true);
+  expect_rejected(run_from(steps_case_, step), step,
+                  "its state at t = 1.75 s is in analysis step 1 'press', which runs from t = 0 "
+                  "to 1 s");
+}
+
+TEST_F(CliRestartFile, AFileOfRestartFormat1IsAnInputError) {
+  std::string v1 = bytes_.substr(0, 64); // format 1 had the same magic, then version 1
+  put<std::int64_t>(v1, RestartLayout::kVersion, 1);
+  const fs::path old = write_file("format1.bin", v1);
+  expect_rejected(run_from(steps_case_, old), old,
+                  "the restart file was written by an older trifem (restart format 1); this "
+                  "trifem reads format 2");
 }
 
 } // namespace

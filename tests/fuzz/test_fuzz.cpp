@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
 #include <cstdlib>
 #include <sstream>
 #include <string>
@@ -178,6 +179,12 @@ void PrintTo(const Base& base, std::ostream* os) {
   *os << base.name;
 }
 
+/// One line per mutated input, which scripts/fuzz-campaign.sh adds up.
+void report_count(const std::string& name, int checks, int runs) {
+  std::printf("[ fuzz ] %s: %d check and %d run mutants (seed %#llx)\n", name.c_str(), checks, runs,
+              static_cast<unsigned long long>(kSeedUsed));
+}
+
 class CaseFuzz : public ::testing::TestWithParam<Base> {};
 
 TEST_P(CaseFuzz, MutantsKeepTheContract) {
@@ -202,6 +209,7 @@ TEST_P(CaseFuzz, MutantsKeepTheContract) {
     run_trial(t, dir);
     fs::remove(file);
   }
+  report_count(base.name, checks, total - checks);
 }
 
 std::string base_name(const ::testing::TestParamInfo<Base>& info) {
@@ -266,6 +274,7 @@ TEST_P(MeshFuzz, MutantsKeepTheContract) {
     run_trial({{kExe.string(), "check", case_file.string()}, mesh, case_file, {}, m.description},
               dir);
   }
+  report_count("mesh_" + base.name, kScale * kMshMutants, 0);
 }
 
 std::string mesh_name(const ::testing::TestParamInfo<MeshBase>& info) {

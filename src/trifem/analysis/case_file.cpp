@@ -14,19 +14,6 @@ io::CaseSpec read_case_file(const std::filesystem::path& file) {
   return feb::is_feb_file(file) ? feb::read_feb(file) : io::read_case(file);
 }
 
-namespace {
-
-void refine_time(io::TimeSpec& t, Real start_time, Real factor, const std::string& where) {
-  t.dt *= factor;
-  t.dt_min *= factor;
-  t.dt_max *= factor;
-  TRIFEM_CHECK(t.dt <= 0.0 || (t.end_time - start_time) / t.dt <= io::kMaxSteps,
-               "--refine-time: {} would need more than {:g} steps of {:g} s", where, io::kMaxSteps,
-               t.dt);
-}
-
-} // namespace
-
 void refine_case(io::CaseSpec& spec, const Refinement& refinement) {
   TRIFEM_CHECK(refinement.mesh_levels >= 0 && refinement.time_levels >= 0,
                "refinement levels must be 0 or more (given: mesh {}, time {})",
@@ -36,14 +23,22 @@ void refine_case(io::CaseSpec& spec, const Refinement& refinement) {
                "--refine-mesh: {} levels of mesh refinement in all, more than the {} allowed "
                "(each level multiplies the cells by eight)",
                spec.mesh_refinement, io::kMaxMeshRefinement);
-  if (refinement.time_levels == 0)
+  if (refinement.mesh_levels == 0 && refinement.time_levels == 0)
     return;
-  const Real factor = std::ldexp(1.0, -refinement.time_levels);
-  refine_time(spec.time, 0.0, factor, "[time]");
-  Real start = 0.0;
-  for (io::StepSpec& step : spec.steps) {
-    refine_time(step.time, start, factor, step.key);
-    start = step.time.end_time;
+  const Real factor = std::ldexp(1.0, -refinement.time_levels); // 0 once it underflows
+  const auto refine = [factor](io::TimeSpec& t) {
+    t.dt *= factor;
+    t.dt_min *= factor;
+    t.dt_max *= factor;
+  };
+  refine(spec.time);
+  for (io::StepSpec& step : spec.steps)
+    refine(step.time);
+  try {
+    io::check_limits(spec); // the refined case must fit the reader's limits too
+  } catch (const InputError& e) {
+    throw InputError(fmt::format("{} (after --refine-mesh {} --refine-time {})", e.what(),
+                                 refinement.mesh_levels, refinement.time_levels));
   }
 }
 

@@ -8,6 +8,7 @@
 #include "trifem/core/error.hpp"
 #include "trifem/core/interrupt.hpp"
 #include "trifem/core/log.hpp"
+#include "trifem/core/printable.hpp"
 #include "trifem/explicit/energy_balance.hpp"
 #include "trifem/model/explicit_case.hpp"
 
@@ -374,14 +375,19 @@ int run_explicit_case(const io::CaseSpec& spec, const std::filesystem::path& out
   const std::unique_ptr<ed::ExplicitSolver> solver = make_solver(spec, c);
   start_output_directory(output_dir, spec);
   ExplicitOutput output(c, spec.output, output_dir);
-  log::add_file((output_dir / "run.log").string());
+  RunStats stats(*c.model);
+  try {
+    log::add_file((output_dir / "run.log").string());
+  } catch (const OutputError& e) {
+    stats.output_failure = e.what();
+  }
   log_model(spec, c);
   log_time_step(*solver, spec);
   output.write_initial(*solver);
 
-  RunStats stats(*c.model);
   try {
-    advance(spec, *solver, output, stats);
+    if (stats.output_failure.empty())
+      advance(spec, *solver, output, stats);
   } catch (const OutputError& e) { // solved, but the results cannot be written
     stats.output_failure =
         fmt::format("the results at t = {:.6g} could not be written: {}", solver->time(), e.what());
@@ -403,9 +409,9 @@ int run_explicit_case(const io::CaseSpec& spec, const std::filesystem::path& out
               "results (history.csv, total_energy [mJ])",
               100.0 * stats.balance.max_error());
   try {
-    write_summary_file(output_dir / "summary.json", summary_json);
+    write_final_summary(output_dir / "summary.json", summary_json);
   } catch (const OutputError& e) {
-    std::cerr << "error: " << spec.file.string() << ": " << e.what() << '\n';
+    std::cerr << "error: " << spec.file.string() << ": " << printable(e.what()) << '\n';
     return kAnalysisFailed;
   }
   if (stats.interrupted) {
@@ -416,7 +422,7 @@ int run_explicit_case(const io::CaseSpec& spec, const std::filesystem::path& out
   if (!stats.completed()) {
     if (!stats.failure.ok())
       log::info("run stopped: {} ({})", stats.failure.message, ed::to_string(stats.failure.status));
-    std::cerr << "error: " << spec.file.string() << ": " << stats.message() << '\n';
+    std::cerr << "error: " << spec.file.string() << ": " << printable(stats.message()) << '\n';
     return kAnalysisFailed;
   }
   return kSuccess;

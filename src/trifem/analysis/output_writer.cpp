@@ -176,9 +176,11 @@ void OutputWriter::write_vtu(Real time, int number) {
   grid.cell_data = cell_fields(model_);
   if (piece_cells_) { // several processes: a piece each, listed by rank 0's .pvtu file
     const auto piece = fmt::format("volume_{:04d}_{}.vtu", number, parallel::rank());
-    if (const auto bad = io::write_vtu(directory_ / piece, io::piece_of(grid, *piece_cells_));
-        bad > 0)
-      log::warn("  {} non-finite values written to {}", bad, piece);
+    parallel::agree_on_output([&] { // no list names a state before all its pieces are written
+      if (const auto bad = io::write_vtu(directory_ / piece, io::piece_of(grid, *piece_cells_));
+          bad > 0)
+        log::warn("  {} non-finite values written to {}", bad, piece);
+    });
     if (!writes_files_)
       return;
     std::vector<std::string> pieces;
@@ -219,9 +221,9 @@ void OutputWriter::write(Real time, int step, Real dt, int iterations, bool volu
   parallel::agree_on_output([&] { // all go on, or all stop, if one process cannot write
     if (writes_files_)
       history_->write_row(history_row(time, step, dt, iterations));
-    if (volume)
-      write_state(time);
   });
+  if (volume) // every process writes its part (write_vtu agrees on the pieces first)
+    parallel::agree_on_output([&] { write_state(time); });
   seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 

@@ -2,14 +2,30 @@
 // Restart files: the converged state of a quasi-static run at an output time (state vector,
 // the terms' histories, the analysis step and the step controller's next step), from which
 // `trifem run --restart` continues as if the run had not stopped.
+//
+// Format version 2 (native byte order; integers int64, reals IEEE double):
+//   header   magic "trifem restart" (16 bytes, zero-padded), version = 2, payload bytes,
+//            checksum (FNV-1a 64 of the header's first 32 bytes and of the payload)
+//   payload  case fingerprint (kCaseParts hashes, restart_fingerprint.hpp); time; dt; steps;
+//            state (length, values); active step (-1: none) and, if one is active, its
+//            conditions (count; per condition the offsets' length and values) and released
+//            reactions (count; per reaction DOF and force); term histories (count; per term
+//            length and values)
+// The reader verifies the header and the checksum before it interprets anything, then the
+// fingerprint, then every value against the case (docs/cli.md, "Restart files").
 #pragma once
 
+#include "trifem/io/case_spec.hpp"
 #include "trifem/model/model.hpp"
 
+#include <cstdint>
 #include <filesystem>
 #include <vector>
 
 namespace trifem::analysis {
+
+/// The restart format this trifem writes and reads.
+inline constexpr std::int64_t kRestartFormat = 2;
 
 /// Where a run continues from.
 struct Resume {
@@ -18,14 +34,20 @@ struct Resume {
   int steps = 0;   ///< steps accepted before it (the step count continues)
 };
 
-/// Writes the current (converged) state of `model` at `resume.time` to `file` atomically
-/// (a temporary file renamed onto it). OutputError if it cannot be written.
-void write_restart(const std::filesystem::path& file, const model::Model& model,
-                   const Resume& resume);
+/// Writes the current (converged) state of `model` (built from `spec`) at `resume.time` to
+/// `file` atomically (a temporary file renamed onto it). OutputError if it cannot be written.
+void write_restart(const std::filesystem::path& file, const io::CaseSpec& spec,
+                   const model::Model& model, const Resume& resume);
 
-/// Reads `file` into `model` (built from the same case): state, term histories and the active
-/// analysis step with its offsets and released reactions. InputError naming the file if it is
-/// not a restart file, is truncated or was written for another model.
-Resume read_restart(const std::filesystem::path& file, model::Model& model);
+/// Reads `file` into `model` (built from `spec`, not yet run): state, term histories and the
+/// active analysis step with its offsets and released reactions. Every failure is an
+/// InputError whose message starts with the file's path: not a restart file, another format
+/// version, truncated or damaged (checksum), written for another case (the parts of the
+/// fingerprint that differ are named), values that do not fit the case (time outside the run
+/// or the active step, offsets or histories of other lengths, released DOFs out of range), or
+/// a state at the end of the run (nothing left to run). The model is only changed once the
+/// whole file has been checked.
+Resume read_restart(const std::filesystem::path& file, const io::CaseSpec& spec,
+                    model::Model& model);
 
 } // namespace trifem::analysis

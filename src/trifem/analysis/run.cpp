@@ -8,6 +8,7 @@
 #include "trifem/core/error.hpp"
 #include "trifem/core/interrupt.hpp"
 #include "trifem/core/log.hpp"
+#include "trifem/core/printable.hpp"
 #include "trifem/linalg/auto_solver.hpp"
 #include "trifem/linalg/linear_solver.hpp"
 #include "trifem/mesh/mesh.hpp"
@@ -21,6 +22,7 @@
 #include <fmt/ranges.h>
 #include <fstream>
 #include <iostream>
+#include <new>
 #include <nlohmann/json.hpp>
 #include <numeric>
 #include <omp.h>
@@ -219,21 +221,35 @@ int finish_run(const io::CaseSpec& spec, const std::filesystem::path& output_dir
   if (!parallel::is_root()) // rank 0 writes and reports for all
     return run.success ? kSuccess : run.interrupted ? interrupted_exit_code() : kAnalysisFailed;
   try {
-    write_summary_file(output_dir / "summary.json", summary_json);
+    write_final_summary(output_dir / "summary.json", summary_json);
   } catch (const OutputError& e) {
-    std::cerr << "error: " << spec.file.string() << ": " << e.what() << '\n';
+    std::cerr << "error: " << spec.file.string() << ": " << printable(e.what()) << '\n';
     return kAnalysisFailed;
   }
   if (run.interrupted) {
-    std::cerr << "error: " << spec.file.string() << ": " << run.failure
+    std::cerr << "error: " << spec.file.string() << ": " << printable(run.failure)
               << " (results up to the last accepted step are kept)\n";
     return interrupted_exit_code();
   }
   if (!run.success) {
-    std::cerr << "error: " << spec.file.string() << ": " << run.failure << '\n';
+    std::cerr << "error: " << spec.file.string() << ": " << printable(run.failure) << '\n';
     return kAnalysisFailed;
   }
   return kSuccess;
+}
+
+/// Copies the log to `output_dir`/run.log from now on (rank 0); the reason if it cannot be
+/// opened, the same on every process.
+std::string open_run_log(const std::filesystem::path& output_dir) {
+  try {
+    parallel::agree_on_output([&] {
+      if (parallel::is_root())
+        log::add_file((output_dir / "run.log").string());
+    });
+    return {};
+  } catch (const OutputError& e) {
+    return e.what();
+  }
 }
 
 /// The state at t = 0 (or at the restart time) with its reactions; the reason if it cannot be
@@ -248,14 +264,10 @@ std::string write_initial_state(OutputWriter& output, const std::optional<Resume
 }
 
 /// Reads the restart file into the model; InputError (naming the file) if it does not fit the
-/// case or holds the end of the run.
+/// case or holds the end of the run (read_restart).
 Resume resume_from(const std::filesystem::path& file, const io::CaseSpec& spec,
                    model::Model& model) {
-  const Resume resume = read_restart(file, model);
-  TRIFEM_CHECK(resume.time < spec.time.end_time * (1.0 - 1e-10),
-               "{}: the restart state is at t = {} s, the end of the run (time.end_time = {} s): "
-               "nothing is left to run",
-               file.string(), resume.time, spec.time.end_time);
+  const Resume resume = read_restart(file, spec, model);
   log::info("continuing from {} at t = {} s (after {} steps)", file.string(), resume.time,
             resume.steps);
   return resume;
@@ -409,8 +421,10 @@ solver::NewtonSettings newton_settings(const io::SolverSpec& s) {
   return n;
 }
 
-int run_case(const io::CaseSpec& spec, const std::filesystem::path& output_dir,
-             const RunOptions& options) {
+namespace {
+
+int run_any_case(const io::CaseSpec& spec, const std::filesystem::path& output_dir,
+                 const RunOptions& options) {
   if (spec.is_explicit() || spec.has_explicit_step()) {
     TRIFEM_CHECK(!parallel::active(),
                  "{}: the explicit analysis runs on one process; run this case without mpirun "
@@ -424,6 +438,24 @@ int run_case(const io::CaseSpec& spec, const std::filesystem::path& output_dir,
                               : run_mixed_case(spec, output_dir);
   }
   return run_quasi_static_case(spec, output_dir, options);
+}
+
+} // namespace
+
+int run_case(const io::CaseSpec& spec, const std::filesystem::path& output_dir,
+             const RunOptions& options) {
+  try {
+    return run_any_case(spec, output_dir, options);
+  } catch (const std::bad_alloc&) { // reported by the caller; the summary must not say running
+    abandon_summary("out of memory: the model is too large for the memory available");
+    throw;
+  } catch (const InputError& e) {
+    abandon_summary(e.what());
+    throw;
+  } catch (const std::exception& e) {
+    abandon_summary(fmt::format("internal error: {}", e.what()));
+    throw;
+  }
 }
 
 int run_quasi_static_case(const io::CaseSpec& spec, const std::filesystem::path& output_dir,
@@ -440,8 +472,7 @@ int run_quasi_static_case(const io::CaseSpec& spec, const std::filesystem::path&
       start_output_directory(output_dir, spec);
   });
   OutputWriter output(*model, spec.output, output_dir, spec.time.end_time);
-  if (parallel::is_root())
-    log::add_file((output_dir / "run.log").string());
+  const std::string log_failure = open_run_log(output_dir);
   log_model(spec, *model);
   log_partition(*model);
 
@@ -450,9 +481,15 @@ int run_quasi_static_case(const io::CaseSpec& spec, const std::filesystem::path&
   const solver::StepController* controller = nullptr; // of the current analysis step
   solver::RunReport run;
   solver::Linearization initial;
-  if (model->problem->linearize(initial, false) != solver::SolveStatus::Converged) {
-    run.failure = "the initial state (t = 0) inverts an element (J <= 0); prescribed values "
-                  "without a load curve apply from t = 0";
+  if (!log_failure.empty()) {
+    run.failure = log_failure;
+  } else if (model->problem->linearize(initial, false) != solver::SolveStatus::Converged) {
+    run.failure = "the initial state (t = 0) inverts an element (J <= 0; prescribed values "
+                  "without a load curve apply from t = 0) or a material law cannot be evaluated "
+                  "there";
+  } else if (!initial.residual.allFinite()) {
+    run.failure = "the forces of the initial state (t = 0) are not finite: a material parameter "
+                  "or a load is beyond what the laws can evaluate";
   } else if (std::string why = write_initial_state(output, resume); !why.empty()) {
     run.failure = why;
   } else {
@@ -472,7 +509,7 @@ int run_quasi_static_case(const io::CaseSpec& spec, const std::filesystem::path&
         parallel::agree_on_output([&] {
           if (parallel::is_root())
             write_restart(output_dir / fmt::format("restart_{:04d}.bin", output.last_state_index()),
-                          *model, {controller->time(), controller->dt(), info.step});
+                          spec, *model, {controller->time(), controller->dt(), info.step});
         });
     };
     run = run_steps(

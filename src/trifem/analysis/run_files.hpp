@@ -13,8 +13,20 @@ namespace trifem::analysis {
 /// Creates `directory`, removes the result files an earlier run left there (only trifem's own
 /// file names: results.pvd, volume_NNNN.vtu, contact files, history.csv, summary.json, run.log)
 /// and writes a summary.json with "status": "running", so that the files of a run that is
-/// killed are never mistaken for those of a completed one. OutputError if impossible.
+/// killed are never mistaken for those of a completed one. Until write_final_summary or
+/// abandon_summary, a signal that requests a stop rewrites it at once as "interrupted" (the
+/// process may be killed before the run reaches its next poll, as mpirun does after forwarding
+/// SIGTERM). OutputError if impossible.
 void start_output_directory(const std::filesystem::path& directory, const io::CaseSpec& spec);
+
+/// Writes the summary a run ends with (after stopping the signal notice of
+/// start_output_directory, which must not overwrite it); OutputError if it cannot be written.
+void write_final_summary(const std::filesystem::path& file, const nlohmann::json& summary);
+
+/// For a run ended by an error that no summary describes (an exception after
+/// start_output_directory): summary.json gets "status": "failed" with `why`. Does nothing if
+/// the final summary was written; never throws.
+void abandon_summary(const std::string& why) noexcept;
 
 /// True for the names of the files a run writes into its output directory.
 bool is_result_file_name(const std::string& name);

@@ -2,6 +2,7 @@
 #include "trifem/contact/contact_term.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <iterator>
 
 namespace trifem::contact {
@@ -199,8 +200,14 @@ void ContactTerm::restore_history(const std::vector<double>& values) {
   committed_projected_.assign(n, 0);
   committed_pressure_.assign(n, 0.0);
   for (Index k = 0; k < n; ++k) {
-    flags[k] = static_cast<char>(values[3 * k]);
-    committed_projected_[k] = static_cast<char>(values[3 * k + 1]);
+    const Real status = values[3 * k], projected = values[3 * k + 1];
+    TRIFEM_CHECK((status == 0 || status == 1 || status == 2) &&
+                     (projected == 0 || projected == 1) && std::isfinite(values[3 * k + 2]),
+                 "the restart file holds an invalid contact state of slave node {} (status {}, "
+                 "projected {}, pressure {})",
+                 k, status, projected, values[3 * k + 2]);
+    flags[k] = static_cast<char>(status);
+    committed_projected_[k] = static_cast<char>(projected);
     committed_pressure_[k] = values[3 * k + 2];
   }
   active_.assign(flags);

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "trifem/core/log.hpp"
 
+#include "trifem/core/error.hpp"
+
 #include <spdlog/sinks/basic_file_sink.h>
 #include <spdlog/sinks/stdout_color_sinks.h>
 
@@ -27,7 +29,12 @@ void configure(Level level) {
 }
 
 void add_file(const std::string& path) {
-  auto sink = std::make_shared<spdlog::sinks::basic_file_sink_mt>(path, true);
+  std::shared_ptr<spdlog::sinks::basic_file_sink_mt> sink;
+  try {
+    sink = std::make_shared<spdlog::sinks::basic_file_sink_mt>(path, true);
+  } catch (const spdlog::spdlog_ex& e) {
+    throw OutputError(fmt::format("cannot write the log file {}: {}", path, e.what()));
+  }
   sink->set_pattern("%v");
   sink->set_level(spdlog::level::debug);
   spdlog::default_logger()->sinks().push_back(sink);

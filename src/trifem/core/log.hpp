@@ -14,6 +14,7 @@ enum class Level { Silent, Quiet, Normal, Verbose };
 void configure(Level level);
 
 /// Adds a plain-text log file sink (e.g. results/run.log); every later message also goes there.
+/// OutputError if the file cannot be opened.
 void add_file(const std::string& path);
 
 using spdlog::debug;

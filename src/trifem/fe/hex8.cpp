@@ -61,4 +61,20 @@ std::optional<HexGeometry> hex8_geometry(const HexCoords& X) {
   return geo;
 }
 
+std::optional<ReversedCorner> hex8_reversed_corner(const HexCoords& X, const HexCoords& x,
+                                                   Real tolerance) {
+  std::optional<ReversedCorner> worst;
+  for (int a = 0; a < 8; ++a) {
+    const auto& r = mesh::kHexNodeCoords[a];
+    const HexShapeGrad dN = hex8_shape_grad(Vec3(r[0], r[1], r[2]));
+    const Real reference = (X.transpose() * dN).determinant();
+    if (!(reference > 0.0))
+      continue; // a corner the reference mesh folds already: nothing to compare with
+    const Real ratio = (x.transpose() * dN).determinant() / reference;
+    if (!(ratio >= -tolerance) && (!worst || ratio < worst->ratio))
+      worst = ReversedCorner{a, ratio};
+  }
+  return worst;
+}
+
 } // namespace trifem::fe

@@ -36,4 +36,20 @@ struct HexGeometry {
 /// (inverted or degenerate cell).
 std::optional<HexGeometry> hex8_geometry(const HexCoords& X);
 
+/// A corner of a hex8 cell whose volume map has turned over: `ratio` = det(dx/dxi) / det(dX/dxi)
+/// at the node `corner` (0-7), negative.
+struct ReversedCorner {
+  int corner = -1;
+  Real ratio = 0.0;
+};
+
+/// The corner of a hex8 cell (reference coordinates `X`, current `x`) whose volume map has
+/// turned over the most, if any has by more than `tolerance` of its reference measure
+/// (det(dx/dxi) < -tolerance det(dX/dxi) at the node). A cell turned inside out or everted (a
+/// body pushed through its own support) has such corners even where det(dx/dxi) > 0 at every
+/// Gauss point; a coarse cell under strong compression may fold a corner slightly (a few
+/// percent) and unfold it again, which a tolerance of the order of 1 lets pass.
+std::optional<ReversedCorner> hex8_reversed_corner(const HexCoords& X, const HexCoords& x,
+                                                   Real tolerance);
+
 } // namespace trifem::fe

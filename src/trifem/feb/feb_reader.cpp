@@ -89,6 +89,20 @@ void check_sections(const Reader& r, pugi::xml_node root) {
   }
 }
 
+/// FEBio reads every section it meets, so a model may split its conditions over several
+/// <Boundary>, <Loads> or <Contact> sections (all read here, in order); the sections that
+/// define the model once are refused when repeated, rather than one of them being ignored.
+void check_single_sections(const Reader& r, pugi::xml_node root) {
+  for (const char* name : {"Module", "Globals", "Control", "Material", "Mesh", "MeshDomains",
+                           "Rigid", "Initial", "LoadData", "Output"}) {
+    const pugi::xml_node first = root.child(name);
+    if (const pugi::xml_node second = first.next_sibling(name))
+      r.doc.fail(second, fmt::format("a second <{}> section (the first is at line {}): trifem "
+                                     "reads one <{}> section; merge them",
+                                     name, r.doc.line(first), name));
+  }
+}
+
 /// Curves extended by EXTRAPOLATE must cover the run (then they equal CONSTANT ones).
 void check_curve_extents(const Reader& r) {
   for (const auto& e : r.curve_extents)
@@ -103,6 +117,7 @@ void read_sections(Reader& r) {
   const pugi::xml_node root = r.doc.root();
   r.version = version(r.doc, root);
   check_sections(r, root);
+  check_single_sections(r, root);
   read_module(r, root);
   if (const pugi::xml_node globals = root.child("Globals"))
     detail::read_globals(r, globals);
@@ -113,9 +128,9 @@ void read_sections(Reader& r) {
   if (const pugi::xml_node data = root.child("LoadData"))
     detail::read_load_data(r, data);
   detail::map_fixed_charges(r);
-  if (const pugi::xml_node b = root.child("Boundary"))
+  for (const pugi::xml_node b : root.children("Boundary"))
     detail::read_boundary(r, b, r.spec.fixed, r.spec.prescribed, false);
-  if (const pugi::xml_node l = root.child("Loads"))
+  for (const pugi::xml_node l : root.children("Loads"))
     detail::read_loads(r, l, r.spec.pressures, r.spec.tractions, r.spec.prescribed, false);
   if (const pugi::xml_node rigid = root.child("Rigid"))
     detail::read_rigid(r, rigid);
@@ -125,7 +140,7 @@ void read_sections(Reader& r) {
   detail::read_steps(r, root);
   check_curve_extents(r);
   detail::map_baths(r);
-  if (const pugi::xml_node c = root.child("Contact"))
+  for (const pugi::xml_node c : root.children("Contact"))
     detail::read_contact(r, c, root.child("Mesh"));
   if (const pugi::xml_node o = root.child("Output"))
     detail::read_output(r, o);

@@ -8,6 +8,7 @@
 #include "trifem/io/toml_table.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cstdio>
 #include <fmt/format.h>
@@ -21,6 +22,10 @@ namespace {
 
 /// How much of the text is inspected for binary data.
 constexpr std::size_t kSniffBytes = 4096;
+/// Largest case file read: a case is text written by hand or by a converter.
+constexpr std::size_t kMaxCaseBytes = std::size_t{64} << 20;
+/// Most levels of a dotted key.
+constexpr std::size_t kMaxKeyDepth = 64;
 /// Longest source line quoted under a syntax error.
 constexpr std::size_t kMaxQuotedLine = 160;
 
@@ -75,13 +80,17 @@ std::size_t find_binary(std::string_view text) {
   return std::string_view::npos;
 }
 
-void check_text(std::string_view text, const std::string& name) {
-  if (text.find_first_not_of(" \t\r\n") == std::string_view::npos)
-    fail(name, "the case file is empty");
+void check_not_binary(std::string_view text, const std::string& name) {
   if (const std::size_t at = find_binary(text); at != std::string_view::npos)
     fail(name, fmt::format("not a text file (binary data found at byte {}); expected a TOML case "
                            "file",
                            at));
+}
+
+void check_text(std::string_view text, const std::string& name) {
+  if (text.find_first_not_of(" \t\r\n") == std::string_view::npos)
+    fail(name, "the case file is empty");
+  check_not_binary(text, name);
 }
 
 /// The source line `line` (1-based) with a caret under `column` (1-based, in code points), or ""
@@ -110,7 +119,46 @@ std::string quote_line(std::string_view text, std::size_t line, std::size_t colu
   return fmt::format("\n{:>6} | {}\n{:>6} | {}^", line, row, "", pad);
 }
 
+/// The most dots in one chain of key segments (bare words or quoted strings joined by dots,
+/// blanks allowed around them) on `line`: a dotted key's depth minus one. Numbers count as
+/// segments too, but a value holds no chain longer than a float's one dot.
+std::size_t key_dots(std::string_view line) {
+  std::size_t most = 0, chain = 0;
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    const char c = line[i];
+    if (c == '"' || c == '\'') { // a quoted segment: skip to its closing quote
+      for (++i; i < line.size() && line[i] != c; ++i)
+        i += c == '"' && line[i] == '\\' ? 1 : 0;
+    } else if (c == '.') {
+      most = std::max(most, ++chain);
+    } else if (c == '#') {
+      break;
+    } else if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '+' ||
+                 c == ' ' || c == '\t')) {
+      chain = 0; // '=', ',', brackets, braces: the chain ends
+    }
+  }
+  return most;
+}
+
+/// Refuses keys nested deeper than kMaxKeyDepth levels (a.b.c... = 1 or [a.b.c...]) before the
+/// parser builds them: the TOML library recurses through nested tables (a stack overflow at
+/// tens of thousands of levels), and no case nests deeper than a few.
+void check_key_depth(std::string_view text, const std::string& name) {
+  std::size_t line = 1;
+  for (std::size_t start = 0; start < text.size(); ++line) {
+    std::size_t end = text.find('\n', start);
+    end = end == std::string_view::npos ? text.size() : end;
+    if (key_dots(text.substr(start, end - start)) >= kMaxKeyDepth)
+      fail(name, fmt::format("line {}: a dotted key nested more than {} levels deep (a case file "
+                             "nests at most a few)",
+                             line, kMaxKeyDepth));
+    start = end + 1;
+  }
+}
+
 toml::table parse_toml(std::string_view text, const std::string& name) {
+  check_key_depth(text, name);
   try {
     return toml::parse(text, name);
   } catch (const toml::parse_error& e) {
@@ -140,8 +188,15 @@ std::string read_text(const std::filesystem::path& file) {
   std::string text;
   char buffer[1 << 14];
   std::size_t got = 0;
-  while ((got = std::fread(buffer, 1, sizeof buffer, stream.get())) > 0)
+  while ((got = std::fread(buffer, 1, sizeof buffer, stream.get())) > 0) {
     text.append(buffer, got);
+    if (text.size() == got) // the first block: a device or binary file is refused at once
+      check_not_binary(text, name);
+    if (text.size() > kMaxCaseBytes)
+      fail(name, fmt::format("the case file is larger than {} MB; a case file describes the "
+                             "model (its meshes belong in Gmsh files, [[mesh.gmsh]])",
+                             kMaxCaseBytes >> 20));
+  }
   if (std::ferror(stream.get()))
     fail(name, "cannot read the case file (read error)");
   return text;
@@ -169,6 +224,15 @@ CaseSpec parse_case(std::string_view text, const std::filesystem::path& file) {
   for (const std::string& warning : spec.warnings)
     log::warn("warning: {}: {}", name, warning);
   return spec;
+}
+
+void check_limits(const CaseSpec& spec) {
+  try {
+    detail::check_time_limits(nullptr, spec);
+    detail::check_model_size(nullptr, spec);
+  } catch (const InputError& e) {
+    fail(display_name(spec.file), e.what());
+  }
 }
 
 } // namespace trifem::io

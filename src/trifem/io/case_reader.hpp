@@ -19,4 +19,10 @@ CaseSpec read_case(const std::filesystem::path& file);
 /// relative paths (it need not exist).
 CaseSpec parse_case(std::string_view text, const std::filesystem::path& file);
 
+/// The limits read_case applies to the work a case implies (steps and cutbacks of [time] and of
+/// every [[step]], output times, the size of the model of the boxes), for a spec changed after
+/// it was read (e.g. refined by `trifem run --refine-mesh/--refine-time`). InputError starting
+/// with "<spec.file>: " if one is exceeded.
+void check_limits(const CaseSpec& spec);
+
 } // namespace trifem::io

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <climits>
 #include <cmath>
+#include <limits>
 
 namespace trifem::io::detail {
 namespace {
@@ -16,65 +17,99 @@ namespace {
 // ---------------------------------------------------------------------------------------------
 // Steps and output times
 
-/// The node of `key` in the table `section` of `root` (null if absent), for line numbers.
-const toml::node* node_of(const Table& root, std::string_view section, std::string_view key) {
-  const auto t = root.table(section);
-  return t ? t->find(key) : nullptr;
-}
+/// Where a set of time keys was read: its table (null when the spec was changed after reading,
+/// e.g. by `trifem run --refine-time`) and its key path ("time", "step[2]").
+struct TimeKeys {
+  const Table* table = nullptr;
+  std::string path;
+  Real start = 0.0; ///< start of the span the keys cover [s]
 
-/// Fewest steps a quasi-static run can take: every step converges at once and grows by
-/// `growth` from dt up to dt_max.
-Real fewest_steps(const TimeSpec& s) {
+  const toml::node* node(std::string_view key) const { return table ? table->find(key) : nullptr; }
+  std::string key(std::string_view name) const { return fmt::format("{}.{}", path, name); }
+};
+
+/// Fewest steps a quasi-static run can take over `span`: every step converges at once and grows
+/// by `growth` from dt up to dt_max.
+Real fewest_steps(const TimeSpec& s, Real span) {
   const Real dt_max = s.dt_max > 0.0 ? s.dt_max : s.dt;
   if (s.growth <= 1.0 || dt_max <= s.dt)
-    return s.end_time / s.dt;
+    return span / s.dt;
   const Real ln_g = std::log(s.growth);
   const Real growing = std::ceil(std::log(dt_max / s.dt) / ln_g); // steps to reach dt_max
   const Real covered = s.dt * std::expm1(growing * ln_g) / (s.growth - 1.0);
-  if (covered >= s.end_time)
-    return std::log1p(s.end_time * (s.growth - 1.0) / s.dt) / ln_g;
-  return growing + (s.end_time - covered) / dt_max;
+  if (covered >= span)
+    return std::log1p(span * (s.growth - 1.0) / s.dt) / ln_g;
+  return growing + (span - covered) / dt_max;
 }
 
-/// Refuses runs of more than kMaxSteps steps.
-void check_step_count(const Table& root, const CaseSpec& spec) {
-  const TimeSpec& s = spec.time;
-  if (spec.is_explicit() && s.dt <= 0.0) // the step is the stability estimate
+/// Refuses a span of more than kMaxSteps steps (or a step that underflowed to 0).
+void check_step_count(const TimeKeys& where, const TimeSpec& s, bool is_explicit) {
+  if (is_explicit && s.dt <= 0.0) // the step is the stability estimate
     return;
-  const Real steps = spec.is_explicit() ? s.end_time / s.dt : fewest_steps(s);
+  const Real span = s.end_time - where.start;
+  const Real steps = !(s.dt > 0.0) ? std::numeric_limits<Real>::infinity()
+                     : is_explicit ? span / s.dt
+                                   : fewest_steps(s, span);
   if (steps <= kMaxSteps)
     return;
-  const bool has_dt_max = !spec.is_explicit() && node_of(root, "time", "dt_max") != nullptr;
-  fail(node_of(root, "time", "end_time"), fmt::format("time.end_time = {}", s.end_time),
-       fmt::format("with time.dt = {} s{} the run needs at least {:.3g} steps, more than the "
-                   "{:.0e} allowed (shorten time.end_time or allow longer steps)",
-                   s.dt, has_dt_max ? fmt::format(", time.dt_max = {} s", s.dt_max) : "", steps,
-                   kMaxSteps));
+  const bool has_dt_max = !is_explicit && where.node("dt_max") != nullptr;
+  const bool duration = where.node("duration") != nullptr;
+  const std::string_view end_key = duration ? "duration" : "end_time";
+  fail(where.node(end_key),
+       fmt::format("{} = {}", where.key(end_key), duration ? span : s.end_time),
+       fmt::format("with {} = {} s{} the {} needs at least {:.3g} steps, more than the {:.0e} "
+                   "allowed (shorten it or allow longer steps)",
+                   where.key("dt"), s.dt,
+                   has_dt_max ? fmt::format(", {} = {} s", where.key("dt_max"), s.dt_max) : "",
+                   where.path == "time" ? "run" : "step", steps, kMaxSteps));
 }
 
 /// Refuses step settings that retry a failed step more than kMaxCutbacks times before the run
 /// fails (cutback close to 1, or dt_min far below dt).
-void check_cutbacks(const Table& root, const CaseSpec& spec) {
-  const TimeSpec& s = spec.time;
-  if (spec.is_explicit())
-    return;
+void check_cutbacks(const TimeKeys& where, const TimeSpec& s) {
   const Real dt_min = s.dt_min > 0.0 ? s.dt_min : s.dt * 1e-6;
   const Real cutbacks = std::log(dt_min / s.dt) / std::log(s.cutback);
   if (cutbacks <= kMaxCutbacks)
     return;
-  fail(node_of(root, "time", "cutback"), fmt::format("time.cutback = {}", s.cutback),
-       fmt::format("a failed step would be cut back {:.3g} times from time.dt = {} s to "
-                   "time.dt_min = {} s before the run fails, more than the {} allowed (use a "
-                   "smaller cutback or a larger dt_min)",
-                   cutbacks, s.dt, dt_min, kMaxCutbacks));
+  fail(where.node("cutback"), fmt::format("{} = {}", where.key("cutback"), s.cutback),
+       fmt::format("a failed step would be cut back {:.3g} times from {} = {} s to {} = {} s "
+                   "before the run fails, more than the {} allowed (use a smaller cutback or a "
+                   "larger dt_min)",
+                   cutbacks, where.key("dt"), s.dt, where.key("dt_min"), dt_min, kMaxCutbacks));
+}
+
+/// The step and cutback limits of [time], or of every [[step]] where the case has them.
+void check_steps_and_cutbacks(const Table* root, const CaseSpec& spec) {
+  if (spec.steps.empty()) {
+    const auto time = root ? root->table("time") : std::nullopt;
+    const TimeKeys where{time ? &*time : nullptr, "time", 0.0};
+    check_step_count(where, spec.time, spec.is_explicit());
+    if (!spec.is_explicit())
+      check_cutbacks(where, spec.time);
+    return;
+  }
+  const std::vector<Table> tables = root ? root->tables("step") : std::vector<Table>{};
+  Real start = 0.0;
+  for (std::size_t i = 0; i < spec.steps.size(); ++i) {
+    const StepSpec& step = spec.steps[i];
+    const TimeKeys where{i < tables.size() ? &tables[i] : nullptr, step.key, start};
+    check_step_count(where, step.time, step.is_explicit());
+    if (!step.is_explicit())
+      check_cutbacks(where, step.time);
+    start = step.time.end_time;
+  }
 }
 
 /// Refuses more than kMaxOutputTimes output times or must points (every one is a step).
-void check_output_count(const Table& root, const CaseSpec& spec) {
+void check_output_count(const Table* root, const CaseSpec& spec) {
+  const auto node_of = [&](std::string_view key) {
+    const auto t = root ? root->table("output") : std::nullopt;
+    return t ? t->find(key) : nullptr;
+  };
   const Real end = spec.time.end_time, interval = spec.output.interval;
   const Real periodic = interval > 0.0 ? end / interval : 0.0;
   if (periodic > kMaxOutputTimes)
-    fail(node_of(root, "output", "interval"), fmt::format("output.interval = {}", interval),
+    fail(node_of("interval"), fmt::format("output.interval = {}", interval),
          fmt::format("time.end_time / output.interval = {:.3g} output times, more than the {:.0e} "
                      "allowed (use a larger interval)",
                      periodic, kMaxOutputTimes));
@@ -148,7 +183,7 @@ Real physical_memory() {
 }
 
 /// The [[mesh.box]] entry with the most cells and its divisions node, for the message.
-std::pair<std::string, const toml::node*> largest_box(const Table& root, const CaseSpec& spec) {
+std::pair<std::string, const toml::node*> largest_box(const Table* root, const CaseSpec& spec) {
   std::size_t best = 0;
   for (std::size_t i = 1; i < spec.boxes.size(); ++i) {
     const auto cells = [&](std::size_t k) {
@@ -158,19 +193,22 @@ std::pair<std::string, const toml::node*> largest_box(const Table& root, const C
     if (cells(i) > cells(best))
       best = i;
   }
-  const std::vector<Table> boxes = root.table("mesh")->tables("box");
-  return {element_path("mesh.box", best) + ".divisions", boxes[best].find("divisions")};
+  const std::string path = element_path("mesh.box", best) + ".divisions";
+  const auto mesh = root ? root->table("mesh") : std::nullopt;
+  if (!mesh)
+    return {path, nullptr};
+  const std::vector<Table> boxes = mesh->tables("box");
+  return {path, best < boxes.size() ? boxes[best].find("divisions") : nullptr};
 }
 
 } // namespace
 
-void check_time_limits(const Table& root, const CaseSpec& spec) {
-  check_step_count(root, spec);
-  check_cutbacks(root, spec);
+void check_time_limits(const Table* root, const CaseSpec& spec) {
+  check_steps_and_cutbacks(root, spec);
   check_output_count(root, spec);
 }
 
-void check_model_size(const Table& root, const CaseSpec& spec) {
+void check_model_size(const Table* root, const CaseSpec& spec) {
   if (spec.boxes.empty())
     return;
   const ModelSize m = estimate_size(spec);
@@ -179,13 +217,13 @@ void check_model_size(const Table& root, const CaseSpec& spec) {
   if (!too_many && (memory <= 0.0 || m.bytes <= memory))
     return;
   const auto [path, node] = largest_box(root, spec);
-  const std::string size =
-      fmt::format("the boxes{} make a model of {:.4g} nodes and {:.4g} cells, about {:.4g} "
-                  "equations",
-                  spec.mesh_refinement > 0
-                      ? fmt::format(" (refined {} times by mesh.refine)", spec.mesh_refinement)
-                      : "",
-                  m.nodes, m.cells, m.equations);
+  const std::string size = fmt::format(
+      "the boxes{} make a model of {:.4g} nodes and {:.4g} cells, about {:.4g} "
+      "equations",
+      spec.mesh_refinement > 0 ? fmt::format(" (refined {} times by mesh.refine and --refine-mesh)",
+                                             spec.mesh_refinement)
+                               : "",
+      m.nodes, m.cells, m.equations);
   if (too_many)
     fail(node, path, fmt::format("{}, more than the {} a model can have", size, INT_MAX));
   fail(node, path,

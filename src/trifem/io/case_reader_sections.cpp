@@ -691,8 +691,8 @@ void read_sections(const toml::table& document, CaseSpec& spec) {
   read_explicit(root, spec);
   read_steps(root, spec);
   read_output(root, spec);
-  check_time_limits(root, spec);
-  check_model_size(root, spec);
+  check_time_limits(&root, spec);
+  check_model_size(&root, spec);
 }
 
 } // namespace trifem::io::detail

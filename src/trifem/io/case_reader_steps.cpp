@@ -171,8 +171,13 @@ void read_steps(const Table& root, CaseSpec& spec) {
     fail(root.find("step"), "step",
          "[[step]] tables are for quasi-static analyses (a dynamic-explicit case has one [time]; "
          "a quasi-static case may end with a step of analysis = \"dynamic-explicit\")");
+  const std::vector<Table> tables = root.tables("step");
+  if (tables.empty())
+    fail(root.find("step"), "step",
+         "expected one [[step]] table per analysis step, got an empty array (remove the key for "
+         "a run of one step with [time])");
   Real start = 0.0;
-  for (const Table& t : root.tables("step")) {
+  for (const Table& t : tables) {
     spec.steps.push_back(read_step(t, spec, start, spec.steps));
     start = spec.steps.back().time.end_time;
   }

@@ -105,6 +105,11 @@ std::string range_text(const Range& range, std::string_view unit) {
   return unit.empty() ? range.describe() : fmt::format("{} {}", range.describe(), unit);
 }
 
+/// What was expected of `v`, with the unit: "a value in (0, inf) mm".
+std::string range_text(const Range& range, Real v, std::string_view unit) {
+  return unit.empty() ? range.expected(v) : fmt::format("{} {}", range.expected(v), unit);
+}
+
 // ---------------------------------------------------------------------------------------------
 // Conversions
 
@@ -210,8 +215,7 @@ void check_range(const toml::node* n, std::string_view path, Real v, const Numbe
     return;
   const std::string hint = rule.hint.empty() ? "" : fmt::format(" ({})", rule.hint);
   fail(n, fmt::format("{} = {}", path, v),
-       fmt::format("out of range, expected a value in {}{}", range_text(rule.range, rule.unit),
-                   hint));
+       fmt::format("out of range, expected {}{}", range_text(rule.range, v, rule.unit), hint));
 }
 
 void Table::allow(const std::vector<std::string_view>& allowed) const {

@@ -284,12 +284,13 @@ void read_sections(const toml::table& document, CaseSpec& spec);
 /// Refuses a case whose time settings imply absurd work: more than kMaxSteps steps (end_time
 /// over the largest step) or more than kMaxOutputTimes output times and curve points, which are
 /// all steps the run must land on (case_reader_limits.cpp; after [time], [curves], [output]).
-void check_time_limits(const Table& root, const CaseSpec& spec);
+/// Every [[step]] is checked on its own span. `root` (for line numbers) may be null.
+void check_time_limits(const Table* root, const CaseSpec& spec);
 
 /// Refuses a model of [[mesh.box]] cells whose equations overflow the 32-bit index or whose
 /// estimated memory exceeds the physical memory of the machine (case_reader_limits.cpp; after
-/// the materials and meshes).
-void check_model_size(const Table& root, const CaseSpec& spec);
+/// the materials and meshes). `root` (for line numbers) may be null.
+void check_model_size(const Table* root, const CaseSpec& spec);
 
 /// Most times a failed step may be cut back before the run fails.
 inline constexpr Real kMaxCutbacks = 200;

@@ -90,8 +90,10 @@ const std::vector<ParameterSchema>& mixture_schema(bool charged) {
   };
   static const std::vector<ParameterSchema> triphasic = [] {
     std::vector<ParameterSchema> s = biphasic;
+    // bounded far above any tissue (2e-4 in cartilage) and below the concentration of water
+    // itself (0.055 mmol/mm^3): beyond it the Donnan state overflows
     s.push_back({"fixed_charge", "mEq/mm^3", "fixed charge density magnitude cF0 (negative charge)",
-                 Range::non_negative(), std::nullopt});
+                 Range::closed(0.0, 1.0), std::nullopt});
     s.push_back({"fixed_charge_basis", "", "0: per water volume, 1: per reference tissue volume",
                  Range::closed(0.0, 1.0), 0.0});
     s.push_back({"d_plus", "mm^2/s", "cation (Na+) diffusivity", Range::positive(), std::nullopt});

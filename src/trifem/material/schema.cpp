@@ -116,6 +116,13 @@ std::string Range::describe() const {
                      hi_open || hi_inf ? ")" : "]");
 }
 
+std::string Range::expected(Real v) const {
+  const bool beyond_infinity =
+      std::isfinite(v) && ((v < lo && lo <= -1e300) || (v > hi && hi >= 1e300));
+  return beyond_infinity ? fmt::format("a value of magnitude at most {:g}", 1e300)
+                         : fmt::format("a value in {}", describe());
+}
+
 std::array<std::string, 3> vector_keys(std::string_view key) {
   return {fmt::format("{}.x", key), fmt::format("{}.y", key), fmt::format("{}.z", key)};
 }
@@ -162,8 +169,8 @@ ParameterValues validate_parameters(const std::vector<ParameterSchema>& schema,
                  context, p.key, fmt::join(keys, ", "));
     for (const std::string& key : keys) {
       const Real v = values.at(key);
-      TRIFEM_CHECK(p.range.contains(v), "{}.{} = {}: out of range, expected a value in {}{}",
-                   context, key, v, p.range.describe(), p.unit.empty() ? "" : " " + p.unit);
+      TRIFEM_CHECK(p.range.contains(v), "{}.{} = {}: out of range, expected {}{}", context, key, v,
+                   p.range.expected(v), p.unit.empty() ? "" : " " + p.unit);
       checked[key] = v;
     }
   }

@@ -31,6 +31,9 @@ struct Range {
   bool contains(Real v) const;
   /// Human-readable interval, e.g. "(0, inf)" or "(-1, 0.5)".
   std::string describe() const;
+  /// What was expected of `v`, which is not contained: "a value in (0, inf)", or for a finite
+  /// value beyond the ±1e300 that stand for infinity, "a value of magnitude at most 1e+300".
+  std::string expected(Real v) const;
 };
 
 /// What a parameter holds: one number, or a vector of three numbers (e.g. a fibre direction).

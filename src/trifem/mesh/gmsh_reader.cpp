@@ -315,20 +315,42 @@ void note_use(GmshData& d, DimTag group, long line) {
   d.first_use.try_emplace(group, line);
 }
 
-/// Rejects a hex whose Jacobian determinant at the centre is negative or zero.
-void check_hex_orientation(const LineReader& in, const Mesh& mesh, Tag tag, const Hex8& cell) {
-  Mat3 jac = Mat3::Zero(); // column k: dx/dxi_k at xi = 0, i.e. sum_a x_a xi_a[k] / 8
+/// dx/dxi of the hex `cell` at the natural coordinates `xi` (column k: d/dxi_k).
+Mat3 hex_jacobian(const Mesh& mesh, const Hex8& cell, const Vec3& xi) {
+  Mat3 jac = Mat3::Zero();
   for (int a = 0; a < 8; ++a)
-    for (int k = 0; k < 3; ++k)
-      jac.col(k) += (kHexNodeCoords[a][k] / 8.0) * mesh.node(cell[a]);
-  const Real det = jac.determinant();
-  const Real scale = jac.col(0).norm() * jac.col(1).norm() * jac.col(2).norm();
+    for (int k = 0; k < 3; ++k) {
+      Real dN = kHexNodeCoords[a][k] / 8.0; // dN_a/dxi_k
+      for (int j = 0; j < 3; ++j)
+        if (j != k)
+          dN *= 1.0 + kHexNodeCoords[a][j] * xi[j];
+      jac.col(k) += dN * mesh.node(cell[a]);
+    }
+  return jac;
+}
+
+/// Rejects a hex whose Jacobian determinant at the centre is negative or zero (inverted or
+/// degenerate), or at one of the 2x2x2 Gauss points where the elements integrate (distorted).
+void check_hex_orientation(const LineReader& in, const Mesh& mesh, Tag tag, const Hex8& cell) {
+  const Mat3 centre = hex_jacobian(mesh, cell, Vec3::Zero());
+  const Real det = centre.determinant();
+  const Real scale = centre.col(0).norm() * centre.col(1).norm() * centre.col(2).norm();
   TRIFEM_CHECK(det >= 0.0,
                "{}: hex8 element {} has negative volume (inverted node order; expected nodes "
                "0-3 counter-clockwise seen from nodes 4-7)",
                in.location(), tag);
   TRIFEM_CHECK(det > 1e-12 * scale, "{}: hex8 element {} is degenerate (zero volume)",
                in.location(), tag);
+  const Real g = 1.0 / std::sqrt(3.0);
+  for (int a = 0; a < 8; ++a) {
+    const Vec3 xi(g * kHexNodeCoords[a][0], g * kHexNodeCoords[a][1], g * kHexNodeCoords[a][2]);
+    TRIFEM_CHECK(
+        hex_jacobian(mesh, cell, xi).determinant() > 1e-12 * scale,
+        "{}: hex8 element {} is too distorted: its volume map folds near its local node {} (the "
+        "Jacobian determinant is not positive at the Gauss point next to it; move the "
+        "node or split the element)",
+        in.location(), tag, a + 1);
+  }
 }
 
 void read_hex(LineReader& in, GmshData& d, const ElementHeader& e) {

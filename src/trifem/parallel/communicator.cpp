@@ -109,6 +109,17 @@ std::vector<Real> gather(Real value) {
   return values;
 }
 
+int first_rank_differing(std::uint64_t value) {
+  if (!active())
+    return -1;
+  std::vector<std::uint64_t> values(static_cast<std::size_t>(size()));
+  MPI_Allgather(&value, 1, MPI_UINT64_T, values.data(), 1, MPI_UINT64_T, MPI_COMM_WORLD);
+  for (int r = 1; r < size(); ++r)
+    if (values[static_cast<std::size_t>(r)] != values[0])
+      return r;
+  return -1;
+}
+
 bool all(bool value) {
   return active() ? reduced_flag(value, MPI_LAND) : value;
 }
@@ -138,7 +149,7 @@ void broadcast(std::vector<int>& values) {
   MPI_Bcast(values.data(), static_cast<int>(values.size()), MPI_INT, 0, MPI_COMM_WORLD);
 }
 
-bool agree_on_failure(const std::string& message, double wait_seconds) {
+bool agree_on_failure(const std::string& message, int exit_code, double wait_seconds) {
   if (!active())
     return true;
   MPI_Request request = MPI_REQUEST_NULL;
@@ -159,7 +170,7 @@ bool agree_on_failure(const std::string& message, double wait_seconds) {
   std::cerr << "error (process " << rank() << " of " << size() << "): " << text
             << " (the other processes are stopped)\n"
             << std::flush;
-  MPI_Abort(MPI_COMM_WORLD, 1);
+  MPI_Abort(MPI_COMM_WORLD, exit_code);
   return false;
 }
 

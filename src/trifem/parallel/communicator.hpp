@@ -8,6 +8,7 @@
 #include "trifem/core/error.hpp"
 #include "trifem/core/types.hpp"
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -44,6 +45,8 @@ bool all(bool value);
 bool any(bool value);
 /// The non-empty `message` of the lowest rank that has one, on every process ("" if none).
 std::string first_message(const std::string& message);
+/// The lowest rank whose `value` differs from rank 0's, on every process (-1 if all agree).
+int first_rank_differing(std::uint64_t value);
 /// Broadcasts `values` (of equal size everywhere) from rank 0.
 void broadcast(std::vector<int>& values);
 
@@ -57,8 +60,9 @@ void agree_on_output(F&& write);
 /// `wait_seconds` (an error in the input, read by all), returns true on rank 0 and false
 /// elsewhere: rank 0 alone reports it, and all end normally. If some process does not fail
 /// (the error is this process's own), prints "error (process k of N): message" (`message`
-/// without its leading "error: ") and aborts every process, so none is left waiting.
-bool agree_on_failure(const std::string& message, double wait_seconds = 5.0);
+/// without its leading "error: ") and aborts every process with `exit_code`, so none is left
+/// waiting.
+bool agree_on_failure(const std::string& message, int exit_code, double wait_seconds = 5.0);
 
 template <class F>
 void agree_on_output(F&& write) {

@@ -2,6 +2,7 @@
 #include "trifem/physics/mixture_term.hpp"
 
 #include "trifem/core/error.hpp"
+#include "trifem/physics/folded_cells.hpp"
 #include "trifem/physics/solid_kernel.hpp"
 
 #include <cmath>
@@ -224,6 +225,10 @@ void MixtureTerm::restore_history(const std::vector<double>& values) {
     const double* v = values.data() + kHistoryValues * e;
     history_[e] = {v[0], v[1], v[2], v[3], v[4], v[5]};
   }
+}
+
+std::string MixtureTerm::step_rejection(const EvalState& state) const {
+  return folded_cell_rejection(mesh_, dofs_, fields_.u, cells_, state.x);
 }
 
 void MixtureTerm::commit(const EvalState& state) {

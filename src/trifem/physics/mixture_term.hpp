@@ -43,6 +43,8 @@ public:
   void element_dofs(Index e, std::vector<Index>& dofs) const override;
   bool evaluate(Index e, const EvalState& state, LocalVector& r, LocalMatrix* K) const override;
   void commit(const EvalState& state) override;
+  /// A state in which a cell turned inside out (physics/folded_cells.hpp).
+  std::string step_rejection(const EvalState& state) const override;
   /// The committed MixtureHistory of every element (6 numbers each).
   std::vector<double> history() const override;
   void restore_history(const std::vector<double>& values) override;

@@ -2,6 +2,7 @@
 #include "trifem/physics/solid_term.hpp"
 
 #include "trifem/core/error.hpp"
+#include "trifem/physics/folded_cells.hpp"
 #include "trifem/physics/mean_dilatation_kernel.hpp"
 
 namespace trifem::physics {
@@ -59,6 +60,10 @@ bool SolidTerm::evaluate(Index e, const EvalState& state, LocalVector& r, LocalM
   if (K)
     *K = Ke;
   return true;
+}
+
+std::string SolidTerm::step_rejection(const EvalState& state) const {
+  return folded_cell_rejection(mesh_, dofs_, u_, cells_, state.x);
 }
 
 CellStress SolidTerm::stress(Index e, const Vector& x) const {

@@ -33,6 +33,8 @@ public:
   Index num_elements() const override { return static_cast<Index>(cells_.size()); }
   void element_dofs(Index e, std::vector<Index>& dofs) const override;
   bool evaluate(Index e, const EvalState& state, LocalVector& r, LocalMatrix* K) const override;
+  /// A state in which a cell turned inside out (physics/folded_cells.hpp).
+  std::string step_rejection(const EvalState& state) const override;
 
   /// Mesh cell of element e.
   Index cell(Index e) const { return cells_[e]; }

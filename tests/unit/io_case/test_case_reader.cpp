@@ -675,7 +675,7 @@ const std::vector<BadCase> kMixtureBadCases = {
      {"materials.cart.phi_s0 = 1.2: out of range, expected a value in (0, 1) (line 21)"}},
     {"negative_fixed_charge",
      cartilage_with("fixed_charge = 2e-4", "fixed_charge = -2e-4"),
-     {"materials.cart.fixed_charge = -0.0002: out of range, expected a value in [0, inf) "
+     {"materials.cart.fixed_charge = -0.0002: out of range, expected a value in [0, 1] "
       "mEq/mm^3"}},
     {"missing_mixture_parameter",
      cartilage_with("d_plus = 5e-4\n", ""),

@@ -61,6 +61,48 @@ TEST(Hex8, InvertedCellHasNoGeometry) {
   EXPECT_FALSE(fe::hex8_geometry(X).has_value());
 }
 
+namespace {
+
+/// The unit cube, nodes in hex8 order.
+fe::HexCoords unit_cube() {
+  fe::HexCoords X;
+  X << 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1;
+  return X;
+}
+
+} // namespace
+
+TEST(Hex8, AnAffineMapReversesEveryCornerByItsDeterminant) {
+  const fe::HexCoords X = unit_cube();
+  Mat3 F;
+  F << 0.9, 0.2, 0.0, 0.1, 1.1, 0.3, 0.0, 0.4, 1.0;
+  EXPECT_FALSE(fe::hex8_reversed_corner(X, X * F.transpose(), 0.5)) << "det F > 0";
+  Mat3 mirror = Mat3::Identity();
+  for (const Real scale : {0.8, 0.3}) {
+    mirror(2, 2) = -scale; // det = -scale at every point of the cell
+    const auto reversed = fe::hex8_reversed_corner(X, X * mirror.transpose(), 0.5);
+    ASSERT_EQ(reversed.has_value(), scale > 0.5) << scale;
+    if (reversed)
+      EXPECT_NEAR(reversed->ratio, -scale, 1e-14);
+  }
+}
+
+TEST(Hex8, ACellPushedThroughItsFixedBottomIsTurnedOverAtTheBottom) {
+  // bottom face fixed, top face moved below it and mirrored in x: at the bottom corners the
+  // vertical edges point down, (1, 0, -1) or (-1, 0, -1), while the bottom edges keep their
+  // orientation, so det(dx/dxi) = -det(dX/dxi) there
+  const fe::HexCoords X = unit_cube();
+  fe::HexCoords x = X;
+  for (int a = 4; a < 8; ++a) {
+    x(a, 0) = 1.0 - X(a, 0);
+    x(a, 2) = -1.0;
+  }
+  const auto reversed = fe::hex8_reversed_corner(X, x, 0.5);
+  ASSERT_TRUE(reversed.has_value());
+  EXPECT_LT(reversed->corner, 4) << "a bottom corner";
+  EXPECT_NEAR(reversed->ratio, -1.0, 1e-14);
+}
+
 TEST(Quad4, PartitionOfUnityAndGaussWeights) {
   Real w = 0.0;
   for (const auto& qp : fe::quad_gauss_2x2()) {

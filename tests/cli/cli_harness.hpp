@@ -35,6 +35,7 @@ namespace fs = std::filesystem;
 
 inline const fs::path kExe = TRIFEM_EXE;
 inline const fs::path kData = TRIFEM_TEST_DATA_DIR;
+inline const fs::path kExamples = fs::path(TRIFEM_SOURCE_DIR) / "examples";
 
 /// Exit codes of trifem (mirrors analysis::ExitCode, documented in docs/cli.md).
 enum ExitCode : int {

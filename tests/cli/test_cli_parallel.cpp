@@ -16,7 +16,6 @@
 namespace trifem::cli_test {
 namespace {
 
-const fs::path kExamples = fs::path(TRIFEM_SOURCE_DIR) / "examples";
 const fs::path kMpiexec = TRIFEM_MPIEXEC;
 
 class CliParallel : public Cli {

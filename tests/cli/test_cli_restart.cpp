@@ -24,8 +24,6 @@
 namespace trifem::cli_test {
 namespace {
 
-const fs::path kExamples = fs::path(TRIFEM_SOURCE_DIR) / "examples";
-
 fs::path example_case(const std::string& name) {
   return kExamples / name / (name + ".toml");
 }

@@ -17,8 +17,6 @@
 namespace trifem::cli_test {
 namespace {
 
-const fs::path kExamples = fs::path(TRIFEM_SOURCE_DIR) / "examples";
-
 /// `text` (a case file) with [solver] linear_solver set to `backend` (and no
 /// reuse_factorization of its own).
 std::string with_backend(std::string text, const std::string& backend) {

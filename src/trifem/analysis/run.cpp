@@ -385,6 +385,8 @@ solver::RunReport run_steps(const io::CaseSpec& spec, model::Model& model,
                                           }));
   };
   if (model.steps.empty()) {
+    if (spec.analysis.type == io::AnalysisType::Dynamic)
+      model.problem->set_dynamic(true, !resume);
     run_over(step_settings(spec));
     return run;
   }
@@ -394,8 +396,15 @@ solver::RunReport run_steps(const io::CaseSpec& spec, model::Model& model,
     if (static_cast<int>(k) != model.active_step)
       model::activate_step(model, k);
     const model::ModelStep& step = model.steps[k];
-    log::info("analysis step {} '{}': t = {:.6g} to {:.6g} s, {} prescribed DOFs", k + 1, step.name,
-              step.start_time, step.end_time, model.dofs.num_constrained());
+    if (model.problem->inertia()) {
+      // a run continued from a restart file holds the motion of the step it was written in
+      const bool moving = resume && (resume->time > step.start_time + tol ||
+                                     (k > 0 && spec.steps[k - 1].is_dynamic()));
+      model.problem->set_dynamic(spec.steps[k].is_dynamic(), !moving);
+    }
+    log::info("analysis step {} '{}'{}: t = {:.6g} to {:.6g} s, {} prescribed DOFs", k + 1,
+              step.name, spec.steps[k].is_dynamic() ? " (dynamic)" : "", step.start_time,
+              step.end_time, model.dofs.num_constrained());
     solver::StepSettings settings = step_settings(spec, k);
     if (spec.steps[k].steady) {
       settings.steady_dt = steady_pseudo_step(model);

@@ -202,6 +202,7 @@ bool Assembler::assemble_term(std::size_t t, const physics::EvalState& state, As
                               bool with_jacobian) const {
   const physics::Term& term = *terms_[t];
   const Stencils& stencils = stencils_[t];
+  const Real weight = weights_.empty() ? 1.0 : weights_[t];
   bool admissible = true;
   for (const auto& colour : colours_[t]) {
     const Index count = static_cast<Index>(colour.size());
@@ -214,6 +215,11 @@ bool Assembler::assemble_term(std::size_t t, const physics::EvalState& state, As
         if (!term.evaluate(e, state, s.r, with_jacobian ? &s.K : nullptr)) {
           admissible = false;
           continue;
+        }
+        if (weight != 1.0) {
+          s.r *= weight;
+          if (with_jacobian)
+            s.K *= weight;
         }
         if (frames_ && !frames_->empty())
           rotate(*frames_, stencils.of(e), s, with_jacobian);
@@ -233,8 +239,14 @@ bool Assembler::assemble(const physics::EvalState& state, AssembledSystem& out,
   }
   bool admissible = true;
   for (std::size_t t = 0; t < terms_.size() && admissible; ++t)
-    admissible = assemble_term(t, state, out, with_jacobian);
+    if (weights_.empty() || weights_[t] != 0.0)
+      admissible = assemble_term(t, state, out, with_jacobian);
   return admissible;
+}
+
+void Assembler::set_weights(std::vector<Real> weights) {
+  TRIFEM_VERIFY(weights.empty() || weights.size() == terms_.size(), "one weight per term");
+  weights_ = std::move(weights);
 }
 
 } // namespace trifem::assembly

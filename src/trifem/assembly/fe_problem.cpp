@@ -130,6 +130,7 @@ void FeProblem::build_assembler() {
   // on several processes the whole pattern is never built: each builds its part once the
   // equations are split (partition)
   assembler_ = std::make_unique<Assembler>(map_, std::move(views), &frames_, parallel::active());
+  apply_weights();
   partition();
   system_ = assembler_->take_system();
   jacobian_lent_ = false;
@@ -163,6 +164,47 @@ void FeProblem::add_term(std::unique_ptr<physics::Term> term) {
   build_assembler();
 }
 
+void FeProblem::add_inertia(std::unique_ptr<physics::InertiaTerm> inertia) {
+  TRIFEM_VERIFY(inertia_ == nullptr, "the problem has an inertia term already");
+  inertia_ = inertia.get();
+  add_term(std::move(inertia));
+}
+
+void FeProblem::apply_weights() {
+  if (!inertia_) {
+    assembler_->set_weights({});
+    return;
+  }
+  const Real others = dynamic_ ? 1.0 - inertia_->method().alpha_f : 1.0;
+  std::vector<Real> weights;
+  for (const auto& t : terms_)
+    weights.push_back(t.get() == inertia_ ? (dynamic_ ? 1.0 : 0.0) : others);
+  assembler_->set_weights(std::move(weights));
+}
+
+void FeProblem::set_dynamic(bool dynamic, bool from_rest) {
+  TRIFEM_VERIFY(!dynamic || inertia_ != nullptr, "a dynamic step needs the inertia term");
+  if (dynamic && !dynamic_ && from_rest)
+    start_motion();
+  if (dynamic && !dynamic_) // the support forces of the state the step starts from
+    committed_residual_ = system_.residual;
+  dynamic_ = dynamic;
+  apply_weights();
+}
+
+Vector FeProblem::static_residual() {
+  std::vector<Real> weights;
+  for (const auto& t : terms_)
+    weights.push_back(t.get() == inertia_ ? 0.0 : 1.0);
+  assembler_->set_weights(std::move(weights));
+  AssembledSystem out;
+  const bool admissible = parallel::all(assembler_->assemble(eval_state(), out, false));
+  apply_weights();
+  TRIFEM_VERIFY(admissible, "the static residual of an accepted state is inadmissible");
+  parallel::sum(out.residual);
+  return out.residual;
+}
+
 void FeProblem::sync() {
   x_global_ = x_;
   frames_.to_global(x_global_);
@@ -194,6 +236,12 @@ solver::SolveStatus FeProblem::linearize(solver::Linearization& lin, bool with_j
   if (!parallel::all(assembler_->assemble(eval_state(), system_, with_jacobian)))
     return solver::SolveStatus::Inadmissible;
   parallel::sum(system_.residual);
+  if (dynamic_) { // α_f g(x_n): the other terms' residual of the last step
+    const Real alpha_f = inertia_->method().alpha_f;
+    for (std::size_t i = 0; i < inertia_->dofs().size(); ++i)
+      system_.residual[inertia_->dofs()[i]] +=
+          alpha_f * inertia_->residual_history()[static_cast<Index>(i)];
+  }
   const Index neq = map_.num_equations();
   lin.residual.setZero(neq);
   for (Index d = 0; d < map_.num_dofs(); ++d) // tied DOFs add their rows
@@ -262,8 +310,25 @@ std::string FeProblem::step_rejection() const {
 }
 
 void FeProblem::commit_step() {
+  Vector g;
+  if (dynamic_) {
+    g = static_residual(); // g(x_{n+1}, t_{n+1}) before the terms commit
+    Vector history(static_cast<Index>(inertia_->dofs().size()));
+    for (std::size_t i = 0; i < inertia_->dofs().size(); ++i)
+      history[static_cast<Index>(i)] = g[inertia_->dofs()[i]];
+    inertia_->set_residual_history(std::move(history));
+  }
   for (auto& t : terms_)
-    t->commit(eval_state());
+    if (t.get() != inertia_ || dynamic_) // the motion is that of the last dynamic step
+      t->commit(eval_state());
+  if (dynamic_) { // the reactions of the accepted state: g + M a_{n+1}
+    Vector a = Vector::Zero(map_.num_dofs());
+    for (std::size_t i = 0; i < inertia_->dofs().size(); ++i)
+      a[inertia_->dofs()[i]] = inertia_->acceleration()[static_cast<Index>(i)];
+    Vector inertial = inertia_->mass_times(a);
+    frames_.to_local(inertial);
+    committed_residual_ = g + inertial;
+  }
   x_old_ = x_;
   x_old_global_ = x_global_;
   time_old_ = time_;

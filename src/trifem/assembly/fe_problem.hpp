@@ -6,6 +6,7 @@
 #include "trifem/assembly/system_pattern.hpp"
 #include "trifem/dofs/dirichlet.hpp"
 #include "trifem/dofs/nodal_frames.hpp"
+#include "trifem/physics/inertia_term.hpp"
 #include "trifem/solver/nonlinear_problem.hpp"
 
 #include <memory>
@@ -46,6 +47,9 @@ public:
   /// (and only their couplings are in the pattern). An element belongs to the owner of its first
   /// equation in `equation_owner`, to rank 0 if all its DOFs are prescribed. Rebuilds.
   void set_ownership(std::vector<int> equation_owner, int rank);
+  /// Scales the residual and Jacobian of every term by its weight (one per term, in the order
+  /// of the constructor's terms; empty: all 1). A term of weight 0 is not evaluated.
+  void set_weights(std::vector<Real> weights);
 
 private:
   bool assemble_term(std::size_t t, const physics::EvalState& state, AssembledSystem& out,
@@ -53,6 +57,7 @@ private:
 
   const dofs::DofMap& map_;
   std::vector<const physics::Term*> terms_;
+  std::vector<Real> weights_; ///< per term (empty: all 1)
   const dofs::NodalFrames* frames_;
   std::vector<int> equation_owner_; ///< empty: this process assembles every element
   int rank_ = 0;
@@ -119,9 +124,20 @@ public:
   void set_node_positions(dofs::FieldId displacement, std::vector<Vec3> positions);
   /// Adds a term (between steps), e.g. the loads that replace released conditions.
   void add_term(std::unique_ptr<physics::Term> term);
+  /// Adds the inertia of the model (once; left out of quasi-static steps).
+  void add_inertia(std::unique_ptr<physics::InertiaTerm> inertia);
+  const physics::InertiaTerm* inertia() const { return inertia_; }
+  /// Makes the following steps dynamic (generalized-α with the inertia term: the other terms'
+  /// residual g enters as (1 − α_f) g(x_{n+1}) + α_f g(x_n)) or quasi-static. Entering dynamics
+  /// `from_rest` (after a quasi-static step or at the start), the body starts at rest with the
+  /// acceleration M⁻¹(−g) of the current state (zero at prescribed DOFs); otherwise (a run
+  /// continued from a restart file) with the motion the inertia term holds.
+  void set_dynamic(bool dynamic, bool from_rest = true);
+  bool dynamic() const { return dynamic_; }
   const std::vector<dofs::DirichletCondition>& conditions() const { return conditions_; }
-  /// Residual at every DOF of the last evaluation: reactions at constrained DOFs.
-  const Vector& full_residual() const { return system_.residual; }
+  /// Residual at every DOF of the last evaluation: reactions at constrained DOFs. In dynamic
+  /// steps, that of the last accepted state, g + M a (the support forces).
+  const Vector& full_residual() const { return dynamic_ ? committed_residual_ : system_.residual; }
   const dofs::DofMap& dof_map() const { return map_; }
   const std::vector<std::unique_ptr<physics::Term>>& terms() const { return terms_; }
 
@@ -139,10 +155,21 @@ private:
   void build_assembler();
   /// A term's cell over the equations (divergences in the rotated frames' components).
   void to_equations(const physics::CellTransport& cell, linalg::TransportCell& out) const;
+  /// Term weights of the assembly: dynamic, (1 − α_f) for every term but the inertia (1);
+  /// quasi-static, 1 for every term but the inertia (0).
+  void apply_weights();
+  /// The residual g of every term but the inertia at the current state (every DOF, in the
+  /// assembled components).
+  Vector static_residual();
+  /// The initial acceleration of a dynamic step (dynamic_start.cpp).
+  void start_motion();
 
   const dofs::DofMap& map_;
   std::vector<dofs::DirichletCondition> conditions_;
   std::vector<std::unique_ptr<physics::Term>> terms_;
+  physics::InertiaTerm* inertia_ = nullptr; ///< among terms_ (nullptr: none)
+  bool dynamic_ = false;
+  Vector committed_residual_; ///< dynamic: g + M a of the last accepted state
   std::vector<solver::FieldScale> scales_;
   std::vector<int> equation_fields_;
   dofs::FieldId displacement_;       ///< for rigid_body_modes()

@@ -12,10 +12,6 @@
 namespace trifem::feb::detail {
 namespace {
 
-bool is_element(pugi::xml_node n) {
-  return n.type() == pugi::node_element;
-}
-
 io::Component component(const Reader& r, pugi::xml_node node) {
   const std::string dof = r.doc.text(node);
   if (dof == "x")

@@ -9,10 +9,6 @@
 namespace trifem::feb::detail {
 namespace {
 
-bool is_element(pugi::xml_node n) {
-  return n.type() == pugi::node_element;
-}
-
 std::string lower(std::string s) {
   for (char& c : s)
     c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
@@ -94,24 +90,51 @@ void read_curve(Reader& r, pugi::xml_node lc) {
   r.curve_extents.push_back(extent);
 }
 
-/// The analysis type of a Control: transient or steady-state mixtures (true: steady-state),
-/// static solids.
-bool read_analysis(const Reader& r, pugi::xml_node control) {
+/// The generalized-α parameters of a dynamic Control (FEBio's <solver> rhoi, or Newmark's beta
+/// and gamma of the trapezoidal rule, FEBio's default) into r.spec.dynamics.
+void read_dynamic_parameters(const Reader& r, pugi::xml_node control) {
+  const pugi::xml_node solver = control.child("solver");
+  Real rho_inf = 1.0;
+  if (const pugi::xml_node rhoi = solver.child("rhoi")) {
+    const Real value = r.doc.number(rhoi);
+    if (value >= 0.0 && value <= 1.0)
+      rho_inf = value;
+    else if (value != -2.0)
+      r.doc.fail(rhoi, fmt::format("rhoi = {} is not supported (expected a spectral radius in "
+                                   "[0, 1], or -2: Newmark's trapezoidal rule)",
+                                   value));
+  }
+  for (const auto& [key, trapezoidal] : {std::pair{"beta", 0.25}, {"gamma", 0.5}})
+    if (const pugi::xml_node n = solver.child(key); n && r.doc.number(n) != trapezoidal)
+      r.doc.fail(n, fmt::format("{} = {} is not supported (trifem's dynamic steps are the "
+                                "generalized-alpha family of rhoi; Newmark's {} = {} with rhoi = "
+                                "-2 or 1)",
+                                key, r.doc.number(n), key, trapezoidal));
+  r.spec.dynamics.rho_inf = rho_inf;
+}
+
+/// The analysis of a Control: static or dynamic solids, transient, dynamic or steady-state
+/// mixtures.
+FebAnalysis read_analysis(const Reader& r, pugi::xml_node control) {
   const pugi::xml_node node = control.child("analysis");
   const std::string type = node ? lower(r.doc.text(node)) : std::string();
+  if (type == "dynamic") {
+    read_dynamic_parameters(r, control);
+    return FebAnalysis::Dynamic;
+  }
   if (r.biphasic_module) {
     if (type.empty() || type == "steady-state") // FEBio's default for mixtures
-      return true;
-    if (type != "transient" && type != "dynamic")
+      return FebAnalysis::SteadyState;
+    if (type != "transient")
       r.doc.fail(node, fmt::format("a {} analysis of a mixture is not supported (expected "
-                                   "TRANSIENT or STEADY-STATE)",
+                                   "TRANSIENT, STEADY-STATE or DYNAMIC)",
                                    type));
-  } else if (!type.empty() && type != "static") {
-    r.doc.fail(node, fmt::format("analysis '{}' is not supported (trifem's implicit analyses of "
-                                 "solids are quasi-static: STATIC)",
-                                 r.doc.text(node)));
+    return FebAnalysis::Transient;
   }
-  return false;
+  if (!type.empty() && type != "static")
+    r.doc.fail(node, fmt::format("analysis '{}' is not supported (expected STATIC or DYNAMIC)",
+                                 r.doc.text(node)));
+  return FebAnalysis::Static;
 }
 
 /// The time stepper of a Control (FEBio's auto time stepper -> trifem's step control).
@@ -210,10 +233,10 @@ void read_load_data(Reader& r, pugi::xml_node section) {
   }
 }
 
-io::TimeSpec read_control(Reader& r, pugi::xml_node control, Real start, bool* steady) {
-  const bool steady_state = read_analysis(r, control);
-  if (steady)
-    *steady = steady_state;
+io::TimeSpec read_control(Reader& r, pugi::xml_node control, Real start, FebAnalysis* analysis) {
+  const FebAnalysis kind = read_analysis(r, control);
+  if (analysis)
+    *analysis = kind;
   io::TimeSpec t;
   long steps = 0;
   t.growth = 1.0; // without a time stepper FEBio keeps step_size
@@ -245,9 +268,11 @@ void read_steps(Reader& r, pugi::xml_node root) {
   if (!steps) {
     if (!control)
       r.doc.fail(root, "the element <Control> is required");
-    bool steady = false;
-    r.spec.time = read_control(r, control, 0.0, &steady);
-    if (steady) { // a steady-state run: one steady step
+    FebAnalysis analysis = FebAnalysis::Static;
+    r.spec.time = read_control(r, control, 0.0, &analysis);
+    if (analysis == FebAnalysis::Dynamic)
+      r.spec.analysis.type = io::AnalysisType::Dynamic;
+    if (analysis == FebAnalysis::SteadyState) { // a steady-state run: one steady step
       io::StepSpec step;
       step.name = "step1";
       step.key = "step[1]";
@@ -270,7 +295,11 @@ void read_steps(Reader& r, pugi::xml_node root) {
     const pugi::xml_node c = s.child("Control") ? s.child("Control") : control;
     if (!c)
       r.doc.fail(s, "the step has no <Control> (and there is no top-level one)");
-    step.time = read_control(r, c, start, &step.steady);
+    FebAnalysis analysis = FebAnalysis::Static;
+    step.time = read_control(r, c, start, &analysis);
+    step.steady = analysis == FebAnalysis::SteadyState;
+    if (analysis == FebAnalysis::Dynamic)
+      step.analysis = io::AnalysisType::Dynamic;
     start = step.time.end_time;
     for (pugi::xml_node part : s.children()) {
       if (!is_element(part))
@@ -289,6 +318,14 @@ void read_steps(Reader& r, pugi::xml_node root) {
     r.doc.fail(steps, "the <Step> section has no <step>");
   r.spec.time = r.spec.steps.front().time;
   r.spec.time.end_time = start;
+}
+
+void map_densities(Reader& r) {
+  if (!r.spec.has_dynamic_step())
+    return;
+  for (auto& [name, m] : r.spec.materials)
+    if (const auto it = r.densities.find(name); it != r.densities.end())
+      m.density = it->second;
 }
 
 } // namespace trifem::feb::detail

@@ -138,6 +138,7 @@ void read_sections(Reader& r) {
   if (const pugi::xml_node i = root.child("Initial"))
     detail::read_initial(r, i);
   detail::read_steps(r, root);
+  detail::map_densities(r);
   check_curve_extents(r);
   detail::map_baths(r);
   for (const pugi::xml_node c : root.children("Contact"))

@@ -61,6 +61,25 @@ Real parameter_value(const Reader& r, pugi::xml_node p) {
   return r.doc.number(p);
 }
 
+/// A density element `name` of `node`, or FEBio's default for it.
+Real density_child(const Reader& r, pugi::xml_node node, const char* name, Real fallback) {
+  const pugi::xml_node d = node.child(name);
+  return d ? parameter_value(r, d) : fallback;
+}
+
+/// The mass per reference volume of a FEBio material: a solid's <density> (FEBio's default 1);
+/// of a mixture φ0 ρ_s + (1 − φ0) ρ_w, with ρ_s the solid's density (or <solid_density>) and ρ_w
+/// its <fluid_density> (FEBio's default 0).
+Real material_density(const Reader& r, pugi::xml_node node, const io::MaterialSpec& m) {
+  if (!m.is_mixture())
+    return density_child(r, node, "density", 1.0);
+  const Real solid = density_child(r, node, "solid_density",
+                                   density_child(r, node.child("solid"), "density", 1.0));
+  const Real fluid = density_child(r, node, "fluid_density", 0.0);
+  const Real phi = m.parameters.at("phi_s0");
+  return phi * solid + (1.0 - phi) * fluid;
+}
+
 /// The solid law of a FEBio solid material element (type attribute), validated.
 material::LawSpec solid_law(const Reader& r, pugi::xml_node node) {
   const std::string type = r.doc.attribute(node, "type");
@@ -352,6 +371,7 @@ void read_materials(Reader& r, pugi::xml_node section) {
     }
     if (r.spec.materials.contains(name))
       r.doc.fail(node, "name", fmt::format("a second material named '{}'", name));
+    r.densities[name] = material_density(r, node, m);
     r.spec.materials[name] = std::move(m);
     if (!id.empty())
       r.material_by_id[id] = name;

@@ -9,10 +9,6 @@
 namespace trifem::feb::detail {
 namespace {
 
-bool is_element(pugi::xml_node n) {
-  return n.type() == pugi::node_element;
-}
-
 void read_nodes(Reader& r, pugi::xml_node section) {
   for (pugi::xml_node n : section.children()) {
     if (!is_element(n))

@@ -14,10 +14,6 @@ namespace {
 /// trifem's gas constant [mJ/(mmol K)]: the file's amount unit follows from its R.
 constexpr Real kGasConstant = 8.314;
 
-bool is_element(pugi::xml_node n) {
-  return n.type() == pugi::node_element;
-}
-
 void read_constants(Reader& r, pugi::xml_node constants) {
   r.chem.constants = constants;
   for (pugi::xml_node c : constants.children()) {

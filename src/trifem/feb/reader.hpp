@@ -84,6 +84,9 @@ struct Reader {
   /// <fixed_charge_density> of each triphasic material (name), mapped once the curves are known
   std::vector<std::pair<std::string, pugi::xml_node>> fixed_charges;
   std::vector<char> drained; ///< per mesh node: in a "zero fluid pressure" node set
+  /// Mass density per reference volume of each material (name) with FEBio's defaults, given to
+  /// the materials once the analysis is known to be dynamic (map_densities)
+  std::map<std::string, Real> densities;
 
   void warn(pugi::xml_node node, const std::string& what);
   /// The curve name of the attribute lc of `node` ("" without one).
@@ -97,6 +100,11 @@ struct Reader {
   /// The mesh nodes of the FEBio node ids in the text of `node`.
   std::vector<Index> nodes_of(pugi::xml_node node, const std::vector<long>& ids) const;
 };
+
+/// True for an XML element (not text, a comment or another kind of node).
+inline bool is_element(pugi::xml_node n) {
+  return n.type() == pugi::node_element;
+}
 
 /// Runs `f` (a mesh operation), turning its InputError into one located at `node`.
 template <class F>
@@ -128,9 +136,14 @@ void read_boundary(Reader& r, pugi::xml_node section, std::vector<io::FixedSpec>
 void read_loads(Reader& r, pugi::xml_node section, std::vector<io::PressureSpec>& pressures,
                 std::vector<io::TractionSpec>& tractions,
                 std::vector<io::PrescribedSpec>& prescribed, bool step);
-/// The time control of a Control section; `start` is the step's start time [s]; `steady` (if
-/// given) is set for a steady-state analysis of a mixture.
-io::TimeSpec read_control(Reader& r, pugi::xml_node control, Real start, bool* steady = nullptr);
+/// The analysis of a Control section.
+enum class FebAnalysis { Static, SteadyState, Transient, Dynamic };
+/// The time control of a Control section; `start` is the step's start time [s]; `analysis` (if
+/// given) is set to the analysis (a dynamic one also sets r.spec.dynamics).
+io::TimeSpec read_control(Reader& r, pugi::xml_node control, Real start,
+                          FebAnalysis* analysis = nullptr);
+/// The densities of the materials when some step is dynamic (after read_steps).
+void map_densities(Reader& r);
 /// Control or Step: the time of the run and its steps with their conditions.
 void read_steps(Reader& r, pugi::xml_node root);
 /// Output: logfile data as reactions and probes where they map directly.

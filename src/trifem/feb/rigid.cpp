@@ -10,10 +10,6 @@
 namespace trifem::feb::detail {
 namespace {
 
-bool is_element(pugi::xml_node n) {
-  return n.type() == pugi::node_element;
-}
-
 /// The rigid body named by the <rb> child of `node`.
 RigidBodyInput& body_of(Reader& r, pugi::xml_node node) {
   const pugi::xml_node rb = r.doc.child(node, "rb");

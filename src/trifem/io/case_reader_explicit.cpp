@@ -101,6 +101,7 @@ void read_analysis_type(const Table& root, CaseSpec& spec) {
   if (!t)
     return;
   static const Options<AnalysisType> types = {{"quasi-static", AnalysisType::QuasiStatic},
+                                              {"dynamic", AnalysisType::Dynamic},
                                               {"dynamic-explicit", AnalysisType::DynamicExplicit}};
   spec.analysis.type = t->choice("type", types, std::optional(spec.analysis.type), "analysis type");
 }

@@ -218,30 +218,8 @@ std::optional<material::AxesSpec> read_material_axes(const Table& t) {
   return std::nullopt;
 }
 
-MaterialSpec read_mixture(const Table& t, const std::string& type) {
-  const bool charged = type == "triphasic";
-  if (!charged)
-    reject_triphasic_keys(t);
-  std::vector<std::string_view> keys = {"type", "solid"};
-  for (const auto& p : material::mixture_schema(charged))
-    keys.push_back(p.key);
-  keys.push_back("axes");
-  t.allow(keys);
-  const material::ParameterValues values = read_mixture_values(t, charged);
-  SolidSpec solid = read_mixture_solid(t);
-  MaterialSpec m{type,
-                 material::validate_mixture_parameters(charged, values, t.path()),
-                 std::move(solid),
-                 std::nullopt,
-                 {},
-                 SolidElementSpec::Auto,
-                 read_material_axes(t)};
-  material::make_mixture(charged, material::create_law(*m.solid, t.path("solid")), m.parameters,
-                         t.path()); // the mixture's own checks
-  return m;
-}
-
-/// The mass density of the solid-law material `t`: optional, required in explicit analyses.
+/// The mass density of the material `t`: optional, required in explicit analyses (in implicit
+/// dynamic ones, read_dynamic checks that every material has one).
 std::optional<Real> read_density(const Table& t, const CaseSpec& spec) {
   const NumberRule rule{
       .range = Range::positive(), .unit = "t/mm^3", .plausible = &material::plausible::density()};
@@ -253,6 +231,30 @@ std::optional<Real> read_density(const Table& t, const CaseSpec& spec) {
                      "need the mass density of every material, e.g. 1e-9 for water-like tissue)",
                      range_text(rule.range, rule.unit)));
   return std::nullopt;
+}
+
+MaterialSpec read_mixture(const Table& t, const std::string& type, const CaseSpec& spec) {
+  const bool charged = type == "triphasic";
+  if (!charged)
+    reject_triphasic_keys(t);
+  std::vector<std::string_view> keys = {"type", "solid"};
+  for (const auto& p : material::mixture_schema(charged))
+    keys.push_back(p.key);
+  keys.push_back("axes");
+  keys.push_back("density");
+  t.allow(keys);
+  const material::ParameterValues values = read_mixture_values(t, charged);
+  SolidSpec solid = read_mixture_solid(t);
+  MaterialSpec m{type,
+                 material::validate_mixture_parameters(charged, values, t.path()),
+                 std::move(solid),
+                 read_density(t, spec),
+                 {},
+                 SolidElementSpec::Auto,
+                 read_material_axes(t)};
+  material::make_mixture(charged, material::create_law(*m.solid, t.path("solid")), m.parameters,
+                         t.path()); // the mixture's own checks
+  return m;
 }
 
 /// The `element` key of the solid-law material `t` (quasi-static analyses only).
@@ -275,7 +277,7 @@ MaterialSpec read_material(const Table& t, const CaseSpec& spec) {
     if (spec.is_explicit())
       fail(t.find("type"), fmt::format("{} = '{}'", t.path("type"), type),
            "not supported in dynamic-explicit analyses (analysis.type): only solid laws");
-    return read_mixture(t, type);
+    return read_mixture(t, type, spec);
   }
   if (const toml::node* solid = t.find("solid"))
     fail(solid, t.path("solid"),
@@ -674,7 +676,8 @@ void read_output(const Table& root, CaseSpec& spec) {
 void read_sections(const toml::table& document, CaseSpec& spec) {
   const Table root(document, "", &spec.warnings);
   root.allow({"title", "mesh", "materials", "curves", "boundary", "loads", "contact", "rigid_body",
-              "analysis", "electrochemistry", "time", "step", "solver", "explicit", "output"});
+              "analysis", "electrochemistry", "time", "step", "solver", "explicit", "dynamic",
+              "output"});
   spec.title = root.get<std::string>("title").value_or("");
   read_analysis_type(root, spec); // the other sections depend on it
   check_analysis_sections(root, spec);
@@ -690,6 +693,7 @@ void read_sections(const toml::table& document, CaseSpec& spec) {
   read_solver(root, spec);
   read_explicit(root, spec);
   read_steps(root, spec);
+  read_dynamic(root, spec);
   read_output(root, spec);
   check_time_limits(&root, spec);
   check_model_size(&root, spec);

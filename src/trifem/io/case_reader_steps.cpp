@@ -14,6 +14,7 @@ constexpr std::string_view kExplicitName = "dynamic-explicit";
 /// The analysis types a step may name.
 const Options<AnalysisType>& analysis_options() {
   static const Options<AnalysisType> types = {{"quasi-static", AnalysisType::QuasiStatic},
+                                              {"dynamic", AnalysisType::Dynamic},
                                               {"dynamic-explicit", AnalysisType::DynamicExplicit}};
   return types;
 }

@@ -10,6 +10,7 @@
 #include "trifem/mesh/box.hpp"
 #include "trifem/mesh/mesh.hpp"
 
+#include <algorithm>
 #include <array>
 #include <filesystem>
 #include <limits>
@@ -64,8 +65,8 @@ struct MaterialSpec {
   std::string type;
   material::ParameterValues parameters;
   std::optional<SolidSpec> solid; ///< set exactly for mixtures
-  /// Mass density ρ [t/mm³] of a solid-law material (optional key, > 0); required in
-  /// dynamic-explicit analyses, unused by quasi-static ones.
+  /// Mass density ρ [t/mm³] per reference volume (optional key, > 0; of a mixture: of the
+  /// saturated mixture); required in dynamic analyses, unused by quasi-static ones.
   std::optional<Real> density;
   /// The constituents of a solid-law material of type "solid-mixture" ([[<name>.constituent]]);
   /// empty otherwise.
@@ -215,8 +216,24 @@ enum class InitialStateKind {
 
 /// The kind of analysis ([analysis] type).
 enum class AnalysisType {
-  QuasiStatic,    ///< "quasi-static": implicit Newton steps, no inertia (default)
-  DynamicExplicit ///< "dynamic-explicit": central differences with a multiplier pressure
+  QuasiStatic,     ///< "quasi-static": implicit Newton steps, no inertia (default)
+  DynamicExplicit, ///< "dynamic-explicit": central differences with a multiplier pressure
+  Dynamic          ///< "dynamic": implicit Newton steps with inertia (generalized-α)
+};
+
+/// The mass matrix of an implicit dynamic analysis ([dynamic] mass).
+enum class MassMatrixSpec {
+  Consistent, ///< "consistent": m_ab = ∫ ρ N_a N_b dV (default)
+  Lumped      ///< "lumped": its row sums
+};
+
+/// [dynamic]: options of implicit dynamic steps.
+struct DynamicSpec {
+  /// Spectral radius of the generalized-α method at infinite frequency, in [0, 1]: 1 (default)
+  /// is the trapezoidal rule without numerical dissipation; smaller values damp the highest
+  /// frequencies.
+  Real rho_inf = 1.0;
+  MassMatrixSpec mass = MassMatrixSpec::Consistent;
 };
 
 /// [analysis]: the analysis type (any model) and the options of mixture models.
@@ -375,6 +392,7 @@ struct StepSpec {
   /// the steady state under that time's loads (the transport is done in a pseudo-time step).
   bool steady = false;
   bool is_explicit() const { return analysis == AnalysisType::DynamicExplicit; }
+  bool is_dynamic() const { return analysis == AnalysisType::Dynamic; }
 };
 
 /// A whole case file.
@@ -402,6 +420,7 @@ struct CaseSpec {
   TimeSpec time;
   SolverSpec solver;              ///< quasi-static analyses
   ExplicitSpec explicit_dynamics; ///< dynamic-explicit analyses ([explicit])
+  DynamicSpec dynamics;           ///< implicit dynamic analyses and steps ([dynamic])
   OutputSpec output;
   /// The [[step]]s in order; empty: one step with [time] and no step-level conditions.
   std::vector<StepSpec> steps;
@@ -412,6 +431,12 @@ struct CaseSpec {
   bool is_explicit() const { return analysis.type == AnalysisType::DynamicExplicit; }
   /// A quasi-static case whose last [[step]] is dynamic-explicit (a mixed run).
   bool has_explicit_step() const { return !steps.empty() && steps.back().is_explicit(); }
+  /// The analysis or one of its [[step]]s is implicit dynamic (the model has inertia).
+  bool has_dynamic_step() const {
+    return analysis.type == AnalysisType::Dynamic ||
+           std::any_of(steps.begin(), steps.end(),
+                       [](const StepSpec& s) { return s.is_dynamic(); });
+  }
 };
 
 } // namespace trifem::io

@@ -198,19 +198,34 @@ void write_rigid_bodies(const CaseSpec& spec, TomlText& t) {
   }
 }
 
-/// [analysis] of a mixture model, when it differs from the defaults (quasi-static analyses only:
-/// check_supported refuses the others).
+/// [analysis]: the type of an implicit dynamic analysis and the options of a mixture model, when
+/// they differ from the defaults (dynamic-explicit analyses: check_supported refuses them).
 void write_analysis(const CaseSpec& spec, TomlText& t) {
   const AnalysisSpec& a = spec.analysis;
-  if (a.initial_state == InitialStateKind::Donnan && a.fixed_charge_curve.empty() &&
-      a.flux_mass == FluxMass::Consistent)
+  const bool dynamic = a.type == AnalysisType::Dynamic;
+  const bool mixture_options = a.initial_state != InitialStateKind::Donnan ||
+                               !a.fixed_charge_curve.empty() || a.flux_mass != FluxMass::Consistent;
+  if (!dynamic && !mixture_options)
     return;
   t.header("[analysis]");
+  if (dynamic)
+    t.string("type", "dynamic");
+  if (!mixture_options)
+    return;
   t.string("initial_state",
            a.initial_state == InitialStateKind::Donnan ? "donnan" : "donnan-prestressed");
   if (a.flux_mass == FluxMass::Lumped)
     t.string("flux_mass", "lumped");
   t.optional_string("fixed_charge_curve", a.fixed_charge_curve);
+}
+
+/// [dynamic] of a case with implicit dynamic steps.
+void write_dynamic(const CaseSpec& spec, TomlText& t) {
+  if (!spec.has_dynamic_step())
+    return;
+  t.header("[dynamic]");
+  t.number("rho_inf", spec.dynamics.rho_inf);
+  t.string("mass", spec.dynamics.mass == MassMatrixSpec::Lumped ? "lumped" : "consistent");
 }
 
 void write_electrochemistry(const CaseSpec& spec, TomlText& t) {
@@ -250,6 +265,8 @@ void write_time(const CaseSpec& spec, TomlText& t) {
   for (const StepSpec& s : spec.steps) {
     t.header("[[step]]");
     t.string("name", s.name);
+    if (s.analysis != spec.analysis.type)
+      t.string("analysis", s.is_dynamic() ? "dynamic" : "quasi-static");
     write_time_keys(s.time, t);
     if (s.release_time > 0.0)
       t.number("release_time", s.release_time);
@@ -332,6 +349,7 @@ std::string case_toml(const CaseSpec& spec) {
   write_contacts(spec, t);
   write_rigid_bodies(spec, t);
   write_analysis(spec, t);
+  write_dynamic(spec, t);
   write_electrochemistry(spec, t);
   write_time(spec, t);
   write_solver(spec.solver, t);

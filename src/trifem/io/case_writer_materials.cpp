@@ -146,10 +146,11 @@ void write_material(const std::string& name, const MaterialSpec& m, TomlText& t)
   TRIFEM_CHECK(!m.axes, "{}.axes: writing material axes to a TOML case is not supported yet", path);
   t.header(fmt::format("[{}]", path));
   if (m.is_mixture()) {
-    TRIFEM_CHECK(!m.density && m.element == SolidElementSpec::Auto && m.constituents.empty(),
-                 "{}: a mixture with a density, an element or constituents cannot be written",
-                 path);
+    TRIFEM_CHECK(m.element == SolidElementSpec::Auto && m.constituents.empty(),
+                 "{}: a mixture with an element or constituents cannot be written", path);
     t.string("type", m.type);
+    if (m.density)
+      t.number("density", *m.density);
     write_mixture_parameters(m, path, t);
     t.header(fmt::format("[{}.solid]", path));
     return write_law(*m.solid, path + ".solid", t);

@@ -336,5 +336,8 @@ void check_analysis_sections(const Table& root, const CaseSpec& spec);
 void read_explicit_time(const Table& root, CaseSpec& spec);
 /// [explicit] (only with [analysis] type = "dynamic-explicit"; after [time]).
 void read_explicit(const Table& root, CaseSpec& spec);
+/// [dynamic] and the densities of implicit dynamic analyses (after [[step]];
+/// case_reader_dynamic.cpp).
+void read_dynamic(const Table& root, CaseSpec& spec);
 
 } // namespace trifem::io::detail

@@ -6,32 +6,33 @@
 namespace trifem::linalg {
 namespace {
 
-enum class Role { displacement, flux, potential };
+enum class FieldRole { displacement, flux, potential };
 
-Role role_of(const std::string& name) {
+FieldRole role_of(const std::string& name) {
   if (name == "fluid_flux" || name == "cation_flux" || name == "anion_flux")
-    return Role::flux;
+    return FieldRole::flux;
   if (name == "pressure" || name == "electric_potential" ||
       name.rfind("contact_multipliers", 0) == 0)
-    return Role::potential;
-  return Role::displacement;
+    return FieldRole::potential;
+  return FieldRole::displacement;
 }
 
 } // namespace
 
 BlockSplit BlockSplit::from_fields(const std::vector<int>& equation_fields,
                                    const std::vector<std::string>& field_names) {
-  std::vector<Role> roles;
+  std::vector<FieldRole> roles;
   for (const std::string& name : field_names)
     roles.push_back(role_of(name));
   BlockSplit split;
   for (std::size_t eq = 0; eq < equation_fields.size(); ++eq) {
     const int field = equation_fields[eq];
-    const Role role =
-        field >= 0 && field < static_cast<int>(roles.size()) ? roles[field] : Role::displacement;
-    std::vector<Index>& group = role == Role::flux        ? split.flux
-                                : role == Role::potential ? split.potential
-                                                          : split.displacement;
+    const FieldRole role = field >= 0 && field < static_cast<int>(roles.size())
+                               ? roles[field]
+                               : FieldRole::displacement;
+    std::vector<Index>& group = role == FieldRole::flux        ? split.flux
+                                : role == FieldRole::potential ? split.potential
+                                                               : split.displacement;
     group.push_back(static_cast<Index>(eq));
   }
   return split;

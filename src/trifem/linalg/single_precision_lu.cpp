@@ -13,10 +13,10 @@ namespace {
 static_assert(std::is_same_v<MUMPS_INT, int>, "MUMPS built with 32-bit integers expected");
 
 constexpr int kInitialize = -1, kTerminate = -2, kAnalyze = 1, kFactorize = 2, kSolve = 3;
-constexpr int kMaxWorkspaceRetries = 4;
+constexpr int kMaxSmumpsWorkspaceRetries = 4;
 
 /// INFOG(1) of a workspace estimate too small (pivots delayed beyond what the analysis foresaw).
-bool workspace_too_small(int infog1) {
+bool smumps_workspace_too_small(int infog1) {
   return infog1 == -8 || infog1 == -9 || infog1 == -14 || infog1 == -15 || infog1 == -17 ||
          infog1 == -20;
 }
@@ -92,7 +92,7 @@ bool SinglePrecisionLu::factorize(const PetscScalar* values) {
       mumps_->icntl(14) = relaxation;
       return true;
     }
-    if (!workspace_too_small(infog1_) || retry == kMaxWorkspaceRetries) {
+    if (!smumps_workspace_too_small(infog1_) || retry == kMaxSmumpsWorkspaceRetries) {
       mumps_->icntl(14) = relaxation;
       return false;
     }

@@ -3,6 +3,7 @@
 #include "trifem/mesh/gmsh_reader.hpp"
 
 #include "trifem/core/error.hpp"
+#include "trifem/mesh/gmsh_element_types.hpp"
 #include "trifem/mesh/gmsh_line_reader.hpp"
 #include "trifem/mesh/hex_faces.hpp"
 
@@ -28,9 +29,6 @@ using detail::LineReader;
 using Tag = std::int64_t;
 /// (dimension, tag) of a physical group or of a geometric entity.
 using DimTag = std::pair<int, int>;
-
-constexpr int kGmshQuad4 = 3;
-constexpr int kGmshHex8 = 5;
 
 /// A Gmsh element type: number, name and dimension.
 struct ElementType {

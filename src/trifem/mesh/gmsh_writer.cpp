@@ -3,6 +3,7 @@
 #include "trifem/mesh/gmsh_writer.hpp"
 
 #include "trifem/core/error.hpp"
+#include "trifem/mesh/gmsh_element_types.hpp"
 
 #include <algorithm>
 #include <fmt/format.h>
@@ -16,10 +17,6 @@
 
 namespace trifem::mesh {
 namespace {
-
-constexpr int kGmshQuad4 = 3;
-constexpr int kGmshHex8 = 5;
-constexpr int kGmshPoint = 15;
 
 using Buffer = fmt::memory_buffer;
 

@@ -50,6 +50,7 @@ std::vector<CellMaterial> cell_materials(const io::CaseSpec& spec, const mesh::M
       cm.mixture = std::make_shared<material::MixtureProperties>(
           material::make_mixture(m.type == "triphasic", std::move(solid), m.parameters, ctx));
     }
+    cm.density = m.density.value_or(0.0);
     by_name[name] = cm;
   }
   std::vector<CellMaterial> per_cell(mesh.num_cells());
@@ -137,6 +138,22 @@ dofs::DirichletCondition unused_dofs(const Model& model,
     if (!used[d])
       c.dofs.push_back(d);
   return c;
+}
+
+/// The inertia of every cell, for the dynamic steps of the case.
+std::unique_ptr<physics::InertiaTerm> inertia_term(const io::CaseSpec& spec, const Model& model) {
+  std::vector<Index> cells(model.mesh.num_cells());
+  std::vector<Real> densities(cells.size());
+  for (Index c = 0; c < model.mesh.num_cells(); ++c) {
+    cells[c] = c;
+    densities[c] = model.materials[c].density; // > 0: the reader requires it
+  }
+  const physics::MassMatrix mass = spec.dynamics.mass == io::MassMatrixSpec::Lumped
+                                       ? physics::MassMatrix::Lumped
+                                       : physics::MassMatrix::Consistent;
+  return std::make_unique<physics::InertiaTerm>(
+      model.mesh, model.dofs, model.fields.u, std::move(cells), std::move(densities), mass,
+      physics::GeneralizedAlpha::from_spectral_radius(spec.dynamics.rho_inf));
 }
 
 void set_scales(const std::vector<CellMaterial>& materials, Model& model) {
@@ -252,6 +269,8 @@ std::unique_ptr<Model> build_model(const io::CaseSpec& spec) {
   model->problem = std::make_unique<assembly::FeProblem>(
       model->dofs, std::move(bcs), std::move(terms), field_scales(*model), std::move(frames));
   model->problem->set_node_positions(model->fields.u, model->mesh.nodes());
+  if (spec.has_dynamic_step())
+    model->problem->add_inertia(inertia_term(spec, *model));
   if (model->mixture) {
     Vector x = model->problem->state();
     const auto kind = spec.analysis.initial_state == io::InitialStateKind::DonnanPrestressed

@@ -44,6 +44,7 @@ struct CellMaterial {
   std::shared_ptr<const material::ElasticLaw> solid;
   std::shared_ptr<const material::MixtureProperties> mixture;
   physics::SolidElement element = physics::SolidElement::Displacement; ///< of a solid law
+  Real density = 0.0; ///< per reference volume [t/mm³] (0: not given)
 };
 
 /// The element `auto` chooses for a solid law: mean dilatation when its small-strain bulk

@@ -119,9 +119,11 @@ void activate_step(Model& model, std::size_t k, const ModelStep* restored) {
   if (restored) {
     step.released = restored->released;
   } else if (step.release_time > 0.0) {
-    // reactions of the current state (the last evaluation may be of a rejected attempt)
+    // reactions of the current state (the last evaluation may be of a rejected attempt); after
+    // a dynamic step full_residual() holds those of its commit, g + M a
     solver::Linearization lin;
-    if (model.problem->linearize(lin, false) == solver::SolveStatus::Converged)
+    if (model.problem->dynamic() ||
+        model.problem->linearize(lin, false) == solver::SolveStatus::Converged)
       step.released = released_reactions(model, before, after);
   }
   model.dofs.reset_constraints();

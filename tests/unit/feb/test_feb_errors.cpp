@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 // The FEBio reader refuses what it cannot map with one error line: file, line, XML path, what.
+#include "feb_errors.hpp"
 #include "trifem/core/error.hpp"
 #include "trifem/feb/feb_reader.hpp"
 
@@ -13,8 +14,8 @@ using namespace trifem;
 namespace {
 
 /// A valid single-hex 4.0 file; `material`, `elements` and `boundary` replace its sections.
-std::string model_text(const std::string& material, const std::string& elements,
-                       const std::string& boundary) {
+std::string solid_model_text(const std::string& material, const std::string& elements,
+                             const std::string& boundary) {
   return R"(<?xml version="1.0"?>
 <febio_spec version="4.0">
   <Module type="solid"/>
@@ -49,7 +50,7 @@ const std::string kFixed =
     R"(    <bc name="fix" node_set="bottom" type="zero displacement"><x_dof>1</x_dof><y_dof>1</y_dof><z_dof>1</z_dof></bc>)";
 
 /// The message of the InputError parse_feb throws for `text` (fails the test if none).
-std::string error_of(const std::string& text, const std::string& file = "bad.feb") {
+std::string feb_error(const std::string& text, const std::string& file = "bad.feb") {
   try {
     feb::parse_feb(text, file);
   } catch (const InputError& e) {
@@ -61,21 +62,18 @@ std::string error_of(const std::string& text, const std::string& file = "bad.feb
   return "";
 }
 
-void expect_contains(const std::string& message, const std::vector<std::string>& fragments) {
-  for (const std::string& f : fragments)
-    EXPECT_NE(message.find(f), std::string::npos) << "'" << f << "' not in: " << message;
-}
+using test::expect_contains;
 
 } // namespace
 
 TEST(FebErrors, TheValidBaseFileReads) {
-  EXPECT_NO_THROW(feb::parse_feb(model_text(kMaterial, kHex, kFixed), "good.feb"));
+  EXPECT_NO_THROW(feb::parse_feb(solid_model_text(kMaterial, kHex, kFixed), "good.feb"));
 }
 
 TEST(FebErrors, Tet4Mesh) {
   const std::string tet =
       R"(    <Elements type="tet4" name="P"><elem id="1">1,2,3,5</elem></Elements>)";
-  expect_contains(error_of(model_text(kMaterial, tet, kFixed)),
+  expect_contains(feb_error(solid_model_text(kMaterial, tet, kFixed)),
                   {"bad.feb:13: febio_spec/Mesh/Elements[@type='tet4'][@name='P']: ",
                    "element type 'tet4' is not supported (trifem has hex8 only)"});
 }
@@ -83,7 +81,7 @@ TEST(FebErrors, Tet4Mesh) {
 TEST(FebErrors, UnknownMaterialType) {
   const std::string m =
       R"(    <material id="1" name="m" type="Fung orthotropic"><E1>1</E1></material>)";
-  expect_contains(error_of(model_text(m, kHex, kFixed)),
+  expect_contains(feb_error(solid_model_text(m, kHex, kFixed)),
                   {"bad.feb:6: febio_spec/Material/material[@type='Fung orthotropic'][@name='m']"
                    "/@type: ",
                    "material type 'Fung orthotropic' is not supported", "neo-Hookean"});
@@ -92,7 +90,7 @@ TEST(FebErrors, UnknownMaterialType) {
 TEST(FebErrors, UnknownMaterialParameter) {
   const std::string m =
       R"(    <material id="1" name="m" type="neo-Hookean"><E>1</E><nu>0.3</nu></material>)";
-  expect_contains(error_of(model_text(m, kHex, kFixed)),
+  expect_contains(feb_error(solid_model_text(m, kHex, kFixed)),
                   {"bad.feb:6: febio_spec/Material/material[@type='neo-Hookean'][@name='m']/nu: ",
                    "unknown parameter 'nu' of material type 'neo-Hookean'", "E, v"});
 }
@@ -100,13 +98,14 @@ TEST(FebErrors, UnknownMaterialParameter) {
 TEST(FebErrors, OutOfRangeMaterialParameter) {
   const std::string m =
       R"(    <material id="1" name="m" type="neo-Hookean"><E>-1</E><v>0.3</v></material>)";
-  expect_contains(error_of(model_text(m, kHex, kFixed)), {"bad.feb:6: ", "E = -1: out of range"});
+  expect_contains(feb_error(solid_model_text(m, kHex, kFixed)),
+                  {"bad.feb:6: ", "E = -1: out of range"});
 }
 
 TEST(FebErrors, MissingNodeSet) {
   const std::string bc =
       R"(    <bc name="fix" node_set="botom" type="zero displacement"><z_dof>1</z_dof></bc>)";
-  expect_contains(error_of(model_text(kMaterial, kHex, bc)),
+  expect_contains(feb_error(solid_model_text(kMaterial, kHex, bc)),
                   {"bad.feb:18: febio_spec/Boundary/bc[@type='zero displacement'][@name='fix']"
                    "/@node_set: ",
                    "node set 'botom' is not defined (defined: bottom)"});
@@ -115,51 +114,51 @@ TEST(FebErrors, MissingNodeSet) {
 TEST(FebErrors, UndefinedNodeInAnElement) {
   const std::string hex =
       R"(    <Elements type="hex8" name="P"><elem id="1">1,2,3,4,5,6,7,9</elem></Elements>)";
-  expect_contains(error_of(model_text(kMaterial, hex, kFixed)),
+  expect_contains(feb_error(solid_model_text(kMaterial, hex, kFixed)),
                   {"bad.feb:13: ", "elem[@id='1']: node id 9 is not defined"});
 }
 
 TEST(FebErrors, BrokenXmlGivesTheLine) {
-  std::string text = model_text(kMaterial, kHex, kFixed);
+  std::string text = solid_model_text(kMaterial, kHex, kFixed);
   text.replace(text.find("</Material>"), 11, "</Materal>");
-  expect_contains(error_of(text), {"bad.feb:7: XML syntax error: ", "not well-formed"});
+  expect_contains(feb_error(text), {"bad.feb:7: XML syntax error: ", "not well-formed"});
 }
 
 TEST(FebErrors, OldFormatVersions) {
   for (const char* v : {"2.0", "2.5", "1.2"}) {
-    std::string text = model_text(kMaterial, kHex, kFixed);
+    std::string text = solid_model_text(kMaterial, kHex, kFixed);
     text.replace(text.find("\"4.0\""), 5, fmt::format("\"{}\"", v));
-    expect_contains(error_of(text), {"bad.feb:2: febio_spec/@version: ",
-                                     fmt::format("FEBio format version '{}' is "
-                                                 "not supported",
-                                                 v),
-                                     "trifem reads 4.0 and 3.0"});
+    expect_contains(feb_error(text), {"bad.feb:2: febio_spec/@version: ",
+                                      fmt::format("FEBio format version '{}' is "
+                                                  "not supported",
+                                                  v),
+                                      "trifem reads 4.0 and 3.0"});
   }
 }
 
 TEST(FebErrors, UnsupportedBoundaryAndSections) {
   const std::string rigid =
       R"(    <bc name="r" node_set="bottom" type="zero rotation"><x_dof>1</x_dof></bc>)";
-  expect_contains(error_of(model_text(kMaterial, kHex, rigid)),
+  expect_contains(feb_error(solid_model_text(kMaterial, kHex, rigid)),
                   {"bad.feb:18: ", "boundary condition type 'zero rotation' is not supported"});
-  std::string discrete = model_text(kMaterial, kHex, kFixed);
+  std::string discrete = solid_model_text(kMaterial, kHex, kFixed);
   discrete.replace(discrete.find("</febio_spec>"), 13, "  <Discrete/>\n</febio_spec>");
-  expect_contains(error_of(discrete),
+  expect_contains(feb_error(discrete),
                   {"bad.feb:20: febio_spec/Discrete: ", "the section <Discrete> is not supported"});
 }
 
 TEST(FebErrors, SteadyStateBiphasicAndStepCurves) {
-  std::string text = model_text(kMaterial, kHex, kFixed);
+  std::string text = solid_model_text(kMaterial, kHex, kFixed);
   text.replace(text.find("\"solid\""), 7, "\"biphasic\"");
-  expect_contains(error_of(text), {"bad.feb:4: febio_spec/Control/analysis: ",
-                                   "a static analysis of a mixture is not supported"});
+  expect_contains(feb_error(text), {"bad.feb:4: febio_spec/Control/analysis: ",
+                                    "a static analysis of a mixture is not supported"});
   // FEBio's SMOOTH through more than two points is not trifem's smooth curve
-  text = model_text(kMaterial, kHex, kFixed);
+  text = solid_model_text(kMaterial, kHex, kFixed);
   text.replace(
       text.find("</febio_spec>"), 13,
       R"(<LoadData><load_controller id="1" type="loadcurve"><interpolate>SMOOTH</interpolate>
 <points><pt>0,0</pt><pt>1,1</pt><pt>2,0</pt></points></load_controller></LoadData></febio_spec>)");
-  expect_contains(error_of(text),
+  expect_contains(feb_error(text),
                   {"bad.feb:20: ", "/interpolate: interpolation 'SMOOTH' is not supported"});
 }
 
@@ -179,7 +178,7 @@ TEST(FebErrors, UnsupportedSurfaceLoads) {
       R"(<Loads><surface_load surface="top" type="{}">{}</surface_load></Loads>
 </febio_spec>)";
   const auto with_load = [&](const std::string& type, const std::string& body) {
-    std::string text = model_text(kMaterial, kHex, kFixed);
+    std::string text = solid_model_text(kMaterial, kHex, kFixed);
     text.replace(text.find("<NodeSet"), 0,
                  "<Surface name=\"top\"><quad4 id=\"1\">5,6,7,8</quad4></Surface>\n    ");
     std::string l = loads;
@@ -188,18 +187,18 @@ TEST(FebErrors, UnsupportedSurfaceLoads) {
     text.replace(text.find("</febio_spec>"), 13, l);
     return text;
   };
-  expect_contains(error_of(with_load("traction", "<scale>1</scale><trac>0,0,1</trac>")),
+  expect_contains(feb_error(with_load("traction", "<scale>1</scale><trac>0,0,1</trac>")),
                   {"bad.feb:21: ", "/trac: unknown parameter 'trac' of a traction load"});
   expect_contains(
-      error_of(with_load("traction", "<scale>1</scale>")),
+      feb_error(with_load("traction", "<scale>1</scale>")),
       {"bad.feb:21: ", "surface_load[@type='traction']: the element <traction> is required"});
-  expect_contains(error_of(with_load("heat flux", "<flux>1</flux>")),
+  expect_contains(feb_error(with_load("heat flux", "<flux>1</flux>")),
                   {"bad.feb:21: ", "only <surface_load> of type pressure, traction, "
                                    "normal_traction and fluidflux are supported"});
-  expect_contains(error_of(with_load("fluidflux", "<flux>1</flux>")),
+  expect_contains(feb_error(with_load("fluidflux", "<flux>1</flux>")),
                   {"bad.feb:21: ", "a fluid flux needs the biphasic or multiphasic module"});
   expect_contains(
-      error_of(with_load("normal_traction", "<traction>1</traction><linear>1</linear>")),
+      feb_error(with_load("normal_traction", "<traction>1</traction><linear>1</linear>")),
       {"bad.feb:21: ", "/linear: a linear (non-follower) load is not supported"});
 }
 
@@ -228,28 +227,28 @@ std::string stacked_with(const std::string& from, const std::string& to) {
 
 TEST(FebErrors, UnsupportedContact) {
   expect_contains(
-      error_of(stacked_with("<fric_coeff>0</fric_coeff>", "<fric_coeff>0.3</fric_coeff>")),
+      feb_error(stacked_with("<fric_coeff>0</fric_coeff>", "<fric_coeff>0.3</fric_coeff>")),
       {"bad.feb:", "contact[@type='sliding-elastic'][@name='Stack']/fric_coeff",
        "'fric_coeff' must be 0 (trifem's contact is frictionless"});
-  expect_contains(error_of(stacked_with("type=\"sliding-elastic\"", "type=\"tied-elastic\"")),
+  expect_contains(feb_error(stacked_with("type=\"sliding-elastic\"", "type=\"tied-elastic\"")),
                   {"@type: contact type 'tied-elastic' is not supported (trifem has no tied "
                    "contact"});
-  expect_contains(error_of(stacked_with("surface_pair=\"Interface\"", "surface_pair=\"Gap\"")),
+  expect_contains(feb_error(stacked_with("surface_pair=\"Interface\"", "surface_pair=\"Gap\"")),
                   {"@surface_pair: surface pair 'Gap' is not defined in <Mesh>"});
   expect_contains(
-      error_of(stacked_with("<primary>UpperBottom</primary>", "<primary>UpperBotom</primary>")),
+      feb_error(stacked_with("<primary>UpperBottom</primary>", "<primary>UpperBotom</primary>")),
       {"SurfacePair[@name='Interface']/primary: surface 'UpperBotom' is not defined"});
   expect_contains(
-      error_of(stacked_with("<search_tol>", "<friction_angle>1</friction_angle><search_tol>")),
+      feb_error(stacked_with("<search_tol>", "<friction_angle>1</friction_angle><search_tol>")),
       {"friction_angle: contact parameter 'friction_angle' is not supported"});
   // a biphasic model needs the contact that couples the fluid
   const std::string biphasic =
       stacked_with({{"<Module type=\"solid\"/>", "<Module type=\"biphasic\"/>"},
                     {"<analysis>STATIC</analysis>", "<analysis>TRANSIENT</analysis>"}});
-  expect_contains(error_of(biphasic),
+  expect_contains(feb_error(biphasic),
                   {"'sliding-elastic' in a biphasic model", "use "
                                                             "'sliding-biphasic'"});
-  expect_contains(error_of(stacked_with("type=\"sliding-elastic\"", "type=\"sliding-biphasic\"")),
+  expect_contains(feb_error(stacked_with("type=\"sliding-elastic\"", "type=\"sliding-biphasic\"")),
                   {"'sliding-biphasic' needs the biphasic module"});
 }
 
@@ -260,7 +259,7 @@ namespace {
 std::string with_rigid_body(const std::string& rigid) {
   const std::string materials = kMaterial + R"(
     <material id="2" name="plate" type="rigid body"><density>1</density><center_of_mass>0,0,0</center_of_mass></material>)";
-  std::string text = model_text(
+  std::string text = solid_model_text(
       materials, kHex, R"(    <bc name="glue" node_set="bottom" type="rigid"><rb>plate</rb></bc>)");
   text.replace(text.find("</febio_spec>"), 13, rigid + "\n</febio_spec>");
   return text;
@@ -286,17 +285,17 @@ TEST(FebRigid, AttachedBodyWithFixedRotationsTranslates) {
 }
 
 TEST(FebRigid, RefusesRotationsAndUnknownConditions) {
-  expect_contains(error_of(with_rigid_body(R"(<Rigid>
+  expect_contains(feb_error(with_rigid_body(R"(<Rigid>
   <rigid_bc type="rigid_fixed"><rb>plate</rb><Rx_dof>1</Rx_dof></rigid_bc>
 </Rigid>)")),
                   {"bad.feb:19: febio_spec/Boundary/bc[@type='rigid'][@name='glue']: ",
                    "trifem's rigid bodies translate only"});
   expect_contains(
-      error_of(with_rigid_body(R"(<Rigid>
+      feb_error(with_rigid_body(R"(<Rigid>
   <rigid_bc type="rigid_rotation"><rb>plate</rb></rigid_bc>
 </Rigid>)")),
       {"febio_spec/Rigid/rigid_bc[@type='rigid_rotation']/@type: ", "is not supported"});
-  expect_contains(error_of(with_rigid_body(R"(<Rigid>
+  expect_contains(feb_error(with_rigid_body(R"(<Rigid>
   <rigid_load type="rigid_force"><rb>bone</rb><dof>Rz</dof><value>1</value></rigid_load>
 </Rigid>)")),
                   {"/rb: ", "'bone' is not a material of type 'rigid body'"});

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Triphasic .feb models (multiphasic module): what the reader maps (units, fixed charge, bath)
 // and what it refuses, each with one error line naming the file, line and XML path.
+#include "feb_errors.hpp"
 #include "trifem/core/error.hpp"
 #include "trifem/feb/feb_reader.hpp"
 
@@ -33,7 +34,7 @@ std::string column_with(const std::string& from, const std::string& to) {
   return text;
 }
 
-std::string error_of(const std::string& text) {
+std::string column_error(const std::string& text) {
   try {
     feb::parse_feb(text, "tri.feb");
   } catch (const InputError& e) {
@@ -45,10 +46,7 @@ std::string error_of(const std::string& text) {
   return "";
 }
 
-void expect_contains(const std::string& message, const std::vector<std::string>& fragments) {
-  for (const std::string& f : fragments)
-    EXPECT_NE(message.find(f), std::string::npos) << "'" << f << "' not in: " << message;
-}
+using test::expect_contains;
 
 } // namespace
 
@@ -87,15 +85,15 @@ TEST(FebTriphasic, SolubilityIsTheInverseActivityCoefficient) {
 }
 
 TEST(FebTriphasic, RefusesWhatItCannotMap) {
-  expect_contains(error_of(column_with("<diff>0.0005</diff>", "<diff>0.0004</diff>")),
+  expect_contains(column_error(column_with("<diff>0.0005</diff>", "<diff>0.0004</diff>")),
                   {"tri.feb:", "/solute[@sol='Na']/diffusivity[@type='diff-const-iso']: ",
                    "diff = 0.0004 differs from free_diff = 0.0005"});
-  expect_contains(error_of(column_with("<charge_number>-1</charge_number>",
-                                       "<charge_number>2</charge_number>")),
+  expect_contains(column_error(column_with("<charge_number>-1</charge_number>",
+                                           "<charge_number>2</charge_number>")),
                   {"/Solutes/solute[@name='Cl']/charge_number: ", "charge number 2"});
-  expect_contains(error_of(column_with("<pt>1000,-200</pt>", "<pt>1000,200</pt>")),
+  expect_contains(column_error(column_with("<pt>1000,-200</pt>", "<pt>1000,200</pt>")),
                   {"fixed_charge_density: ", "is positive", "trifem's fixed charge is negative"});
-  expect_contains(error_of(column_with("<R>8.314e-06</R>", "")),
+  expect_contains(column_error(column_with("<R>8.314e-06</R>", "")),
                   {"febio_spec/Globals/Constants: ", "needs the constants R and T"});
   // a bath of water only: the ions of the top are not prescribed
   std::string water_only = column_text();
@@ -103,20 +101,21 @@ TEST(FebTriphasic, RefusesWhatItCannotMap) {
     const auto at = water_only.find(fmt::format("<bc name=\"{}\"", name));
     water_only.erase(at, water_only.find("</bc>", at) + 5 - at);
   }
-  expect_contains(error_of(water_only),
+  expect_contains(column_error(water_only),
                   {"[@name='BathPressure']: ", "has no prescribed cation concentration"});
   // a bath whose gauge pressure p~ + RT (c+ + c-) is not 0
-  expect_contains(error_of(column_with("<pt>1,-0.73084</pt>", "<pt>1,-0.5</pt>")),
+  expect_contains(column_error(column_with("<pt>1,-0.73084</pt>", "<pt>1,-0.5</pt>")),
                   {"[@name='BathPressure']: ", "trifem's bath is at gauge pressure 0"});
-  expect_contains(error_of(column_with("<pt>1,150</pt>", "<pt>1,150</pt><pt>5000,100</pt>")),
+  expect_contains(column_error(column_with("<pt>1,150</pt>", "<pt>1,150</pt><pt>5000,100</pt>")),
                   {"[@name='BathSodium']: ", "the value changes in time"});
-  expect_contains(error_of(column_with("<value>150</value>", "<value>100</value>")),
+  expect_contains(column_error(column_with("<value>150</value>", "<value>100</value>")),
                   {"febio_spec/Initial/ic[@type='initial concentration'][@name='Sodium']: ",
                    "initial cation concentration 100", "Donnan equilibrium with its bath"});
   expect_contains(
-      error_of(column_with("<Module type=\"multiphasic\"/>", "<Module type=\"biphasic\"/>")),
+      column_error(column_with("<Module type=\"multiphasic\"/>", "<Module type=\"biphasic\"/>")),
       {"febio_spec/Globals/Solutes: ", "<Solutes> needs the multiphasic module"});
-  expect_contains(error_of(column_with("type=\"prescribed concentration\">\n      <dof>c1</dof>",
-                                       "type=\"prescribed concentration\">\n      <dof>c3</dof>")),
-                  {"/dof: ", "solute '3' is not defined"});
+  expect_contains(
+      column_error(column_with("type=\"prescribed concentration\">\n      <dof>c1</dof>",
+                               "type=\"prescribed concentration\">\n      <dof>c3</dof>")),
+      {"/dof: ", "solute '3' is not defined"});
 }

@@ -655,7 +655,7 @@ const std::vector<BadCase> kMixtureBadCases = {
      cartilage_with("phi_s0 = 0.2", "phi_s0 = 0.2\nporosity = 0.8"),
      {"materials.cart.porosity: unknown key (expected one of: type, solid, phi_s0, permeability, "
       "fixed_charge, fixed_charge_basis, d_plus, d_minus, gamma_plus, gamma_minus, osmotic, "
-      "axes) (line 22)"}},
+      "axes, density) (line 22)"}},
     {"misspelt_mixture_key",
      cartilage_with("permeability", "permeabilty"),
      {"materials.cart.permeabilty: unknown key", "did you mean 'permeability'?"}},

@@ -59,7 +59,7 @@ MixedSystem mixed_system(Index cells, Real support = 0.01) {
   return s;
 }
 
-Vector right_hand_side(Index size) {
+Vector mixed_right_hand_side(Index size) {
   Vector b(size);
   for (Index i = 0; i < size; ++i)
     b[i] = std::cos(0.21 * i) + 0.05;
@@ -71,7 +71,7 @@ Real relative_residual(linalg::LinearSolver& solver, const MixedSystem& s) {
   solver.set_fields(s.fields, s.names);
   solver.analyze_pattern(s.A);
   EXPECT_TRUE(solver.factorize(s.A)) << solver.failure().reason;
-  const Vector b = right_hand_side(s.A.rows());
+  const Vector b = mixed_right_hand_side(s.A.rows());
   Vector x;
   EXPECT_TRUE(solver.solve(b, x)) << solver.failure().reason;
   return x.size() == b.size() ? (s.A * x - b).norm() / b.norm() : 1.0;
@@ -115,7 +115,7 @@ TEST(KrylovSolver, WhereMultigridFailsTheSolveIsRepeatedWithTheLuBlocks) {
   // is repeated with the LU blocks and the log says so; a second solve of the same matrix goes
   // to the LU blocks directly
   const MixedSystem s = mixed_system(400, -1.0);
-  const Vector b = right_hand_side(s.A.rows());
+  const Vector b = mixed_right_hand_side(s.A.rows());
   std::ostringstream log;
   spdlog::default_logger()->sinks().push_back(
       std::make_shared<spdlog::sinks::ostream_sink_st>(log));
@@ -140,7 +140,7 @@ TEST(KrylovSolver, ASolveToALooseToleranceIsContinuedToATightOne) {
   // Newton's forcing term: a solve to 1e-3, then continued from its result to 1e-10; a
   // tolerance among the PETSc options wins over the ones asked
   const MixedSystem s = mixed_system(40);
-  const Vector b = right_hand_side(s.A.rows());
+  const Vector b = mixed_right_hand_side(s.A.rows());
   for (const std::string preconditioner : {"lu", "amg"}) {
     SCOPED_TRACE(preconditioner);
     auto solver = linalg::make_linear_solver("krylov", "", false, preconditioner);
@@ -186,7 +186,7 @@ TEST(KrylovSolver, ASolveThatDoesNotConvergeSaysWhyAndIsCurable) {
   solver->analyze_pattern(s.A);
   ASSERT_TRUE(solver->factorize(s.A)) << solver->failure().reason;
   Vector x;
-  EXPECT_FALSE(solver->solve(right_hand_side(s.A.rows()), x));
+  EXPECT_FALSE(solver->solve(mixed_right_hand_side(s.A.rows()), x));
   const std::string reason = solver->failure().reason;
   EXPECT_NE(reason.find("did not converge"), std::string::npos) << reason;
   EXPECT_NE(reason.find("after 2 iterations"), std::string::npos) << reason;

@@ -25,7 +25,7 @@ using trifem::mesh::make_box;
 using trifem::mesh::Mesh;
 
 /// Volume of a hex8 cell by 2x2x2 Gauss quadrature of det(dx/dxi).
-Real hex_volume(const Mesh& mesh, Index c) {
+Real cell_volume(const Mesh& mesh, Index c) {
   const Real g = 1.0 / std::sqrt(3.0);
   Real volume = 0.0;
   for (int q = 0; q < 8; ++q) {
@@ -93,7 +93,7 @@ TEST(Box, CellVolumesSumToBoxVolume) {
   const Mesh mesh = make_box(graded_spec());
   Real total = 0.0;
   for (Index c = 0; c < mesh.num_cells(); ++c) {
-    const Real v = hex_volume(mesh, c);
+    const Real v = cell_volume(mesh, c);
     EXPECT_GT(v, 0.0);
     total += v;
   }

@@ -59,7 +59,7 @@ std::string read_error(const std::string& file) {
 
 /// Expects read_gmsh(file) to throw InputError starting with "<file>:<line>: " and containing
 /// `phrase`.
-void expect_error(const std::string& file, int line, const std::string& phrase) {
+void expect_file_error(const std::string& file, int line, const std::string& phrase) {
   const std::string message = read_error(file);
   SCOPED_TRACE(message);
   const std::string prefix = data(file).string() + ":" + std::to_string(line) + ": ";
@@ -173,43 +173,44 @@ TEST(GmshReaderErrors, MissingFile) {
 }
 
 TEST(GmshReaderErrors, EmptyFile) {
-  expect_error("empty.msh", 1, "empty file");
+  expect_file_error("empty.msh", 1, "empty file");
 }
 
 TEST(GmshReaderErrors, BinaryFile) {
-  expect_error("binary.msh", 2, "binary");
+  expect_file_error("binary.msh", 2, "binary");
 }
 
 TEST(GmshReaderErrors, UnsupportedVersion) {
-  expect_error("bad_version.msh", 2, "unsupported MSH format version '3.0'");
+  expect_file_error("bad_version.msh", 2, "unsupported MSH format version '3.0'");
 }
 
 TEST(GmshReaderErrors, TruncatedNodeBlock) {
-  expect_error("truncated_nodes.msh", 14, "section $Nodes is truncated");
+  expect_file_error("truncated_nodes.msh", 14, "section $Nodes is truncated");
 }
 
 TEST(GmshReaderErrors, TruncatedAtEndOfFile) {
-  expect_error("truncated_eof.msh", 17, "section $Elements is truncated");
+  expect_file_error("truncated_eof.msh", 17, "section $Elements is truncated");
 }
 
 TEST(GmshReaderErrors, UndefinedNodeTag) {
-  expect_error("undefined_node.msh", 27, "node tag 99, which is not defined");
+  expect_file_error("undefined_node.msh", 27, "node tag 99, which is not defined");
 }
 
 TEST(GmshReaderErrors, QuadThatIsNoHexFace) {
-  expect_error("quad_not_face.msh", 23, "element 2 of physical surface 'diagonal' is not a face");
+  expect_file_error("quad_not_face.msh", 23,
+                    "element 2 of physical surface 'diagonal' is not a face");
 }
 
 TEST(GmshReaderErrors, InvertedHex) {
-  expect_error("inverted_hex.msh", 17, "hex8 element 42 has negative volume");
+  expect_file_error("inverted_hex.msh", 17, "hex8 element 42 has negative volume");
 }
 
 TEST(GmshReaderErrors, TetrahedronIsUnsupported) {
-  expect_error("tetra.msh", 18, "unsupported element type 4 (tetra4)");
+  expect_file_error("tetra.msh", 18, "unsupported element type 4 (tetra4)");
 }
 
 TEST(GmshReaderErrors, TriangleIsUnsupported) {
-  expect_error("triangle.msh", 17, "unsupported element type 2 (triangle3)");
+  expect_file_error("triangle.msh", 17, "unsupported element type 2 (triangle3)");
 }
 
 // A count of 2e9 nodes declared for 12 and a tag of 1e9 used to size a table of 1e9 entries

@@ -18,7 +18,7 @@ using namespace trifem::explicit_dynamics;
 
 namespace {
 
-constexpr Real kMu = 1.0;
+constexpr Real kCookMu = 1.0;
 constexpr Real kShear = 0.02; ///< shear traction on the loaded edge [MPa] (resultant 0.32 N)
 
 /// Cook's membrane: x = 0 clamped, u_z = 0 everywhere (plane strain), vertical dead traction
@@ -46,7 +46,7 @@ struct SuddenLoad {
 };
 
 SuddenLoad sudden_load(Reading reading, Real alpha, Real t_end) {
-  const ExplicitModel model = cook_model(8, test::deviatoric_neo_hookean(kMu),
+  const ExplicitModel model = cook_model(8, test::deviatoric_neo_hookean(kCookMu),
                                          dofs::LoadCurve({{0.0, 1.0}}, dofs::Interpolation::Step));
   ExplicitSettings s;
   s.reading = reading;
@@ -65,8 +65,8 @@ SuddenLoad sudden_load(Reading reading, Real alpha, Real t_end) {
 }
 
 void expect_alpha_independent(Reading reading, Real t_end) {
-  const SuddenLoad soft = sudden_load(reading, 1e3 * kMu, t_end);
-  const SuddenLoad stiff = sudden_load(reading, 1e6 * kMu, t_end);
+  const SuddenLoad soft = sudden_load(reading, 1e3 * kCookMu, t_end);
+  const SuddenLoad stiff = sudden_load(reading, 1e6 * kCookMu, t_end);
   EXPECT_EQ(soft.dt, stiff.dt) << "the stable step must not depend on alpha";
   ASSERT_EQ(soft.iterations.size(), stiff.iterations.size());
   int max_diff = 0;
@@ -101,13 +101,13 @@ namespace {
 
 /// Tip deflection (mean u_y of the loaded edge) after a slow ramp and damped hold.
 Real quasi_static_tip(int n, bool mixed) {
-  const auto law =
-      mixed ? test::deviatoric_neo_hookean(kMu) : test::compressible_neo_hookean(kMu, 1e3 * kMu);
+  const auto law = mixed ? test::deviatoric_neo_hookean(kCookMu)
+                         : test::compressible_neo_hookean(kCookMu, 1e3 * kCookMu);
   const ExplicitModel model =
       cook_model(n, law, dofs::LoadCurve({{0.0, 0.0}, {50.0, 1.0}}, dofs::Interpolation::Smooth));
   ExplicitSettings s;
   s.multiplier = mixed;
-  s.penalty = 1e3 * kMu;
+  s.penalty = 1e3 * kCookMu;
   s.damping = 0.05; // ≈ 2 ω of the first bending mode (period ≈ 250)
   ExplicitSolver solver(model, s);
   const StepReport r = solver.run(500.0);
@@ -130,13 +130,13 @@ TEST(ExplicitCook, PureDisplacementQ1LocksWhereTheMultiplierDoesNot) {
 }
 
 TEST(ExplicitCook, ReusedFactorizationGivesTheSameSolution) {
-  const ExplicitModel model = cook_model(8, test::deviatoric_neo_hookean(kMu),
+  const ExplicitModel model = cook_model(8, test::deviatoric_neo_hookean(kCookMu),
                                          dofs::LoadCurve({{0.0, 1.0}}, dofs::Interpolation::Step));
   Vector tip[2];
   long solves[2], factorizations[2];
   for (int i = 0; i < 2; ++i) {
     ExplicitSettings s;
-    s.penalty = 1e3 * kMu;
+    s.penalty = 1e3 * kCookMu;
     s.max_factorization_age = i == 0 ? 1 : 25;
     ExplicitSolver solver(model, s);
     ASSERT_TRUE(solver.run(130.0).ok());

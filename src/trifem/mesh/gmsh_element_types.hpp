@@ -1,0 +1,11 @@
+// SPDX-License-Identifier: MIT
+// Gmsh element type numbers shared by the Gmsh reader and writer (internal to the mesh library).
+#pragma once
+
+namespace trifem::mesh {
+
+inline constexpr int kGmshQuad4 = 3;
+inline constexpr int kGmshHex8 = 5;
+inline constexpr int kGmshPoint = 15;
+
+} // namespace trifem::mesh

@@ -1,0 +1,147 @@
+// SPDX-License-Identifier: MIT
+// End-to-end tests of implicit dynamic analyses ([analysis] type = "dynamic"): the suddenly
+// loaded cantilever of examples/explicit_cantilever against its dynamic-explicit answer, and a
+// quasi-static step followed by a dynamic one on the same mesh.
+#include "cli_harness.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+
+using namespace trifem::cli_test;
+namespace fs = std::filesystem;
+
+namespace {
+
+const fs::path kCantilever =
+    fs::path(TRIFEM_SOURCE_DIR) / "examples" / "explicit_cantilever" / "explicit_cantilever.toml";
+
+/// `text` with every (first) occurrence of each `from` replaced by its `to`.
+std::string edited(std::string text,
+                   const std::vector<std::pair<std::string, std::string>>& edits) {
+  for (const auto& [from, to] : edits) {
+    const auto at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << "'" << from << "' is not in the case";
+    if (at != std::string::npos)
+      text.replace(at, from.size(), to);
+  }
+  return text;
+}
+
+/// The first minimum of `values` (index), where the series turns up again.
+std::size_t first_minimum(const std::vector<double>& values) {
+  std::size_t k = 0;
+  while (k + 1 < values.size() && values[k + 1] <= values[k])
+    ++k;
+  return k;
+}
+
+} // namespace
+
+class CliDynamic : public Cli {};
+
+TEST_F(CliDynamic, SuddenlyLoadedCantileverFollowsTheExplicitAnswer) {
+  // the first half period (peak at about 9.2 ms) of the explicit example, and the same beam as
+  // an implicit dynamic case: the same shear modulus (0.4 MPa) with the explicit penalty as the
+  // bulk modulus (4000 MPa: nu = 0.49995, mean-dilatation cells), 100 steps of 0.1 ms
+  const std::string text = read_text(kCantilever);
+  const fs::path explicit_case =
+      write_file("explicit.toml", edited(text, {{"end_time = 0.04", "end_time = 0.0105"},
+                                                {"interval = 5e-4", "interval = 1.5e-3"}}));
+  const std::string implicit_text = edited(
+      text, {{"type = \"dynamic-explicit\"", "type = \"dynamic\""},
+             {"E = 0.8                           # MPa: mu = 0.4 MPa; nu = 0, the bulk response "
+              "is the multiplier's",
+              "E = 1.19996\nnu = 0.49995"},
+             {"end_time = 0.04", "end_time = 0.0105\ndt = 1e-4"},
+             {"interval = 5e-4", "interval = 1.5e-3"}});
+  const auto explicit_table = implicit_text.find("[explicit]");
+  ASSERT_NE(explicit_table, std::string::npos);
+  const fs::path implicit_case =
+      write_file("implicit.toml", implicit_text.substr(0, explicit_table) +
+                                      implicit_text.substr(implicit_text.find("[time]")));
+  const Result e = trifem({"-q", "run", explicit_case.string(), "-o", (output() / "e").string()});
+  ASSERT_EQ(e.exit_code, kSuccess) << e;
+  const Result i = trifem({"-q", "run", implicit_case.string(), "-o", (output() / "i").string()});
+  ASSERT_EQ(i.exit_code, kSuccess) << i;
+  const History he = read_history(output() / "e" / "history.csv");
+  const History hi = read_history(output() / "i" / "history.csv");
+  const auto& ze = he["tip.uz [mm]"];
+  const auto& zi = hi["tip.uz [mm]"];
+  const std::size_t pe = first_minimum(ze), pi = first_minimum(zi);
+  ASSERT_LT(pi + 1, zi.size()) << "the implicit tip turns within the run";
+  // explicit: -3.753 mm at 9.23 ms (examples/explicit_cantilever/README.md)
+  EXPECT_NEAR(ze[pe], -3.753, 0.005);
+  EXPECT_NEAR(zi[pi] / ze[pe], 1.0, 0.01) << "implicit peak " << zi[pi] << " mm";
+  EXPECT_NEAR(hi["time [s]"][pi] / he["time [s]"][pe], 1.0, 0.02);
+  EXPECT_GT(hi["iterations"][1], 1.0); // Newton iterates the nonlinear step
+  std::cout << "first peak: explicit " << ze[pe] << " mm at " << he["time [s]"][pe]
+            << " s, implicit " << zi[pi] << " mm at " << hi["time [s]"][pi] << " s\n";
+}
+
+TEST_F(CliDynamic, AQuasiStaticStepThenADynamicOneRunOnOneMesh) {
+  // a block pressed slowly, then released at once: it springs back and oscillates about its
+  // free length (the clamp's reaction changes sign), starting from rest
+  const fs::path file = write_file("press_release.toml", R"(
+[[mesh.box]]
+name = "block"
+size = [1, 1, 4]
+divisions = [1, 1, 4]
+material = "soft"
+
+[materials.soft]
+type = "neo-hookean"
+E = 1.0
+nu = 0.3
+density = 1e-9
+
+[curves.ramp]
+points = [[0, 0], [1, 1]]
+
+[[boundary.fixed]]
+set = "block.zmin"
+
+[[output.reaction]]
+set = "block.zmin"
+
+[[output.probe]]
+name = "top"
+point = [0.5, 0.5, 4.0]
+
+[output]
+vtu = false
+
+[[step]]
+name = "press"
+end_time = 1.0
+dt = 0.25
+[[step.loads.traction]]
+surface = "block.zmax"
+value = [0, 0, -0.01]
+curve = "ramp"
+
+[[step]]
+name = "spring_back"
+analysis = "dynamic"
+duration = 3e-4
+dt = 2e-6
+)");
+  const Result r = trifem({"run", file.string(), "-o", output().string()});
+  ASSERT_EQ(r.exit_code, kSuccess) << r;
+  EXPECT_TRUE(contains(r.out, "'spring_back' (dynamic)")) << r;
+  const History h = read_history(output() / "history.csv");
+  const auto& time = h["time [s]"];
+  const auto& top = h["top.uz [mm]"];
+  const auto& reaction = h["block.zmin.Rz [N]"];
+  std::size_t press_end = 0;
+  while (press_end < time.size() && time[press_end] < 1.0 - 1e-12)
+    ++press_end;
+  ASSERT_LT(press_end + 10, time.size());
+  EXPECT_LT(top[press_end], -0.03); // pressed (about 0.04 mm)
+  // released: the top swings up past its free position (a linear spring would reach +|u_0|)
+  const double highest = *std::max_element(top.begin() + press_end, top.end());
+  EXPECT_GT(highest, 0.5 * std::abs(top[press_end]));
+  // the clamp pulls while the block is stretched, pushes while it is compressed
+  EXPECT_GT(*std::max_element(reaction.begin() + press_end, reaction.end()), 0.0);
+  EXPECT_LT(*std::min_element(reaction.begin() + press_end, reaction.end()), 0.0);
+}

@@ -1,0 +1,148 @@
+// SPDX-License-Identifier: MIT
+// Implicit dynamic analyses: [analysis] type = "dynamic", dynamic [[step]]s, the [dynamic]
+// table and the densities they need, and the errors of bad input; the TOML writer keeps them.
+#include "bad_input.hpp"
+#include "trifem/io/case_writer.hpp"
+
+#include <gtest/gtest.h>
+
+using namespace trifem;
+using namespace trifem::test;
+
+namespace {
+
+const std::string kBlock = R"(
+[[mesh.box]]
+name = "block"
+size = [1, 1, 1]
+divisions = [2, 2, 2]
+material = "soft"
+
+[materials.soft]
+type = "neo-hookean"
+E = 1.0
+density = 1.1e-9
+
+[[boundary.fixed]]
+set = "block.zmin"
+)";
+
+const std::string kDynamic = kBlock + R"(
+[analysis]
+type = "dynamic"
+
+[dynamic]
+rho_inf = 0.8
+mass = "lumped"
+
+[time]
+end_time = 0.01
+dt = 0.001
+)";
+
+const std::string kSteps = kBlock + R"(
+[dynamic]
+rho_inf = 0.5
+
+[[step]]
+name = "press"
+end_time = 1.0
+dt = 0.1
+
+[[step]]
+name = "drop"
+analysis = "dynamic"
+duration = 0.01
+dt = 0.001
+)";
+
+TEST(CaseReaderDynamic, ReadsTheAnalysisTypeAndTheDynamicTable) {
+  const io::CaseSpec c = io::parse_case(kDynamic, kMemoryFile);
+  EXPECT_EQ(c.analysis.type, io::AnalysisType::Dynamic);
+  EXPECT_TRUE(c.has_dynamic_step());
+  EXPECT_FALSE(c.is_explicit());
+  EXPECT_EQ(c.dynamics.rho_inf, 0.8);
+  EXPECT_EQ(c.dynamics.mass, io::MassMatrixSpec::Lumped);
+  EXPECT_EQ(c.materials.at("soft").density, 1.1e-9);
+}
+
+TEST(CaseReaderDynamic, DefaultsAreTheTrapezoidalRuleWithAConsistentMass) {
+  const io::CaseSpec c = io::parse_case(
+      replaced_in(replaced_in(kDynamic, "rho_inf = 0.8\n", ""), "mass = \"lumped\"\n", ""),
+      kMemoryFile);
+  EXPECT_EQ(c.dynamics.rho_inf, 1.0);
+  EXPECT_EQ(c.dynamics.mass, io::MassMatrixSpec::Consistent);
+}
+
+TEST(CaseReaderDynamic, AStepMayBeDynamicAfterAQuasiStaticOne) {
+  const io::CaseSpec c = io::parse_case(kSteps, kMemoryFile);
+  ASSERT_EQ(c.steps.size(), 2u);
+  EXPECT_FALSE(c.steps[0].is_dynamic());
+  EXPECT_TRUE(c.steps[1].is_dynamic());
+  EXPECT_TRUE(c.has_dynamic_step());
+  EXPECT_EQ(c.dynamics.rho_inf, 0.5);
+}
+
+TEST(CaseReaderDynamic, AMixtureTakesTheDensityOfTheSaturatedTissue) {
+  const std::string text = replaced_in(kDynamic, R"([materials.soft]
+type = "neo-hookean"
+E = 1.0
+density = 1.1e-9
+)",
+                                       R"([materials.soft]
+type = "biphasic"
+phi_s0 = 0.2
+permeability = 1e-3
+density = 1.05e-9
+[materials.soft.solid]
+type = "neo-hookean"
+E = 1.0
+)");
+  const io::CaseSpec c = io::parse_case(text, kMemoryFile);
+  EXPECT_EQ(c.materials.at("soft").density, 1.05e-9);
+}
+
+TEST(CaseReaderDynamic, TheWriterKeepsTheDynamicKeys) {
+  for (const std::string& text : {kDynamic, kSteps}) {
+    const io::CaseSpec c = io::parse_case(text, kMemoryFile);
+    const io::CaseSpec again = io::parse_case(io::case_toml(c), kMemoryFile);
+    EXPECT_EQ(again.analysis.type, c.analysis.type);
+    EXPECT_EQ(again.dynamics.rho_inf, c.dynamics.rho_inf);
+    EXPECT_EQ(again.dynamics.mass, c.dynamics.mass);
+    ASSERT_EQ(again.steps.size(), c.steps.size());
+    for (std::size_t k = 0; k < c.steps.size(); ++k)
+      EXPECT_EQ(again.steps[k].analysis, c.steps[k].analysis);
+    EXPECT_EQ(again.materials.at("soft").density, c.materials.at("soft").density);
+  }
+}
+
+class CaseReaderDynamicErrors : public ::testing::TestWithParam<BadCase> {};
+
+TEST_P(CaseReaderDynamicErrors, NameTheFileAndTheKey) {
+  expect_fails_naming(GetParam());
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    BadCases, CaseReaderDynamicErrors,
+    ::testing::Values(
+        BadCase{"missing_density",
+                replaced_in(kDynamic, "density = 1.1e-9\n", ""),
+                {"materials.soft.density", "missing required key", "dynamic analyses"}},
+        BadCase{"missing_density_of_a_dynamic_step",
+                replaced_in(kSteps, "density = 1.1e-9\n", ""),
+                {"materials.soft.density", "missing required key"}},
+        BadCase{"rho_inf_above_one",
+                replaced_in(kDynamic, "rho_inf = 0.8", "rho_inf = 1.5"),
+                {"dynamic.rho_inf", "1.5", "[0, 1]"}},
+        BadCase{"unknown_mass",
+                replaced_in(kDynamic, "mass = \"lumped\"", "mass = \"diagonal\""),
+                {"dynamic.mass", "diagonal", "consistent", "lumped"}},
+        BadCase{"unknown_key",
+                replaced_in(kDynamic, "rho_inf = 0.8", "rho_infinity = 0.8"),
+                {"dynamic.rho_infinity"}},
+        BadCase{"dynamic_table_of_a_quasi_static_case",
+                replaced_in(kDynamic, "type = \"dynamic\"", "type = \"quasi-static\""),
+                {"dynamic", "only applies to dynamic analyses"}}),
+    [](const auto& info) { return info.param.name; });
+
+} // namespace

@@ -20,7 +20,7 @@ done
 # few times at -O2); -g1 (line tables) gives the reports' stacks at a fraction of -g's cost
 cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG" \
-  -DTRIFEM_SANITIZE=address,undefined -DTRIFEM_BUILD_BENCHMARKS=OFF \
+  -DTRIFEM_SANITIZE=address,undefined -DTRIFEM_BUILD_BENCHMARKS=OFF -DCMAKE_UNITY_BUILD=ON \
   -DTRIFEM_BUILD_VERIFICATION_TESTS=$verification >/dev/null
 cmake --build "$build" -j "$(nproc)"
 

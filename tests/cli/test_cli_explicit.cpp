@@ -176,10 +176,9 @@ TEST_F(CliExplicit, ExplicitTableNeedsTheExplicitAnalysis) {
 }
 
 TEST_F(CliExplicit, UnknownAnalysisTypeIsNamed) {
-  expect_invalid_input(
-      variant("typo.toml", "type = \"dynamic-explicit\"", "type = \"explicit\""),
-      {"analysis.type = 'explicit'", "unknown analysis type",
-       "quasi-static, dynamic, dynamic-explicit"});
+  expect_invalid_input(variant("typo.toml", "type = \"dynamic-explicit\"", "type = \"explicit\""),
+                       {"analysis.type = 'explicit'", "unknown analysis type",
+                        "quasi-static, dynamic, dynamic-explicit"});
 }
 
 TEST_F(CliExplicit, QuasiStaticTimeKeyIsRejected) {

@@ -1,17 +1,18 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
 # Builds trifem with AddressSanitizer and UndefinedBehaviorSanitizer in <build dir> (default
-# build-asan) and runs the unit (with the CLI tests), tangent and fuzz (with the reproducers)
-# labels there; with --all, every test (the verification tests are then built too). Any
-# sanitizer report fails the test that triggered it. See docs/development.md.
+# build-asan) and runs the unit, tangent and fuzz (with the reproducers) labels there: the
+# library and the trifem command are instrumented, the tests' own code is not. With --all,
+# every test, instrumented too (the verification, example and CLI tests are then built as
+# well). Any sanitizer report fails the test that triggered it. See docs/development.md.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=build-asan
 labels='unit|tangent|fuzz'
-verification=OFF
+all=OFF
 for arg in "$@"; do
   case "$arg" in
-  --all) labels='' verification=ON ;;
+  --all) labels='' all=ON ;;
   *) build="$arg" ;;
   esac
 done
@@ -21,7 +22,8 @@ done
 cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG" \
   -DTRIFEM_SANITIZE=address,undefined -DTRIFEM_BUILD_BENCHMARKS=OFF -DCMAKE_UNITY_BUILD=ON \
-  -DTRIFEM_BUILD_VERIFICATION_TESTS=$verification >/dev/null
+  -DTRIFEM_BUILD_VERIFICATION_TESTS=$all -DTRIFEM_BUILD_CLI_TESTS=$all \
+  -DTRIFEM_SANITIZE_TESTS=$all >/dev/null
 cmake --build "$build" -j "$(nproc)"
 
 # slow unwinding gives full stacks through libraries built without frame pointers, so the
@@ -30,13 +32,8 @@ export ASAN_OPTIONS=fast_unwind_on_malloc=0:detect_stack_use_after_return=1:stri
 export LSAN_OPTIONS="suppressions=$PWD/scripts/lsan-suppressions.txt:print_suppressions=0"
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 cd "$build"
-# The tests that run whole examples again and again (every PETSc backend, every example on 2
-# and 3 processes, the sliding example restarted) take 23 of the unit label's 26 minutes in a
-# Release build, about three times as long sanitized; the code they reach is reached by the
-# other CLI tests, so the labels' run leaves them to the Release run of `make test`.
-repeated='PetscBackendsGiveTheUmfpackHistoryOn|ExamplesGiveTheOneProcessHistory|ExampleGivesTheOneProcessHistory|CliRestartExamples.*sliding_layers'
 if [ -n "$labels" ]; then
-  ctest --output-on-failure -j "$(nproc)" --timeout 1500 -L "$labels" -E "$repeated"
+  ctest --output-on-failure -j "$(nproc)" --timeout 1500 -L "$labels"
 else
   ctest --output-on-failure -j "$(nproc)" --timeout 1500
 fi

@@ -3,9 +3,8 @@
 
 namespace trifem::detail {
 
-void throw_logic_error(const std::string& message, const std::source_location& where) {
-  throw LogicError(
-      fmt::format("internal error: {} ({}:{})", message, where.file_name(), where.line()));
+void throw_logic_error(const std::string& message, const char* file, int line) {
+  throw LogicError(fmt::format("internal error: {} ({}:{})", message, file, line));
 }
 
 } // namespace trifem::detail

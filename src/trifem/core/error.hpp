@@ -3,7 +3,6 @@
 #pragma once
 
 #include <fmt/format.h>
-#include <source_location>
 #include <stdexcept>
 #include <string>
 
@@ -30,7 +29,8 @@ public:
 };
 
 namespace detail {
-[[noreturn]] void throw_logic_error(const std::string& message, const std::source_location& where);
+/// Throws LogicError("internal error: <message> (<file>:<line>)").
+[[noreturn]] void throw_logic_error(const std::string& message, const char* file, int line);
 } // namespace detail
 
 } // namespace trifem
@@ -53,8 +53,7 @@ namespace detail {
 #define TRIFEM_VERIFY(cond, ...)                                                                   \
   do {                                                                                             \
     if (!(cond)) [[unlikely]]                                                                      \
-      ::trifem::detail::throw_logic_error(::fmt::format(__VA_ARGS__),                              \
-                                          std::source_location::current());                        \
+      ::trifem::detail::throw_logic_error(::fmt::format(__VA_ARGS__), __FILE__, __LINE__);         \
   } while (false)
 
 #ifdef NDEBUG

@@ -43,7 +43,7 @@ std::vector<Real> graded_coordinates(Real length, int n, Real grading) {
 
 Mesh make_box(const BoxSpec& spec) {
   validate(spec);
-  const auto [nx, ny, nz] = spec.divisions;
+  const int nx = spec.divisions[0], ny = spec.divisions[1], nz = spec.divisions[2];
   std::array<std::vector<Real>, 3> coords;
   for (int d = 0; d < 3; ++d)
     coords[d] = graded_coordinates(spec.size[d], spec.divisions[d], spec.grading[d]);

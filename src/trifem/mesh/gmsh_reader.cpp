@@ -750,7 +750,8 @@ CellData view_cell_data(const LineReader& in, const GmshData& d, const std::stri
 }
 
 void add_cell_data(const LineReader& in, GmshData& d) {
-  for (const auto& [name, view] : d.views) {
+  for (const auto& [key, view] : d.views) {
+    const std::string& name = key; // a lambda may not capture a structured binding (Clang 14)
     CellData data = view_cell_data(in, d, name, view);
     register_named(in, view.line, [&] { d.mesh.add_cell_data(name, std::move(data)); });
   }

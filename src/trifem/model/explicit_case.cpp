@@ -29,7 +29,8 @@ void add_materials(const io::CaseSpec& spec, const mesh::Mesh& mesh,
       model.materials.push_back({material::create_law(m.solid_law(), key), *m.density});
       names.push_back(name);
     }
-    for (Index c : with_context("mesh", [&] { return mesh.cell_block(block); }))
+    const std::string& block_name = block; // a lambda may not capture a structured binding
+    for (Index c : with_context("mesh", [&] { return mesh.cell_block(block_name); }))
       model.cell_material[c] = it->second;
   }
   for (Index c = 0; c < mesh.num_cells(); ++c)

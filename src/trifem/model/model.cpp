@@ -54,9 +54,11 @@ std::vector<CellMaterial> cell_materials(const io::CaseSpec& spec, const mesh::M
     by_name[name] = cm;
   }
   std::vector<CellMaterial> per_cell(mesh.num_cells());
-  for (const auto& [block, material] : blocks)
-    for (Index c : with_context("mesh", [&] { return mesh.cell_block(block); }))
+  for (const auto& [block, material] : blocks) {
+    const std::string& name = block; // a lambda may not capture a structured binding (Clang 14)
+    for (Index c : with_context("mesh", [&] { return mesh.cell_block(name); }))
       per_cell[c] = by_name.at(material);
+  }
   for (Index c = 0; c < mesh.num_cells(); ++c)
     TRIFEM_CHECK(per_cell[c].solid || per_cell[c].mixture,
                  "mesh: cell {} has no material (assign one to its cell block)", c);

@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <map>
+#include <vector>
 
 using namespace trifem::cli_test;
 namespace fs = std::filesystem;
@@ -35,6 +37,56 @@ std::size_t first_minimum(const std::vector<double>& values) {
   while (k + 1 < values.size() && values[k + 1] <= values[k])
     ++k;
   return k;
+}
+
+/// A block pressed slowly (a quasi-static step of 4 steps), then released at once (a dynamic
+/// step of 150 steps): it springs back and oscillates about its free length.
+std::string press_release_case(const std::string& output_lines = "vtu = false") {
+  return R"(
+[[mesh.box]]
+name = "block"
+size = [1, 1, 4]
+divisions = [1, 1, 4]
+material = "soft"
+
+[materials.soft]
+type = "neo-hookean"
+E = 1.0
+nu = 0.3
+density = 1e-9
+
+[curves.ramp]
+points = [[0, 0], [1, 1]]
+
+[[boundary.fixed]]
+set = "block.zmin"
+
+[[output.reaction]]
+set = "block.zmin"
+
+[[output.probe]]
+name = "top"
+point = [0.5, 0.5, 4.0]
+
+[output]
+)" + output_lines +
+         R"(
+
+[[step]]
+name = "press"
+end_time = 1.0
+dt = 0.25
+[[step.loads.traction]]
+surface = "block.zmax"
+value = [0, 0, -0.01]
+curve = "ramp"
+
+[[step]]
+name = "spring_back"
+analysis = "dynamic"
+duration = 3e-4
+dt = 2e-6
+)";
 }
 
 } // namespace
@@ -83,50 +135,7 @@ TEST_F(CliDynamic, SuddenlyLoadedCantileverFollowsTheExplicitAnswer) {
 TEST_F(CliDynamic, AQuasiStaticStepThenADynamicOneRunOnOneMesh) {
   // a block pressed slowly, then released at once: it springs back and oscillates about its
   // free length (the clamp's reaction changes sign), starting from rest
-  const fs::path file = write_file("press_release.toml", R"(
-[[mesh.box]]
-name = "block"
-size = [1, 1, 4]
-divisions = [1, 1, 4]
-material = "soft"
-
-[materials.soft]
-type = "neo-hookean"
-E = 1.0
-nu = 0.3
-density = 1e-9
-
-[curves.ramp]
-points = [[0, 0], [1, 1]]
-
-[[boundary.fixed]]
-set = "block.zmin"
-
-[[output.reaction]]
-set = "block.zmin"
-
-[[output.probe]]
-name = "top"
-point = [0.5, 0.5, 4.0]
-
-[output]
-vtu = false
-
-[[step]]
-name = "press"
-end_time = 1.0
-dt = 0.25
-[[step.loads.traction]]
-surface = "block.zmax"
-value = [0, 0, -0.01]
-curve = "ramp"
-
-[[step]]
-name = "spring_back"
-analysis = "dynamic"
-duration = 3e-4
-dt = 2e-6
-)");
+  const fs::path file = write_file("press_release.toml", press_release_case());
   const Result r = trifem({"run", file.string(), "-o", output().string()});
   ASSERT_EQ(r.exit_code, kSuccess) << r;
   EXPECT_TRUE(contains(r.out, "'spring_back' (dynamic)")) << r;
@@ -191,4 +200,35 @@ TEST_F(CliDynamic, BiphasicCreepWithNegligibleInertiaIsTheQuasiStaticCreep) {
   EXPECT_GT(heavy, 1e3 * tissue);
   std::cout << "biphasic creep, dynamic against quasi-static: " << tissue
             << " of the settlement (density 1.05e-9), " << heavy << " (1e-2)\n";
+}
+
+TEST_F(CliDynamic, ARunRestartedInsideTheDynamicStepContinuesTheUninterruptedOne) {
+  // the restart file holds the inertia's history (v, a and the weighted static residual of the
+  // last step): the continued run takes the same steps to round-off
+  const fs::path file =
+      write_file("press_release.toml", press_release_case("vtu = true\ntimes = [1.0001, 1.0002]"));
+  const fs::path whole = output() / "whole", resumed = output() / "resumed";
+  Result r = trifem({"-q", "run", file.string(), "-o", whole.string(), "--write-restart"});
+  ASSERT_EQ(r.exit_code, kSuccess) << r;
+  std::vector<fs::path> files;
+  for (const auto& e : fs::directory_iterator(whole))
+    if (e.path().filename().string().starts_with("restart_"))
+      files.push_back(e.path());
+  std::sort(files.begin(), files.end());
+  ASSERT_GE(files.size(), 3u);
+  const fs::path restart = files[files.size() - 3]; // 1.0001 s (then 1.0002 s and the end)
+  r = trifem({"-q", "run", file.string(), "-o", resumed.string(), "--restart", restart.string()});
+  ASSERT_EQ(r.exit_code, kSuccess) << r;
+  const History a = read_history(whole / "history.csv");
+  const History b = read_history(resumed / "history.csv");
+  ASSERT_EQ(a.names, b.names);
+  ASSERT_GT(b.columns[0].size(), 50u) << "the continued run takes the last 100 steps";
+  EXPECT_NEAR(b["time [s]"].front(), 1.0001, 1e-12);
+  const std::map<std::string, double> scale = unit_scales(a);
+  const std::size_t offset = a.columns[0].size() - b.columns[0].size();
+  for (std::size_t c = 0; c < a.names.size(); ++c)
+    for (std::size_t i = 1; i < b.columns[c].size(); ++i) // row 0: the restart state itself
+      ASSERT_LE(std::abs(b.columns[c][i] - a.columns[c][offset + i]),
+                1e-12 * scale.at(unit_of(a.names[c])))
+          << a.names[c] << " at t = " << b.columns[0][i];
 }

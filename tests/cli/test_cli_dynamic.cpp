@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 // End-to-end tests of implicit dynamic analyses ([analysis] type = "dynamic"): the suddenly
 // loaded cantilever of examples/explicit_cantilever against its dynamic-explicit answer, a
-// quasi-static step followed by a dynamic one on the same mesh, and a biphasic layer whose
-// inertia is negligible against its quasi-static creep.
+// quasi-static step followed by a dynamic one on the same mesh (restarted inside the dynamic
+// step, and followed by a quasi-static one again), and a biphasic layer whose inertia is
+// negligible against its quasi-static creep.
 #include "cli_harness.hpp"
 
 #include <algorithm>
@@ -231,4 +232,27 @@ TEST_F(CliDynamic, ARunRestartedInsideTheDynamicStepContinuesTheUninterruptedOne
       ASSERT_LE(std::abs(b.columns[c][i] - a.columns[c][offset + i]),
                 1e-12 * scale.at(unit_of(a.names[c])))
           << a.names[c] << " at t = " << b.columns[0][i];
+}
+
+TEST_F(CliDynamic, ADynamicStepThenAQuasiStaticOneEndsAtTheStaticEquilibrium) {
+  // after the release, a quasi-static step from the moving state: with no load the static
+  // equilibrium is the undeformed block, whatever the motion it starts from
+  const fs::path file = write_file("press_release_settle.toml",
+                                   press_release_case() +
+                                       "\n[[step]]\nname = \"settle\"\nend_time = 2.0\ndt = 0.5\n");
+  const Result r = trifem({"run", file.string(), "-o", output().string()});
+  ASSERT_EQ(r.exit_code, kSuccess) << r;
+  EXPECT_TRUE(contains(r.out, "analysis step 3 'settle': t = 1.0003 to 2 s")) << r;
+  const History h = read_history(output() / "history.csv");
+  const auto& time = h["time [s]"];
+  const auto& top = h["top.uz [mm]"];
+  std::size_t press_end = 0;
+  while (press_end < time.size() && time[press_end] < 1.0 - 1e-12)
+    ++press_end;
+  ASSERT_LT(press_end, time.size());
+  const double pressed = std::abs(top[press_end]);
+  EXPECT_GT(pressed, 0.03);
+  EXPECT_NEAR(time.back(), 2.0, 1e-12);
+  EXPECT_LT(std::abs(top.back()), 1e-8 * pressed);
+  EXPECT_LT(std::abs(h["block.zmin.Rz [N]"].back()), 1e-8 * 0.01); // of the pressing force
 }

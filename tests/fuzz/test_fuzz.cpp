@@ -32,7 +32,6 @@ constexpr std::uint64_t kSeed = 0x7269666d2d66757aULL; ///< fixed: the same muta
 constexpr int kCheckMutants = 50;                      ///< `trifem check` mutants per case
 constexpr int kRunMutants = 30;                        ///< `trifem run` mutants per small case
 constexpr int kMshMutants = 60;                        ///< `trifem check` mutants per mesh
-constexpr double kTimeoutS = 10.0;                     ///< per process; a longer run is a hang
 
 /// The environment variable `name` as an unsigned integer, or `fallback` if it is not set.
 /// TRIFEM_FUZZ_SEED and TRIFEM_FUZZ_SCALE (a multiplier of the counts) make longer campaigns
@@ -43,6 +42,9 @@ std::uint64_t from_env(const char* name, std::uint64_t fallback) {
 }
 
 const std::uint64_t kSeedUsed = from_env("TRIFEM_FUZZ_SEED", kSeed);
+/// Per process; a longer run is a hang. TRIFEM_FUZZ_TIMEOUT_S raises it for slow builds (the
+/// sanitized one runs 3 to 30 times slower than Release).
+const double kTimeoutS = static_cast<double>(from_env("TRIFEM_FUZZ_TIMEOUT_S", 10));
 const int kScale = static_cast<int>(from_env("TRIFEM_FUZZ_SCALE", 1));
 
 /// Cases small enough to run for one step in a fraction of a second.

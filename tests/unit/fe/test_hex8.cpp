@@ -82,8 +82,9 @@ TEST(Hex8, AnAffineMapReversesEveryCornerByItsDeterminant) {
     mirror(2, 2) = -scale; // det = -scale at every point of the cell
     const auto reversed = fe::hex8_reversed_corner(X, X * mirror.transpose(), 0.5);
     ASSERT_EQ(reversed.has_value(), scale > 0.5) << scale;
-    if (reversed)
+    if (reversed) {
       EXPECT_NEAR(reversed->ratio, -scale, 1e-14);
+    }
   }
 }
 

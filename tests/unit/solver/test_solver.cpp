@@ -162,8 +162,9 @@ TEST(Newton, AnIterativeSolveOfFieldsOfDifferentScalesIsTightEnoughForTheSmallOn
     const InexactRun run = solve_inexactly(6, odd_scale);
     // the fields of different scales: the residual fell less in the convergence norm than in
     // the 2-norm, and a solve was continued to a tighter tolerance
-    if (odd_scale < 1.0)
+    if (odd_scale < 1.0) {
       EXPECT_GT(run.asked.size(), static_cast<std::size_t>(run.iterations));
+    }
   }
 }
 

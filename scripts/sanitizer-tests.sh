@@ -2,7 +2,8 @@
 # SPDX-License-Identifier: MIT
 # Builds trifem with AddressSanitizer and UndefinedBehaviorSanitizer in <build dir> (default
 # build-asan) and runs the unit, tangent and fuzz (with the reproducers) labels there; with
-# --all, every test (the verification, example and CLI tests are then built as well). Any sanitizer report fails the test that triggered it. See docs/development.md.
+# --all, every test (the verification, example and CLI tests are then built as well). Any
+# sanitizer report fails the test that triggered it. See docs/development.md.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=build-asan

@@ -5,6 +5,7 @@
 // step, and followed by a quasi-static one again), and a biphasic layer whose inertia is
 // negligible against its quasi-static creep.
 #include "cli_harness.hpp"
+#include "edited_text.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -13,24 +14,13 @@
 #include <vector>
 
 using namespace trifem::cli_test;
+using trifem::test::edited;
 namespace fs = std::filesystem;
 
 namespace {
 
 const fs::path kCantilever =
     fs::path(TRIFEM_SOURCE_DIR) / "examples" / "explicit_cantilever" / "explicit_cantilever.toml";
-
-/// `text` with every (first) occurrence of each `from` replaced by its `to`.
-std::string edited(std::string text,
-                   const std::vector<std::pair<std::string, std::string>>& edits) {
-  for (const auto& [from, to] : edits) {
-    const auto at = text.find(from);
-    EXPECT_NE(at, std::string::npos) << "'" << from << "' is not in the case";
-    if (at != std::string::npos)
-      text.replace(at, from.size(), to);
-  }
-  return text;
-}
 
 /// The first minimum of `values` (index), where the series turns up again.
 std::size_t first_minimum(const std::vector<double>& values) {

@@ -7,6 +7,7 @@
 // column. The cases cover both readings, both constraints, a finite and no multiplier, damping,
 // both stable-step estimates and their re-estimation, reused factorizations, follower pressures
 // and dead tractions, and a quasi-static step followed by an explicit one.
+#include "edited_text.hpp"
 #include "history_csv.hpp"
 #include "trifem/analysis/run.hpp"
 #include "trifem/io/case_reader.hpp"
@@ -28,6 +29,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using namespace trifem;
+using test::edited;
 
 const fs::path kSource = TRIFEM_SOURCE_DIR;
 const fs::path kReference = kSource / "tests" / "data" / "explicit_reference";
@@ -37,18 +39,6 @@ std::string read_text(const fs::path& file) {
   std::stringstream text;
   text << in.rdbuf();
   return text.str();
-}
-
-/// `text` with each (from, to) of `edits` replaced (each `from` must occur).
-std::string edited(std::string text,
-                   const std::vector<std::pair<std::string, std::string>>& edits) {
-  for (const auto& [from, to] : edits) {
-    const auto at = text.find(from);
-    EXPECT_NE(at, std::string::npos) << "no text " << from;
-    if (at != std::string::npos)
-      text.replace(at, from.size(), to);
-  }
-  return text;
 }
 
 /// One explicit case: its name (that of its reference file), its text and the history file its

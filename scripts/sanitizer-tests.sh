@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
 # Builds trifem with AddressSanitizer and UndefinedBehaviorSanitizer in <build dir> (default
-# build-asan) and runs the unit, tangent and fuzz (with the reproducers) labels there; with
-# --all, every test (the verification, example and CLI tests are then built as well). Any
-# sanitizer report fails the test that triggered it. See docs/development.md.
+# build-asan) and runs the unit, tangent and fuzz (with the reproducers) labels there, the
+# library and the trifem command instrumented (CI's third part); with --all, every test, the
+# tests' own code instrumented too (the verification, example and CLI tests are then built as
+# well). Any sanitizer report fails the test that triggered it. See docs/development.md.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=build-asan
@@ -21,7 +22,8 @@ done
 cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG" \
   -DTRIFEM_SANITIZE=address,undefined -DTRIFEM_BUILD_BENCHMARKS=OFF -DCMAKE_UNITY_BUILD=ON \
-  -DTRIFEM_BUILD_VERIFICATION_TESTS=$all -DTRIFEM_BUILD_CLI_TESTS=$all >/dev/null
+  -DTRIFEM_BUILD_VERIFICATION_TESTS=$all -DTRIFEM_BUILD_CLI_TESTS=$all \
+  -DTRIFEM_SANITIZE_TESTS=$all >/dev/null
 cmake --build "$build" -j "$(nproc)"
 
 # slow unwinding gives full stacks through libraries built without frame pointers, so the

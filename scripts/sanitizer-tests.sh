@@ -10,9 +10,13 @@ cd "$(dirname "$0")/.."
 build=build-asan
 labels='unit|tangent|fuzz'
 all=OFF
+# UndefinedBehaviorSanitizer's checks of every memory access that AddressSanitizer covers
+# (null, object-size, pointer-overflow) or x86-64 tolerates (alignment) and of dynamic types
+# (vptr): leaving them out cuts a unity file's compile time by 37 % (132 to 83 s); --all keeps them
+skip=alignment,null,object-size,pointer-overflow,vptr
 for arg in "$@"; do
   case "$arg" in
-  --all) labels='' all=ON ;;
+  --all) labels='' all=ON skip='' ;;
   *) build="$arg" ;;
   esac
 done
@@ -21,7 +25,8 @@ done
 # few times at -O2); -g1 (line tables) gives the reports' stacks at a fraction of -g's cost
 cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG" \
-  -DTRIFEM_SANITIZE=address,undefined -DTRIFEM_BUILD_BENCHMARKS=OFF -DCMAKE_UNITY_BUILD=ON \
+  -DTRIFEM_SANITIZE=address,undefined -DTRIFEM_SANITIZE_SKIP="$skip" \
+  -DTRIFEM_BUILD_BENCHMARKS=OFF -DCMAKE_UNITY_BUILD=ON \
   -DTRIFEM_BUILD_VERIFICATION_TESTS=$all -DTRIFEM_BUILD_CLI_TESTS=$all \
   -DTRIFEM_SANITIZE_TESTS=$all >/dev/null
 cmake --build "$build" -j "$(nproc)"

@@ -19,6 +19,16 @@ target_include_directories(trifem_umfpack SYSTEM INTERFACE ${UMFPACK_INCLUDE_DIR
 target_link_libraries(trifem_umfpack INTERFACE ${UMFPACK_LIBRARY} ${AMD_LIBRARY}
                       ${SUITESPARSECONFIG_LIBRARY})
 
+# CHOLMOD (sparse Cholesky of symmetric positive definite systems) and its ordering libraries.
+find_library(CHOLMOD_LIBRARY cholmod REQUIRED)
+find_library(COLAMD_LIBRARY colamd REQUIRED)
+find_library(CAMD_LIBRARY camd REQUIRED)
+find_library(CCOLAMD_LIBRARY ccolamd REQUIRED)
+add_library(trifem_cholmod INTERFACE)
+target_include_directories(trifem_cholmod SYSTEM INTERFACE ${UMFPACK_INCLUDE_DIR})
+target_link_libraries(trifem_cholmod INTERFACE ${CHOLMOD_LIBRARY} ${COLAMD_LIBRARY} ${CAMD_LIBRARY}
+                      ${CCOLAMD_LIBRARY} ${AMD_LIBRARY} ${SUITESPARSECONFIG_LIBRARY})
+
 # METIS (nested-dissection orderings for the sparse direct solvers): Debian's libmetis-dev.
 find_path(METIS_INCLUDE_DIR metis.h REQUIRED)
 find_library(METIS_LIBRARY metis REQUIRED)

@@ -36,10 +36,10 @@ private:
 };
 
 /// History columns after the solver's own: reactions (sum over a node set) then probes.
-std::vector<ed::Probe> history_columns(const model::ExplicitCase& c) {
+std::vector<ed::Probe> history_columns(const ExplicitCase& c) {
   std::vector<ed::Probe> columns;
   auto cache = std::make_shared<ReactionCache>();
-  for (const model::ExplicitReaction& r : c.reactions)
+  for (const ExplicitReaction& r : c.reactions)
     for (int k = 0; k < 3; ++k)
       columns.push_back({fmt::format("{}.R{} [N]", r.name, kAxis[k]),
                          [cache, dofs = r.dofs[k]](const ed::ExplicitSolver& s) {
@@ -49,7 +49,7 @@ std::vector<ed::Probe> history_columns(const model::ExplicitCase& c) {
                              sum += f[d];
                            return sum;
                          }});
-  for (const model::ExplicitProbe& p : c.probes) {
+  for (const ExplicitProbe& p : c.probes) {
     const bool position = p.position;
     for (int k = 0; k < 3; ++k)
       columns.push_back({fmt::format("{}.{}{} [mm]", p.name, position ? "" : "u", kAxis[k]),
@@ -115,7 +115,7 @@ std::vector<StepTarget> explicit_step_targets(const io::CaseSpec& spec, Real sta
   return merged;
 }
 
-ExplicitOutput::ExplicitOutput(const model::ExplicitCase& model, const io::OutputSpec& spec,
+ExplicitOutput::ExplicitOutput(const ExplicitCase& model, const io::OutputSpec& spec,
                                std::filesystem::path directory,
                                const ExplicitContinuation* continuation)
     : case_(model), vtu_(spec.vtu), directory_(std::move(directory)) {

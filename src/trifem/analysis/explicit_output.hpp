@@ -3,11 +3,11 @@
 // history.csv (step data, energies, reactions, probes) after every step.
 #pragma once
 
+#include "trifem/analysis/explicit_case.hpp"
 #include "trifem/explicit/explicit_solver.hpp"
 #include "trifem/explicit/history.hpp"
 #include "trifem/io/pvd_writer.hpp"
 #include "trifem/io/vtu_writer.hpp"
-#include "trifem/model/explicit_case.hpp"
 
 #include <filesystem>
 #include <memory>
@@ -49,7 +49,7 @@ public:
   /// Creates `directory` (InputError if impossible), results.pvd and history.csv; with
   /// `continuation`, continues its collection and writes its history file instead, and the
   /// initial state (the end of the quasi-static run, already written) gets no VTU file.
-  ExplicitOutput(const model::ExplicitCase& model, const io::OutputSpec& spec,
+  ExplicitOutput(const ExplicitCase& model, const io::OutputSpec& spec,
                  std::filesystem::path directory, const ExplicitContinuation* continuation = {});
   ~ExplicitOutput();
 
@@ -67,7 +67,7 @@ public:
 private:
   void write_vtu(const explicit_dynamics::ExplicitSolver& solver);
 
-  const model::ExplicitCase& case_;
+  const ExplicitCase& case_;
   bool vtu_ = true;
   std::filesystem::path directory_;
   io::UnstructuredGrid grid_; ///< the mesh; the data arrays are replaced at every write

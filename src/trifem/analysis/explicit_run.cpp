@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "trifem/analysis/explicit_run.hpp"
 
+#include "trifem/analysis/explicit_case.hpp"
 #include "trifem/analysis/explicit_output.hpp"
 #include "trifem/analysis/output_writer.hpp"
 #include "trifem/analysis/run.hpp"
@@ -10,7 +11,7 @@
 #include "trifem/core/log.hpp"
 #include "trifem/core/printable.hpp"
 #include "trifem/explicit/energy_balance.hpp"
-#include "trifem/model/explicit_case.hpp"
+#include "trifem/model/steps.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -36,6 +37,17 @@ decltype(auto) for_case(const io::CaseSpec& spec, F&& f) {
   } catch (const InputError& e) {
     throw InputError(fmt::format("{}: {}", spec.file.string(), e.what()));
   }
+}
+
+/// The explicit case of a dynamic-explicit case file, on the model built from it; InputErrors
+/// prefixed with the case file.
+ExplicitCase build_explicit_case(const io::CaseSpec& spec) {
+  return for_case(spec, [&] {
+    const std::unique_ptr<model::Model> shared = model::build_model(spec);
+    ExplicitCase c = explicit_case(spec, shared->mesh);
+    build_explicit_model(c, *shared);
+    return c;
+  });
 }
 
 /// Counters of a run.
@@ -84,7 +96,7 @@ long fixed_dofs(const ed::ExplicitModel& m) {
 }
 
 /// The case, mesh, materials and scheme options, at the head of the log.
-void log_model(const io::CaseSpec& spec, const model::ExplicitCase& c) {
+void log_model(const io::CaseSpec& spec, const ExplicitCase& c) {
   const ed::ExplicitModel& m = *c.model;
   const ed::ExplicitSettings& s = c.settings;
   const long fixed = fixed_dofs(m);
@@ -134,8 +146,7 @@ void check_step_count(const io::CaseSpec& spec, const ed::TimeStepInfo& t, Real 
 }
 
 /// The solver (it estimates the stable step); InputErrors prefixed with the case file.
-std::unique_ptr<ed::ExplicitSolver> make_solver(const io::CaseSpec& spec,
-                                                const model::ExplicitCase& c,
+std::unique_ptr<ed::ExplicitSolver> make_solver(const io::CaseSpec& spec, const ExplicitCase& c,
                                                 const ed::InitialState& initial = {}) {
   return for_case(spec, [&] {
     auto solver = std::make_unique<ed::ExplicitSolver>(*c.model, c.settings, initial);
@@ -206,7 +217,7 @@ nlohmann::json explicit_entries(const ed::ExplicitSolver& solver, const RunStats
 }
 
 /// summary.json: status, counts, time step, final energies, sizes and wall times.
-nlohmann::json summary(const io::CaseSpec& spec, const model::ExplicitCase& c,
+nlohmann::json summary(const io::CaseSpec& spec, const ExplicitCase& c,
                        const ed::ExplicitSolver& solver, const RunStats& stats,
                        double output_seconds) {
   const ed::SolverTimings& w = solver.timings();
@@ -223,24 +234,13 @@ nlohmann::json summary(const io::CaseSpec& spec, const model::ExplicitCase& c,
   return j;
 }
 
-/// The displacement of the quasi-static model as U0 of the explicit model (DOF 3 a + k). Both
-/// meshes come from model::build_mesh of the same case, so node a is the same point in both
-/// (checked: an internal error otherwise).
-Vector quasi_static_displacement(const model::Model& qs, const ed::ExplicitModel& ex) {
-  const mesh::Mesh& a = qs.mesh;
-  const mesh::Mesh& b = ex.mesh();
-  TRIFEM_VERIFY(a.num_nodes() == b.num_nodes(),
-                "mixed run: the quasi-static mesh has {} nodes, the explicit one {}", a.num_nodes(),
-                b.num_nodes());
-  const Real tolerance = 1e-12 * qs.length_scale;
-  const Vector& x = qs.problem->state();
-  Vector U(ex.num_dofs());
-  for (Index n = 0; n < a.num_nodes(); ++n) {
-    TRIFEM_VERIFY((a.node(n) - b.node(n)).norm() <= tolerance,
-                  "mixed run: node {} differs between the quasi-static and the explicit mesh", n);
+/// The displacement of `model` as U0 of its explicit model (DOF 3 a + k).
+Vector displacement_of(const model::Model& model) {
+  const Vector& x = model.problem->state();
+  Vector U(3 * model.mesh.num_nodes());
+  for (Index n = 0; n < model.mesh.num_nodes(); ++n)
     for (int k = 0; k < 3; ++k)
-      U[3 * n + k] = x[qs.dofs.dof(qs.fields.u, n, k)];
-  }
+      U[3 * n + k] = x[model.dofs.dof(model.fields.u, n, k)];
   return U;
 }
 
@@ -262,8 +262,7 @@ nlohmann::json analysis_steps_json(const io::CaseSpec& spec, const std::string& 
 /// A mixed case split in its quasi-static steps and its dynamic-explicit last step.
 struct MixedCase {
   explicit MixedCase(const io::CaseSpec& spec)
-      : whole(spec), quasi_static(model::quasi_static_part(spec)),
-        dynamic(model::explicit_step_part(spec)),
+      : whole(spec), quasi_static(quasi_static_part(spec)), dynamic(explicit_step_part(spec)),
         history(fmt::format("history_step{}.csv", spec.steps.size())) {}
   const io::CaseSpec& whole;
   io::CaseSpec quasi_static; ///< the steps before the explicit one
@@ -273,31 +272,34 @@ struct MixedCase {
   Real start() const { return quasi_static.time.end_time; }
 };
 
-/// The explicit case of the step; InputErrors name the case file and the step.
-model::ExplicitCase build_step_case(const MixedCase& mixed) {
+/// Runs `f`, prefixing an InputError with the case file and the explicit step.
+template <class F>
+decltype(auto) for_step(const MixedCase& mixed, F&& f) {
   try {
-    return model::build_explicit_case(mixed.dynamic);
+    return f();
   } catch (const InputError& e) {
     throw InputError(fmt::format("{}: {} (dynamic-explicit): {}", mixed.whole.file.string(),
                                  mixed.step().key, e.what()));
   }
 }
 
-/// The explicit step of a mixed run, from the final state of the quasi-static model `qs`: U0 its
-/// displacement, at rest, t0 its end time; results continue `qs_output`.
-FollowUpReport run_explicit_step(const MixedCase& mixed, const model::ExplicitCase& c,
-                                 const model::Model& qs, OutputWriter& qs_output) {
+/// The explicit step of a mixed run on the model `qs` of its quasi-static steps, from their final
+/// state: U0 its displacement, at rest, t0 its end time; results continue `qs_output`.
+FollowUpReport run_explicit_step(const MixedCase& mixed, ExplicitCase& c, model::Model& qs,
+                                 OutputWriter& qs_output) {
   const auto start = Clock::now();
   const io::StepSpec& step = mixed.step();
   FollowUpReport report;
   report.end_time = mixed.start();
-  log::info("analysis step {} '{}' (dynamic-explicit): t = {:.6g} to {:.6g} s, from the "
-            "quasi-static state at rest, {} fixed DOFs",
-            mixed.whole.steps.size(), step.name, mixed.start(), step.time.end_time,
-            fixed_dofs(*c.model));
   std::unique_ptr<ed::ExplicitSolver> solver;
   try {
-    const ed::InitialState initial{quasi_static_displacement(qs, *c.model), {}, mixed.start()};
+    model::activate_step(qs, mixed.whole.steps.size() - 1);
+    build_explicit_model(c, qs);
+    log::info("analysis step {} '{}' (dynamic-explicit): t = {:.6g} to {:.6g} s, from the "
+              "quasi-static state at rest, {} fixed DOFs",
+              mixed.whole.steps.size(), step.name, mixed.start(), step.time.end_time,
+              fixed_dofs(*c.model));
+    const ed::InitialState initial{displacement_of(qs), {}, mixed.start()};
     solver = std::make_unique<ed::ExplicitSolver>(*c.model, c.settings, initial);
     check_step_count(mixed.dynamic, solver->time_step_info(), mixed.start());
   } catch (const InputError& e) {
@@ -354,23 +356,24 @@ FollowUpReport run_explicit_step(const MixedCase& mixed, const model::ExplicitCa
 
 int run_mixed_case(const io::CaseSpec& spec, const std::filesystem::path& output_dir) {
   const MixedCase mixed(spec);
-  // built before anything runs: an invalid step creates no output
-  const model::ExplicitCase c = build_step_case(mixed);
-  const FollowUp follow_up = [&](const model::Model& qs, OutputWriter& output) {
+  std::unique_ptr<model::Model> model = for_case(spec, [&] { return model::build_model(spec); });
+  // validated before anything runs: an invalid step creates no output
+  ExplicitCase c = for_step(mixed, [&] { return explicit_case(mixed.dynamic, model->mesh); });
+  const FollowUp follow_up = [&](model::Model& qs, OutputWriter& output) {
     return run_explicit_step(mixed, c, qs, output);
   };
-  return run_quasi_static_case(mixed.quasi_static, output_dir, {}, follow_up);
+  return run_quasi_static_case(mixed.quasi_static, output_dir, {}, follow_up, std::move(model));
 }
 
-int check_mixed_case(const io::CaseSpec& spec) {
+void check_explicit_step(const io::CaseSpec& spec, const model::Model& model) {
   const MixedCase mixed(spec);
-  build_step_case(mixed); // its stable step is estimated on the quasi-static state, at the run
-  return check_case(mixed.quasi_static);
+  // its model and stable step follow from the quasi-static state, at the run
+  for_step(mixed, [&] { return explicit_case(mixed.dynamic, model.mesh); });
 }
 
 int run_explicit_case(const io::CaseSpec& spec, const std::filesystem::path& output_dir) {
   const auto start = Clock::now();
-  const model::ExplicitCase c = for_case(spec, [&] { return model::build_explicit_case(spec); });
+  const ExplicitCase c = build_explicit_case(spec);
   // before the output directory: an invalid case creates no output
   const std::unique_ptr<ed::ExplicitSolver> solver = make_solver(spec, c);
   start_output_directory(output_dir, spec);
@@ -429,7 +432,7 @@ int run_explicit_case(const io::CaseSpec& spec, const std::filesystem::path& out
 }
 
 int check_explicit_case(const io::CaseSpec& spec) {
-  const model::ExplicitCase c = for_case(spec, [&] { return model::build_explicit_case(spec); });
+  const ExplicitCase c = build_explicit_case(spec);
   log_model(spec, c);
   const std::unique_ptr<ed::ExplicitSolver> solver = make_solver(spec, c);
   log_time_step(*solver, spec);

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "trifem/io/case_spec.hpp"
+#include "trifem/model/model.hpp"
 
 #include <filesystem>
 
@@ -20,13 +21,14 @@ int run_explicit_case(const io::CaseSpec& spec, const std::filesystem::path& out
 /// step estimate, without stepping.
 int check_explicit_case(const io::CaseSpec& spec);
 
-/// Runs a mixed case (spec.has_explicit_step()): its quasi-static steps, then its
+/// Runs a mixed case (spec.has_explicit_step()) on one model: its quasi-static steps, then its
 /// dynamic-explicit last step from their final displacement, at rest, from their end time. One
 /// results.pvd (VTU numbering continued), history.csv for the quasi-static steps and
 /// history_step<k>.csv for the explicit step k, one summary.json. Returns an ExitCode.
 int run_mixed_case(const io::CaseSpec& spec, const std::filesystem::path& output_dir);
 
-/// Validates a mixed case: the quasi-static model and the model of the dynamic-explicit step.
-int check_mixed_case(const io::CaseSpec& spec);
+/// Validates the dynamic-explicit step of a mixed case on its model (loads, outputs and
+/// settings); InputError naming the case file and step otherwise.
+void check_explicit_step(const io::CaseSpec& spec, const model::Model& model);
 
 } // namespace trifem::analysis

@@ -390,7 +390,8 @@ solver::RunReport run_steps(const io::CaseSpec& spec, model::Model& model,
     run_over(step_settings(spec));
     return run;
   }
-  for (std::size_t k = 0; k < model.steps.size() && run.success; ++k) {
+  // the model may have further steps (a mixed case's dynamic-explicit one): those of spec run
+  for (std::size_t k = 0; k < spec.steps.size() && run.success; ++k) {
     if (resume && model.steps[k].end_time <= resume->time + tol)
       continue; // done before the restart
     if (static_cast<int>(k) != model.active_step)
@@ -468,9 +469,11 @@ int run_case(const io::CaseSpec& spec, const std::filesystem::path& output_dir,
 }
 
 int run_quasi_static_case(const io::CaseSpec& spec, const std::filesystem::path& output_dir,
-                          const RunOptions& options, const FollowUp& follow_up) {
+                          const RunOptions& options, const FollowUp& follow_up,
+                          std::unique_ptr<model::Model> model) {
   const auto start = Clock::now();
-  std::unique_ptr<model::Model> model = build_model_for(spec);
+  if (!model)
+    model = build_model_for(spec);
   std::optional<Resume> resume;
   if (!options.restart_file.empty())
     resume = resume_from(options.restart_file, spec, *model);
@@ -556,9 +559,9 @@ int run_quasi_static_case(const io::CaseSpec& spec, const std::filesystem::path&
 int check_case(const io::CaseSpec& spec) {
   if (spec.is_explicit())
     return check_explicit_case(spec);
-  if (spec.has_explicit_step())
-    return check_mixed_case(spec);
   std::unique_ptr<model::Model> model = build_model_for(spec);
+  if (spec.has_explicit_step())
+    check_explicit_step(spec, *model);
   linear_solver_for(spec); // unknown or unused PETSc options
   log_model(spec, *model);
   log::info("check passed: the case is valid");

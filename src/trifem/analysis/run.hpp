@@ -77,14 +77,17 @@ struct FollowUpReport {
   nlohmann::json summary; ///< entries added to summary.json
 };
 
-/// Continues a run whose quasi-static steps completed, from their final state, writing into
-/// their output (results.pvd).
-using FollowUp = std::function<FollowUpReport(const model::Model&, OutputWriter&)>;
+/// Continues a run whose quasi-static steps completed, on their model and from their final
+/// state, writing into their output (results.pvd).
+using FollowUp = std::function<FollowUpReport(model::Model&, OutputWriter&)>;
 
 /// run_case for a quasi-static case; `follow_up`, if given, continues the run once its steps
-/// completed, and its report decides the status and end time of summary.json.
+/// completed, and its report decides the status and end time of summary.json. `model`, if
+/// given, is the model to run (built from a case whose steps begin with those of `spec`);
+/// otherwise it is built from `spec`.
 int run_quasi_static_case(const io::CaseSpec& spec, const std::filesystem::path& output_dir,
-                          const RunOptions& options, const FollowUp& follow_up = {});
+                          const RunOptions& options, const FollowUp& follow_up = {},
+                          std::unique_ptr<model::Model> model = nullptr);
 
 /// Validates a case (file, mesh, sets, materials) without solving; prints a summary.
 int check_case(const io::CaseSpec& spec);

@@ -154,7 +154,9 @@ void Assembler::set_ownership(std::vector<int> equation_owner, int rank) {
 void Assembler::rebuild() {
   stencils_.clear();
   colours_.clear();
-  std::vector<Stencils> owned; // on several processes: the stencils of this process's elements
+  owned_.clear();
+  pattern_built_ = false;
+  pattern_ = {};
   for (const physics::Term* t : terms_) {
     stencils_.push_back(collect_stencils(*t));
     if (awaits_ownership_)
@@ -164,19 +166,24 @@ void Assembler::rebuild() {
       continue;
     }
     const std::vector<Index> mine = owned_elements(stencils_.back(), map_, equation_owner_, rank_);
-    owned.push_back(subset(stencils_.back(), mine));
-    std::vector<std::vector<Index>> colours = colour_elements(owned.back(), map_);
+    owned_.push_back(subset(stencils_.back(), mine));
+    std::vector<std::vector<Index>> colours = colour_elements(owned_.back(), map_);
     for (auto& colour : colours)
       for (Index& e : colour)
         e = mine[e];
     colours_.push_back(std::move(colours));
   }
-  if (awaits_ownership_)
+}
+
+void Assembler::build_pattern_once() {
+  TRIFEM_VERIFY(!awaits_ownership_, "the pattern of a parallel run needs the equation owners");
+  if (pattern_built_)
     return;
   std::vector<const Stencils*> sets;
-  for (const auto& s : equation_owner_.empty() ? stencils_ : owned)
+  for (const auto& s : equation_owner_.empty() ? stencils_ : owned_)
     sets.push_back(&s);
   pattern_ = build_pattern(map_, sets);
+  pattern_built_ = true;
 }
 
 SparseMatrix Assembler::body_couplings() const {
@@ -187,14 +194,17 @@ SparseMatrix Assembler::body_couplings() const {
   return build_pattern(map_, sets).Kff;
 }
 
-AssembledSystem Assembler::make_system() const {
+AssembledSystem Assembler::make_system() {
+  build_pattern_once();
   return {Vector::Zero(map_.num_dofs()), pattern_.Kff, pattern_.Kfc};
 }
 
 AssembledSystem Assembler::take_system() {
+  build_pattern_once();
   AssembledSystem system{Vector::Zero(map_.num_dofs()), {}, {}};
   system.Kff.swap(pattern_.Kff);
   system.Kfc.swap(pattern_.Kfc);
+  pattern_built_ = false;
   return system;
 }
 

@@ -132,7 +132,12 @@ void FeProblem::build_assembler() {
   assembler_ = std::make_unique<Assembler>(map_, std::move(views), &frames_, parallel::active());
   apply_weights();
   partition();
-  system_ = assembler_->take_system();
+  reset_system();
+}
+
+void FeProblem::reset_system() {
+  system_ = AssembledSystem{Vector::Zero(map_.num_dofs()), {}, {}};
+  pattern_pending_ = true;
   jacobian_lent_ = false;
   ++pattern_id_;
 }
@@ -225,12 +230,16 @@ solver::SolveStatus FeProblem::linearize(solver::Linearization& lin, bool with_j
     changed = t->prepare(eval_state()) || changed;
   if (changed) {
     assembler_->rebuild();
-    system_ = assembler_->take_system();
-    jacobian_lent_ = false;
-    ++pattern_id_;
+    reset_system();
   }
-  if (with_jacobian)
+  if (with_jacobian && pattern_pending_) { // the first Jacobian of this pattern
+    AssembledSystem pattern = assembler_->take_system();
+    system_.Kff.swap(pattern.Kff);
+    system_.Kfc.swap(pattern.Kfc);
+    pattern_pending_ = false;
+  } else if (with_jacobian) {
     reclaim_jacobian(lin);
+  }
   // on several processes each assembles its elements: the parts are summed (and every
   // process must agree that the state is admissible before any returns)
   if (!parallel::all(assembler_->assemble(eval_state(), system_, with_jacobian)))

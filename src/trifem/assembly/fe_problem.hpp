@@ -33,15 +33,17 @@ public:
   /// Assembles residual and (if with_jacobian) both Jacobian blocks. False if some element
   /// reported an inadmissible state.
   bool assemble(const physics::EvalState& state, AssembledSystem& out, bool with_jacobian) const;
-  /// An AssembledSystem with the right sizes and patterns (values zero).
-  AssembledSystem make_system() const;
-  /// The same, moving the pattern out (make_system is empty after it, until rebuild).
+  /// An AssembledSystem with the right sizes and patterns (values zero). The pattern is built
+  /// on the first call after a rebuild: an analysis that never asks for a Jacobian (explicit
+  /// dynamics) never allocates one.
+  AssembledSystem make_system();
+  /// The same, moving the pattern out (the next call builds it again).
   AssembledSystem take_system();
   /// The couplings between equations of every term but those that join bodies (the graph
   /// a parallel run is partitioned by).
   SparseMatrix body_couplings() const;
-  /// Recollects the stencils of every term and rebuilds colours and pattern (after a term's
-  /// element_dofs() changed).
+  /// Recollects the stencils of every term and rebuilds the colours (after a term's
+  /// element_dofs() changed); the pattern follows when next asked for.
   void rebuild();
   /// Runs on several processes: from now on only the elements of process `rank` are assembled
   /// (and only their couplings are in the pattern). An element belongs to the owner of its first
@@ -54,6 +56,7 @@ public:
 private:
   bool assemble_term(std::size_t t, const physics::EvalState& state, AssembledSystem& out,
                      bool with_jacobian) const;
+  void build_pattern_once();
 
   const dofs::DofMap& map_;
   std::vector<const physics::Term*> terms_;
@@ -64,7 +67,9 @@ private:
   bool awaits_ownership_ = false; ///< until set_ownership(): stencils only
   std::vector<Stencils> stencils_;
   std::vector<std::vector<std::vector<Index>>> colours_;
+  std::vector<Stencils> owned_; ///< on several processes: the stencils of this one's elements
   SystemPattern pattern_;
+  bool pattern_built_ = false; ///< pattern_ is that of the current stencils
 };
 
 /// A transient/quasi-static problem: R(x, t) = 0 with prescribed DOFs.
@@ -163,6 +168,7 @@ private:
   Vector static_residual();
   /// The initial acceleration of a dynamic step (dynamic_start.cpp).
   void start_motion();
+  void reset_system();
 
   const dofs::DofMap& map_;
   std::vector<dofs::DirichletCondition> conditions_;
@@ -177,8 +183,9 @@ private:
   std::vector<int> equation_owner_;  ///< on several processes: the owner of each equation
   std::unique_ptr<Assembler> assembler_;
   AssembledSystem system_;
-  bool jacobian_lent_ = false; ///< system_.Kff's storage is with a Linearization (linearize)
-  Index lent_nonzeros_ = 0;    ///< the lent matrix's nonzeros
+  bool pattern_pending_ = false; ///< system_ has no Jacobian pattern yet (none asked for)
+  bool jacobian_lent_ = false;   ///< system_.Kff's storage is with a Linearization (linearize)
+  Index lent_nonzeros_ = 0;      ///< the lent matrix's nonzeros
   dofs::NodalFrames frames_;
   Vector x_, x_old_, saved_, target_;
   Vector x_global_, x_old_global_;

@@ -7,15 +7,70 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 namespace trifem::explicit_dynamics {
+
+namespace {
+
+/// One ExplicitMaterial per distinct law of the model's cells (in the order of their first
+/// cell) and every cell's index into them.
+ModelSpec materials_of(const model::Model& model) {
+  ModelSpec spec;
+  std::map<const material::ElasticLaw*, int> index;
+  for (Index c = 0; c < model.mesh.num_cells(); ++c) {
+    const model::CellMaterial& m = model.materials[c];
+    TRIFEM_CHECK(m.solid && !m.mixture && m.density > 0.0,
+                 "materials.{}: dynamic-explicit analyses need a solid law with a density", m.name);
+    const auto [it, added] = index.try_emplace(m.solid.get(), static_cast<int>(index.size()));
+    if (added)
+      spec.materials.push_back({m.solid, m.density});
+    spec.cell_material.push_back(it->second);
+  }
+  return spec;
+}
+
+/// The displacement DOFs (3 a + k) that `model` constrains in its current step.
+std::vector<char> constrained_displacements(const model::Model& model) {
+  TRIFEM_CHECK(!model.dofs.has_ties(), "dynamic-explicit analyses do not take rigid bodies");
+  std::vector<char> fixed(3 * model.mesh.num_nodes(), 0);
+  for (Index a = 0; a < model.mesh.num_nodes(); ++a)
+    for (int k = 0; k < 3; ++k)
+      fixed[3 * a + k] = model.dofs.is_constrained(model.dofs.dof(model.fields.u, a, k)) ? 1 : 0;
+  for (const dofs::DirichletCondition& c : model.problem->conditions())
+    TRIFEM_CHECK(c.dofs.empty() || c.magnitude == 0.0,
+                 "dynamic-explicit analyses take fixed displacements only, not prescribed ones");
+  return fixed;
+}
+
+} // namespace
 
 ExplicitModel::ExplicitModel(mesh::Mesh mesh, ModelSpec spec)
     : mesh_(std::move(mesh)), spec_(std::move(spec)) {
   TRIFEM_CHECK(mesh_.num_cells() > 0, "explicit model: the mesh has no cells");
   check_materials();
   build_geometry();
-  build_mass_and_fixities();
+  build_mass();
+  std::vector<char> fixed(num_dofs(), 0);
+  for (const Fixity& f : spec_.fixities) {
+    TRIFEM_CHECK(f.component >= 0 && f.component < 3,
+                 "explicit model: fixity on '{}' has component {} (expected 0, 1 or 2)", f.node_set,
+                 f.component);
+    for (Index a : mesh_.node_set(f.node_set))
+      fixed[3 * a + f.component] = 1;
+  }
+  fix(fixed);
+  build_incidence();
+  resolve_loads();
+}
+
+ExplicitModel::ExplicitModel(const model::Model& model, std::vector<SurfaceLoad> loads)
+    : mesh_(model.mesh), spec_(materials_of(model)) {
+  spec_.loads = std::move(loads);
+  check_materials();
+  build_geometry();
+  build_mass();
+  fix(constrained_displacements(model));
   build_incidence();
   resolve_loads();
 }
@@ -77,7 +132,7 @@ void ExplicitModel::build_geometry() {
   }
 }
 
-void ExplicitModel::build_mass_and_fixities() {
+void ExplicitModel::build_mass() {
   const auto& rule = fe::hex_gauss_2x2x2();
   Vector nodal = Vector::Zero(mesh_.num_nodes());
   for (Index c = 0; c < mesh_.num_cells(); ++c) {
@@ -91,14 +146,10 @@ void ExplicitModel::build_mass_and_fixities() {
   mass_.resize(num_dofs());
   for (Index a = 0; a < mesh_.num_nodes(); ++a)
     mass_.segment<3>(3 * a).setConstant(nodal[a]);
-  fixed_.assign(num_dofs(), 0);
-  for (const Fixity& f : spec_.fixities) {
-    TRIFEM_CHECK(f.component >= 0 && f.component < 3,
-                 "explicit model: fixity on '{}' has component {} (expected 0, 1 or 2)", f.node_set,
-                 f.component);
-    for (Index a : mesh_.node_set(f.node_set))
-      fixed_[3 * a + f.component] = 1;
-  }
+}
+
+void ExplicitModel::fix(const std::vector<char>& fixed) {
+  fixed_ = fixed;
   inverse_mass_.resize(num_dofs());
   for (Index i = 0; i < num_dofs(); ++i) {
     TRIFEM_CHECK(fixed_[i] || mass_[i] > 0.0, "explicit model: node {} belongs to no cell", i / 3);

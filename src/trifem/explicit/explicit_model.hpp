@@ -8,6 +8,7 @@
 #include "trifem/fe/hex8.hpp"
 #include "trifem/material/elastic_law.hpp"
 #include "trifem/mesh/mesh.hpp"
+#include "trifem/model/model.hpp"
 
 #include <memory>
 #include <string>
@@ -74,6 +75,11 @@ public:
   /// det(∂X/∂ξ) > 0) and precomputes the geometry, the lumped mass and the incidence. The
   /// single-material shorthand is stored as `materials` = {law, density}. Throws InputError.
   ExplicitModel(mesh::Mesh mesh, ModelSpec spec);
+  /// The model of the shared `model` (its solid cells, laws and densities) in its current
+  /// step: the DOFs it constrains are fixed (they keep the displacement they start from), and
+  /// `loads` act on the surfaces. The mesh is copied. InputError if a cell has no solid law or
+  /// no density, or a DOF is tied to another (rigid bodies).
+  ExplicitModel(const model::Model& model, std::vector<SurfaceLoad> loads);
 
   const mesh::Mesh& mesh() const { return mesh_; }
   /// W(C) of cell c.
@@ -110,7 +116,8 @@ public:
 private:
   void check_materials();
   void build_geometry();
-  void build_mass_and_fixities();
+  void build_mass();
+  void fix(const std::vector<char>& fixed);
   void build_incidence();
   void resolve_loads();
 

@@ -37,7 +37,7 @@ ExplicitSolver::ExplicitSolver(const ExplicitModel& model, ExplicitSettings sett
     : model_(model), settings_(std::move(settings)) {
   settings_.validate();
   if (settings_.multiplier)
-    system_ = std::make_unique<LambdaSystem>(model_, settings_.cholesky);
+    system_ = std::make_unique<LambdaSystem>(model_);
   initialize(initial);
   choose_time_step();
 }

@@ -4,7 +4,7 @@
 #include "trifem/core/error.hpp"
 #include "trifem/explicit/parallel.hpp"
 
-#include <Eigen/CholmodSupport>
+#include "trifem/linalg/cholmod_solver.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -18,31 +18,13 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 
 } // namespace
 
-/// CHOLMOD LLᵀ; CHOLMOD chooses simplicial (small, very sparse) or supernodal (BLAS) itself.
-struct LambdaSystem::Backend {
-  Eigen::CholmodDecomposition<SparseMatrix, Eigen::Lower> llt;
-  explicit Backend(CholeskyMode mode) {
-    llt.setMode(mode == CholeskyMode::Simplicial   ? Eigen::CholmodSimplicialLLt
-                : mode == CholeskyMode::Supernodal ? Eigen::CholmodSupernodalLLt
-                                                   : Eigen::CholmodAuto);
-  }
-};
-
-LambdaSystem::LambdaSystem(const ExplicitModel& model, CholeskyMode mode)
-    : model_(model), backend_(std::make_unique<Backend>(mode)) {
+LambdaSystem::LambdaSystem(const ExplicitModel& model)
+    : model_(model), cholesky_(linalg::make_cholmod_solver()) {
   build_pattern();
-  backend_->llt.analyzePattern(A_);
-  TRIFEM_VERIFY(backend_->llt.info() == Eigen::Success,
-                "CHOLMOD symbolic analysis of the multiplier system failed");
-}
-
-LambdaSystem::~LambdaSystem() = default;
-
-Index LambdaSystem::size() const {
-  return static_cast<Index>(A_.rows());
-}
-Index LambdaSystem::nonzeros() const {
-  return static_cast<Index>(A_.nonZeros());
+  cholesky_->analyze_pattern(A_);
+  TRIFEM_VERIFY(cholesky_->failure().reason.empty(),
+                "symbolic analysis of the multiplier system failed: {}",
+                cholesky_->failure().reason);
 }
 
 void LambdaSystem::build_pattern() {
@@ -111,21 +93,17 @@ bool LambdaSystem::factorize(const std::vector<CellVector>& h, const Vector& inv
   assemble(h, inverse_mass, h2, diagonal);
   timings_.assemble += seconds_since(start);
   start = std::chrono::steady_clock::now();
-  backend_->llt.factorize(A_);
+  const bool positive_definite = cholesky_->factorize(A_);
   timings_.factorize += seconds_since(start);
   ++timings_.factorizations;
-  return backend_->llt.info() == Eigen::Success;
+  return positive_definite;
 }
 
 void LambdaSystem::solve(const Vector& b, Vector& x) {
   const auto start = std::chrono::steady_clock::now();
-  x = backend_->llt.solve(b);
+  cholesky_->solve(b, x);
   timings_.solve += seconds_since(start);
   ++timings_.solves;
-}
-
-void LambdaSystem::multiply(const Vector& x, Vector& y) const {
-  y = A_.selfadjointView<Eigen::Lower>() * x;
 }
 
 } // namespace trifem::explicit_dynamics

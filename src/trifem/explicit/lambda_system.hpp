@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: MIT
 // The multiplier system of A2.21, A = (1/α) Γ + h² Hᵀ M⁻¹ H, on the P0 (one value per cell)
 // multiplier: assembled from the cell vectors h_e without any global stiffness, factorized by
-// CHOLMOD (supernodal LLᵀ) with the symbolic analysis done once.
+// Cholesky (linalg::make_cholmod_solver) with the symbolic analysis done once.
 #pragma once
 
 #include "trifem/explicit/cell_kernel.hpp"
-#include "trifem/explicit/settings.hpp"
+#include "trifem/linalg/linear_solver.hpp"
 
 #include <memory>
 
@@ -27,10 +27,7 @@ class LambdaSystem {
 public:
   /// Builds the pattern from the model's incidence and runs the symbolic analysis (AMD/METIS
   /// ordering as CHOLMOD chooses).
-  explicit LambdaSystem(const ExplicitModel& model, CholeskyMode mode = CholeskyMode::Auto);
-  ~LambdaSystem();
-  LambdaSystem(const LambdaSystem&) = delete;
-  LambdaSystem& operator=(const LambdaSystem&) = delete;
+  explicit LambdaSystem(const ExplicitModel& model);
 
   /// Assembles A with scale h² [s²/... as in A2.21] and diagonal shift `diagonal` (V_e/α per
   /// cell, size num_cells) and factorizes it. Returns false if A is not positive definite.
@@ -38,12 +35,6 @@ public:
                  const Vector& diagonal);
   /// Solves A x = b with the last factorization.
   void solve(const Vector& b, Vector& x);
-  /// y = A x with the assembled matrix.
-  void multiply(const Vector& x, Vector& y) const;
-
-  Index size() const;
-  /// Stored non-zeros of the lower triangle.
-  Index nonzeros() const;
   const LambdaTimings& timings() const { return timings_; }
 
 private:
@@ -51,12 +42,11 @@ private:
   void assemble(const std::vector<CellVector>& h, const Vector& inverse_mass, Real h2,
                 const Vector& diagonal);
 
-  struct Backend;
   const ExplicitModel& model_;
   SparseMatrix A_;                  ///< lower triangle, compressed
   std::vector<Index> slot_offsets_; ///< per column: start of its traversal slots
   std::vector<Index> slots_;        ///< value index of each (column, node, incident cell) visit
-  std::unique_ptr<Backend> backend_;
+  std::unique_ptr<linalg::LinearSolver> cholesky_;
   LambdaTimings timings_;
 };
 

@@ -35,6 +35,37 @@ void ExplicitSettings::validate() const {
   TRIFEM_CHECK(recovery_steps >= 1, "explicit.recovery_steps = {}: must be >= 1", recovery_steps);
 }
 
+ExplicitSettings explicit_settings(const io::ExplicitSpec& e, Real time_step) {
+  ExplicitSettings s;
+  s.reading = e.reading == io::ExplicitReading::A ? Reading::A : Reading::B;
+  s.constraint =
+      e.constraint == io::VolumeConstraint::LogJ ? Constraint::LogJ : Constraint::JMinusOne;
+  s.multiplier = e.multiplier;
+  s.penalty = e.penalty;
+  s.damping = e.damping;
+  s.time_step = time_step;
+  s.safety_factor = e.safety_factor;
+  s.max_factorization_age = e.factorization_age;
+  switch (e.stable_step) {
+  case io::StableStepEstimate::PowerIteration:
+    s.stable_step = StableStepMethod::PowerIteration;
+    break;
+  case io::StableStepEstimate::ElementBound:
+    s.stable_step = StableStepMethod::ElementBound;
+    break;
+  case io::StableStepEstimate::None:
+    s.stable_step = StableStepMethod::None;
+    break;
+  }
+  s.stable_step_interval = e.stable_step_interval;
+  s.displacement_tolerance = e.displacement_tolerance;
+  s.constraint_tolerance = e.constraint_tolerance;
+  s.max_iterations = e.max_iterations;
+  s.max_halvings = e.max_halvings;
+  s.validate();
+  return s;
+}
+
 namespace {
 std::string lower(std::string s) {
   std::transform(s.begin(), s.end(), s.begin(),

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "trifem/core/types.hpp"
+#include "trifem/io/case_spec.hpp"
 
 #include <limits>
 #include <optional>
@@ -35,13 +36,6 @@ enum class StableStepMethod {
   None          ///< trust the requested step (benchmarks)
 };
 
-/// Factorization of the multiplier system (CHOLMOD).
-enum class CholeskyMode {
-  Auto,       ///< CHOLMOD decides from the flop count of the symbolic factor
-  Simplicial, ///< up-looking, no BLAS: fastest for small or thin meshes
-  Supernodal  ///< dense BLAS blocks: fastest for large 3-D meshes
-};
-
 /// All numerical options of one explicit run. Units: s, MPa, mm.
 struct ExplicitSettings {
   Reading reading = Reading::B;
@@ -56,7 +50,6 @@ struct ExplicitSettings {
   Real time_step = 0.0;
   /// Fraction of the critical step used; default 0.8 (reading B, of 2/ω), 0.5 (A, of 1/ω).
   std::optional<Real> safety_factor;
-  CholeskyMode cholesky = CholeskyMode::Auto;
   /// Reading B: steps one numeric factorization of A_n = Γ/α + h² H_nᵀM⁻¹H_n may serve
   /// (1 = refactorize every step). Reuse turns the Λ iteration into a modified Newton
   /// iteration with the same fixed point; worthwhile on large meshes where the factorization
@@ -79,6 +72,10 @@ struct ExplicitSettings {
   /// Throws InputError naming the first invalid option.
   void validate() const;
 };
+
+/// The settings of an [explicit] table with the requested step `time_step` (time.dt, 0: the
+/// stability estimate), validated (InputError names the key).
+ExplicitSettings explicit_settings(const io::ExplicitSpec& spec, Real time_step);
 
 /// Parses "A"/"B" (case-insensitive); InputError otherwise.
 Reading parse_reading(const std::string& text);

@@ -41,6 +41,7 @@ std::vector<CellMaterial> cell_materials(const io::CaseSpec& spec, const mesh::M
   for (const auto& [name, m] : spec.materials) {
     const std::string ctx = "materials." + name;
     CellMaterial cm;
+    cm.name = name;
     if (!m.is_mixture()) {
       cm.solid = material::create_law(m.solid_law(), ctx);
       cm.element = solid_element(m.element, *cm.solid);
@@ -283,7 +284,8 @@ std::unique_ptr<Model> build_model(const io::CaseSpec& spec) {
   }
   if (!model->steps.empty())
     activate_step(*model, 0);
-  check_support(spec, *model);
+  if (!spec.is_explicit()) // explicit steps need no support: a body may fly
+    check_support(spec, *model);
   add_outputs(spec, *model);
   model->averages = make_averages(spec, *model);
   return model;

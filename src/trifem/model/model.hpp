@@ -41,6 +41,7 @@ struct Average {
 
 /// The law of one cell: a solid law, or a mixture (which has its own solid).
 struct CellMaterial {
+  std::string name; ///< of its [materials.<name>] table
   std::shared_ptr<const material::ElasticLaw> solid;
   std::shared_ptr<const material::MixtureProperties> mixture;
   physics::SolidElement element = physics::SolidElement::Displacement; ///< of a solid law

@@ -4,8 +4,8 @@
 // the library's, and a damped uniaxial case settles to the closed-form homogeneous state.
 #include "exact_uniaxial.hpp"
 #include "fixtures.hpp"
+#include "trifem/analysis/explicit_case.hpp"
 #include "trifem/analysis/explicit_run.hpp"
-#include "trifem/model/explicit_case.hpp"
 
 #include "trifem/io/case_reader.hpp"
 #include "trifem/mesh/box.hpp"
@@ -317,7 +317,7 @@ density = 1e-9
 end_time = 1.0
 )";
   const io::CaseSpec spec = io::parse_case(toml, "defaults.toml");
-  const ExplicitSettings got = model::explicit_settings(spec), want;
+  const ExplicitSettings got = explicit_settings(spec.explicit_dynamics, spec.time.dt), want;
   EXPECT_EQ(got.reading, want.reading);
   EXPECT_EQ(got.constraint, want.constraint);
   EXPECT_EQ(got.multiplier, want.multiplier);
@@ -423,7 +423,9 @@ TEST(ExplicitCaseFile, DocumentedExampleBuilds) {
   const auto end = text.find("```", body + 8);
   ASSERT_NE(end, std::string::npos);
   const io::CaseSpec spec = io::parse_case(text.substr(body + 8, end - body - 8), doc);
-  const model::ExplicitCase c = model::build_explicit_case(spec);
+  const std::unique_ptr<model::Model> shared = model::build_model(spec);
+  analysis::ExplicitCase c = analysis::explicit_case(spec, shared->mesh);
+  analysis::build_explicit_model(c, *shared);
   EXPECT_EQ(c.model->num_cells(), 270);
   EXPECT_EQ(c.model->density(0), 1.1e-9);
   EXPECT_EQ(c.settings.stable_step, StableStepMethod::PowerIteration);

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
-// Builds the model of a dynamic-explicit case: the mesh, the material of every cell, the fixed
-// displacements and surface loads (explicit_dynamics::ExplicitModel), the solver settings and
-// the history outputs.
+// A dynamic-explicit case (or the dynamic-explicit step of a mixed case) ready to run: the
+// explicit model of the shared model's current step, the solver settings and the history
+// outputs.
 #pragma once
 
 #include "trifem/explicit/explicit_model.hpp"
@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-namespace trifem::model {
+namespace trifem::analysis {
 
 /// An [[output.reaction]] of an explicit model: the DOFs 3 a + k of a node set, per component k.
 struct ExplicitReaction {
@@ -31,27 +31,29 @@ struct ExplicitProbe {
 
 /// A dynamic-explicit case ready to run.
 struct ExplicitCase {
-  std::unique_ptr<explicit_dynamics::ExplicitModel> model;
+  std::unique_ptr<explicit_dynamics::ExplicitModel> model; ///< null until build_explicit_model
   explicit_dynamics::ExplicitSettings settings;
+  std::vector<explicit_dynamics::SurfaceLoad> loads;
   std::vector<ExplicitReaction> reactions;
   std::vector<ExplicitProbe> probes;
   std::vector<std::string> material_names; ///< name of each model material, by index
 };
 
-/// The solver settings of a case: [explicit] and time.dt (validated; InputError names the key).
-explicit_dynamics::ExplicitSettings explicit_settings(const io::CaseSpec& spec);
+/// The settings, surface loads and history outputs of `spec` (a dynamic-explicit case, or
+/// explicit_step_part of a mixed case) on `mesh`, validated (InputErrors name the case key);
+/// no model yet.
+ExplicitCase explicit_case(const io::CaseSpec& spec, const mesh::Mesh& mesh);
 
-/// Builds the model of a dynamic-explicit case. InputErrors name the case key (node sets,
-/// surfaces, cell blocks); the case must have been read by io::read_case.
-ExplicitCase build_explicit_case(const io::CaseSpec& spec);
+/// Gives `c` the explicit model of `model` (built by model::build_model from the same case) in
+/// its current step.
+void build_explicit_model(ExplicitCase& c, const model::Model& model);
 
 /// The quasi-static part of a mixed case (spec.has_explicit_step()): its steps before the
 /// dynamic-explicit one, the run ending where that step starts.
 io::CaseSpec quasi_static_part(const io::CaseSpec& spec);
 
 /// The dynamic-explicit last step of a mixed case as a dynamic-explicit case: the case-level
-/// conditions and loads plus those of the step (the others are released), the step's end_time
-/// and dt. Its mesh is built like the quasi-static model's (build_mesh: same nodes, same order).
+/// loads plus those of the step, its end_time and dt, the case's outputs.
 io::CaseSpec explicit_step_part(const io::CaseSpec& spec);
 
-} // namespace trifem::model
+} // namespace trifem::analysis

@@ -115,8 +115,8 @@ void FeProblem::reclaim_jacobian(solver::Linearization& lin) {
     lin.lender = nullptr;
     return;
   }
-  // lent to a linearization that is gone: the same pattern once more
-  assembler_->rebuild();
+  // lent to a linearization that is gone: the same pattern once more (from the stencils, which
+  // have not changed)
   system_ = assembler_->take_system();
 }
 

@@ -4,6 +4,7 @@
 #include "trifem/core/error.hpp"
 #include "trifem/fe/quadrature.hpp"
 #include "trifem/mesh/hex_faces.hpp"
+#include "trifem/model/model.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -8,12 +8,15 @@
 #include "trifem/fe/hex8.hpp"
 #include "trifem/material/elastic_law.hpp"
 #include "trifem/mesh/mesh.hpp"
-#include "trifem/model/model.hpp"
 
 #include <memory>
 #include <string>
 #include <utility>
 #include <vector>
+
+namespace trifem::model {
+struct Model;
+} // namespace trifem::model
 
 namespace trifem::explicit_dynamics {
 

@@ -128,7 +128,7 @@ void BM_Step(benchmark::State& state) {
   s.penalty = kPenalty;
   s.stable_step = StableStepMethod::None;
   s.time_step = kTimeStep;
-  s.max_factorization_age = static_cast<int>(state.range(0));
+  s.factorization_age = static_cast<int>(state.range(0));
   ExplicitSolver solver(model(), s);
   solver.step(1e30); // first step (half-step start) outside the timing
   const SolverTimings t0 = solver.timings();

@@ -58,7 +58,7 @@ ExplicitModel build_model(const Case& c, bool mixed) {
 bool run_one(const Case& c, bool mixed, const std::filesystem::path& file) {
   const ExplicitModel model = build_model(c, mixed);
   ExplicitSettings settings;
-  settings.reading = parse_reading(c.reading);
+  settings.reading = c.reading == "A" ? Reading::A : Reading::B;
   settings.multiplier = mixed;
   settings.penalty = c.alpha_over_mu * c.mu;
   ExplicitSolver solver(model, settings);
@@ -105,7 +105,8 @@ int main(int argc, char** argv) {
       ->capture_default_str()
       ->check(CLI::Range(1, 256));
   cli.add_option("--reading", c.reading, "A (forces iterated) or B (central difference)")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(CLI::IsMember({"A", "B"}));
   cli.add_option("--alpha", c.alpha_over_mu, "penalty alpha / mu (= kappa / mu of Q1)")
       ->capture_default_str();
   cli.add_option("--t-end", c.t_end, "simulated time [s]")->capture_default_str();

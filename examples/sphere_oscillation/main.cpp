@@ -106,7 +106,7 @@ int run(const Case& c) {
 
   const ExplicitModel model = build_model(c);
   ExplicitSettings settings;
-  settings.reading = parse_reading(c.reading);
+  settings.reading = c.reading == "A" ? Reading::A : Reading::B;
   settings.penalty = c.alpha_over_mu * c.mu;
   ExplicitSolver solver(model, settings);
   log::info("mesh: {} cells, {} nodes; dt = {:.6g} s ({:.0f} steps per period)", model.num_cells(),
@@ -133,7 +133,8 @@ int main(int argc, char** argv) {
       ->capture_default_str()
       ->check(CLI::Range(1, 64));
   cli.add_option("--reading", c.reading, "A (forces iterated) or B (central difference)")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(CLI::IsMember({"A", "B"}));
   cli.add_option("--alpha", c.alpha_over_mu, "penalty alpha / mu")->capture_default_str();
   cli.add_option("--periods", c.periods, "simulated time in periods")->capture_default_str();
   cli.add_flag("--plot", c.plot, "run gnuplot on plot.gp after the run");

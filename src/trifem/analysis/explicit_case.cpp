@@ -68,7 +68,8 @@ void add_history_outputs(const io::CaseSpec& spec, const mesh::Mesh& mesh, Expli
 
 ExplicitCase explicit_case(const io::CaseSpec& spec, const mesh::Mesh& mesh) {
   ExplicitCase c;
-  c.settings = ed::explicit_settings(spec.explicit_dynamics, spec.time.dt);
+  static_cast<io::ExplicitSpec&>(c.settings) = spec.explicit_dynamics;
+  c.settings.time_step = spec.time.dt;
   c.loads = surface_loads(spec, mesh);
   add_history_outputs(spec, mesh, c);
   return c;

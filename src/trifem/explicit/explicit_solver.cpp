@@ -35,7 +35,7 @@ const char* to_string(StepStatus status) {
 ExplicitSolver::ExplicitSolver(const ExplicitModel& model, ExplicitSettings settings,
                                const InitialState& initial)
     : model_(model), settings_(std::move(settings)) {
-  settings_.validate();
+  settings_.verify();
   if (settings_.multiplier)
     system_ = std::make_unique<LambdaSystem>(model_);
   initialize(initial);
@@ -116,7 +116,7 @@ void ExplicitSolver::estimate_stable_step() {
   const FrequencyEstimate est =
       settings_.stable_step == StableStepMethod::PowerIteration
           ? power_iteration_omega(model_, settings_.constraint, U_, lambda, settings_.multiplier,
-                                  settings_.power_iterations, settings_.power_tolerance)
+                                  kPowerIterations, kPowerTolerance)
           : element_bound_omega(model_, settings_.constraint, U_, lambda);
   info.omega = est.omega;
   info.critical = (settings_.reading == Reading::B ? 2.0 : 1.0) / est.omega;
@@ -181,7 +181,7 @@ StepReport ExplicitSolver::step(Real t_end) {
     StepReport r = try_step(dt);
     r.halvings = halvings;
     if (r.ok()) {
-      if (dt_current_ < dt_info_.used && ++successes_since_halving_ >= settings_.recovery_steps) {
+      if (dt_current_ < dt_info_.used && ++successes_since_halving_ >= kRecoverySteps) {
         dt_current_ = std::min(2.0 * dt_current_, dt_info_.used);
         successes_since_halving_ = 0;
       }

@@ -79,10 +79,10 @@ struct SolverTimings {
 /// Explicit dynamics of one ExplicitModel. The model must outlive the solver.
 class ExplicitSolver {
 public:
-  /// Validates the settings, evaluates the initial state (by default U = 0, at rest, t = 0) and
-  /// chooses Δt on it. With a multiplier, Λ0 = α Ψ_e(U0)/V_e (0 for α = inf: the first step then
-  /// enforces the constraint, with a warning if U0 violates it). InputError if `initial` does not
-  /// fit the model (sizes, a displaced fixed DOF).
+  /// Verifies the settings' ranges, evaluates the initial state (by default U = 0, at rest, t = 0)
+  /// and chooses Δt on it. With a multiplier, Λ0 = α Ψ_e(U0)/V_e (0 for α = inf: the first step
+  /// then enforces the constraint, with a warning if U0 violates it). InputError if `initial` does
+  /// not fit the model (sizes, a displaced fixed DOF).
   ExplicitSolver(const ExplicitModel& model, ExplicitSettings settings,
                  const InitialState& initial = {});
   ~ExplicitSolver();

@@ -16,7 +16,7 @@
 // i.e. central differences with the constraint force H_n Λ^{n+1} chosen so that the constraint
 // holds at t_{n+1} (SHAKE): second order, time-reversible, no energy drift. A_n is the exact
 // Jacobian at U^n, so the iteration contracts by O(‖H(U^(k)) − H_n‖) = O(Δt) per iteration.
-// Its factorization may be reused for up to max_factorization_age steps (a modified Newton
+// Its factorization may be reused for up to factorization_age steps (a modified Newton
 // iteration: same fixed point, slightly slower contraction); it is refreshed when h² changes,
 // when the iteration count grows by more than 3, or when a step fails with a reused one.
 // Both readings start from the explicit predictor with the forces of t_n and the multiplier
@@ -222,7 +222,7 @@ bool ExplicitSolver::needs_factorization(Real h2) const {
   const FactorizationState& f = factorization_;
   // h² equal up to round-off: equal steps towards a target differ in the last bits.
   const bool same_step = std::abs(h2 - f.h2) <= 1e-9 * f.h2;
-  return f.age < 0 || !same_step || f.age >= settings_.max_factorization_age ||
+  return f.age < 0 || !same_step || f.age >= settings_.factorization_age ||
          f.last_iterations > f.fresh_iterations + 3;
 }
 

@@ -279,8 +279,8 @@ enum class StableStepEstimate {
   None            ///< "none": use time.dt as given
 };
 
-/// [explicit]: options of a dynamic-explicit analysis. The defaults are those of
-/// explicit_dynamics::ExplicitSettings.
+/// [explicit]: options of a dynamic-explicit analysis (with the requested step, the settings of
+/// explicit_dynamics::ExplicitSolver).
 struct ExplicitSpec {
   ExplicitReading reading = ExplicitReading::B;
   VolumeConstraint constraint = VolumeConstraint::JMinusOne;

@@ -137,7 +137,7 @@ TEST(ExplicitCook, ReusedFactorizationGivesTheSameSolution) {
   for (int i = 0; i < 2; ++i) {
     ExplicitSettings s;
     s.penalty = 1e3 * kCookMu;
-    s.max_factorization_age = i == 0 ? 1 : 25;
+    s.factorization_age = i == 0 ? 1 : 25;
     ExplicitSolver solver(model, s);
     ASSERT_TRUE(solver.run(130.0).ok());
     tip[i] = solver.displacement();

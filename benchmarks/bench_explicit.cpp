@@ -3,9 +3,10 @@
 // the cell loops, the multiplier system (CHOLMOD) and whole steps of reading B, split into
 // force evaluation and Λ solve. Threads: run with OMP_NUM_THREADS=1 and 2 (and the same
 // OPENBLAS_NUM_THREADS); see docs/performance.md, section "Explicit dynamics".
+#include "fixtures.hpp"
+
 #include "trifem/explicit/explicit_solver.hpp"
 #include "trifem/explicit/lambda_system.hpp"
-#include "trifem/material/registry.hpp"
 #include "trifem/mesh/box.hpp"
 
 #include <benchmark/benchmark.h>
@@ -24,20 +25,14 @@ constexpr Real kPenalty = 1e4;  ///< α = 1e4 μ
 
 /// The unit-cell cube, bottom clamped, follower pressure 0.05 μ on the top (applied at t = 0).
 const ExplicitModel& model() {
-  static const ExplicitModel m = [] {
+  static const test::TestModel m = [] {
     mesh::BoxSpec box;
     box.name = "cube";
     box.size = Vec3(kN, kN, kN);
     box.divisions = {kN, kN, kN};
-    ModelSpec spec;
-    spec.law = material::create_law("neo-hookean", {{"E", 2.0}, {"nu", 0.0}}, "bench");
-    spec.density = 1.0;
-    spec.fixities = {{"cube.zmin", 0}, {"cube.zmin", 1}, {"cube.zmin", 2}};
-    SurfaceLoad p;
-    p.surface = "cube.zmax";
-    p.pressure = 0.05;
-    spec.loads = {p};
-    return ExplicitModel(mesh::make_box(box), spec);
+    test::ExplicitTestCase c(mesh::make_box(box), test::deviatoric_material(1.0, 1.0));
+    c.fix("cube.zmin", {0, 1, 2}).pressure("cube.zmax", 0.05, test::step_curve());
+    return test::TestModel(c);
   }();
   return m;
 }

@@ -3,10 +3,11 @@
 // load (README.md): the explicit multiplier scheme (Q1–P0) against the pure-displacement Q1
 // version with the same bulk modulus, which locks. Writes history.csv (mixed), history_q1.csv
 // and plot.gp into the output folder and, with --plot, runs gnuplot on it.
+#include "fixtures.hpp"
+#include "generated_meshes.hpp"
+
+#include "solver_history.hpp"
 #include "trifem/core/log.hpp"
-#include "trifem/explicit/history.hpp"
-#include "trifem/explicit/mesh_builders.hpp"
-#include "trifem/material/registry.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -15,6 +16,7 @@
 
 using namespace trifem;
 using namespace trifem::explicit_dynamics;
+using namespace trifem::test;
 
 namespace {
 
@@ -34,29 +36,22 @@ struct Case {
 
 /// `mixed`: W = μ/2 (I1 − 3) − μ ln J plus the multiplier; otherwise the compressible
 /// neo-Hookean with κ = α (ν = (3κ − 2μ)/(2(3κ + μ))) and no multiplier.
-ExplicitModel build_model(const Case& c, bool mixed) {
-  CookSpec cook;
+test::TestModel build_model(const Case& c, bool mixed) {
+  test::CookSpec cook;
   cook.nx = cook.ny = c.divisions;
-  const Real kappa = c.alpha_over_mu * c.mu;
-  const Real nu = mixed ? 0.0 : (3.0 * kappa - 2.0 * c.mu) / (2.0 * (3.0 * kappa + c.mu));
-  ModelSpec spec;
-  spec.law =
-      material::create_law("neo-hookean", {{"E", 2.0 * c.mu * (1.0 + nu)}, {"nu", nu}}, "cook");
-  spec.density = c.rho;
+  const io::MaterialSpec material =
+      mixed ? test::deviatoric_material(c.mu, c.rho)
+            : test::compressible_material(c.mu, c.alpha_over_mu * c.mu, c.rho);
+  test::ExplicitTestCase model(test::make_cook_membrane(cook), material);
   // Clamped edge; u_z = 0 everywhere (plane strain).
-  spec.fixities = {{"cook.xmin", 0}, {"cook.xmin", 1}, {"cook.xmin", 2}, {"cook.all", 2}};
-  SurfaceLoad load;
-  load.kind = LoadKind::DeadTraction;
-  load.surface = "cook.xmax";
-  load.traction = Vec3(0.0, c.shear, 0.0);
-  load.curve = dofs::LoadCurve({{0.0, 1.0}}, dofs::Interpolation::Step);
-  spec.loads = {load};
-  return ExplicitModel(make_cook_membrane(cook), spec);
+  model.fix("cook.xmin", {0, 1}).fix("cook.all", {2});
+  model.traction("cook.xmax", Vec3(0.0, c.shear, 0.0), test::step_curve());
+  return test::TestModel(model);
 }
 
 /// Runs one formulation and writes its history; returns true if the run completed.
 bool run_one(const Case& c, bool mixed, const std::filesystem::path& file) {
-  const ExplicitModel model = build_model(c, mixed);
+  const test::TestModel model = build_model(c, mixed);
   ExplicitSettings settings;
   settings.reading = c.reading == "A" ? Reading::A : Reading::B;
   settings.multiplier = mixed;

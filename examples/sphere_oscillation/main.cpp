@@ -4,11 +4,11 @@
 // one-degree-of-freedom ODE of docs/theory/reference-solutions.md §R8.4. Writes history.csv,
 // reference.csv and plot.gp into the output folder and, with --plot, runs gnuplot on it.
 #include "exact_sphere.hpp"
+#include "fixtures.hpp"
+#include "generated_meshes.hpp"
 
+#include "solver_history.hpp"
 #include "trifem/core/log.hpp"
-#include "trifem/explicit/history.hpp"
-#include "trifem/explicit/mesh_builders.hpp"
-#include "trifem/material/registry.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -18,6 +18,7 @@
 
 using namespace trifem;
 using namespace trifem::explicit_dynamics;
+using namespace trifem::test;
 
 namespace {
 
@@ -35,23 +36,17 @@ struct Case {
   bool plot = false;
 };
 
-ExplicitModel build_model(const Case& c) {
-  ShellOctantSpec shell;
+test::TestModel build_model(const Case& c) {
+  test::ShellOctantSpec shell;
   shell.inner = c.inner;
   shell.outer = c.outer;
   shell.divisions = shell.layers = c.divisions;
-  ModelSpec spec;
   // W = μ/2 (I1 − 3) − μ ln J (ν = 0); the bulk response is the multiplier's.
-  spec.law = material::create_law("neo-hookean", {{"E", 2.0 * c.mu}, {"nu", 0.0}}, "sphere");
-  spec.density = c.rho;
-  spec.fixities = {{"shell.x0", 0}, {"shell.y0", 1}, {"shell.z0", 2}};
-  SurfaceLoad p;
-  p.kind = LoadKind::FollowerPressure;
-  p.surface = "shell.inner";
-  p.pressure = c.pressure;
-  p.curve = dofs::LoadCurve({{0.0, 1.0}}, dofs::Interpolation::Step);
-  spec.loads = {p};
-  return ExplicitModel(make_shell_octant(shell), spec);
+  test::ExplicitTestCase model(test::make_shell_octant(shell),
+                               test::deviatoric_material(c.mu, c.rho));
+  model.fix("shell.x0", {0}).fix("shell.y0", {1}).fix("shell.z0", {2});
+  model.pressure("shell.inner", c.pressure, test::step_curve());
+  return test::TestModel(model);
 }
 
 /// The exact ODE history from rest; returns the first period.
@@ -104,7 +99,7 @@ int run(const Case& c) {
   log::info("exact: static inner radius {:.6f} mm, period {:.6g} s", s.static_radius(c.pressure),
             period);
 
-  const ExplicitModel model = build_model(c);
+  const test::TestModel model = build_model(c);
   ExplicitSettings settings;
   settings.reading = c.reading == "A" ? Reading::A : Reading::B;
   settings.penalty = c.alpha_over_mu * c.mu;

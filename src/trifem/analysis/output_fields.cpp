@@ -44,9 +44,8 @@ io::DataArray nodal_average(const model::Model& model, const io::DataArray& cell
 
 } // namespace
 
-std::vector<io::DataArray> point_fields(const model::Model& model) {
+std::vector<io::DataArray> point_fields(const model::Model& model, const Vector& R) {
   const Vector& x = model.problem->state();
-  const Vector& R = model.problem->full_residual();
   std::vector<io::DataArray> out;
   out.push_back(nodal_vector(model, model.fields.u, "displacement [mm]", 1.0));
   io::DataArray reaction = array("reaction_forces [N]", 3, model.mesh.num_nodes());

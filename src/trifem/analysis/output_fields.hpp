@@ -7,9 +7,9 @@
 
 namespace trifem::analysis {
 
-/// Nodal arrays: displacement, reaction forces; with mixtures the nodal fluxes and the
-/// nodal averages of pressure and electric potential.
-std::vector<io::DataArray> point_fields(const model::Model& model);
+/// Nodal arrays: displacement, reaction forces (`residual` at the constrained DOFs); with
+/// mixtures the nodal fluxes and the nodal averages of pressure and electric potential.
+std::vector<io::DataArray> point_fields(const model::Model& model, const Vector& residual);
 
 /// Cell arrays: total and solid Cauchy stress, relative volume; with mixtures the element
 /// chemistry (pressure, potentials, concentrations, fixed charge, porosity, current density);

@@ -20,8 +20,9 @@
 namespace trifem::analysis {
 namespace {
 
-std::vector<std::string> history_columns(const model::Model& model) {
-  std::vector<std::string> cols = {"time [s]", "step", "dt [s]", "iterations"};
+/// The history columns of `model` after time, step, dt and iterations.
+std::vector<std::string> model_columns(const model::Model& model) {
+  std::vector<std::string> cols;
   for (const auto& r : model.reactions)
     for (const char* c : {"Rx", "Ry", "Rz"})
       cols.push_back(fmt::format("{}.{} [N]", r.name, c));
@@ -106,15 +107,36 @@ OutputWriter::OutputWriter(const model::Model& model, const io::OutputSpec& spec
   }
   pvd_ = std::make_unique<io::PvdWriter>(directory_ / "results.pvd");
   cells_ = std::make_unique<CellEvaluator>(model);
-  std::vector<std::string> columns = history_columns(model);
-  if (balance_)
-    add_body_columns(*balance_, columns);
-  history_ = std::make_unique<io::CsvWriter>(history_file(), columns);
+  history_ = std::make_unique<io::CsvWriter>(history_file(), history_columns());
   if (!model.contacts.empty())
     contact_ = std::make_unique<ContactOutput>(model, directory_, true);
 }
 
 OutputWriter::~OutputWriter() = default;
+
+std::vector<std::string> OutputWriter::history_columns() const {
+  std::vector<std::string> cols = {"time [s]", "step", "dt [s]", "iterations"};
+  if (results_)
+    for (std::string& c : results_->columns())
+      cols.push_back(std::move(c));
+  for (std::string& c : model_columns(model_))
+    cols.push_back(std::move(c));
+  if (balance_)
+    add_body_columns(*balance_, cols);
+  return cols;
+}
+
+void OutputWriter::use_history(const std::string& file_name, const StepResults* results) {
+  results_ = results;
+  history_name_ = file_name;
+  step_history_.reset();
+  if (!writes_files_)
+    return;
+  if (file_name != "history.csv")
+    step_history_ = std::make_unique<io::CsvWriter>(history_file(), history_columns());
+  else if (results || history_->columns() != history_columns())
+    history_ = std::make_unique<io::CsvWriter>(history_file(), history_columns());
+}
 
 bool OutputWriter::is_output_time(Real time) {
   for (Real t : spec_.times)
@@ -136,8 +158,10 @@ bool OutputWriter::is_output_time(Real time) {
 
 std::vector<double> OutputWriter::history_row(Real time, int step, Real dt, int iterations) const {
   const Vector& x = model_.problem->state();
-  const Vector& R = model_.problem->full_residual();
+  const Vector& R = results_ ? results_->full_residual() : model_.problem->full_residual();
   std::vector<double> row = {time, double(step), dt, double(iterations)};
+  if (results_)
+    results_->append_values(row);
   for (const auto& r : model_.reactions)
     for (int k = 0; k < 3; ++k) {
       double sum = 0.0;
@@ -172,8 +196,11 @@ std::vector<double> OutputWriter::history_row(Real time, int step, Real dt, int 
 
 void OutputWriter::write_vtu(Real time, int number) {
   io::UnstructuredGrid grid = volume_grid(model_);
-  grid.point_data = point_fields(model_);
+  grid.point_data =
+      point_fields(model_, results_ ? results_->full_residual() : model_.problem->full_residual());
   grid.cell_data = cell_fields(model_);
+  if (results_)
+    results_->add_arrays(grid.point_data, grid.cell_data);
   if (piece_cells_) { // several processes: a piece each, listed by rank 0's .pvtu file
     const auto piece = fmt::format("volume_{:04d}_{}.vtu", number, parallel::rank());
     parallel::agree_on_output([&] { // no list names a state before all its pieces are written
@@ -220,7 +247,8 @@ void OutputWriter::write(Real time, int step, Real dt, int iterations, bool volu
   const auto start = std::chrono::steady_clock::now();
   parallel::agree_on_output([&] { // all go on, or all stop, if one process cannot write
     if (writes_files_)
-      history_->write_row(history_row(time, step, dt, iterations));
+      (step_history_ ? *step_history_ : *history_)
+          .write_row(history_row(time, step, dt, iterations));
   });
   if (volume) // every process writes its part (write_vtu agrees on the pieces first)
     parallel::agree_on_output([&] { write_state(time); });

@@ -5,6 +5,7 @@
 #include "trifem/analysis/mass_balance.hpp"
 #include "trifem/io/csv_writer.hpp"
 #include "trifem/io/pvd_writer.hpp"
+#include "trifem/io/vtu_writer.hpp"
 #include "trifem/model/model.hpp"
 #include "trifem/solver/time_loop.hpp"
 
@@ -17,6 +18,23 @@ namespace trifem::analysis {
 class ContactOutput;
 class CellEvaluator;
 
+/// What an integrator adds to the results of its steps (the explicit one: its counters and
+/// energies, its velocity and multiplier arrays, its reactions).
+class StepResults {
+public:
+  virtual ~StepResults() = default;
+  /// Names of the history columns it adds after "iterations".
+  virtual std::vector<std::string> columns() const = 0;
+  /// Their values at the state being written.
+  virtual void append_values(std::vector<double>& row) const = 0;
+  /// The residual at every DOF (the reactions at constrained DOFs) of the state being written,
+  /// instead of the problem's.
+  virtual const Vector& full_residual() const = 0;
+  /// The arrays of a VTU state: adds to (or replaces) the model's point and cell arrays.
+  virtual void add_arrays(std::vector<io::DataArray>& point,
+                          std::vector<io::DataArray>& cell) const = 0;
+};
+
 /// Writes results as the run advances; everything written stays valid if the run stops.
 class OutputWriter {
 public:
@@ -28,6 +46,11 @@ public:
 
   /// Water and ion balances (mixture models; null otherwise).
   MassBalance* balance() { return balance_.get(); }
+  /// From now on the history rows go to `file_name` in the output directory with the columns
+  /// `results` adds (null: none) after "iterations", as do the VTU states, until the next call.
+  /// The run's history.csv is continued when `file_name` is it and `results` is null, replaced
+  /// (a new header) otherwise; another name starts a new file. `results` must outlive its use.
+  void use_history(const std::string& file_name, const StepResults* results);
   /// Writes the state at `time`: a history row always; if `volume` is set (an output time) the
   /// VTU file (unless output.vtu = false) and the contact-surface files of every contact pair.
   void write(Real time, int step, Real dt, int iterations, bool volume);
@@ -45,7 +68,8 @@ public:
   io::PvdWriter& pvd() { return *pvd_; }
   /// Output states written so far (the NNNN of the next file).
   int state_count() const { return state_count_; }
-  std::filesystem::path history_file() const { return directory_ / "history.csv"; }
+  /// The history file rows go to now (history.csv unless use_history chose another).
+  std::filesystem::path history_file() const { return directory_ / history_name_; }
   int vtu_count() const { return vtu_count_; }
   /// The NNNN of the last output state written (-1: none).
   int last_state_index() const { return state_count_ - 1; }
@@ -56,13 +80,17 @@ private:
   /// rank 0 the .pvtu file).
   void write_vtu(Real time, int number);
   void write_state(Real time);
+  std::vector<std::string> history_columns() const;
   std::vector<double> history_row(Real time, int step, Real dt, int iterations) const;
 
   const model::Model& model_;
   io::OutputSpec spec_;
   std::filesystem::path directory_;
   std::unique_ptr<io::PvdWriter> pvd_;
-  std::unique_ptr<io::CsvWriter> history_;
+  std::unique_ptr<io::CsvWriter> history_;      ///< the run's history.csv
+  std::unique_ptr<io::CsvWriter> step_history_; ///< another history file of the current step
+  std::string history_name_ = "history.csv";
+  const StepResults* results_ = nullptr; ///< the integrator's additions (null: none)
   std::unique_ptr<MassBalance> balance_;
   std::unique_ptr<ContactOutput> contact_; ///< null without contact pairs
   std::unique_ptr<CellEvaluator> cells_;   ///< for cell-quantity probes and averages

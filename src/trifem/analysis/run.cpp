@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "trifem/analysis/run.hpp"
 
-#include "trifem/analysis/explicit_run.hpp"
+#include "trifem/analysis/explicit_step.hpp"
 #include "trifem/analysis/output_writer.hpp"
 #include "trifem/analysis/run_files.hpp"
 #include "trifem/contact/contact_term.hpp"
@@ -22,6 +22,8 @@
 #include <fmt/ranges.h>
 #include <fstream>
 #include <iostream>
+#include <list>
+#include <map>
 #include <new>
 #include <nlohmann/json.hpp>
 #include <numeric>
@@ -148,13 +150,19 @@ void note_roundoff_floor(const model::Model& model, const solver::StepInfo& info
             info.step, info.newton->final_residual, edges.min, edges.max, edges.max / edges.min);
 }
 
-/// build_model with errors prefixed by the case file, like the reader's.
-std::unique_ptr<model::Model> build_model_for(const io::CaseSpec& spec) {
+/// Runs `f`, prefixing an InputError with the case file, like the reader's messages.
+template <class F>
+decltype(auto) with_case_file(const io::CaseSpec& spec, F&& f) {
   try {
-    return model::build_model(spec);
+    return f();
   } catch (const InputError& e) {
     throw InputError(fmt::format("{}: {}", spec.file.string(), e.what()));
   }
+}
+
+/// build_model with errors prefixed by the case file.
+std::unique_ptr<model::Model> build_model_for(const io::CaseSpec& spec) {
+  return with_case_file(spec, [&] { return model::build_model(spec); });
 }
 
 /// The linear solver of the case; InputErrors (unknown or unused PETSc options) prefixed with
@@ -364,7 +372,7 @@ solver::StepSettings step_settings(const io::CaseSpec& spec, std::size_t k) {
 solver::RunReport run_steps(const io::CaseSpec& spec, model::Model& model,
                             solver::NewtonSolver& newton, const solver::StepObserver& observer,
                             const std::function<void(const solver::StepController&)>& on_start,
-                            const Resume* resume) {
+                            const Resume* resume, const ExplicitRunner& run_explicit) {
   const Real tol = 1e-10 * std::max(1.0, spec.time.end_time);
   const int before = resume ? resume->steps : 0; // steps of the run before the restart
   solver::RunReport run;
@@ -384,7 +392,15 @@ solver::RunReport run_steps(const io::CaseSpec& spec, model::Model& model,
                                             observer(whole);
                                           }));
   };
+  const auto explicit_step = [&](std::optional<std::size_t> k) {
+    TRIFEM_VERIFY(run_explicit, "a dynamic-explicit step without its integrator");
+    accumulate(run, run_explicit(k));
+  };
   if (model.steps.empty()) {
+    if (spec.is_explicit()) {
+      explicit_step(std::nullopt);
+      return run;
+    }
     if (spec.analysis.type == io::AnalysisType::Dynamic)
       model.problem->set_dynamic(true, !resume);
     run_over(step_settings(spec));
@@ -403,9 +419,17 @@ solver::RunReport run_steps(const io::CaseSpec& spec, model::Model& model,
                                      (k > 0 && spec.steps[k - 1].is_dynamic()));
       model.problem->set_dynamic(spec.steps[k].is_dynamic(), !moving);
     }
+    const bool is_explicit = spec.steps[k].is_explicit();
     log::info("analysis step {} '{}'{}: t = {:.6g} to {:.6g} s, {} prescribed DOFs", k + 1,
-              step.name, spec.steps[k].is_dynamic() ? " (dynamic)" : "", step.start_time,
-              step.end_time, model.dofs.num_constrained());
+              step.name,
+              is_explicit                  ? " (dynamic-explicit, from the current state at rest)"
+              : spec.steps[k].is_dynamic() ? " (dynamic)"
+                                           : "",
+              step.start_time, step.end_time, model.dofs.num_constrained());
+    if (is_explicit) {
+      explicit_step(k);
+      continue;
+    }
     solver::StepSettings settings = step_settings(spec, k);
     if (spec.steps[k].steady) {
       settings.steady_dt = steady_pseudo_step(model);
@@ -433,47 +457,111 @@ solver::NewtonSettings newton_settings(const io::SolverSpec& s) {
 
 namespace {
 
-int run_any_case(const io::CaseSpec& spec, const std::filesystem::path& output_dir,
-                 const RunOptions& options) {
-  if (spec.is_explicit() || spec.has_explicit_step()) {
-    TRIFEM_CHECK(!parallel::active(),
-                 "{}: the explicit analysis runs on one process; run this case without mpirun "
-                 "(started on {} processes)",
-                 spec.file.string(), parallel::size());
-    TRIFEM_CHECK(options.restart_file.empty() && !options.write_restart && !spec.output.restart,
-                 "{}: restart files are written and read by quasi-static analyses only{}",
-                 spec.file.string(),
-                 spec.has_explicit_step() ? " (not in a case with a dynamic-explicit step)" : "");
-    return spec.is_explicit() ? run_explicit_case(spec, output_dir)
-                              : run_mixed_case(spec, output_dir);
-  }
-  return run_quasi_static_case(spec, output_dir, options);
-}
-
-} // namespace
-
-int run_case(const io::CaseSpec& spec, const std::filesystem::path& output_dir,
-             const RunOptions& options) {
+/// Builds the dynamic-explicit step `k` of `spec` (nullopt: the whole case) on `model` at its
+/// current state and time `start`; InputErrors prefixed with the case file (and the step).
+std::unique_ptr<ExplicitStep> explicit_step(const io::CaseSpec& spec, const io::CaseSpec& part,
+                                            std::optional<std::size_t> k, model::Model& model,
+                                            Real start) {
   try {
-    return run_any_case(spec, output_dir, options);
-  } catch (const std::bad_alloc&) { // reported by the caller; the summary must not say running
-    abandon_summary("out of memory: the model is too large for the memory available");
-    throw;
+    return std::make_unique<ExplicitStep>(part, model, start);
   } catch (const InputError& e) {
-    abandon_summary(e.what());
-    throw;
-  } catch (const std::exception& e) {
-    abandon_summary(fmt::format("internal error: {}", e.what()));
-    throw;
+    if (!k)
+      throw InputError(fmt::format("{}: {}", spec.file.string(), e.what()));
+    throw InputError(fmt::format("{} (dynamic-explicit, t = {:.6g} s): {}", spec.steps[*k].key,
+                                 start, e.what()));
   }
 }
 
-int run_quasi_static_case(const io::CaseSpec& spec, const std::filesystem::path& output_dir,
-                          const RunOptions& options, const FollowUp& follow_up,
-                          std::unique_ptr<model::Model> model) {
+/// The dynamic-explicit steps of a run and what summary.json says of them.
+class ExplicitSteps {
+public:
+  /// A dynamic-explicit case builds its step (and estimates its time step) at once: an invalid
+  /// case then creates no output.
+  ExplicitSteps(const io::CaseSpec& spec, model::Model& model) : spec_(spec), model_(model) {
+    if (spec.has_explicit_step())
+      with_case_file(spec, [&] { check_explicit_outputs(model); });
+    if (spec.is_explicit()) {
+      parts_.push_back(explicit_part(spec, std::nullopt));
+      whole_ = explicit_step(spec, parts_.back(), std::nullopt, model, 0.0);
+    }
+  }
+  void log_settings() const {
+    if (whole_)
+      whole_->log_settings();
+  }
+  /// Runs step k (nullopt: the whole case) into `output`.
+  solver::RunReport run(std::optional<std::size_t> k, OutputWriter& output) {
+    std::unique_ptr<ExplicitStep> step = std::move(whole_);
+    const Real start = model_.problem->time();
+    if (k) {
+      parts_.push_back(explicit_part(spec_, k));
+      try {
+        step = explicit_step(spec_, parts_.back(), k, model_, start);
+      } catch (const InputError& e) {
+        solver::RunReport failed;
+        failed.end_time = start;
+        failed.failure = e.what();
+        return failed;
+      }
+      step->log_settings();
+    }
+    const std::string history = k ? fmt::format("history_step{}.csv", *k + 1) : "history.csv";
+    solver::RunReport report = step->run(output, history, !k);
+    failed_ = !report.success;
+    nlohmann::json entries = step->summary();
+    ran_.push_back(std::move(step)); // a dynamic-explicit case's history stays in use
+    if (k)
+      entries.update(
+          {{"step", spec_.steps[*k].name}, {"start_time_s", start}, {"history", history}});
+    summaries_.push_back(std::move(entries));
+    histories_[k.value_or(0)] = history;
+    return report;
+  }
+  /// True if the last step that ran was an explicit one that stopped early.
+  bool failed() const { return failed_; }
+  /// Adds the entries of the explicit steps that ran to summary.json.
+  void add_to(nlohmann::json& summary) const {
+    if (summaries_.empty())
+      return;
+    if (spec_.is_explicit()) {
+      summary["analysis"] = "dynamic-explicit";
+      summary.update(summaries_.front());
+      return;
+    }
+    summary["analysis"] = "quasi-static, dynamic-explicit";
+    summary["dynamic_explicit"] = summaries_.back();
+    nlohmann::json steps = nlohmann::json::array();
+    Real start = 0.0;
+    for (std::size_t k = 0; k < spec_.steps.size(); ++k) {
+      const io::StepSpec& step = spec_.steps[k];
+      const auto history = histories_.find(k);
+      steps.push_back({{"name", step.name},
+                       {"analysis", step.is_explicit() ? "dynamic-explicit" : "quasi-static"},
+                       {"start_time_s", start},
+                       {"end_time_s", step.time.end_time},
+                       {"history", history != histories_.end() ? history->second : "history.csv"}});
+      start = step.time.end_time;
+    }
+    summary["analysis_steps"] = steps;
+  }
+
+private:
+  const io::CaseSpec& spec_;
+  model::Model& model_;
+  std::list<io::CaseSpec> parts_; ///< what each step sees (its steps refer to them)
+  std::unique_ptr<ExplicitStep> whole_;
+  std::vector<std::unique_ptr<ExplicitStep>> ran_;
+  std::vector<nlohmann::json> summaries_;
+  std::map<std::size_t, std::string> histories_;
+  bool failed_ = false;
+};
+
+/// Runs a case on its model: every analysis step, results in `output_dir`.
+int run_model(const io::CaseSpec& spec, const std::filesystem::path& output_dir,
+              const RunOptions& options) {
   const auto start = Clock::now();
-  if (!model)
-    model = build_model_for(spec);
+  std::unique_ptr<model::Model> model = build_model_for(spec);
+  ExplicitSteps explicit_steps(spec, *model);
   std::optional<Resume> resume;
   if (!options.restart_file.empty())
     resume = resume_from(options.restart_file, spec, *model);
@@ -486,10 +574,12 @@ int run_quasi_static_case(const io::CaseSpec& spec, const std::filesystem::path&
   OutputWriter output(*model, spec.output, output_dir, spec.time.end_time);
   const std::string log_failure = open_run_log(output_dir);
   log_model(spec, *model);
+  explicit_steps.log_settings();
   log_partition(*model);
 
   solver::NewtonSolver newton(newton_settings(spec.solver), std::move(linear_solver));
-  log_linear_solver(spec.solver, model->problem->num_equations());
+  if (!spec.is_explicit())
+    log_linear_solver(spec.solver, model->problem->num_equations());
   const solver::StepController* controller = nullptr; // of the current analysis step
   solver::RunReport run;
   solver::Linearization initial;
@@ -502,7 +592,8 @@ int run_quasi_static_case(const io::CaseSpec& spec, const std::filesystem::path&
   } else if (!initial.residual.allFinite()) {
     run.failure = "the forces of the initial state (t = 0) are not finite: a material parameter "
                   "or a load is beyond what the laws can evaluate";
-  } else if (std::string why = write_initial_state(output, resume); !why.empty()) {
+  } else if (std::string why = spec.is_explicit() ? "" : write_initial_state(output, resume);
+             !why.empty()) { // the explicit analysis writes its own initial state
     run.failure = why;
   } else {
     bool noted = false;
@@ -526,44 +617,68 @@ int run_quasi_static_case(const io::CaseSpec& spec, const std::filesystem::path&
     };
     run = run_steps(
         spec, *model, newton, observer, [&](const solver::StepController& c) { controller = &c; },
-        resume ? &*resume : nullptr);
-    if (!run.success)
+        resume ? &*resume : nullptr,
+        [&](std::optional<std::size_t> k) { return explicit_steps.run(k, output); });
+    if (!run.success && !explicit_steps.failed()) // (an explicit step writes its own)
       write_last_state(*model, output, run);
-  }
-  FollowUpReport later; // of the part after the quasi-static steps
-  if (run.success && follow_up) {
-    later = follow_up(*model, output);
-    run.success = later.success;
-    run.interrupted = later.interrupted;
-    run.failure = later.failure;
   }
   const double wall = std::chrono::duration<double>(Clock::now() - start).count();
   nlohmann::json summary_json =
       summary(spec, *model, run, newton.times(), output.seconds(), wall, output.balance());
-  if (follow_up && !later.summary.is_null()) {
-    summary_json["end_time_s"] = later.end_time;
-    summary_json.update(later.summary);
-  }
-  log::info("{}: {} steps, {} Newton iterations, {} cutbacks, {:.2f} s (assembly {:.2f}, "
+  explicit_steps.add_to(summary_json);
+  log::info("{}: {} steps, {} {} iterations, {} {}, {:.2f} s (assembly {:.2f}, "
             "factorization {:.2f}, solve {:.2f}, output {:.2f})",
             run.success       ? "completed"
             : run.interrupted ? "INTERRUPTED"
                               : "FAILED",
-            run.steps, run.iterations, run.cutbacks, wall, newton.times().assembly,
+            run.steps, run.iterations, spec.is_explicit() ? "multiplier" : "Newton", run.cutbacks,
+            spec.is_explicit() ? "halvings" : "cutbacks", wall, newton.times().assembly,
             newton.times().factorization, newton.times().solve, output.seconds());
   log::info("results: {} ({} VTU files), {}, {}", output.pvd_file().string(), output.vtu_count(),
             output.history_file().string(), (output_dir / "summary.json").string());
   return finish_run(spec, output_dir, summary_json, run);
 }
 
+int run_any_case(const io::CaseSpec& spec, const std::filesystem::path& output_dir,
+                 const RunOptions& options) {
+  if (spec.is_explicit() || spec.has_explicit_step()) {
+    TRIFEM_CHECK(!parallel::active(),
+                 "{}: the explicit analysis runs on one process; run this case without mpirun "
+                 "(started on {} processes)",
+                 spec.file.string(), parallel::size());
+    TRIFEM_CHECK(options.restart_file.empty() && !options.write_restart && !spec.output.restart,
+                 "{}: restart files are written and read by quasi-static analyses only{}",
+                 spec.file.string(),
+                 spec.has_explicit_step() ? " (not in a case with a dynamic-explicit step)" : "");
+  }
+  return run_model(spec, output_dir, options);
+}
+
+} // namespace
+
+int run_case(const io::CaseSpec& spec, const std::filesystem::path& output_dir,
+             const RunOptions& options) {
+  try {
+    return run_any_case(spec, output_dir, options);
+  } catch (const std::bad_alloc&) { // reported by the caller; the summary must not say running
+    abandon_summary("out of memory: the model is too large for the memory available");
+    throw;
+  } catch (const InputError& e) {
+    abandon_summary(e.what());
+    throw;
+  } catch (const std::exception& e) {
+    abandon_summary(fmt::format("internal error: {}", e.what()));
+    throw;
+  }
+}
+
 int check_case(const io::CaseSpec& spec) {
-  if (spec.is_explicit())
-    return check_explicit_case(spec);
   std::unique_ptr<model::Model> model = build_model_for(spec);
-  if (spec.has_explicit_step())
-    check_explicit_step(spec, *model);
-  linear_solver_for(spec); // unknown or unused PETSc options
   log_model(spec, *model);
+  const ExplicitSteps explicit_steps(spec, *model); // the stable step of an explicit analysis
+  explicit_steps.log_settings();
+  if (!spec.is_explicit())
+    linear_solver_for(spec); // unknown or unused PETSc options
   log::info("check passed: the case is valid");
   return kSuccess;
 }

@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <functional>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 namespace trifem::analysis {
 
@@ -40,14 +41,20 @@ solver::StepSettings step_settings(const io::CaseSpec& spec);
 /// end_time, with the output times and load-curve kinks inside it as must points.
 solver::StepSettings step_settings(const io::CaseSpec& spec, std::size_t k);
 
-/// Runs every analysis step of `model` (one without [[step]] tables) from its current state,
-/// calling `observer` after every accepted step with the step count of the whole run.
+/// Runs a dynamic-explicit step: [[step]] k, or the whole case (nullopt), on the model in its
+/// current step and state.
+using ExplicitRunner = std::function<solver::RunReport(std::optional<std::size_t> k)>;
+
+/// Runs every analysis step of `model` (one without [[step]] tables) from its current state:
+/// quasi-static and implicit dynamic ones with Newton, calling `observer` after every accepted
+/// step with the step count of the whole run; dynamic-explicit ones with `run_explicit`.
 /// Returns the totals of the run; it stops at the first step that fails.
 /// With `resume`, the run continues from a restart state already read into `model`.
 solver::RunReport run_steps(const io::CaseSpec& spec, model::Model& model,
                             solver::NewtonSolver& newton, const solver::StepObserver& observer,
                             const std::function<void(const solver::StepController&)>& on_start,
-                            const Resume* resume = nullptr);
+                            const Resume* resume = nullptr,
+                            const ExplicitRunner& run_explicit = {});
 
 /// Newton settings of a case ([solver]).
 solver::NewtonSettings newton_settings(const io::SolverSpec& s);
@@ -64,30 +71,6 @@ struct RunOptions {
 /// Runs a case; results go to `output_dir`. Returns an ExitCode.
 int run_case(const io::CaseSpec& spec, const std::filesystem::path& output_dir,
              const RunOptions& options = {});
-
-class OutputWriter;
-
-/// What the part of a run after its quasi-static steps reports (the dynamic-explicit step of a
-/// mixed case).
-struct FollowUpReport {
-  bool success = true;
-  bool interrupted = false;
-  std::string failure;    ///< why it stopped ("" if it completed)
-  Real end_time = 0.0;    ///< time reached [s]
-  nlohmann::json summary; ///< entries added to summary.json
-};
-
-/// Continues a run whose quasi-static steps completed, on their model and from their final
-/// state, writing into their output (results.pvd).
-using FollowUp = std::function<FollowUpReport(model::Model&, OutputWriter&)>;
-
-/// run_case for a quasi-static case; `follow_up`, if given, continues the run once its steps
-/// completed, and its report decides the status and end time of summary.json. `model`, if
-/// given, is the model to run (built from a case whose steps begin with those of `spec`);
-/// otherwise it is built from `spec`.
-int run_quasi_static_case(const io::CaseSpec& spec, const std::filesystem::path& output_dir,
-                          const RunOptions& options, const FollowUp& follow_up = {},
-                          std::unique_ptr<model::Model> model = nullptr);
 
 /// Validates a case (file, mesh, sets, materials) without solving; prints a summary.
 int check_case(const io::CaseSpec& spec);

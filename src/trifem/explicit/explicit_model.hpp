@@ -1,16 +1,12 @@
 // SPDX-License-Identifier: MIT
-// The discrete model of an explicit run: mesh, laws, densities, fixities and surface loads, with
-// everything that does not change during the run precomputed (cell geometry, lumped mass,
-// node-to-cell incidence).
+// What the explicit integrator reads of the shared model, with everything that does not change
+// during a step precomputed: cell geometry, lumped mass, node-to-cell incidence.
 #pragma once
 
-#include "trifem/dofs/load_curve.hpp"
 #include "trifem/fe/hex8.hpp"
 #include "trifem/material/elastic_law.hpp"
 #include "trifem/mesh/mesh.hpp"
 
-#include <memory>
-#include <string>
 #include <utility>
 #include <vector>
 
@@ -20,81 +16,30 @@ struct Model;
 
 namespace trifem::explicit_dynamics {
 
-/// u_k = 0 on the nodes of a named node set (k = 0, 1, 2).
-struct Fixity {
-  std::string node_set;
-  int component = 0;
-};
-
-/// What a surface load applies.
-enum class LoadKind {
-  FollowerPressure, ///< p(t) on the current surface, f_a = −p ∫ N_a n da (p > 0 pushes in)
-  DeadTraction      ///< t(t) per reference area, f_a = t ∫ N_a dA
-};
-
-/// A load on a named surface, scaled by a load curve.
-struct SurfaceLoad {
-  LoadKind kind = LoadKind::FollowerPressure;
-  std::string surface;
-  Real pressure = 0.0;          ///< [MPa], FollowerPressure
-  Vec3 traction = Vec3::Zero(); ///< [MPa], DeadTraction
-  dofs::LoadCurve curve = dofs::LoadCurve::constant();
-};
-
-/// One material of the model: a law W(C) and a mass density.
-struct ExplicitMaterial {
-  std::shared_ptr<const material::ElasticLaw> law; ///< W(C) (shared, immutable)
-  Real density = 0.0;                              ///< ρ [t/mm³] (> 0)
-};
-
-/// Everything the user specifies besides the mesh. One material for every cell: set `law` and
-/// `density`. Several materials: leave `law` empty and give `materials` with `cell_material`.
-struct ModelSpec {
-  std::shared_ptr<const material::ElasticLaw> law; ///< single-material shorthand: W(C) of all cells
-  Real density = 0.0;                              ///< single-material shorthand: ρ [t/mm³]
-  std::vector<ExplicitMaterial> materials;         ///< several materials (used if `law` is empty)
-  std::vector<int> cell_material; ///< index into `materials` of every cell (size num_cells)
-  std::vector<Fixity> fixities;
-  std::vector<SurfaceLoad> loads;
-};
-
 /// CSR list of the (cell, local node) pairs incident to every node.
 struct NodeIncidence {
   std::vector<Index> offsets;                 ///< size num_nodes + 1
   std::vector<std::pair<Index, int>> entries; ///< (cell, local node 0..7), sorted by cell
 };
 
-/// A surface load with its facets resolved.
-struct ResolvedLoad {
-  SurfaceLoad load;
-  std::vector<mesh::Facet> facets;
-  std::vector<Eigen::Matrix<Real, 4, 1>> nodal_area; ///< ∫ N_a dA per facet (dead traction)
-};
-
-/// The immutable discrete model. DOF numbering: 3 a + k for node a, component k.
+/// The explicit view of a model::Model in its current step. Vectors are indexed 3 a + k for
+/// node a, component k (mapped to the model's DOFs where loads are evaluated). The model must
+/// outlive the view.
 class ExplicitModel {
 public:
-  /// Validates the spec (named sets exist, ρ > 0, every cell has a material and
-  /// det(∂X/∂ξ) > 0) and precomputes the geometry, the lumped mass and the incidence. The
-  /// single-material shorthand is stored as `materials` = {law, density}. Throws InputError.
-  ExplicitModel(mesh::Mesh mesh, ModelSpec spec);
-  /// The model of the shared `model` (its solid cells, laws and densities) in its current
-  /// step: the DOFs it constrains are fixed (they keep the displacement they start from), and
-  /// `loads` act on the surfaces. The mesh is copied. InputError if a cell has no solid law or
-  /// no density, or a DOF is tied to another (rigid bodies).
-  ExplicitModel(const model::Model& model, std::vector<SurfaceLoad> loads);
+  /// The solid cells (laws, densities) of `model`; the DOFs it constrains in its current step
+  /// follow their prescribed values (prescribe()); its load terms give F_S. Throws InputError if
+  /// a cell has no solid law or no density, a DOF is tied to another (rigid bodies), a node
+  /// belongs to no cell, or a cell is inverted.
+  explicit ExplicitModel(const model::Model& model);
 
+  /// The model it views.
+  const model::Model& source() const { return model_; }
   const mesh::Mesh& mesh() const { return mesh_; }
   /// W(C) of cell c.
-  const material::ElasticLaw& law(Index c) const {
-    return *spec_.materials[spec_.cell_material[c]].law;
-  }
+  const material::ElasticLaw& law(Index c) const { return *laws_[c]; }
   /// ρ of cell c [t/mm³].
-  Real density(Index c) const { return spec_.materials[spec_.cell_material[c]].density; }
-  /// The materials, indexed by material_of().
-  const std::vector<ExplicitMaterial>& materials() const { return spec_.materials; }
-  /// Index into materials() of cell c.
-  int material_of(Index c) const { return spec_.cell_material[c]; }
+  Real density(Index c) const { return densities_[c]; }
   Index num_cells() const { return mesh_.num_cells(); }
   Index num_dofs() const { return 3 * mesh_.num_nodes(); }
 
@@ -106,31 +51,48 @@ public:
   const Vector& lengths() const { return lengths_; }
   /// Row-sum lumped mass per DOF, m_a = ∫ ρ N_a dV [t].
   const Vector& mass() const { return mass_; }
-  /// 1/m per DOF, 0 on fixed DOFs (their acceleration is zero) [1/t].
+  /// The lumped mass of the free DOFs, 0 on fixed ones (they move as prescribed) [t].
+  const Vector& free_mass() const { return free_mass_; }
+  /// 1/m per DOF, 0 on fixed DOFs (the forces do not move them) [1/t].
   const Vector& inverse_mass() const { return inverse_mass_; }
-  /// true for DOFs with u = 0 prescribed.
+  /// true for DOFs the model constrains (fixed or prescribed).
   const std::vector<char>& fixed() const { return fixed_; }
+  /// true if a constrained DOF moves (a non-zero prescribed value).
+  bool has_prescribed_motion() const { return prescribed_motion_; }
+  /// Writes the prescribed values at time t into the constrained entries of U (3 a + k).
+  void prescribe(Real time, Vector& U) const;
   const NodeIncidence& incidence() const { return incidence_; }
-  const std::vector<ResolvedLoad>& loads() const { return loads_; }
+
+  /// true if the model has load terms (surface loads of the case or of its steps).
+  bool has_loads() const;
+  /// f = F_S(t, U) = −Σ over the model's load terms of their residual at U and time t [N]
+  /// (follower pressures on the current surface, dead tractions per reference area), size
+  /// num_dofs, overwritten; fixed DOFs included.
+  void external_force(const Vector& U, Real time, Vector& f) const;
+
+  /// Writes v (3 a + k) into the displacement entries of the model's DOF vector x.
+  void scatter(const Vector& v, Vector& x) const;
+  /// The displacement entries of the model's DOF vector x, 3 a + k.
+  Vector gather(const Vector& x) const;
 
   /// The 8 x 3 nodal displacements of cell c taken from the global vector U.
   fe::HexCoords cell_values(Index c, const Vector& U) const;
 
 private:
-  void check_materials();
   void build_geometry();
   void build_mass();
-  void fix(const std::vector<char>& fixed);
   void build_incidence();
-  void resolve_loads();
 
-  mesh::Mesh mesh_;
-  ModelSpec spec_;
+  const model::Model& model_;
+  const mesh::Mesh& mesh_;
+  std::vector<const material::ElasticLaw*> laws_;
+  std::vector<Real> densities_;
+  std::vector<Index> dofs_; ///< the model's DOF of 3 a + k
   std::vector<fe::HexGeometry> geometry_;
-  Vector volumes_, lengths_, mass_, inverse_mass_;
+  Vector volumes_, lengths_, mass_, free_mass_, inverse_mass_;
   std::vector<char> fixed_;
+  bool prescribed_motion_ = false;
   NodeIncidence incidence_;
-  std::vector<ResolvedLoad> loads_;
 };
 
 } // namespace trifem::explicit_dynamics

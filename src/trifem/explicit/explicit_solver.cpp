@@ -7,7 +7,6 @@
 #include "trifem/core/log.hpp"
 #include "trifem/explicit/lambda_system.hpp"
 #include "trifem/explicit/stable_step.hpp"
-#include "trifem/explicit/surface_loads.hpp"
 
 #include <cmath>
 #include <limits>
@@ -66,20 +65,21 @@ void ExplicitSolver::initialize(const InitialState& initial) {
   U_ = given_or_zero(initial.displacement, n, "displacement");
   V_ = given_or_zero(initial.velocity, n, "velocity");
   const Real largest = U_.lpNorm<Eigen::Infinity>();
+  Vector prescribed = Vector::Zero(n);
+  model_.prescribe(initial.time, prescribed);
   for (Index d = 0; d < n; ++d) {
     if (!model_.fixed()[d])
       continue;
-    // a fixed DOF holds zero displacement: a displaced one would jump back in the first step
-    TRIFEM_CHECK(std::abs(U_[d]) <= 1e-12 * largest,
-                 "explicit: node {} is fixed in component {} but starts displaced by {:.6g} mm "
-                 "(fixed components hold zero displacement)",
-                 d / 3, "xyz"[d % 3], U_[d]);
-    U_[d] = 0.0;
+    // a constrained DOF holds its prescribed value: another one would jump in the first step
+    TRIFEM_CHECK(std::abs(U_[d] - prescribed[d]) <= 1e-12 * largest,
+                 "explicit: node {} is constrained in component {} to {:.6g} mm but starts at "
+                 "{:.6g} mm",
+                 d / 3, "xyz"[d % 3], prescribed[d], U_[d]);
+    U_[d] = prescribed[d];
     V_[d] = 0.0;
   }
   time_ = initial.time;
   lambda_ = Vector::Zero(model_.num_cells());
-  follower_ = has_follower_loads(model_);
   const CellStatus status =
       evaluate_cells(model_, settings_.constraint, U_, {true, true, true, false}, fields_);
   TRIFEM_CHECK(status.ok(), "explicit: initial state: {} in cell {}", status.quantity, status.cell);
@@ -87,6 +87,7 @@ void ExplicitSolver::initialize(const InitialState& initial) {
     initial_multiplier();
   lambda_old_ = lambda_;
   update_end_forces();
+  support_step_ = Vector::Zero(n); // from rest
   const Energies e = energies();
   initial_energy_ = e.kinetic + e.strain;
 }
@@ -107,7 +108,7 @@ void ExplicitSolver::initial_multiplier() {
 
 void ExplicitSolver::update_end_forces() {
   gather(model_, fields_.internal, nullptr, f_int_);
-  external_force(model_, U_, time_, f_ext_);
+  model_.external_force(U_, time_, f_ext_);
 }
 
 void ExplicitSolver::estimate_stable_step() {
@@ -250,9 +251,15 @@ Energies ExplicitSolver::energies() const {
   Energies e;
   e.initial = initial_energy_;
   e.external_work = external_work_;
+  if (model_.has_prescribed_motion()) { // the supports' work from t_{n−½} to t_n
+    const Vector R = reaction_force();
+    for (Index d = 0; d < R.size(); ++d)
+      if (model_.fixed()[d])
+        e.external_work += 0.5 * R[d] * support_step_[d];
+  }
   e.damping_work = damping_work_;
   const Vector v = velocity();
-  e.kinetic = 0.5 * v.cwiseAbs2().dot(model_.mass());
+  e.kinetic = 0.5 * v.cwiseAbs2().dot(model_.free_mass()); // prescribed DOFs: the support's
   CellFields w;
   const CellStatus s =
       evaluate_cells(model_, settings_.constraint, U_, {false, false, false, true}, w);

@@ -158,6 +158,7 @@ private:
   Vector U_, V_, lambda_, lambda_old_; ///< U^n, v^{n-1/2}, Λ^n, Λ^{n-1}
   Vector f_ext_;                       ///< F_S(t_n, U^n)
   Vector f_int_;                       ///< Q_V(U^n) gathered
+  Vector support_step_; ///< U^n − U^{n−1} (the work of moving supports over the last step)
   CellFields fields_;
   CellFields work_; ///< scratch of the iteration, swapped with fields_ on acceptance
   Real time_ = 0.0, dt_prev_ = 0.0, dt_current_ = 0.0;
@@ -165,7 +166,6 @@ private:
   int successes_since_halving_ = 0;
   Real external_work_ = 0.0, damping_work_ = 0.0;
   Real initial_energy_ = 0.0; ///< kinetic + strain at t0
-  bool follower_ = false;
   TimeStepInfo dt_info_;
   SolverTimings timings_;
 

@@ -25,7 +25,6 @@
 
 #include "trifem/core/error.hpp"
 #include "trifem/explicit/lambda_system.hpp"
-#include "trifem/explicit/surface_loads.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -64,10 +63,10 @@ constexpr const char* kAxis[3] = {"x", "y", "z"};
 Vector ExplicitSolver::explicit_force(const CellFields& f, const Vector& U, Real time) const {
   Vector q, fs;
   gather(model_, f.internal, nullptr, q);
-  if (follower_ || time != time_)
-    external_force(model_, U, time, fs);
+  if (model_.has_loads()) // a follower pressure depends on U
+    model_.external_force(U, time, fs);
   else
-    fs = f_ext_;
+    fs = f_ext_; // zero
   return fs - q;
 }
 
@@ -76,7 +75,9 @@ StepReport ExplicitSolver::try_step(Real dt) {
   const Real beta = 1.0 + 0.5 * settings_.damping * dt_avg;
   const Real gamma = (1.0 - 0.5 * settings_.damping * dt_avg) / beta;
   const Real h2 = dt * dt_avg / beta;
-  const Vector U_pred = U_ + (dt * gamma) * V_;
+  Vector U_pred = U_ + (dt * gamma) * V_;
+  if (model_.has_prescribed_motion()) // constrained DOFs move as prescribed (m⁻¹ = 0 there)
+    model_.prescribe(time_ + dt, U_pred);
   if (const Index i = first_non_finite(f_ext_); i >= 0)
     return fatal(StepStatus::NonFinite,
                  fmt::format("non-finite external force F_{} at node {}", kAxis[i % 3], i / 3));
@@ -295,9 +296,20 @@ StepReport ExplicitSolver::check_finite(const Vector& U, const Vector& lambda) c
 }
 
 void ExplicitSolver::commit(Real dt, Real dt_avg, Vector& U, Vector& lambda, CellFields& fields) {
+  // The force of the step on the moving supports, as the free DOFs felt it: reading B
+  // Q_n + H_n Λ^{n+1} − F_n (after update_end_forces, reading A: all of it at U^{n+1}).
+  Vector support;
+  if (model_.has_prescribed_motion() && settings_.reading == Reading::B) {
+    support = f_int_ - f_ext_;
+    if (settings_.multiplier) {
+      Vector pressure;
+      gather(model_, fields_.gradient, &lambda, pressure);
+      support += pressure;
+    }
+  }
   Vector V_new = (U - U_) / dt;
   const Vector v_mid = 0.5 * (V_ + V_new);
-  damping_work_ += settings_.damping * dt_avg * v_mid.cwiseAbs2().dot(model_.mass());
+  damping_work_ += settings_.damping * dt_avg * v_mid.cwiseAbs2().dot(model_.free_mass());
   Vector f_ext_old = f_ext_;
   const Vector dU = U - U_;
   U_.swap(U);
@@ -313,6 +325,16 @@ void ExplicitSolver::commit(Real dt, Real dt_avg, Vector& U, Vector& lambda, Cel
     update_end_forces();
   }
   external_work_ += 0.5 * (f_ext_old + f_ext_).dot(dU);
+  if (model_.has_prescribed_motion()) { // the work of the supports that move the body
+    if (settings_.reading == Reading::A)
+      support = reaction_force();
+    Real work = 0.0; // over the step's own interval [t_{n−½}, t_{n+½}], as its kicks
+    for (Index d = 0; d < support.size(); ++d)
+      if (model_.fixed()[d])
+        work += support[d] * 0.5 * (support_step_[d] + dU[d]);
+    external_work_ += work;
+    support_step_ = dU;
+  }
 }
 
 } // namespace trifem::explicit_dynamics

@@ -34,8 +34,6 @@ void reject_tables(const Table& parent, std::string_view key, std::string_view w
 
 /// [[boundary.*]] entries an explicit analysis cannot apply.
 void check_explicit_boundary(const Table& boundary) {
-  reject_tables(boundary, "prescribed",
-                "only zero displacements can be prescribed: use boundary.fixed");
   reject_tables(boundary, "impermeable", "no fluid or ion fields");
   reject_tables(boundary, "bath", "no fluid or ion fields");
   for (const Table& t : boundary.tables("fixed"))

@@ -32,11 +32,6 @@ void read_step_conditions(const Table& t, const CaseSpec& spec, StepSpec& step) 
         fail(i.find("surface"), i.path("surface"),
              "an impermeable surface of any orientation acts in every step: give it in "
              "[[boundary.impermeable]] (a step may use 'set' and 'normal')");
-    if (step.is_explicit())
-      for (const Table& p : boundary->tables("prescribed"))
-        fail(p.where(), p.path(),
-             "not supported in dynamic-explicit steps (only zero displacements can be "
-             "prescribed: use boundary.fixed)");
   }
   read_boundary(t, conditions);
   read_loads(t, conditions);
@@ -84,7 +79,7 @@ void read_explicit_step_time(const Table& t, TimeSpec& s, Real start) {
 }
 
 /// What a dynamic-explicit step needs of the whole case: solid materials with a density, no
-/// contact, rigid bodies or conditions it cannot apply, and quasi-static steps before it only.
+/// contact, rigid bodies or conditions it cannot apply, and a step before it.
 void check_explicit_step(const Table& t, const CaseSpec& spec,
                          const std::vector<StepSpec>& earlier) {
   if (earlier.empty())
@@ -110,10 +105,6 @@ void check_explicit_step(const Table& t, const CaseSpec& spec,
   if (!spec.rigid_bodies.empty())
     explicit_step_error(t, "the case has [[rigid_body]] tables (use boundary.fixed in the "
                            "step for a clamped part)");
-  if (!spec.prescribed.empty())
-    explicit_step_error(t, "the case has [[boundary.prescribed]] conditions, which act in every "
-                           "step: a dynamic-explicit step prescribes zero displacements only "
-                           "(give the prescribed displacements in the quasi-static steps)");
   if (!spec.impermeable_surfaces.empty() || !spec.baths.empty())
     explicit_step_error(t, "the case has impermeable surfaces or baths (no fluid or ion fields "
                            "in dynamic-explicit steps)");
@@ -133,11 +124,6 @@ StepSpec read_step(const Table& t, const CaseSpec& spec, Real start,
            fmt::format("duplicate step name (already used by {})", earlier[i].key));
   step.analysis =
       t.choice("analysis", analysis_options(), std::optional(spec.analysis.type), "analysis type");
-  if (!earlier.empty() && earlier.back().is_explicit())
-    fail(t.where(), t.path(),
-         fmt::format("a dynamic-explicit step ({}) must be the last step: steps after it are not "
-                     "supported",
-                     earlier.back().key));
   if (step.is_explicit()) {
     check_explicit_step(t, spec, earlier);
     read_explicit_step_time(t, step.time, start);

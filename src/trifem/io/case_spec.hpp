@@ -429,8 +429,11 @@ struct CaseSpec {
   std::vector<std::string> warnings;
 
   bool is_explicit() const { return analysis.type == AnalysisType::DynamicExplicit; }
-  /// A quasi-static case whose last [[step]] is dynamic-explicit (a mixed run).
-  bool has_explicit_step() const { return !steps.empty() && steps.back().is_explicit(); }
+  /// A case with a dynamic-explicit [[step]] (among quasi-static ones).
+  bool has_explicit_step() const {
+    return std::any_of(steps.begin(), steps.end(),
+                       [](const StepSpec& s) { return s.is_explicit(); });
+  }
   /// The analysis or one of its [[step]]s is implicit dynamic (the model has inertia).
   bool has_dynamic_step() const {
     return analysis.type == AnalysisType::Dynamic ||

@@ -256,16 +256,20 @@ std::unique_ptr<Model> build_model(const io::CaseSpec& spec) {
   auto terms = bulk_terms(spec, materials, *model);
   for (auto& t : contact_terms(spec, *model))
     terms.push_back(std::move(t));
-  for (auto& t : load_terms(spec, *model))
+  for (auto& t : load_terms(spec, *model)) {
+    model->loads.push_back(t.get());
     terms.push_back(std::move(t));
+  }
   auto bcs = boundary_conditions(spec, *model);
   bcs.push_back(unused_dofs(*model, terms));
   dofs::NodalFrames frames = impermeable_surfaces(spec, *model, bcs);
   if (auto forces = rigid_bodies(spec, *model, bcs))
     terms.push_back(std::move(forces));
   model->case_conditions = bcs;
-  for (auto& t : step_terms(spec, *model))
+  for (auto& t : step_terms(spec, *model)) {
+    model->loads.push_back(t.get());
     terms.push_back(std::move(t));
+  }
   dofs::constrain_all(bcs, model->dofs);
   model->dofs.finalize();
 

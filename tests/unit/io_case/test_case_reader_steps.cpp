@@ -143,9 +143,6 @@ const std::vector<BadCase> kBadSteps = {
     {"explicit_first",
      kDenseModel + kRelease,
      {"step[1].analysis = 'dynamic-explicit'", "follows at least one quasi-static step"}},
-    {"step_after_explicit",
-     kDenseModel + kStretch + kRelease + "[[step]]\nduration = 1.0\ndt = 1.0\n",
-     {"step[3]", "must be the last step", "step[2]"}},
     {"explicit_with_material_axes",
      replaced_in(kDenseModel, "density = 1e-9\n",
                  "density = 1e-9\n[materials.soft.axes]\ntype = \"vector\"\na = [0, 1, 0]\n"
@@ -160,16 +157,6 @@ const std::vector<BadCase> kBadSteps = {
          "[materials.gel]\ntype = \"biphasic\"\nphi_s0 = 0.2\npermeability = 1e-3\n"
          "[materials.gel.solid]\ntype = \"neo-hookean\"\nE = 1.0\n",
      {"step[2].analysis = 'dynamic-explicit'", "material 'gel' is biphasic", "solid models"}},
-    {"explicit_with_case_prescribed",
-     kDenseModel +
-         "[[boundary.prescribed]]\nset = \"block.zmax\"\ncomponent = \"z\"\n"
-         "value = 0.01\n" +
-         kStretch + kRelease,
-     {"step[2].analysis = 'dynamic-explicit'", "[[boundary.prescribed]]", "zero displacements"}},
-    {"explicit_step_prescribed",
-     kDenseModel + kStretch + kRelease +
-         "[[step.boundary.prescribed]]\nset = \"block.zmax\"\ncomponent = \"z\"\nvalue = 0.0\n",
-     {"step[2].boundary.prescribed[1]", "not supported in dynamic-explicit steps"}},
     {"explicit_step_dt_max",
      kDenseModel + kStretch + replaced_in(kRelease, "duration", "dt_max = 1e-5\nduration"),
      {"step[2].dt_max", "quasi-static steps only"}},

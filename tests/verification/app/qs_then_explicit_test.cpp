@@ -255,4 +255,37 @@ TEST_F(QuasiStaticThenExplicit, FreeEndOscillatesWithTheFirstAxialPeriod) {
   EXPECT_NEAR(lowest, -amplitude, 0.05 * amplitude); // about the undeformed length
 }
 
+TEST_F(QuasiStaticThenExplicit, QuasiStaticStepAfterTheReleaseReturnsToTheStretchedState) {
+  // stretch, release (the bar vibrates), stretch again to the same prescribed end: the third
+  // step starts from the vibrating explicit state on the same mesh and ends at the equilibrium
+  // of the first
+  const std::string text = kCase + R"(
+[[step]]
+name = "restretch"
+duration = 1.0
+dt = 0.25
+[[step.boundary.prescribed]]
+set = "bar.xmax"
+component = "x"
+value = 0.1
+)";
+  ASSERT_EQ(run_text(dir_, "three_steps", text), 0);
+  const test::History qs = test::read_history(dir_ / "three_steps" / "history.csv");
+  const test::History ex = test::read_history(dir_ / "three_steps" / "history_step2.csv");
+  const auto& t = qs["time [s]"];
+  ASSERT_NEAR(t.back(), kQsEnd + kDuration + 1.0, 1e-12) << "the third step ends the run";
+  const auto first_end = std::find(t.begin(), t.end(), kQsEnd);
+  ASSERT_NE(first_end, t.end());
+  const std::size_t i = static_cast<std::size_t>(first_end - t.begin()), last = t.size() - 1;
+  ASSERT_GT(last, i) << "the rows of the third step follow those of the first";
+  EXPECT_GT(std::abs(ex["tip.ux [mm]"].back() - qs["tip.ux [mm]"][i]), 1e-3)
+      << "the release moved the free end";
+  for (const char* column : {"tip.ux [mm]", "corner.ux [mm]", "corner.uy [mm]", "middle.ux [mm]"})
+    EXPECT_NEAR(qs[column][last], qs[column][i], 1e-9 * kLength) << column;
+  const nlohmann::json summary =
+      nlohmann::json::parse(std::ifstream(dir_ / "three_steps" / "summary.json"));
+  EXPECT_EQ(summary["status"], "completed");
+  EXPECT_EQ(summary["analysis_steps"][2]["history"], "history.csv");
+}
+
 } // namespace

@@ -4,8 +4,7 @@
 // the library's, and a damped uniaxial case settles to the closed-form homogeneous state.
 #include "exact_uniaxial.hpp"
 #include "fixtures.hpp"
-#include "trifem/analysis/explicit_case.hpp"
-#include "trifem/analysis/explicit_run.hpp"
+#include "trifem/analysis/run.hpp"
 
 #include "trifem/io/case_reader.hpp"
 #include "trifem/mesh/box.hpp"
@@ -74,7 +73,7 @@ private:
 /// Reads `toml` as the case file `dir`/case.toml and runs it; returns history.csv.
 Columns run_case_text(const std::string& toml, const fs::path& dir) {
   const io::CaseSpec spec = io::parse_case(toml, dir / "case.toml");
-  EXPECT_EQ(analysis::run_explicit_case(spec, dir / "out"), 0);
+  EXPECT_EQ(analysis::run_case(spec, dir / "out"), 0);
   return read_csv(dir / "out" / "history.csv");
 }
 
@@ -173,7 +172,7 @@ point = [2.0, 4.0, 1.0]
 )";
 
 /// The same model built directly with the library.
-ExplicitModel two_bodies_model() {
+test::TestModel two_bodies_model() {
   mesh::BoxSpec soft, stiff;
   soft.name = "soft";
   soft.size = Vec3(2.0, 1.0, 1.0);
@@ -184,25 +183,15 @@ ExplicitModel two_bodies_model() {
   stiff.divisions = {2, 1, 1};
   mesh::Mesh mesh = mesh::make_box(soft);
   mesh.append(mesh::make_box(stiff));
-  ModelSpec spec;
-  spec.materials = {
-      {material::create_law("neo-hookean", {{"E", 2.0}, {"nu", 0.0}}, "rubber"), 1.0},
-      {material::create_law("saint-venant-kirchhoff", {{"E", 6.0}, {"nu", 0.2}}, "plastic"), 2.0}};
-  spec.cell_material.assign(16, 0);
-  spec.cell_material.resize(18, 1);
-  for (int k = 0; k < 3; ++k)
-    spec.fixities.insert(spec.fixities.end(), {{"soft.xmin", k}, {"stiff.xmin", k}});
-  SurfaceLoad pressure;
-  pressure.surface = "soft.zmax";
-  pressure.pressure = 0.05;
-  pressure.curve = dofs::LoadCurve({{0.0, 0.0}, {1.0, 1.0}}, dofs::Interpolation::Smooth);
-  SurfaceLoad traction;
-  traction.kind = LoadKind::DeadTraction;
-  traction.surface = "stiff.xmax";
-  traction.traction = Vec3(0.0, 0.02, -0.03);
-  traction.curve = dofs::LoadCurve({{0.0, 1.0}}, dofs::Interpolation::Step);
-  spec.loads = {pressure, traction};
-  return ExplicitModel(std::move(mesh), std::move(spec));
+  io::MaterialSpec plastic;
+  plastic.type = "saint-venant-kirchhoff";
+  plastic.parameters = {{"E", 6.0}, {"nu", 0.2}};
+  plastic.density = 2.0;
+  test::ExplicitTestCase c(std::move(mesh), test::deviatoric_material(1.0, 1.0));
+  c.block("stiff", plastic).fix("soft.xmin", {0, 1, 2}).fix("stiff.xmin", {0, 1, 2});
+  c.pressure("soft.zmax", 0.05, test::smooth_ramp(1.0));
+  c.traction("stiff.xmax", Vec3(0.0, 0.02, -0.03), test::step_curve());
+  return test::TestModel(c);
 }
 
 ExplicitSettings two_bodies_settings() {
@@ -423,15 +412,18 @@ TEST(ExplicitCaseFile, DocumentedExampleBuilds) {
   const auto end = text.find("```", body + 8);
   ASSERT_NE(end, std::string::npos);
   const io::CaseSpec spec = io::parse_case(text.substr(body + 8, end - body - 8), doc);
-  const std::unique_ptr<model::Model> shared = model::build_model(spec);
-  analysis::ExplicitCase c = analysis::explicit_case(spec, shared->mesh);
-  analysis::build_explicit_model(c, *shared);
-  EXPECT_EQ(c.model->num_cells(), 270);
-  EXPECT_EQ(c.model->density(0), 1.1e-9);
-  EXPECT_EQ(c.settings.stable_step, StableStepMethod::PowerIteration);
-  EXPECT_EQ(c.settings.stable_step_interval, 0);
-  EXPECT_EQ(c.settings.penalty, 4000.0);
-  EXPECT_EQ(c.settings.time_step, 0.0);
-  ASSERT_EQ(c.probes.size(), 1u);
-  EXPECT_LT((c.model->mesh().node(c.probes[0].node) - Vec3(10.0, 0.5, 0.5)).norm(), 0.3);
+  const test::TestModel model(model::build_model(spec));
+  EXPECT_EQ(model.num_cells(), 270);
+  EXPECT_EQ(model.density(0), 1.1e-9);
+  EXPECT_EQ(spec.explicit_dynamics.stable_step, StableStepMethod::PowerIteration);
+  EXPECT_EQ(spec.explicit_dynamics.stable_step_interval, 0);
+  EXPECT_EQ(spec.explicit_dynamics.penalty, 4000.0);
+  EXPECT_EQ(spec.time.dt, 0.0);
+  ASSERT_EQ(model.shared->probes.size(), 1u);
+  const model::Probe& tip = model.shared->probes[0];
+  EXPECT_EQ(tip.quantity->name, "displacement");
+  Vec3 centroid = Vec3::Zero();
+  for (const Index node : model.mesh().cell(tip.cell))
+    centroid += model.mesh().node(node) / 8.0;
+  EXPECT_LT((centroid - Vec3(10.0, 0.5, 0.5)).norm(), 0.3) << "the cell of the tip";
 }

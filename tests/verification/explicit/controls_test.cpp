@@ -4,7 +4,7 @@
 // the stop on a non-finite value with the output written so far kept.
 #include "fixtures.hpp"
 
-#include "trifem/explicit/history.hpp"
+#include "solver_history.hpp"
 #include "trifem/explicit/stable_step.hpp"
 #include "trifem/mesh/box.hpp"
 
@@ -18,34 +18,30 @@
 
 using namespace trifem;
 using namespace trifem::explicit_dynamics;
+using namespace trifem::test;
 
 namespace {
 
-/// A 4 x 2 x 2 bar of 1 x 0.5 x 0.5 cells, clamped at x = 0, dead traction on x = 4.
-ExplicitModel bar(const dofs::LoadCurve& curve, Real traction = 0.05) {
+/// The 4 x 2 x 2 bar of 1 x 0.5 x 0.5 cells, clamped at x = 0, dead traction on x = 4.
+test::ExplicitTestCase bar_case(const io::MaterialSpec& material, Real traction) {
   mesh::BoxSpec box;
   box.name = "bar";
   box.size = Vec3(4.0, 1.0, 1.0);
   box.divisions = {4, 2, 2};
-  ModelSpec spec;
-  spec.law = test::deviatoric_neo_hookean(1.0);
-  spec.density = 2.0;
-  spec.fixities = {{"bar.xmin", 0}, {"bar.xmin", 1}, {"bar.xmin", 2}};
-  SurfaceLoad load;
-  load.kind = LoadKind::DeadTraction;
-  load.surface = "bar.xmax";
-  load.traction = Vec3(0.0, traction, 0.0);
-  load.curve = curve;
-  spec.loads = {load};
-  return ExplicitModel(mesh::make_box(box), spec);
+  test::ExplicitTestCase c(mesh::make_box(box), material);
+  c.fix("bar.xmin", {0, 1, 2}).traction("bar.xmax", Vec3(0.0, traction, 0.0), test::step_curve());
+  return c;
 }
 
-const dofs::LoadCurve kStep({{0.0, 1.0}}, dofs::Interpolation::Step);
+/// The bar of μ = 1, ρ = 2 under a sudden traction.
+test::TestModel bar(Real traction = 0.05) {
+  return test::TestModel(bar_case(test::deviatoric_material(1.0, 2.0), traction));
+}
 
 } // namespace
 
 TEST(ExplicitControls, LumpedMassIsRowSumAndConservesTotalMass) {
-  const ExplicitModel model = bar(kStep);
+  const test::TestModel model = bar();
   // relative to each exact value: sums of positive quadrature terms, a few ulp each
   const Real volume = 4.0, density = 2.0, corner = density * 0.25 / 8.0;
   EXPECT_NEAR(model.mass().sum() / 3.0, density * volume, 1e-13 * density * volume); // ρ V
@@ -56,7 +52,7 @@ TEST(ExplicitControls, LumpedMassIsRowSumAndConservesTotalMass) {
 }
 
 TEST(ExplicitControls, PowerIterationIsBelowTheElementBound) {
-  const ExplicitModel model = bar(kStep);
+  const test::TestModel model = bar();
   const Vector U = Vector::Zero(model.num_dofs());
   const FrequencyEstimate iso =
       power_iteration_omega(model, Constraint::JMinusOne, U, {}, true, 200, 1e-6);
@@ -71,7 +67,7 @@ TEST(ExplicitControls, PowerIterationIsBelowTheElementBound) {
 }
 
 TEST(ExplicitControls, RequestedStepAboveTheEstimateIsReduced) {
-  const ExplicitModel model = bar(kStep);
+  const test::TestModel model = bar();
   ExplicitSettings s;
   s.time_step = 10.0;
   ExplicitSolver solver(model, s);
@@ -88,7 +84,7 @@ TEST(ExplicitControls, RequestedStepAboveTheEstimateIsReduced) {
 }
 
 TEST(ExplicitControls, ReadingAIterationConvergesOnlyBelowOneOverOmega) {
-  const ExplicitModel model = bar(kStep, 0.2);
+  const test::TestModel model = bar(0.2);
   ExplicitSettings probe;
   probe.reading = Reading::A;
   const Real omega = ExplicitSolver(model, probe).time_step_info().omega;
@@ -108,7 +104,7 @@ TEST(ExplicitControls, ReadingAIterationConvergesOnlyBelowOneOverOmega) {
 }
 
 TEST(ExplicitControls, NonConvergedStepIsRepeatedWithHalfTheStep) {
-  const ExplicitModel model = bar(kStep, 0.2);
+  const test::TestModel model = bar(0.2);
   ExplicitSettings probe;
   probe.reading = Reading::A;
   const Real omega = ExplicitSolver(model, probe).time_step_info().omega;
@@ -130,7 +126,7 @@ namespace {
 class FailingLaw final : public material::ElasticLaw {
 public:
   explicit FailingLaw(Real threshold)
-      : base_(test::deviatoric_neo_hookean(1.0)), threshold_(threshold) {}
+      : base_(test::law_of(test::deviatoric_material(1.0, 1.0))), threshold_(threshold) {}
   Real energy(const Mat3& C) const override { return base_->energy(C); }
   Mat3 stress(const Mat3& C) const override {
     return C.trace() - 3.0 > threshold_ ? Mat3::Constant(std::nan("")) : base_->stress(C);
@@ -150,21 +146,10 @@ private:
 } // namespace
 
 TEST(ExplicitControls, NonFiniteValueStopsTheRunNamingStepCellAndQuantityKeepingHistory) {
-  mesh::BoxSpec box;
-  box.name = "bar";
-  box.size = Vec3(4.0, 1.0, 1.0);
-  box.divisions = {4, 2, 2};
-  ModelSpec spec;
-  spec.law = std::make_shared<FailingLaw>(0.01);
-  spec.density = 2.0;
-  spec.fixities = {{"bar.xmin", 0}, {"bar.xmin", 1}, {"bar.xmin", 2}};
-  SurfaceLoad load;
-  load.kind = LoadKind::DeadTraction;
-  load.surface = "bar.xmax";
-  load.traction = Vec3(0.0, 0.2, 0.0);
-  load.curve = kStep;
-  spec.loads = {load};
-  const ExplicitModel model(mesh::make_box(box), spec);
+  std::unique_ptr<model::Model> shared = bar_case(test::deviatoric_material(1.0, 2.0), 0.2).build();
+  for (model::CellMaterial& m : shared->materials)
+    m.solid = std::make_shared<FailingLaw>(0.01);
+  const test::TestModel model(std::move(shared));
   ExplicitSolver solver(model, ExplicitSettings{});
   const std::filesystem::path file =
       std::filesystem::temp_directory_path() / "trifem_explicit_nonfinite_history.csv";

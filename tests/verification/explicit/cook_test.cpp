@@ -5,8 +5,8 @@
 // (docs/theory/reference-solutions.md §R8.5).
 #include "fixtures.hpp"
 
-#include "trifem/explicit/history.hpp"
-#include "trifem/explicit/mesh_builders.hpp"
+#include "generated_meshes.hpp"
+#include "solver_history.hpp"
 
 #include <gtest/gtest.h>
 
@@ -15,6 +15,7 @@
 
 using namespace trifem;
 using namespace trifem::explicit_dynamics;
+using namespace trifem::test;
 
 namespace {
 
@@ -22,22 +23,14 @@ constexpr Real kCookMu = 1.0;
 constexpr Real kShear = 0.02; ///< shear traction on the loaded edge [MPa] (resultant 0.32 N)
 
 /// Cook's membrane: x = 0 clamped, u_z = 0 everywhere (plane strain), vertical dead traction
-/// on x = 48 with the given load curve. `law` = the explicit part W.
-ExplicitModel cook_model(int n, std::shared_ptr<const material::ElasticLaw> law,
-                         const dofs::LoadCurve& curve) {
-  CookSpec cook;
+/// on x = 48 with the given load curve. `material` = the explicit part W.
+test::TestModel cook_model(int n, const io::MaterialSpec& material, const io::CurveSpec& curve) {
+  test::CookSpec cook;
   cook.nx = cook.ny = n;
-  ModelSpec spec;
-  spec.law = std::move(law);
-  spec.density = 1.0;
-  spec.fixities = {{"cook.xmin", 0}, {"cook.xmin", 1}, {"cook.xmin", 2}, {"cook.all", 2}};
-  SurfaceLoad load;
-  load.kind = LoadKind::DeadTraction;
-  load.surface = "cook.xmax";
-  load.traction = Vec3(0.0, kShear, 0.0);
-  load.curve = curve;
-  spec.loads = {load};
-  return ExplicitModel(make_cook_membrane(cook), spec);
+  test::ExplicitTestCase c(test::make_cook_membrane(cook), material);
+  c.fix("cook.xmin", {0, 1}).fix("cook.all", {2});
+  c.traction("cook.xmax", Vec3(0.0, kShear, 0.0), curve);
+  return test::TestModel(c);
 }
 
 struct SuddenLoad {
@@ -46,8 +39,8 @@ struct SuddenLoad {
 };
 
 SuddenLoad sudden_load(Reading reading, Real alpha, Real t_end) {
-  const ExplicitModel model = cook_model(8, test::deviatoric_neo_hookean(kCookMu),
-                                         dofs::LoadCurve({{0.0, 1.0}}, dofs::Interpolation::Step));
+  const test::TestModel model =
+      cook_model(8, test::deviatoric_material(kCookMu, 1.0), test::step_curve());
   ExplicitSettings s;
   s.reading = reading;
   s.penalty = alpha;
@@ -101,10 +94,10 @@ namespace {
 
 /// Tip deflection (mean u_y of the loaded edge) after a slow ramp and damped hold.
 Real quasi_static_tip(int n, bool mixed) {
-  const auto law = mixed ? test::deviatoric_neo_hookean(kCookMu)
-                         : test::compressible_neo_hookean(kCookMu, 1e3 * kCookMu);
-  const ExplicitModel model =
-      cook_model(n, law, dofs::LoadCurve({{0.0, 0.0}, {50.0, 1.0}}, dofs::Interpolation::Smooth));
+  const io::MaterialSpec material = mixed
+                                        ? test::deviatoric_material(kCookMu, 1.0)
+                                        : test::compressible_material(kCookMu, 1e3 * kCookMu, 1.0);
+  const test::TestModel model = cook_model(n, material, test::smooth_ramp(50.0));
   ExplicitSettings s;
   s.multiplier = mixed;
   s.penalty = 1e3 * kCookMu;
@@ -130,8 +123,8 @@ TEST(ExplicitCook, PureDisplacementQ1LocksWhereTheMultiplierDoesNot) {
 }
 
 TEST(ExplicitCook, ReusedFactorizationGivesTheSameSolution) {
-  const ExplicitModel model = cook_model(8, test::deviatoric_neo_hookean(kCookMu),
-                                         dofs::LoadCurve({{0.0, 1.0}}, dofs::Interpolation::Step));
+  const test::TestModel model =
+      cook_model(8, test::deviatoric_material(kCookMu, 1.0), test::step_curve());
   Vector tip[2];
   long solves[2], factorizations[2];
   for (int i = 0; i < 2; ++i) {

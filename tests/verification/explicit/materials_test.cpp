@@ -1,11 +1,10 @@
 // SPDX-License-Identifier: MIT
 // Several materials in one explicit model: the lumped mass uses each cell's density, the cell
 // loop each cell's law (two disjoint cubes of different stiffness each reach their own exact
-// uniaxial state), and one material given per cell equals the single-material shorthand.
+// uniaxial state).
 #include "exact_uniaxial.hpp"
 #include "fixtures.hpp"
 
-#include "trifem/core/error.hpp"
 #include "trifem/mesh/box.hpp"
 
 #include <gtest/gtest.h>
@@ -16,24 +15,6 @@ using namespace trifem::explicit_dynamics;
 namespace {
 
 constexpr Real kAlpha = 1e3;
-
-/// Two unit cubes of 2x2x2 cells, "a" at the origin and "b" at x = 2, each with rollers on its
-/// min faces and the dead traction (P, 0, 0) on its xmax face, ramped smoothly over 5 s.
-ModelSpec two_cube_loads(Real P) {
-  ModelSpec spec;
-  for (const char* cube : {"a", "b"}) {
-    const std::string name = cube;
-    spec.fixities.insert(spec.fixities.end(),
-                         {{name + ".xmin", 0}, {name + ".ymin", 1}, {name + ".zmin", 2}});
-    SurfaceLoad load;
-    load.kind = LoadKind::DeadTraction;
-    load.surface = name + ".xmax";
-    load.traction = Vec3(P, 0.0, 0.0);
-    load.curve = dofs::LoadCurve({{0.0, 0.0}, {5.0, 1.0}}, dofs::Interpolation::Smooth);
-    spec.loads.push_back(load);
-  }
-  return spec;
-}
 
 mesh::Mesh two_cubes() {
   mesh::BoxSpec a, b;
@@ -46,14 +27,17 @@ mesh::Mesh two_cubes() {
   return mesh;
 }
 
-/// Cube a: μ = 1, ρ = 1; cube b: μ = mu_b, ρ = 3.
-ExplicitModel two_materials(Real P, Real mu_b) {
-  ModelSpec spec = two_cube_loads(P);
-  spec.materials = {{test::deviatoric_neo_hookean(1.0), 1.0},
-                    {test::deviatoric_neo_hookean(mu_b), 3.0}};
-  spec.cell_material.assign(8, 0);
-  spec.cell_material.resize(16, 1);
-  return ExplicitModel(two_cubes(), spec);
+/// Two unit cubes of 2x2x2 cells, "a" at the origin (μ = 1, ρ = 1) and "b" at x = 2 (μ = mu_b,
+/// ρ = 3), each with rollers on its min faces and the dead traction (P, 0, 0) on its xmax face,
+/// ramped smoothly over 5 s.
+test::TestModel two_materials(Real P, Real mu_b) {
+  test::ExplicitTestCase c(two_cubes(), test::deviatoric_material(1.0, 1.0));
+  c.block("b", test::deviatoric_material(mu_b, 3.0));
+  for (const std::string cube : {"a", "b"}) {
+    c.fix(cube + ".xmin", {0}).fix(cube + ".ymin", {1}).fix(cube + ".zmin", {2});
+    c.traction(cube + ".xmax", Vec3(P, 0.0, 0.0), test::smooth_ramp(5.0));
+  }
+  return test::TestModel(c);
 }
 
 /// Mean axial and lateral stretch of a cube from its corner node (X = origin + (1, 1, 1)).
@@ -69,15 +53,15 @@ Vec3 corner_stretch(const ExplicitSolver& solver, const Vec3& origin) {
 } // namespace
 
 TEST(ExplicitMaterials, LumpedMassUsesTheDensityOfEachCell) {
-  const ExplicitModel model = two_materials(0.1, 3.0);
+  const test::TestModel model = two_materials(0.1, 3.0);
   // relative to each exact mass: sums of positive quadrature terms, a few ulp each
   const Real total = 1.0 * 1.0 + 3.0 * 1.0, corner_a = 1.0 * 0.125 / 8.0,
              first_b = 3.0 * 0.125 / 8.0;
   EXPECT_NEAR(model.mass().sum() / 3.0, total, 2.5e-14 * total); // Σ ρ V
   EXPECT_NEAR(model.mass()[0], corner_a, 5e-14 * corner_a);      // corner of a: ρ V_cell / 8
   EXPECT_NEAR(model.mass()[3 * 27], first_b, 2e-14 * first_b);   // first node of b
-  EXPECT_EQ(model.material_of(0), 0);
-  EXPECT_EQ(model.material_of(15), 1);
+  EXPECT_EQ(model.density(0), 1.0);
+  EXPECT_EQ(model.density(15), 3.0);
   EXPECT_EQ(model.law(15).shear_modulus(), 3.0);
 }
 
@@ -93,7 +77,7 @@ TEST(ExplicitMaterials, EachBodyReachesTheUniaxialStateOfItsOwnLaw) {
   }
   const test::Uniaxial b = test::uniaxial_state(mu_b, kAlpha, 0.5 * (lo + hi));
   ASSERT_NEAR(b.P, P, 1e-12);
-  const ExplicitModel model = two_materials(P, mu_b);
+  const test::TestModel model = two_materials(P, mu_b);
   ExplicitSettings s;
   s.penalty = kAlpha;
   s.damping = 2.0;
@@ -110,30 +94,4 @@ TEST(ExplicitMaterials, EachBodyReachesTheUniaxialStateOfItsOwnLaw) {
   // Λ per cell: the closed-form λ of each material (J − 1 = λ/α).
   EXPECT_NEAR(solver.multiplier()[0], a.lambda, 1e-8 * std::abs(a.lambda));
   EXPECT_NEAR(solver.multiplier()[15], b.lambda, 1e-8 * std::abs(b.lambda));
-}
-
-TEST(ExplicitMaterials, OneMaterialPerCellEqualsTheShorthand) {
-  ModelSpec listed = two_cube_loads(0.2);
-  listed.materials = {{test::deviatoric_neo_hookean(1.0), 1.0}};
-  listed.cell_material.assign(16, 0);
-  ModelSpec shorthand = two_cube_loads(0.2);
-  shorthand.law = test::deviatoric_neo_hookean(1.0);
-  shorthand.density = 1.0;
-  const ExplicitModel m1(two_cubes(), listed), m2(two_cubes(), shorthand);
-  ExplicitSolver s1(m1, ExplicitSettings{}), s2(m2, ExplicitSettings{});
-  ASSERT_TRUE(s1.run(3.0).ok());
-  ASSERT_TRUE(s2.run(3.0).ok());
-  EXPECT_EQ(s1.step_count(), s2.step_count());
-  EXPECT_EQ((s1.displacement() - s2.displacement()).lpNorm<Eigen::Infinity>(), 0.0);
-  EXPECT_GT(s1.displacement().lpNorm<Eigen::Infinity>(), 0.01);
-}
-
-TEST(ExplicitMaterials, InvalidMaterialIndexIsRejected) {
-  ModelSpec spec = two_cube_loads(0.1);
-  spec.materials = {{test::deviatoric_neo_hookean(1.0), 1.0}};
-  spec.cell_material.assign(16, 0);
-  spec.cell_material[5] = 1;
-  EXPECT_THROW((void)ExplicitModel(two_cubes(), spec), InputError);
-  spec.cell_material.resize(15);
-  EXPECT_THROW((void)ExplicitModel(two_cubes(), spec), InputError);
 }

@@ -6,8 +6,8 @@
 #include "exact_sphere.hpp"
 #include "fixtures.hpp"
 
-#include "trifem/explicit/history.hpp"
-#include "trifem/explicit/mesh_builders.hpp"
+#include "generated_meshes.hpp"
+#include "solver_history.hpp"
 
 #include <gtest/gtest.h>
 
@@ -16,39 +16,35 @@
 
 using namespace trifem;
 using namespace trifem::explicit_dynamics;
+using namespace trifem::test;
 
 namespace {
 
 const test::sphere::Sphere kSphere{};
 
-ExplicitModel sphere_model(int n, const dofs::LoadCurve& curve) {
-  ShellOctantSpec shell;
+/// The octant of n x n x n cells per patch with follower pressure μ curve(t) inside.
+test::TestModel sphere_model(int n, const io::CurveSpec& curve) {
+  test::ShellOctantSpec shell;
   shell.divisions = n;
   shell.layers = n;
-  ModelSpec spec;
-  spec.law = test::deviatoric_neo_hookean(kSphere.mu);
-  spec.density = kSphere.rho;
-  spec.fixities = {{"shell.x0", 0}, {"shell.y0", 1}, {"shell.z0", 2}};
-  SurfaceLoad p;
-  p.kind = LoadKind::FollowerPressure;
-  p.surface = "shell.inner";
-  p.pressure = kSphere.mu;
-  p.curve = curve;
-  spec.loads = {p};
-  return ExplicitModel(make_shell_octant(shell), spec);
+  test::ExplicitTestCase c(test::make_shell_octant(shell),
+                           test::deviatoric_material(kSphere.mu, kSphere.rho));
+  c.fix("shell.x0", {0}).fix("shell.y0", {1}).fix("shell.z0", {2});
+  c.pressure("shell.inner", kSphere.mu, curve);
+  return test::TestModel(c);
 }
 
 /// Inner radii after damped holds at the pressure levels P/μ = 0.158081, 0.551869, 0.755433
 /// (λ_a = 1.05, 1.25, 1.5 exactly).
 std::vector<Real> quasi_static_radii(int n, const std::vector<Real>& levels) {
-  std::vector<std::pair<Real, Real>> pts{{0.0, 0.0}};
+  io::CurveSpec curve{dofs::Interpolation::Smooth, {{0.0, 0.0}}};
   const Real ramp = 5.0, hold = 15.0;
   for (std::size_t i = 0; i < levels.size(); ++i) {
     const Real t0 = static_cast<Real>(i) * (ramp + hold);
-    pts.push_back({t0 + ramp, levels[i]});
-    pts.push_back({t0 + ramp + hold, levels[i]});
+    curve.points.push_back({t0 + ramp, levels[i]});
+    curve.points.push_back({t0 + ramp + hold, levels[i]});
   }
-  const ExplicitModel model = sphere_model(n, dofs::LoadCurve(pts, dofs::Interpolation::Smooth));
+  const test::TestModel model = sphere_model(n, curve);
   ExplicitSettings s;
   s.damping = 2.0; // ≈ critical for the breathing mode at λ_a = 1.5 (ω ≈ 0.9; 2.4 at λ_a = 1)
   ExplicitSolver solver(model, s);
@@ -104,8 +100,7 @@ struct Oscillation {
 };
 
 Oscillation step_pressure_run(int n, Reading reading, Real t_end) {
-  const ExplicitModel model =
-      sphere_model(n, dofs::LoadCurve({{0.0, 0.3}}, dofs::Interpolation::Step));
+  const test::TestModel model = sphere_model(n, {dofs::Interpolation::Step, {{0.0, 0.3}}});
   ExplicitSettings s;
   s.reading = reading;
   ExplicitSolver solver(model, s);

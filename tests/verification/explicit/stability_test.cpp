@@ -23,23 +23,15 @@ using namespace trifem::explicit_dynamics;
 namespace {
 
 /// A box of nx x ny x nz cells, clamped at x = 0, with a follower pressure on z = max.
-ExplicitModel cantilever(Vec3 size, std::array<int, 3> divisions, Real mu, Real density,
-                         Real pressure) {
+test::TestModel cantilever(Vec3 size, std::array<int, 3> divisions, Real mu, Real density,
+                           Real pressure) {
   mesh::BoxSpec box;
   box.name = "beam";
   box.size = size;
   box.divisions = divisions;
-  ModelSpec spec;
-  spec.law = test::deviatoric_neo_hookean(mu);
-  spec.density = density;
-  spec.fixities = {{"beam.xmin", 0}, {"beam.xmin", 1}, {"beam.xmin", 2}};
-  SurfaceLoad load;
-  load.kind = LoadKind::FollowerPressure;
-  load.surface = "beam.zmax";
-  load.pressure = pressure;
-  load.curve = dofs::LoadCurve({{0.0, 1.0}}, dofs::Interpolation::Step);
-  spec.loads = {load};
-  return ExplicitModel(mesh::make_box(box), spec);
+  test::ExplicitTestCase c(mesh::make_box(box), test::deviatoric_material(mu, density));
+  c.fix("beam.xmin", {0, 1, 2}).pressure("beam.zmax", pressure, test::step_curve());
+  return test::TestModel(c);
 }
 
 /// Deterministic pseudo-random displacement of amplitude `amplitude` (zero on fixed DOFs).
@@ -53,7 +45,7 @@ Vector wobble(const ExplicitModel& model, Real amplitude) {
 } // namespace
 
 TEST(ExplicitStability, MultiplierStiffnessIsTheDerivativeOfTheConstraintGradient) {
-  const ExplicitModel model = cantilever(Vec3(1.0, 0.8, 0.6), {1, 1, 1}, 1.0, 1.0, 0.0);
+  const test::TestModel model = cantilever(Vec3(1.0, 0.8, 0.6), {1, 1, 1}, 1.0, 1.0, 0.0);
   const Vector U = wobble(model, 0.15);
   constexpr Real kLambda = 0.7, kStep = 1e-6;
   for (const Constraint constraint : {Constraint::JMinusOne, Constraint::LogJ}) {
@@ -81,7 +73,7 @@ TEST(ExplicitStability, MultiplierStiffnessIsTheDerivativeOfTheConstraintGradien
 }
 
 TEST(ExplicitStability, ElementBoundStaysAboveThePowerIterationOnAStressedState) {
-  const ExplicitModel model = cantilever(Vec3(4.0, 1.0, 1.0), {8, 2, 2}, 1.0, 1.0, 0.05);
+  const test::TestModel model = cantilever(Vec3(4.0, 1.0, 1.0), {8, 2, 2}, 1.0, 1.0, 0.05);
   const Vector U = wobble(model, 0.05);
   Vector lambda(model.num_cells());
   for (Index c = 0; c < lambda.size(); ++c)
@@ -101,7 +93,7 @@ TEST(ExplicitStability, ElementBoundStaysAboveThePowerIterationOnAStressedState)
 }
 
 TEST(ExplicitStability, StepsTowardsATargetAreEqual) {
-  const ExplicitModel model = cantilever(Vec3(4.0, 1.0, 1.0), {4, 1, 1}, 1.0, 1.0, 0.01);
+  const test::TestModel model = cantilever(Vec3(4.0, 1.0, 1.0), {4, 1, 1}, 1.0, 1.0, 0.01);
   ExplicitSolver solver(model, ExplicitSettings{});
   const Real dt = solver.time_step_info().used;
   const Real target = 10.3 * dt; // 11 equal steps of 10.3/11 dt, not 10 full and one short
@@ -122,7 +114,7 @@ TEST(ExplicitStability, StepsTowardsATargetAreEqual) {
 // time cut short (one short step in 44) the total energy grew by 0.8 % per step and reached
 // 100 times the external work in 0.04 s; with equal steps it stays at round-off level.
 TEST(ExplicitStability, DefaultStepKeepsTheEnergyOfABendingCantileverBalanced) {
-  const ExplicitModel model = cantilever(Vec3(10.0, 1.0, 1.0), {30, 3, 3}, 0.4, 1.1e-9, 1.6e-4);
+  const test::TestModel model = cantilever(Vec3(10.0, 1.0, 1.0), {30, 3, 3}, 0.4, 1.1e-9, 1.6e-4);
   ExplicitSettings s;
   s.penalty = 4000.0;
   ExplicitSolver solver(model, s);
@@ -145,7 +137,7 @@ TEST(ExplicitStability, DefaultStepKeepsTheEnergyOfABendingCantileverBalanced) {
 
 TEST(ExplicitStability, EnergyBalanceFlagsTheFirstErrorAboveTheThreshold) {
   // 4 cells of 1 x 1 x 1, mu = 1: round-off floor 1e-10 x 4 mJ.
-  const ExplicitModel model = cantilever(Vec3(4.0, 1.0, 1.0), {4, 1, 1}, 1.0, 1.0, 0.01);
+  const test::TestModel model = cantilever(Vec3(4.0, 1.0, 1.0), {4, 1, 1}, 1.0, 1.0, 0.01);
   EnergyBalance balance(model);
   ASSERT_EQ(EnergyBalance::kThreshold, 0.05);
   EXPECT_FALSE(balance.record({1e-13, 0.0, 0.0, 0.0})) << "below the round-off floor";

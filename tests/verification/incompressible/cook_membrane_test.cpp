@@ -3,8 +3,8 @@
 // nu = 0.499), 100 N shear on the free edge: the mean-dilatation element converges to the
 // reference tip deflection (about 6.89 mm) while the displacement element locks.
 #include "case_runner.hpp"
+#include "generated_meshes.hpp"
 #include "run_to_run.hpp"
-#include "trifem/explicit/mesh_builders.hpp"
 
 #include <gtest/gtest.h>
 
@@ -27,9 +27,9 @@ constexpr Real kReferenceTip = 6.89;
 /// Writes the Cook's membrane of n x n x 1 cells as a Gmsh 2.2 file with the physical groups
 /// "membrane" (cells), "clamp" (the x = 0 edge) and "load" (the x = 48 mm edge).
 void write_cook_mesh(int n, const fs::path& file) {
-  explicit_dynamics::CookSpec spec;
+  test::CookSpec spec;
   spec.nx = spec.ny = n;
-  const mesh::Mesh m = explicit_dynamics::make_cook_membrane(spec);
+  const mesh::Mesh m = test::make_cook_membrane(spec);
   std::ofstream out(file);
   out << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n";
   out << "$PhysicalNames\n3\n2 1 \"clamp\"\n2 2 \"load\"\n3 3 \"membrane\"\n$EndPhysicalNames\n";

@@ -1,17 +1,45 @@
 // SPDX-License-Identifier: MIT
-#include "trifem/explicit/mesh_builders.hpp"
+// Small generated meshes of the explicit-dynamics tests and examples: a thick spherical shell
+// octant (three mapped blocks of a cubed sphere) and Cook's membrane (a mapped box).
+#pragma once
 
 #include "trifem/core/error.hpp"
 #include "trifem/mesh/box.hpp"
+#include "trifem/mesh/mesh.hpp"
 
 #include <array>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <numbers>
+#include <string>
 
-namespace trifem::explicit_dynamics {
+namespace trifem::test {
 
-mesh::Mesh transform_nodes(const mesh::Mesh& in, const std::function<Vec3(const Vec3&)>& map) {
+/// Octant 0 ≤ x, y, z of the thick spherical shell A ≤ |X| ≤ B.
+struct ShellOctantSpec {
+  std::string name = "shell";
+  Real inner = 1.0;   ///< A [mm]
+  Real outer = 2.0;   ///< B [mm]
+  int divisions = 4;  ///< cells along each edge of the three cube-face patches (3 n² per layer)
+  int layers = 4;     ///< cells through the thickness
+  Real grading = 1.0; ///< ratio of the outermost to the innermost layer thickness
+};
+
+/// Cook's membrane: the tapered panel (0,0), (48,44), (48,60), (0,44) [mm], extruded by
+/// `thickness` in z.
+struct CookSpec {
+  std::string name = "cook";
+  int nx = 8;           ///< cells along the length (x)
+  int ny = 8;           ///< cells across the height (y)
+  int nz = 1;           ///< cells through the thickness
+  Real thickness = 1.0; ///< [mm]
+};
+
+/// A copy of `mesh` with every node moved to map(X) (cells, node sets, surfaces and cell blocks
+/// kept). The map must preserve orientation (positive Jacobian) so facets stay outward.
+inline mesh::Mesh transform_nodes(const mesh::Mesh& in,
+                                  const std::function<Vec3(const Vec3&)>& map) {
   mesh::Mesh out;
   for (const Vec3& X : in.nodes())
     out.add_node(map(X));
@@ -27,13 +55,13 @@ mesh::Mesh transform_nodes(const mesh::Mesh& in, const std::function<Vec3(const 
   return out;
 }
 
-namespace {
+namespace detail {
 
 /// Lattice point (i, j, k) with max = n on the cube-face octant; unique id per point.
 using Lattice = std::array<int, 3>;
 
 /// Unit direction of a lattice point: equiangular map tan(π/4 · i/n), then normalised.
-Vec3 direction(const Lattice& p, int n) {
+inline Vec3 direction(const Lattice& p, int n) {
   Vec3 d;
   for (int k = 0; k < 3; ++k)
     d[k] = std::tan(0.25 * std::numbers::pi * p[k] / n);
@@ -41,7 +69,7 @@ Vec3 direction(const Lattice& p, int n) {
 }
 
 /// The quads of the three patches, each ordered so that its normal points outward (+r).
-std::vector<std::array<Lattice, 4>> patch_quads(int n) {
+inline std::vector<std::array<Lattice, 4>> patch_quads(int n) {
   std::vector<std::array<Lattice, 4>> quads;
   for (int s = 0; s < n; ++s)
     for (int t = 0; t < n; ++t) {
@@ -52,7 +80,7 @@ std::vector<std::array<Lattice, 4>> patch_quads(int n) {
   return quads;
 }
 
-std::vector<Real> layer_radii(const ShellOctantSpec& spec) {
+inline std::vector<Real> layer_radii(const ShellOctantSpec& spec) {
   const std::vector<Real> x =
       mesh::graded_coordinates(spec.outer - spec.inner, spec.layers, spec.grading);
   std::vector<Real> r(x.size());
@@ -63,8 +91,8 @@ std::vector<Real> layer_radii(const ShellOctantSpec& spec) {
 
 /// Node sets `<name>.x0/.y0/.z0` (lattice coordinate k = 0 on every layer), `<name>.all` and
 /// the cell block `<name>`.
-void add_plane_and_block_sets(const ShellOctantSpec& spec,
-                              const std::map<Lattice, Index>& surface_id, mesh::Mesh& m) {
+inline void add_plane_and_block_sets(const ShellOctantSpec& spec,
+                                     const std::map<Lattice, Index>& surface_id, mesh::Mesh& m) {
   const Index ns = static_cast<Index>(surface_id.size());
   for (int k = 0; k < 3; ++k) {
     std::vector<Index> plane;
@@ -83,9 +111,15 @@ void add_plane_and_block_sets(const ShellOctantSpec& spec,
   m.add_cell_block(spec.name, cells);
 }
 
-} // namespace
+} // namespace detail
 
-mesh::Mesh make_shell_octant(const ShellOctantSpec& spec) {
+/// Cubed-sphere octant: the three faces x = 1, y = 1, z = 1 of the unit cube are divided into
+/// n x n squares with equiangular spacing (tan(π/4 · i/n)), projected radially on the sphere and
+/// extruded through the thickness, so every symmetry face lies exactly in a coordinate plane.
+/// Named sets: surfaces `<name>.inner`, `<name>.outer`; node sets `<name>.x0`, `<name>.y0`,
+/// `<name>.z0` (nodes on the symmetry planes), `<name>.all`; cell block `<name>`.
+inline mesh::Mesh make_shell_octant(const ShellOctantSpec& spec) {
+  using namespace detail;
   TRIFEM_CHECK(spec.inner > 0.0 && spec.outer > spec.inner,
                "shell octant: need 0 < inner < outer (got {}, {})", spec.inner, spec.outer);
   TRIFEM_CHECK(spec.divisions >= 1 && spec.layers >= 1,
@@ -125,7 +159,9 @@ mesh::Mesh make_shell_octant(const ShellOctantSpec& spec) {
   return m;
 }
 
-mesh::Mesh make_cook_membrane(const CookSpec& spec) {
+/// A box [0,1]² x [0,t] mapped by (ξ, η, z) → (48 ξ, 44 ξ + η (44 − 28 ξ), z); the box's sets
+/// `<name>.xmin` (clamped edge, x = 0), `<name>.xmax` (loaded edge, x = 48), ..., `<name>.all`.
+inline mesh::Mesh make_cook_membrane(const CookSpec& spec) {
   TRIFEM_CHECK(spec.thickness > 0.0, "Cook membrane: thickness must be > 0");
   mesh::BoxSpec box;
   box.name = spec.name;
@@ -136,4 +172,4 @@ mesh::Mesh make_cook_membrane(const CookSpec& spec) {
   });
 }
 
-} // namespace trifem::explicit_dynamics
+} // namespace trifem::test

@@ -1,0 +1,88 @@
+// SPDX-License-Identifier: MIT
+// A dynamic-explicit analysis step of a run: the central-difference integrator of
+// explicit_dynamics over the shared model's current step, writing through the run's
+// OutputWriter.
+#pragma once
+
+#include "trifem/analysis/output_writer.hpp"
+#include "trifem/explicit/energy_balance.hpp"
+#include "trifem/explicit/explicit_solver.hpp"
+#include "trifem/io/case_spec.hpp"
+#include "trifem/model/model.hpp"
+#include "trifem/solver/time_loop.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace trifem::analysis {
+
+/// A time an explicit step must land on.
+struct StepTarget {
+  Real time = 0.0;     ///< [s]
+  bool output = false; ///< an output time (VTU file); otherwise a point of a load curve
+};
+
+/// The VTU output interval of an explicit step from `start` [s]: output.interval if given (0:
+/// every step), otherwise (end_time − start) / io::kDefaultOutputCount (about 100 files, the
+/// steps landing on them).
+Real explicit_output_interval(const io::CaseSpec& spec, Real start = 0.0);
+
+/// The times the step from `start` must land on, ascending, each > start: the multiples of the
+/// output interval (counted from 0 if output.interval is given, from `start` otherwise),
+/// output.times and time.end_time (the last) as output times, and the points of the load curves
+/// in between (as the quasi-static must points).
+std::vector<StepTarget> explicit_step_targets(const io::CaseSpec& spec, Real start = 0.0);
+
+/// The case as its dynamic-explicit step `k` sees it: the step's end_time and dt as [time]
+/// (nullopt: the whole case, a dynamic-explicit analysis).
+io::CaseSpec explicit_part(const io::CaseSpec& spec, std::optional<std::size_t> k);
+
+/// InputError if `model` has outputs an explicit step cannot write (probes of quantities other
+/// than displacement and position: its stresses would lack the multiplier's pressure).
+void check_explicit_outputs(const model::Model& model);
+
+/// One dynamic-explicit step: from the model's current displacement at rest, at its current
+/// time `start`, to part.time.end_time. Results: a history row after every step (with the
+/// integrator's columns: halvings, constraint residual, volume changes, energies), VTU states
+/// at the output times with the velocity, the multiplier, its pressure and J̄ − 1.
+class ExplicitStep {
+public:
+  /// Builds the explicit view of `model` in its current step and the solver, which estimates
+  /// the stable step; InputError if the model does not fit the explicit analysis or the step
+  /// needs more than io::kMaxSteps steps. `part` (explicit_part) and `model` must outlive it.
+  ExplicitStep(const io::CaseSpec& part, model::Model& model, Real start);
+  ~ExplicitStep();
+
+  /// Logs the materials, the scheme and the time step.
+  void log_settings() const;
+  /// Steps to the end, history rows into `history` (a file name in the output directory), the
+  /// initial state with a VTU file if `initial_volume`. Stops at the first fatal step report,
+  /// on an interrupt or when a result cannot be written. The model's state is the step's end
+  /// state (or the last accepted one). The history file named "history.csv" (a dynamic-explicit
+  /// case) stays in use with the step's columns: the step must outlive `output`'s last write.
+  solver::RunReport run(OutputWriter& output, const std::string& history, bool initial_volume);
+  /// The entries of summary.json that describe the step: counts, time step, final energies, the
+  /// energy balance, the largest volume change and the wall times.
+  nlohmann::json summary() const;
+
+private:
+  class Results;
+  void write(OutputWriter& output, const explicit_dynamics::StepReport& report, bool volume);
+  void advance(OutputWriter& output, solver::RunReport& run);
+
+  const io::CaseSpec& part_;
+  model::Model& model_;
+  Real start_;
+  std::unique_ptr<explicit_dynamics::ExplicitModel> view_;
+  std::unique_ptr<explicit_dynamics::ExplicitSolver> solver_;
+  std::unique_ptr<Results> results_;
+  explicit_dynamics::EnergyBalance balance_;
+  long halvings_ = 0;
+  double wall_seconds_ = 0.0, output_seconds_ = 0.0;
+};
+
+} // namespace trifem::analysis

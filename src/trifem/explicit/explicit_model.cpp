@@ -26,12 +26,14 @@ ExplicitModel::ExplicitModel(const model::Model& model) : model_(model), mesh_(m
   build_geometry();
   build_mass();
   fixed_.resize(num_dofs());
+  local_.assign(model.dofs.num_dofs(), -1);
   inverse_mass_.resize(num_dofs());
   free_mass_.resize(num_dofs());
   for (Index a = 0; a < mesh_.num_nodes(); ++a)
     for (int k = 0; k < 3; ++k) {
       const Index i = 3 * a + k, dof = model.dofs.dof(model.fields.u, a, k);
       dofs_.push_back(dof);
+      local_[dof] = i;
       fixed_[i] = model.dofs.is_constrained(dof) ? 1 : 0;
       TRIFEM_CHECK(fixed_[i] || mass_[i] > 0.0, "explicit model: node {} belongs to no cell", a);
       inverse_mass_[i] = fixed_[i] ? 0.0 : 1.0 / mass_[i];
@@ -50,9 +52,6 @@ void ExplicitModel::external_force(const Vector& U, Real time, Vector& f) const 
     return;
   Vector x = Vector::Zero(model_.dofs.num_dofs());
   scatter(U, x);
-  std::vector<Index> local(model_.dofs.num_dofs(), -1);
-  for (Index i = 0; i < num_dofs(); ++i)
-    local[dofs_[i]] = i;
   const physics::EvalState state{x, x, time, 0.0};
   std::vector<Index> dofs;
   physics::LocalVector r;
@@ -61,7 +60,7 @@ void ExplicitModel::external_force(const Vector& U, Real time, Vector& f) const 
       load->element_dofs(e, dofs);
       load->evaluate(e, state, r, nullptr);
       for (std::size_t j = 0; j < dofs.size(); ++j)
-        f[local[dofs[j]]] -= r[static_cast<Eigen::Index>(j)];
+        f[local_[dofs[j]]] -= r[static_cast<Eigen::Index>(j)];
     }
 }
 

@@ -87,7 +87,8 @@ private:
   const mesh::Mesh& mesh_;
   std::vector<const material::ElasticLaw*> laws_;
   std::vector<Real> densities_;
-  std::vector<Index> dofs_; ///< the model's DOF of 3 a + k
+  std::vector<Index> dofs_;  ///< the model's DOF of 3 a + k
+  std::vector<Index> local_; ///< 3 a + k of the model's displacement DOFs (−1: other fields)
   std::vector<fe::HexGeometry> geometry_;
   Vector volumes_, lengths_, mass_, free_mass_, inverse_mass_;
   std::vector<char> fixed_;

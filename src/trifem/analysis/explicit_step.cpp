@@ -149,11 +149,13 @@ void check_explicit_outputs(const model::Model& model) {
                  p.name, p.quantity->name);
 }
 
-ExplicitStep::ExplicitStep(const io::CaseSpec& part, model::Model& model, Real start)
+ExplicitStep::ExplicitStep(const io::CaseSpec& part, model::Model& model, Real start,
+                           const Vector& velocity)
     : part_(part), model_(model), start_(start), view_(std::make_unique<ed::ExplicitModel>(model)),
       balance_(*view_) {
   check_explicit_outputs(model);
-  const ed::InitialState initial{view_->gather(model.problem->state()), {}, start};
+  const ed::InitialState initial{view_->gather(model.problem->state()),
+                                 velocity.size() > 0 ? view_->gather(velocity) : Vector(), start};
   solver_ = std::make_unique<ed::ExplicitSolver>(*view_, settings_of(part), initial);
   check_step_count(part, solver_->time_step_info(), start);
   results_ = std::make_unique<Results>(*view_, *solver_, model);
@@ -265,6 +267,12 @@ solver::RunReport ExplicitStep::run(OutputWriter& output, const std::string& his
               100.0 * balance_.max_error(), history);
   wall_seconds_ = std::chrono::duration<double>(Clock::now() - start).count();
   return run;
+}
+
+Vector ExplicitStep::velocity() const {
+  Vector v = Vector::Zero(model_.dofs.num_dofs());
+  view_->scatter(solver_->velocity(), v);
+  return v;
 }
 
 nlohmann::json ExplicitStep::summary() const {

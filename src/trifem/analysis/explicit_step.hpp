@@ -45,16 +45,19 @@ io::CaseSpec explicit_part(const io::CaseSpec& spec, std::optional<std::size_t> 
 /// than displacement and position: its stresses would lack the multiplier's pressure).
 void check_explicit_outputs(const model::Model& model);
 
-/// One dynamic-explicit step: from the model's current displacement at rest, at its current
-/// time `start`, to part.time.end_time. Results: a history row after every step (with the
-/// integrator's columns: halvings, constraint residual, volume changes, energies), VTU states
+/// One dynamic-explicit step: from the model's current displacement and a given velocity, at
+/// its current time `start`, to part.time.end_time. Results: a history row after every step (with
+/// the integrator's columns: halvings, constraint residual, volume changes, energies), VTU states
 /// at the output times with the velocity, the multiplier, its pressure and J̄ − 1.
 class ExplicitStep {
 public:
   /// Builds the explicit view of `model` in its current step and the solver, which estimates
-  /// the stable step; InputError if the model does not fit the explicit analysis or the step
-  /// needs more than io::kMaxSteps steps. `part` (explicit_part) and `model` must outlive it.
-  ExplicitStep(const io::CaseSpec& part, model::Model& model, Real start);
+  /// the stable step; the step starts with `velocity` (every DOF of the model, global
+  /// components; empty: at rest; constrained DOFs move as prescribed). InputError if the model
+  /// does not fit the explicit analysis or the step needs more than io::kMaxSteps steps. `part`
+  /// (explicit_part) and `model` must outlive it.
+  ExplicitStep(const io::CaseSpec& part, model::Model& model, Real start,
+               const Vector& velocity = {});
   ~ExplicitStep();
 
   /// Logs the materials, the scheme and the time step.
@@ -68,6 +71,8 @@ public:
   /// The entries of summary.json that describe the step: counts, time step, final energies, the
   /// energy balance, the largest volume change and the wall times.
   nlohmann::json summary() const;
+  /// The velocity of the last accepted state at every DOF of the model (global components).
+  Vector velocity() const;
 
 private:
   class Results;

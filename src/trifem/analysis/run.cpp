@@ -392,9 +392,10 @@ solver::RunReport run_steps(const io::CaseSpec& spec, model::Model& model,
                                             observer(whole);
                                           }));
   };
+  Vector velocity; // of the last dynamic step's end (empty: at rest)
   const auto explicit_step = [&](std::optional<std::size_t> k) {
     TRIFEM_VERIFY(run_explicit, "a dynamic-explicit step without its integrator");
-    accumulate(run, run_explicit(k));
+    accumulate(run, run_explicit(k, velocity));
   };
   if (model.steps.empty()) {
     if (spec.is_explicit()) {
@@ -413,16 +414,18 @@ solver::RunReport run_steps(const io::CaseSpec& spec, model::Model& model,
     if (static_cast<int>(k) != model.active_step)
       model::activate_step(model, k);
     const model::ModelStep& step = model.steps[k];
+    const bool is_explicit = spec.steps[k].is_explicit();
+    if (!is_explicit && !spec.steps[k].is_dynamic())
+      velocity = Vector(); // a quasi-static step ends at rest
     if (model.problem->inertia()) {
       // a run continued from a restart file holds the motion of the step it was written in
       const bool moving = resume && (resume->time > step.start_time + tol ||
                                      (k > 0 && spec.steps[k - 1].is_dynamic()));
-      model.problem->set_dynamic(spec.steps[k].is_dynamic(), !moving);
+      model.problem->set_dynamic(spec.steps[k].is_dynamic(), !moving, velocity);
     }
-    const bool is_explicit = spec.steps[k].is_explicit();
     log::info("analysis step {} '{}'{}: t = {:.6g} to {:.6g} s, {} prescribed DOFs", k + 1,
               step.name,
-              is_explicit                  ? " (dynamic-explicit, from the current state at rest)"
+              is_explicit                  ? " (dynamic-explicit)"
               : spec.steps[k].is_dynamic() ? " (dynamic)"
                                            : "",
               step.start_time, step.end_time, model.dofs.num_constrained());
@@ -437,6 +440,7 @@ solver::RunReport run_steps(const io::CaseSpec& spec, model::Model& model,
                 settings.steady_dt);
     }
     run_over(settings);
+    velocity = model.problem->velocity();
   }
   return run;
 }
@@ -461,9 +465,9 @@ namespace {
 /// current state and time `start`; InputErrors prefixed with the case file (and the step).
 std::unique_ptr<ExplicitStep> explicit_step(const io::CaseSpec& spec, const io::CaseSpec& part,
                                             std::optional<std::size_t> k, model::Model& model,
-                                            Real start) {
+                                            Real start, const Vector& velocity = {}) {
   try {
-    return std::make_unique<ExplicitStep>(part, model, start);
+    return std::make_unique<ExplicitStep>(part, model, start, velocity);
   } catch (const InputError& e) {
     if (!k)
       throw InputError(fmt::format("{}: {}", spec.file.string(), e.what()));
@@ -489,14 +493,17 @@ public:
     if (whole_)
       whole_->log_settings();
   }
-  /// Runs step k (nullopt: the whole case) into `output`.
-  solver::RunReport run(std::optional<std::size_t> k, OutputWriter& output) {
+  /// Runs step k (nullopt: the whole case) into `output`, starting with `velocity` (empty: at
+  /// rest), which becomes that of the last accepted state.
+  solver::RunReport run(std::optional<std::size_t> k, OutputWriter& output, Vector& velocity) {
     std::unique_ptr<ExplicitStep> step = std::move(whole_);
     const Real start = model_.problem->time();
     if (k) {
       parts_.push_back(explicit_part(spec_, k));
+      log::info("  starting {}",
+                velocity.size() > 0 ? "with the velocity of the previous step" : "at rest");
       try {
-        step = explicit_step(spec_, parts_.back(), k, model_, start);
+        step = explicit_step(spec_, parts_.back(), k, model_, start, velocity);
       } catch (const InputError& e) {
         solver::RunReport failed;
         failed.end_time = start;
@@ -507,6 +514,7 @@ public:
     }
     const std::string history = k ? fmt::format("history_step{}.csv", *k + 1) : "history.csv";
     solver::RunReport report = step->run(output, history, !k);
+    velocity = step->velocity();
     failed_ = !report.success;
     nlohmann::json entries = step->summary();
     ran_.push_back(std::move(step)); // a dynamic-explicit case's history stays in use
@@ -618,7 +626,9 @@ int run_model(const io::CaseSpec& spec, const std::filesystem::path& output_dir,
     run = run_steps(
         spec, *model, newton, observer, [&](const solver::StepController& c) { controller = &c; },
         resume ? &*resume : nullptr,
-        [&](std::optional<std::size_t> k) { return explicit_steps.run(k, output); });
+        [&](std::optional<std::size_t> k, Vector& velocity) {
+          return explicit_steps.run(k, output, velocity);
+        });
     if (!run.success && !explicit_steps.failed()) // (an explicit step writes its own)
       write_last_state(*model, output, run);
   }

@@ -42,12 +42,16 @@ solver::StepSettings step_settings(const io::CaseSpec& spec);
 solver::StepSettings step_settings(const io::CaseSpec& spec, std::size_t k);
 
 /// Runs a dynamic-explicit step: [[step]] k, or the whole case (nullopt), on the model in its
-/// current step and state.
-using ExplicitRunner = std::function<solver::RunReport(std::optional<std::size_t> k)>;
+/// current step and state, starting with `velocity` (every DOF, global components; empty: at
+/// rest), which it replaces by the velocity of the step's last accepted state.
+using ExplicitRunner =
+    std::function<solver::RunReport(std::optional<std::size_t> k, Vector& velocity)>;
 
 /// Runs every analysis step of `model` (one without [[step]] tables) from its current state:
 /// quasi-static and implicit dynamic ones with Newton, calling `observer` after every accepted
-/// step with the step count of the whole run; dynamic-explicit ones with `run_explicit`.
+/// step with the step count of the whole run; dynamic-explicit ones with `run_explicit`. A
+/// dynamic step (implicit or explicit) that follows a dynamic one starts with its velocity;
+/// after a quasi-static step, at rest.
 /// Returns the totals of the run; it stops at the first step that fails.
 /// With `resume`, the run continues from a restart state already read into `model`.
 solver::RunReport run_steps(const io::CaseSpec& spec, model::Model& model,

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
-// The start of a dynamic step from a state at rest or in motion: the acceleration that
-// satisfies the equation of motion M a_0 = −g(x_0, t_0) at the free displacement equations.
+// The start of a dynamic step from a state at rest or in motion: the given velocity and the
+// acceleration that satisfies the equation of motion M a_0 = −g(x_0, t_0) at the free
+// displacement equations.
 #include "trifem/assembly/fe_problem.hpp"
 #include "trifem/core/error.hpp"
 
@@ -82,7 +83,7 @@ Vector solve_mass(const EquationMass& mass, const Vector& b) {
 
 } // namespace
 
-void FeProblem::start_motion() {
+void FeProblem::start_motion(const Vector& velocity) {
   const Vector g = static_residual(); // g(x_0, t_0) at every DOF, assembled components
   const EquationMass mass(*inertia_, map_, frames_);
   const Vector a_equations = solve_mass(mass, -mass.gather(g));
@@ -93,12 +94,15 @@ void FeProblem::start_motion() {
   frames_.to_global(a);
   Vector a_inertia(static_cast<Index>(inertia_->dofs().size()));
   Vector g_inertia(a_inertia.size());
+  Vector v_inertia = Vector::Zero(a_inertia.size());
   for (std::size_t i = 0; i < inertia_->dofs().size(); ++i) {
-    a_inertia[static_cast<Index>(i)] = a[inertia_->dofs()[i]];
-    g_inertia[static_cast<Index>(i)] = g[inertia_->dofs()[i]];
+    const Index dof = inertia_->dofs()[i];
+    a_inertia[static_cast<Index>(i)] = a[dof];
+    g_inertia[static_cast<Index>(i)] = g[dof];
+    if (velocity.size() > 0)
+      v_inertia[static_cast<Index>(i)] = velocity[dof];
   }
-  Vector at_rest = Vector::Zero(a_inertia.size());
-  inertia_->set_motion(std::move(at_rest), std::move(a_inertia));
+  inertia_->set_motion(std::move(v_inertia), std::move(a_inertia));
   inertia_->set_residual_history(std::move(g_inertia));
 }
 

@@ -187,14 +187,23 @@ void FeProblem::apply_weights() {
   assembler_->set_weights(std::move(weights));
 }
 
-void FeProblem::set_dynamic(bool dynamic, bool from_rest) {
+void FeProblem::set_dynamic(bool dynamic, bool start, const Vector& velocity) {
   TRIFEM_VERIFY(!dynamic || inertia_ != nullptr, "a dynamic step needs the inertia term");
-  if (dynamic && !dynamic_ && from_rest)
-    start_motion();
+  if (dynamic && !dynamic_ && start)
+    start_motion(velocity);
   if (dynamic && !dynamic_) // the support forces of the state the step starts from
     committed_residual_ = system_.residual;
   dynamic_ = dynamic;
   apply_weights();
+}
+
+Vector FeProblem::velocity() const {
+  if (!dynamic_)
+    return {};
+  Vector v = Vector::Zero(map_.num_dofs());
+  for (std::size_t i = 0; i < inertia_->dofs().size(); ++i)
+    v[inertia_->dofs()[i]] = inertia_->velocity()[static_cast<Index>(i)];
+  return v;
 }
 
 Vector FeProblem::static_residual() {

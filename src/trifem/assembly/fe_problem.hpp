@@ -134,11 +134,15 @@ public:
   const physics::InertiaTerm* inertia() const { return inertia_; }
   /// Makes the following steps dynamic (generalized-α with the inertia term: the other terms'
   /// residual g enters as (1 − α_f) g(x_{n+1}) + α_f g(x_n)) or quasi-static. Entering dynamics
-  /// `from_rest` (after a quasi-static step or at the start), the body starts at rest with the
-  /// acceleration M⁻¹(−g) of the current state (zero at prescribed DOFs); otherwise (a run
-  /// continued from a restart file) with the motion the inertia term holds.
-  void set_dynamic(bool dynamic, bool from_rest = true);
+  /// with `start` (after a quasi-static or dynamic-explicit step, or at the start), the body
+  /// starts with `velocity` (every DOF, global components; empty: at rest) and the acceleration
+  /// M⁻¹(−g) of the current state (zero at prescribed DOFs); otherwise (a run continued from a
+  /// restart file) with the motion the inertia term holds.
+  void set_dynamic(bool dynamic, bool start = true, const Vector& velocity = {});
   bool dynamic() const { return dynamic_; }
+  /// The velocity of the last accepted state at every DOF (global components) in a dynamic
+  /// step; empty outside them.
+  Vector velocity() const;
   const std::vector<dofs::DirichletCondition>& conditions() const { return conditions_; }
   /// Residual at every DOF of the last evaluation: reactions at constrained DOFs. In dynamic
   /// steps, that of the last accepted state, g + M a (the support forces).
@@ -166,8 +170,9 @@ private:
   /// The residual g of every term but the inertia at the current state (every DOF, in the
   /// assembled components).
   Vector static_residual();
-  /// The initial acceleration of a dynamic step (dynamic_start.cpp).
-  void start_motion();
+  /// The motion a dynamic step starts with: `velocity` (every DOF, global components; empty:
+  /// at rest) and the acceleration of the equation of motion (dynamic_start.cpp).
+  void start_motion(const Vector& velocity);
   void reset_system();
 
   const dofs::DofMap& map_;

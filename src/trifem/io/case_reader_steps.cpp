@@ -83,7 +83,7 @@ void read_explicit_step_time(const Table& t, TimeSpec& s, Real start) {
 void check_explicit_step(const Table& t, const CaseSpec& spec,
                          const std::vector<StepSpec>& earlier) {
   if (earlier.empty())
-    explicit_step_error(t, "a dynamic-explicit step follows at least one quasi-static step (for "
+    explicit_step_error(t, "a dynamic-explicit step follows at least one other step (for "
                            "a run that is dynamic-explicit from t = 0 use [analysis] type = "
                            "\"dynamic-explicit\" without [[step]])");
   for (const auto& [name, m] : spec.materials) {

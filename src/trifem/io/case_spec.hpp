@@ -385,8 +385,8 @@ struct StepSpec {
   /// reactions act as loads decreasing linearly to zero over this time [s] (0: at once).
   Real release_time = 0.0;
   /// The analysis of this step (default: the case's [analysis] type). A dynamic-explicit step
-  /// follows the quasi-static ones and starts from their final state; its time.dt is optional
-  /// (0: the stability estimate).
+  /// follows at least one other step and starts from its final state (with its velocity after
+  /// a dynamic step, at rest otherwise); its time.dt is optional (0: the stability estimate).
   AnalysisType analysis = AnalysisType::QuasiStatic;
   /// A steady-state step of a mixture model (key `steady`): at each of its times the state is
   /// the steady state under that time's loads (the transport is done in a pseudo-time step).
@@ -433,6 +433,14 @@ struct CaseSpec {
   bool has_explicit_step() const {
     return std::any_of(steps.begin(), steps.end(),
                        [](const StepSpec& s) { return s.is_explicit(); });
+  }
+  /// The analysis or one of its [[step]]s is quasi-static: its bodies must be supported (in a
+  /// dynamic step a body may fly).
+  bool has_static_step() const {
+    if (steps.empty())
+      return analysis.type == AnalysisType::QuasiStatic;
+    return std::any_of(steps.begin(), steps.end(),
+                       [](const StepSpec& s) { return s.analysis == AnalysisType::QuasiStatic; });
   }
   /// The analysis or one of its [[step]]s is implicit dynamic (the model has inertia).
   bool has_dynamic_step() const {

@@ -288,7 +288,7 @@ std::unique_ptr<Model> build_model(const io::CaseSpec& spec) {
   }
   if (!model->steps.empty())
     activate_step(*model, 0);
-  if (!spec.is_explicit()) // explicit steps need no support: a body may fly
+  if (spec.has_static_step())
     check_support(spec, *model);
   add_outputs(spec, *model);
   model->averages = make_averages(spec, *model);

@@ -224,6 +224,54 @@ TEST_F(CliExplicit, PrescribedDisplacementMovesTheEnd) {
   EXPECT_LT(std::abs(last[column_index(rows[0], "total_energy [mJ]")]), 1e-2 * work);
 }
 
+TEST_F(CliExplicit, ARunRestartedInsideTheRunContinuesTheUninterruptedOne) {
+  // the restart file holds the integrator's state (half-step velocity, multipliers, step
+  // sizes, the work done so far and the supports' last step): with a moving support and a
+  // factorization serving up to 3 steps (refactorized at every restart point in both runs),
+  // the continued run takes the same steps to round-off
+  std::string text = read_text(kBox);
+  for (const auto& [from, to] : std::vector<std::pair<std::string, std::string>>{
+           {"[[loads.traction]]",
+            "[curves.ramp]\npoints = [[0.0, 0.0], [5e-4, 1.0]]\n\n[[boundary.prescribed]]\n"
+            "set = \"bar.xmax\"\ncomponent = \"y\"\nvalue = 0.05\ncurve = \"ramp\"\n\n"
+            "[[loads.traction]]"},
+           {"penalty = 4000.0", "penalty = 4000.0\nfactorization_age = 3"}})
+    text.replace(text.find(from), from.size(), to);
+  const fs::path file = write_file("restart.toml", text);
+  const fs::path whole = output() / "whole", resumed = output() / "resumed";
+  Result r = trifem({"-q", "run", file.string(), "-o", whole.string(), "--write-restart"});
+  ASSERT_EQ(r.exit_code, kSuccess) << r;
+  std::vector<fs::path> files;
+  for (const auto& e : fs::directory_iterator(whole))
+    if (e.path().filename().string().starts_with("restart_"))
+      files.push_back(e.path());
+  std::sort(files.begin(), files.end());
+  ASSERT_EQ(files.size(), 4u) << "one per output time: 0.25, 0.5, 0.75 and 1 ms";
+  r = trifem({"-q", "run", file.string(), "-o", resumed.string(), "--restart", files[1].string()});
+  ASSERT_EQ(r.exit_code, kSuccess) << r;
+  const History a = read_history(whole / "history.csv");
+  const History b = read_history(resumed / "history.csv");
+  ASSERT_EQ(a.names, b.names);
+  ASSERT_GT(b.columns[0].size(), 10u);
+  ASSERT_EQ(a.columns[0].size() - b.columns[0].size() + 1, a.columns[0].size() / 2 + 1)
+      << "the continued run starts at 0.5 ms";
+  EXPECT_NEAR(b["time [s]"].front(), 5e-4, 1e-15);
+  const std::map<std::string, double> scale = unit_scales(a);
+  const std::size_t offset = a.columns[0].size() - b.columns[0].size();
+  for (std::size_t c = 0; c < a.names.size(); ++c) {
+    double column = 1.0; // a unitless column: against its own largest magnitude, at least 1
+    for (const double v : a.columns[c])
+      column = std::max(column, std::abs(v));
+    const std::string unit = unit_of(a.names[c]);
+    const double tolerance = 1e-12 * (unit.empty() ? column : scale.at(unit));
+    for (std::size_t i = 1; i < b.columns[c].size(); ++i) // row 0: the restart state itself
+      ASSERT_LE(std::abs(b.columns[c][i] - a.columns[c][offset + i]), tolerance)
+          << a.names[c] << " at t = " << b.columns[0][i];
+  }
+  const std::string summary = read_text(resumed / "summary.json");
+  EXPECT_EQ(json_number(summary, "steps"), json_number(read_text(whole / "summary.json"), "steps"));
+}
+
 TEST_F(CliExplicit, FluxFieldIsRejected) {
   expect_invalid_input(
       variant("flux.toml", "set = \"bar.xmin\"", "set = \"bar.xmin\"\nfield = \"fluid_flux\""),

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// The layout of restart files (format 2, src/trifem/analysis/restart.hpp), written out again
+// The layout of restart files (format 3, src/trifem/analysis/restart.hpp), written out again
 // here for tests that damage files on purpose: where each field is, and the header resealed
 // (payload size and FNV-1a 64 checksum) so that a damaged value passes the checksum and reaches
 // the checks behind it, as a file written that way by another program would.
@@ -31,6 +31,8 @@ struct RestartLayout {
   std::size_t released_count = 0;     ///< int64 (0 if no step is active)
   std::size_t histories_count = 0;    ///< int64
   std::vector<std::size_t> histories; ///< the length field of each term history
+  std::size_t velocity = 0;           ///< the length field of the velocity
+  std::size_t integrator = 0;         ///< the length field of the explicit integrator's state
   std::size_t end = 0;                ///< the size of the file
 };
 
@@ -77,6 +79,10 @@ inline RestartLayout restart_layout(const std::string& bytes) {
     l.histories.push_back(at);
     skip_array();
   }
+  l.velocity = at;
+  skip_array();
+  l.integrator = at;
+  skip_array();
   l.end = at;
   if (l.end != bytes.size())
     throw std::out_of_range("restart layout: the fields do not end at the end of the file");

@@ -155,7 +155,8 @@ ExplicitStep::ExplicitStep(const io::CaseSpec& part, model::Model& model, Real s
       balance_(*view_) {
   check_explicit_outputs(model);
   const ed::InitialState initial{view_->gather(model.problem->state()),
-                                 velocity.size() > 0 ? view_->gather(velocity) : Vector(), start};
+                                 velocity.size() > 0 ? view_->gather(velocity) : Vector(),
+                                 model.problem->time()};
   solver_ = std::make_unique<ed::ExplicitSolver>(*view_, settings_of(part), initial);
   check_step_count(part, solver_->time_step_info(), start);
   results_ = std::make_unique<Results>(*view_, *solver_, model);
@@ -189,6 +190,36 @@ void ExplicitStep::log_settings() const {
               steps);
 }
 
+namespace {
+constexpr std::size_t kStepScalars =
+    4; ///< halvings, the energy balance's scale, largest error, flag
+} // namespace
+
+std::vector<double> ExplicitStep::state() const {
+  const std::array<Real, 3> balance = balance_.state();
+  std::vector<double> s = {static_cast<double>(halvings_), balance[0], balance[1], balance[2]};
+  const std::vector<double> integrator = solver_->state();
+  s.insert(s.end(), integrator.begin(), integrator.end());
+  return s;
+}
+
+std::size_t ExplicitStep::state_size(const model::Model& model) {
+  return kStepScalars +
+         ed::ExplicitSolver::state_size(3 * model.mesh.num_nodes(), model.mesh.num_cells());
+}
+
+void ExplicitStep::restore(const std::vector<double>& state) {
+  TRIFEM_CHECK(state.size() == state_size(model_),
+               "the dynamic-explicit step's state has {} values, this model's needs {}",
+               state.size(), state_size(model_));
+  TRIFEM_CHECK(state[0] >= 0.0 && state[0] == std::floor(state[0]),
+               "the dynamic-explicit step's state is invalid ({} halvings)", state[0]);
+  solver_->restore(view_->gather(model_.problem->state()),
+                   std::vector<double>(state.begin() + kStepScalars, state.end()));
+  halvings_ = static_cast<long>(state[0]);
+  balance_.restore({state[1], state[2], state[3]});
+}
+
 void ExplicitStep::write(OutputWriter& output, const ed::StepReport& report, bool volume) {
   const auto start = Clock::now();
   Vector x = model_.problem->state();
@@ -201,7 +232,8 @@ void ExplicitStep::write(OutputWriter& output, const ed::StepReport& report, boo
   output_seconds_ += std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-void ExplicitStep::advance(OutputWriter& output, solver::RunReport& run) {
+void ExplicitStep::advance(OutputWriter& output, solver::RunReport& run,
+                           const RestartWriter& restart) {
   const bool every_step = explicit_output_interval(part_, start_) <= 0.0;
   for (const StepTarget& target : explicit_step_targets(part_, start_)) {
     const Real eps = 1e-12 * std::max(target.time, solver_->time_step_info().used);
@@ -222,7 +254,13 @@ void ExplicitStep::advance(OutputWriter& output, solver::RunReport& run) {
       run.iterations += r.iterations;
       run.end_time = solver_->time();
       const bool reached = solver_->time() >= target.time - eps;
-      write(output, r, every_step || (reached && target.output));
+      const bool volume = every_step || (reached && target.output);
+      write(output, r, volume);
+      if (volume && restart) { // the run from this file and this one factorize anew alike
+        restart({solver_->time(), solver_->time_step(), static_cast<int>(solver_->step_count()),
+                 velocity(), state()});
+        solver_->refactorize();
+      }
       log::debug("step {:6d}  t = {:<12.6g} dt = {:<10.4g} iterations {:2d}  constraint {:.1e}",
                  solver_->step_count(), solver_->time(), r.dt, r.iterations, r.constraint_residual);
     }
@@ -244,15 +282,15 @@ void ExplicitStep::advance(OutputWriter& output, solver::RunReport& run) {
 }
 
 solver::RunReport ExplicitStep::run(OutputWriter& output, const std::string& history,
-                                    bool initial_volume) {
+                                    bool initial_volume, const RestartWriter& restart) {
   const auto start = Clock::now();
   solver::RunReport run;
-  run.end_time = start_;
+  run.end_time = solver_->time();
   log::info("  initial strain energy {:.6g} mJ", solver_->initial_energy());
   try {
     output.use_history(history, results_.get());
     write(output, ed::StepReport{}, initial_volume);
-    advance(output, run);
+    advance(output, run, restart);
   } catch (const OutputError& e) { // solved, but the results cannot be written
     run.success = false;
     run.failure = fmt::format("the results at t = {:.6g} could not be written: {}", solver_->time(),
@@ -273,6 +311,10 @@ Vector ExplicitStep::velocity() const {
   Vector v = Vector::Zero(model_.dofs.num_dofs());
   view_->scatter(solver_->velocity(), v);
   return v;
+}
+
+long ExplicitStep::steps() const {
+  return solver_->step_count();
 }
 
 nlohmann::json ExplicitStep::summary() const {

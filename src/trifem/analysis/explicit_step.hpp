@@ -5,6 +5,7 @@
 #pragma once
 
 #include "trifem/analysis/output_writer.hpp"
+#include "trifem/analysis/restart.hpp"
 #include "trifem/explicit/energy_balance.hpp"
 #include "trifem/explicit/explicit_solver.hpp"
 #include "trifem/io/case_spec.hpp"
@@ -13,12 +14,17 @@
 
 #include <nlohmann/json.hpp>
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace trifem::analysis {
+
+/// Writes a restart file of the state of `resume` (its steps: those of the explicit step; its
+/// integrator state: ExplicitStep::state); called at the output times.
+using RestartWriter = std::function<void(const Resume& resume)>;
 
 /// A time an explicit step must land on.
 struct StepTarget {
@@ -52,7 +58,9 @@ void check_explicit_outputs(const model::Model& model);
 class ExplicitStep {
 public:
   /// Builds the explicit view of `model` in its current step and the solver, which estimates
-  /// the stable step; the step starts with `velocity` (every DOF of the model, global
+  /// the stable step at the model's state and time; `start` is that of the step (its output
+  /// times count from it; a step continued from a restart file began earlier). The step
+  /// starts with `velocity` (every DOF of the model, global
   /// components; empty: at rest; constrained DOFs move as prescribed). InputError if the model
   /// does not fit the explicit analysis or the step needs more than io::kMaxSteps steps. `part`
   /// (explicit_part) and `model` must outlive it.
@@ -62,22 +70,34 @@ public:
 
   /// Logs the materials, the scheme and the time step.
   void log_settings() const;
+
+  /// The step's state beyond the model's (restart files): the integrator's, the halvings and
+  /// the energy balance.
+  std::vector<double> state() const;
+  /// The number of values of state() for `model`.
+  static std::size_t state_size(const model::Model& model);
+  /// Continues from `state` (of state()) at the model's current displacement, as if the run
+  /// had not stopped there; InputError if it does not fit.
+  void restore(const std::vector<double>& state);
   /// Steps to the end, history rows into `history` (a file name in the output directory), the
   /// initial state with a VTU file if `initial_volume`. Stops at the first fatal step report,
   /// on an interrupt or when a result cannot be written. The model's state is the step's end
   /// state (or the last accepted one). The history file named "history.csv" (a dynamic-explicit
   /// case) stays in use with the step's columns: the step must outlive `output`'s last write.
-  solver::RunReport run(OutputWriter& output, const std::string& history, bool initial_volume);
+  solver::RunReport run(OutputWriter& output, const std::string& history, bool initial_volume,
+                        const RestartWriter& restart = {});
   /// The entries of summary.json that describe the step: counts, time step, final energies, the
   /// energy balance, the largest volume change and the wall times.
   nlohmann::json summary() const;
   /// The velocity of the last accepted state at every DOF of the model (global components).
   Vector velocity() const;
+  /// The steps taken so far (with those before a restart).
+  long steps() const;
 
 private:
   class Results;
   void write(OutputWriter& output, const explicit_dynamics::StepReport& report, bool volume);
-  void advance(OutputWriter& output, solver::RunReport& run);
+  void advance(OutputWriter& output, solver::RunReport& run, const RestartWriter& restart);
 
   const io::CaseSpec& part_;
   model::Model& model_;

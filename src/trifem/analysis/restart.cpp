@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "trifem/analysis/restart.hpp"
 
+#include "trifem/analysis/explicit_step.hpp"
 #include "trifem/analysis/restart_fingerprint.hpp"
 #include "trifem/core/error.hpp"
 #include "trifem/model/steps.hpp"
@@ -214,13 +215,13 @@ void check_version(std::string_view bytes, const std::string& name) {
   const auto version = load<std::int64_t>(bytes, kVersionAt);
   if (version == kRestartFormat)
     return;
-  TRIFEM_CHECK(version != 1,
-               "{}: the restart file was written by an older trifem (restart format 1); this "
+  TRIFEM_CHECK(version < 1 || version > kRestartFormat,
+               "{}: the restart file was written by an older trifem (restart format {}); this "
                "trifem reads format {}: continue the run with the trifem that wrote it, or run "
                "the case again with --write-restart",
-               name, kRestartFormat);
+               name, version, kRestartFormat);
   const auto swapped = static_cast<std::int64_t>(byte_swapped(static_cast<std::uint64_t>(version)));
-  TRIFEM_CHECK(swapped != 1 && swapped != kRestartFormat,
+  TRIFEM_CHECK(swapped < 1 || swapped > kRestartFormat,
                "{}: the restart file was written on a machine of the other byte order; restart "
                "files are read on machines of the byte order that wrote them",
                name);
@@ -407,6 +408,28 @@ std::vector<std::vector<double>> read_histories(PayloadReader& r,
   return histories;
 }
 
+/// The velocity (none, or one value per DOF) and the explicit integrator's state (none, or as
+/// many values as ExplicitStep::state_size of this model, in a dynamic-explicit step only).
+void read_motion(PayloadReader& r, const io::CaseSpec& spec, const model::Model& model, int k,
+                 Resume& resume, const std::string& name) {
+  const std::vector<double> v = r.numbers("the velocity");
+  const auto dofs = static_cast<std::size_t>(model.dofs.num_dofs());
+  TRIFEM_CHECK(v.empty() || v.size() == dofs,
+               "{}: invalid restart file: it holds {} velocities, this case's model has {} "
+               "degrees of freedom ({})",
+               name, v.size(), dofs, kUseTheWritingCase);
+  resume.velocity = Eigen::Map<const Vector>(v.data(), static_cast<Index>(v.size()));
+  resume.integrator = r.numbers("the explicit integrator's state");
+  const bool in_explicit_step =
+      k >= 0 ? spec.steps[static_cast<std::size_t>(k)].is_explicit() : spec.is_explicit();
+  const std::size_t expected = in_explicit_step ? ExplicitStep::state_size(model) : 0;
+  TRIFEM_CHECK(resume.integrator.size() == expected,
+               "{}: invalid restart file: it holds {} values of the explicit integrator's state, "
+               "{} analysis step needs {} ({})",
+               name, resume.integrator.size(), in_explicit_step ? "its dynamic-explicit" : "its",
+               expected, kUseTheWritingCase);
+}
+
 } // namespace
 
 void write_restart(const std::filesystem::path& file, const io::CaseSpec& spec,
@@ -426,6 +449,8 @@ void write_restart(const std::filesystem::path& file, const io::CaseSpec& spec,
     const std::vector<double> h = t->history();
     w.numbers(h.data(), h.size());
   }
+  w.numbers(resume.velocity.data(), static_cast<std::size_t>(resume.velocity.size()));
+  w.numbers(resume.integrator.data(), resume.integrator.size());
   write_file(file, w.sealed());
 }
 
@@ -436,7 +461,7 @@ Resume read_restart(const std::filesystem::path& file, const io::CaseSpec& spec,
   check_header(bytes, name);
   PayloadReader r(std::string_view(bytes).substr(kHeaderBytes), name);
   check_fingerprint(r, case_fingerprint(spec, model), name);
-  const Resume resume = read_resume(r, spec, name);
+  Resume resume = read_resume(r, spec, name);
   const std::vector<double> x = read_state(r, model, name);
   const int k = read_active_step(r, model, resume, spec.time.end_time, name);
   std::optional<model::ModelStep> step;
@@ -447,6 +472,7 @@ Resume read_restart(const std::filesystem::path& file, const io::CaseSpec& spec,
   }
   const std::vector<physics::Term*> terms = stateful_terms(model); // before the step adds any
   const std::vector<std::vector<double>> histories = read_histories(r, terms, name);
+  read_motion(r, spec, model, k, resume, name);
   TRIFEM_CHECK(r.left() == 0, "{}: invalid restart file: {} bytes after its last entry ({})", name,
                r.left(), kUseAnotherFile);
 

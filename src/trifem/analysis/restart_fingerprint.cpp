@@ -316,6 +316,13 @@ std::uint64_t analysis_options_hash(const io::CaseSpec& spec) {
   const io::ElectrochemistrySpec& e = spec.electrochemistry;
   for (const Real v : {e.R, e.T, e.faraday, e.bath_concentration, e.bath_activity, e.bath_osmotic})
     h.real(v);
+  // the explicit steps' model: the multiplier's constraint and penalty, the damping, the reading
+  const io::ExplicitSpec& x = spec.explicit_dynamics;
+  h.kind(x.reading);
+  h.kind(x.constraint);
+  h.flag(x.multiplier);
+  h.real(x.penalty);
+  h.real(x.damping);
   return h.value();
 }
 

@@ -27,7 +27,7 @@ enum class CasePart : std::size_t {
   Contact,            ///< [[contact]] pairs
   RigidBodies,        ///< [[rigid_body]] tables
   Steps,              ///< [[step]] conditions, loads, release times and start times
-  AnalysisOptions,    ///< [analysis] and [electrochemistry]
+  AnalysisOptions,    ///< [analysis], [electrochemistry] and the model of [explicit]
 };
 inline constexpr std::size_t kCaseParts = 8;
 

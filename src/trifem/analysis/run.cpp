@@ -392,10 +392,10 @@ solver::RunReport run_steps(const io::CaseSpec& spec, model::Model& model,
                                             observer(whole);
                                           }));
   };
-  Vector velocity; // of the last dynamic step's end (empty: at rest)
+  Vector velocity = resume ? resume->velocity : Vector(); // of the last dynamic step's end
   const auto explicit_step = [&](std::optional<std::size_t> k) {
     TRIFEM_VERIFY(run_explicit, "a dynamic-explicit step without its integrator");
-    accumulate(run, run_explicit(k, velocity));
+    accumulate(run, run_explicit(k, before + run.steps, velocity));
   };
   if (model.steps.empty()) {
     if (spec.is_explicit()) {
@@ -493,17 +493,36 @@ public:
     if (whole_)
       whole_->log_settings();
   }
-  /// Runs step k (nullopt: the whole case) into `output`, starting with `velocity` (empty: at
-  /// rest), which becomes that of the last accepted state.
-  solver::RunReport run(std::optional<std::size_t> k, OutputWriter& output, Vector& velocity) {
+  /// Continues the whole case's step from `resume` (read into the model); InputError if the
+  /// file's integrator state does not fit. A run continued inside one of several steps
+  /// restores it when the step begins.
+  void continue_from(const Resume& resume) {
+    resume_ = &resume;
+    if (whole_)
+      restore(*whole_);
+  }
+  /// Writes a restart file at every output time of the steps that run.
+  void write_restarts(RestartWriter writer) { restart_ = std::move(writer); }
+
+  /// Runs step k (nullopt: the whole case) into `output` after `steps_before` steps of the
+  /// run, starting with `velocity` (empty: at rest), which becomes that of the last accepted
+  /// state.
+  solver::RunReport run(std::optional<std::size_t> k, OutputWriter& output, int steps_before,
+                        Vector& velocity) {
     std::unique_ptr<ExplicitStep> step = std::move(whole_);
     const Real start = model_.problem->time();
     if (k) {
       parts_.push_back(explicit_part(spec_, k));
-      log::info("  starting {}",
-                velocity.size() > 0 ? "with the velocity of the previous step" : "at rest");
+      const Real step_start = model_.steps[*k].start_time;
+      const bool resumed = resume_ && resume_->time > step_start;
+      log::info("  starting {}", resumed               ? "from the restart file"
+                                 : velocity.size() > 0 ? "with the velocity of the previous step"
+                                                       : "at rest");
       try {
-        step = explicit_step(spec_, parts_.back(), k, model_, start, velocity);
+        step =
+            explicit_step(spec_, parts_.back(), k, model_, resumed ? step_start : start, velocity);
+        if (resumed)
+          restore(*step);
       } catch (const InputError& e) {
         solver::RunReport failed;
         failed.end_time = start;
@@ -512,8 +531,16 @@ public:
       }
       step->log_settings();
     }
+    resume_ = nullptr;
     const std::string history = k ? fmt::format("history_step{}.csv", *k + 1) : "history.csv";
-    solver::RunReport report = step->run(output, history, !k);
+    const int before = steps_before - static_cast<int>(step->steps()); // the run's, at its start
+    RestartWriter restart;
+    if (restart_)
+      restart = [&](Resume r) {
+        r.steps += before;
+        restart_(r);
+      };
+    solver::RunReport report = step->run(output, history, !k, restart);
     velocity = step->velocity();
     failed_ = !report.success;
     nlohmann::json entries = step->summary();
@@ -554,8 +581,18 @@ public:
   }
 
 private:
+  void restore(ExplicitStep& step) const {
+    try {
+      step.restore(resume_->integrator);
+    } catch (const InputError& e) {
+      throw InputError(fmt::format("restart file: {}", e.what()));
+    }
+  }
+
   const io::CaseSpec& spec_;
   model::Model& model_;
+  const Resume* resume_ = nullptr; ///< the run continues from it (until its step begins)
+  RestartWriter restart_;
   std::list<io::CaseSpec> parts_; ///< what each step sees (its steps refer to them)
   std::unique_ptr<ExplicitStep> whole_;
   std::vector<std::unique_ptr<ExplicitStep>> ran_;
@@ -571,8 +608,10 @@ int run_model(const io::CaseSpec& spec, const std::filesystem::path& output_dir,
   std::unique_ptr<model::Model> model = build_model_for(spec);
   ExplicitSteps explicit_steps(spec, *model);
   std::optional<Resume> resume;
-  if (!options.restart_file.empty())
+  if (!options.restart_file.empty()) {
     resume = resume_from(options.restart_file, spec, *model);
+    with_case_file(spec, [&] { explicit_steps.continue_from(*resume); });
+  }
   const bool write_restarts = options.write_restart || spec.output.restart;
   std::unique_ptr<linalg::LinearSolver> linear_solver = linear_solver_for(spec);
   parallel::agree_on_output([&] { // rank 0 writes every file of a parallel run
@@ -605,6 +644,15 @@ int run_model(const io::CaseSpec& spec, const std::filesystem::path& output_dir,
     run.failure = why;
   } else {
     bool noted = false;
+    const auto save_restart = [&](const Resume& state) { // at an output time
+      parallel::agree_on_output([&] {
+        if (parallel::is_root())
+          write_restart(output_dir / fmt::format("restart_{:04d}.bin", output.last_state_index()),
+                        spec, *model, state);
+      });
+    };
+    if (write_restarts)
+      explicit_steps.write_restarts(save_restart);
     auto observer = [&](const solver::StepInfo& info) {
       if (output.balance())
         output.balance()->record_step(info.transport_dt);
@@ -617,17 +665,14 @@ int run_model(const io::CaseSpec& spec, const std::filesystem::path& output_dir,
       const bool volume = output.is_output_time(info.time) || controller->finished();
       output.write(info.time, info.step, info.dt, info.newton->iterations, volume);
       if (volume && write_restarts)
-        parallel::agree_on_output([&] {
-          if (parallel::is_root())
-            write_restart(output_dir / fmt::format("restart_{:04d}.bin", output.last_state_index()),
-                          spec, *model, {controller->time(), controller->dt(), info.step});
-        });
+        save_restart(
+            {controller->time(), controller->dt(), info.step, model->problem->velocity(), {}});
     };
     run = run_steps(
         spec, *model, newton, observer, [&](const solver::StepController& c) { controller = &c; },
         resume ? &*resume : nullptr,
-        [&](std::optional<std::size_t> k, Vector& velocity) {
-          return explicit_steps.run(k, output, velocity);
+        [&](std::optional<std::size_t> k, int steps_before, Vector& velocity) {
+          return explicit_steps.run(k, output, steps_before, velocity);
         });
     if (!run.success && !explicit_steps.failed()) // (an explicit step writes its own)
       write_last_state(*model, output, run);
@@ -651,16 +696,10 @@ int run_model(const io::CaseSpec& spec, const std::filesystem::path& output_dir,
 
 int run_any_case(const io::CaseSpec& spec, const std::filesystem::path& output_dir,
                  const RunOptions& options) {
-  if (spec.is_explicit() || spec.has_explicit_step()) {
-    TRIFEM_CHECK(!parallel::active(),
-                 "{}: the explicit analysis runs on one process; run this case without mpirun "
-                 "(started on {} processes)",
-                 spec.file.string(), parallel::size());
-    TRIFEM_CHECK(options.restart_file.empty() && !options.write_restart && !spec.output.restart,
-                 "{}: restart files are written and read by quasi-static analyses only{}",
-                 spec.file.string(),
-                 spec.has_explicit_step() ? " (not in a case with a dynamic-explicit step)" : "");
-  }
+  TRIFEM_CHECK(!parallel::active() || !(spec.is_explicit() || spec.has_explicit_step()),
+               "{}: the explicit analysis runs on one process; run this case without mpirun "
+               "(started on {} processes)",
+               spec.file.string(), parallel::size());
   return run_model(spec, output_dir, options);
 }
 

@@ -42,10 +42,11 @@ solver::StepSettings step_settings(const io::CaseSpec& spec);
 solver::StepSettings step_settings(const io::CaseSpec& spec, std::size_t k);
 
 /// Runs a dynamic-explicit step: [[step]] k, or the whole case (nullopt), on the model in its
-/// current step and state, starting with `velocity` (every DOF, global components; empty: at
-/// rest), which it replaces by the velocity of the step's last accepted state.
-using ExplicitRunner =
-    std::function<solver::RunReport(std::optional<std::size_t> k, Vector& velocity)>;
+/// current step and state after `steps_before` steps of the run, starting with `velocity`
+/// (every DOF, global components; empty: at rest), which it replaces by the velocity of the
+/// step's last accepted state.
+using ExplicitRunner = std::function<solver::RunReport(std::optional<std::size_t> k,
+                                                       int steps_before, Vector& velocity)>;
 
 /// Runs every analysis step of `model` (one without [[step]] tables) from its current state:
 /// quasi-static and implicit dynamic ones with Newton, calling `observer` after every accepted

@@ -7,6 +7,8 @@
 #include "trifem/explicit/explicit_model.hpp"
 #include "trifem/explicit/explicit_solver.hpp"
 
+#include <array>
+
 namespace trifem::explicit_dynamics {
 
 /// Records the energies of a run and measures the balance error |total − initial| against the
@@ -27,6 +29,13 @@ public:
   /// Largest error recorded so far.
   Real max_error() const { return max_; }
   bool exceeded() const { return exceeded_; }
+  /// The scale, the largest error and whether it was exceeded (restart files).
+  std::array<Real, 3> state() const { return {scale_, max_, exceeded_ ? 1.0 : 0.0}; }
+  void restore(const std::array<Real, 3>& s) {
+    scale_ = s[0];
+    max_ = s[1];
+    exceeded_ = s[2] != 0.0;
+  }
 
 private:
   Real floor_ = 0.0;

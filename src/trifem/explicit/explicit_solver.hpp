@@ -10,6 +10,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace trifem::explicit_dynamics {
 
@@ -125,6 +126,20 @@ public:
   const SolverTimings& timings() const { return timings_; }
   /// Total multiplier solves so far.
   long total_iterations() const { return total_iterations_; }
+
+  /// The integrator's state at t_n beyond Uⁿ, for restart files (solver_state.cpp): the time,
+  /// the counters, the step sizes and the stability estimate, the work done so far, v^{n−½},
+  /// Λⁿ, Λ^{n−1} and the supports' last step.
+  std::vector<double> state() const;
+  /// The number of values of state() for a model of `dofs` DOFs and `cells` cells.
+  static std::size_t state_size(Index dofs, Index cells);
+  /// Continues from `state` (of state()) at the displacement `U` as if the run had not stopped
+  /// there; InputError if it does not fit the model. The next step factorizes the multiplier
+  /// matrix anew.
+  void restore(const Vector& U, const std::vector<double>& state);
+  /// The next step factorizes the multiplier matrix anew, as a run continued from a restart
+  /// file written at this state does (the two then take the same steps).
+  void refactorize() { factorization_.age = -1; }
 
 private:
   void initialize(const InitialState& initial);

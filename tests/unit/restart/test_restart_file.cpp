@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Restart files (format 2) read in-process, from a file written in the second step of a
+// Restart files (format 3) read in-process, from a file written in the second step of a
 // two-step biphasic case (so it holds offsets, released reactions and element histories):
 // - the intact file restores the written state, step and histories exactly;
 // - 1000 random single-byte corruptions and every truncation are rejected, each with an
@@ -336,13 +336,27 @@ TEST_F(RestartFile, ConsistentlyDamagedValuesAreRejectedWithWhatIsWrong) {
        "value 1 of a term history is inf"},
       {"two histories", [](auto& b, auto& l) { put<std::int64_t>(b, l.histories_count, 2); },
        "has 2 term histories, this case's model has 1"},
+      {"one velocity",
+       [](auto& b, auto& l) {
+         put<std::int64_t>(b, l.velocity, 1);
+         b.insert(l.velocity + 8, 8, '\0');
+       },
+       "invalid restart file: it holds 1 velocities, this case's model has"},
+      {"an explicit integrator's state in a quasi-static step",
+       [](auto& b, auto& l) {
+         put<std::int64_t>(b, l.integrator, 1);
+         b.append(8, '\0');
+       },
+       "holds 1 values of the explicit integrator's state, its analysis step needs 0"},
       {"bytes after the end", [](auto& b, auto&) { b.append(8, '\0'); },
        "8 bytes after its last entry"},
       {"magic", [](auto& b, auto&) { b[3] = 'X'; }, "not a trifem restart file", true},
       {"format 1", [](auto& b, auto&) { put<std::int64_t>(b, RestartLayout::kVersion, 1); },
-       "was written by an older trifem (restart format 1); this trifem reads format 2", true},
-      {"format 3", [](auto& b, auto&) { put<std::int64_t>(b, RestartLayout::kVersion, 3); },
-       "has format 3, this trifem reads format 2", true},
+       "was written by an older trifem (restart format 1); this trifem reads format 3", true},
+      {"format 2", [](auto& b, auto&) { put<std::int64_t>(b, RestartLayout::kVersion, 2); },
+       "was written by an older trifem (restart format 2); this trifem reads format 3", true},
+      {"format 4", [](auto& b, auto&) { put<std::int64_t>(b, RestartLayout::kVersion, 4); },
+       "has format 4, this trifem reads format 3", true},
       {"other byte order",
        [](auto& b, auto&) { put<std::int64_t>(b, RestartLayout::kVersion, std::int64_t{2} << 56); },
        "other byte order", true},

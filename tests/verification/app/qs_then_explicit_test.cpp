@@ -12,6 +12,7 @@
 // - the free end oscillates about the undeformed length with the period 4 L / c, c = sqrt(E/rho),
 //   of the fixed-free bar (linear theory, an error of order of the strain squared).
 #include "history_csv.hpp"
+#include "restart_file_layout.hpp"
 #include "trifem/analysis/run.hpp"
 #include "trifem/io/case_reader.hpp"
 
@@ -111,11 +112,12 @@ Real energy_error(const test::History& h, Real W0) {
   return worst;
 }
 
-/// Runs `text` as case `name` in `dir`; the exit code.
-int run_text(const std::filesystem::path& dir, const std::string& name, const std::string& text) {
+/// Runs `text` as case `name` in `dir` with `options`; the exit code.
+int run_text(const std::filesystem::path& dir, const std::string& name, const std::string& text,
+             const analysis::RunOptions& options = {}) {
   const auto file = dir / (name + ".toml");
   std::ofstream(file) << text;
-  return analysis::run_case(io::read_case(file), dir / name);
+  return analysis::run_case(io::read_case(file), dir / name, options);
 }
 
 /// Times at which `u` crosses zero (linear interpolation between rows).
@@ -374,6 +376,75 @@ TEST_F(MotionAcrossSteps, AnImplicitDynamicStepAfterAnExplicitStepContinuesItsMo
 TEST_F(MotionAcrossSteps, AnExplicitStepAfterAnImplicitDynamicStepContinuesItsMotion) {
   expect_close_to_the_explicit_release(
       split_run("implicit_then_explicit", "dynamic", "dynamic-explicit"), whole_run());
+}
+
+/// The restart files of a run directory by their time.
+std::map<double, std::filesystem::path> restart_files(const std::filesystem::path& dir) {
+  std::map<double, std::filesystem::path> files;
+  for (const auto& e : std::filesystem::directory_iterator(dir))
+    if (e.path().filename().string().starts_with("restart_")) {
+      std::ifstream in(e.path(), std::ios::binary);
+      const std::string bytes((std::istreambuf_iterator<char>(in)), {});
+      files[test::get<double>(bytes, test::RestartLayout::kTime)] = e.path();
+    }
+  return files;
+}
+
+/// Every row of `resumed` after its first (the restart state) is the row of `whole` at the
+/// same time, each column to 1e-12 of its largest magnitude (at least 1 for unitless ones).
+void expect_the_rows_of(const test::History& whole, const test::History& resumed) {
+  ASSERT_EQ(whole.names, resumed.names);
+  const auto& t = whole["time [s]"];
+  ASSERT_GT(resumed["time [s]"].size(), 1u);
+  const auto first = std::find(t.begin(), t.end(), resumed["time [s]"][1]);
+  ASSERT_NE(first, t.end()) << "the continued run takes other steps";
+  const auto offset = static_cast<std::size_t>(first - t.begin()) - 1;
+  ASSERT_EQ(t.size() - offset, resumed["time [s]"].size());
+  for (std::size_t c = 0; c < whole.names.size(); ++c) {
+    double scale = whole.names[c].find('[') == std::string::npos ? 1.0 : 0.0;
+    for (const double v : whole.columns[c])
+      scale = std::max(scale, std::abs(v));
+    for (std::size_t i = 1; i < resumed.columns[c].size(); ++i)
+      ASSERT_NEAR(resumed.columns[c][i], whole.columns[c][offset + i], 1e-12 * scale)
+          << whole.names[c] << " at t = " << resumed.columns[0][i];
+  }
+}
+
+TEST_F(MotionAcrossSteps, RestartsInsideAndAtTheEndOfTheExplicitStepContinueTheRun) {
+  // quasi-static stretch, explicit release, implicit dynamic continuation; restarted inside the
+  // explicit step (the file holds the integrator's state) and at its end (the file holds the
+  // velocity the implicit step starts with)
+  std::string text = released_with_fixed_step(R"(
+[[step]]
+name = "continue"
+analysis = "dynamic"
+duration = 1e-3
+dt = 1e-5
+
+[dynamic]
+mass = "lumped"
+)");
+  analysis::RunOptions write;
+  write.write_restart = true;
+  ASSERT_EQ(run_text(dir_, "restarts", text, write), 0);
+  const std::map<double, std::filesystem::path> files = restart_files(dir_ / "restarts");
+  const auto inside = files.lower_bound(kQsEnd + 4.9e-4), end = files.lower_bound(kQsEnd + 1e-3);
+  ASSERT_NE(inside, files.end());
+  ASSERT_NE(end, files.end());
+  ASSERT_NEAR(inside->first, kQsEnd + 5e-4, 1e-12);
+  ASSERT_NEAR(end->first, kQsEnd + 1e-3, 1e-12);
+  const test::History explicit_whole = test::read_history(dir_ / "restarts" / "history_step2.csv");
+  const test::History implicit_whole = test::read_history(dir_ / "restarts" / "history.csv");
+  for (const auto& [name, file] :
+       {std::pair{"from_inside", inside->second}, std::pair{"from_the_end", end->second}}) {
+    SCOPED_TRACE(name);
+    analysis::RunOptions resume;
+    resume.restart_file = file;
+    ASSERT_EQ(run_text(dir_, name, text, resume), 0);
+    if (std::string(name) == "from_inside")
+      expect_the_rows_of(explicit_whole, test::read_history(dir_ / name / "history_step2.csv"));
+    expect_the_rows_of(implicit_whole, test::read_history(dir_ / name / "history.csv"));
+  }
 }
 
 } // namespace

@@ -257,8 +257,11 @@ namespace {
 /// prescribed on the bottom (flux DOFs without equations).
 class BoxModel {
 public:
-  /// `rotate_fluid`: the fluid (true) or displacement (false) DOFs of node 0 in a rotated frame.
-  explicit BoxModel(bool ions, std::optional<bool> rotate_fluid = std::nullopt)
+  /// `rotate_fluid`: the fluid (true) or displacement (false) DOFs of node 0 in a rotated frame;
+  /// `dynamic`: in a dynamic step (generalized-α, ρ∞ = 0.5: the mixture's Jacobian weighted by
+  /// 1 − α_f = 2/3).
+  explicit BoxModel(bool ions, std::optional<bool> rotate_fluid = std::nullopt,
+                    bool dynamic = false)
       : mesh_(mesh::make_box({"box", Vec3::Zero(), Vec3(2.0, 1.0, 1.0), {2, 1, 1}})),
         rotate_fluid_(rotate_fluid) {
     props_ = std::make_shared<material::MixtureProperties>(make_setup(ions, "neo-hookean").mat);
@@ -290,6 +293,12 @@ public:
         dofs_, conditions, std::move(terms), std::vector<solver::FieldScale>(dofs_.num_fields()),
         frames(rotate_fluid));
     set_state();
+    if (dynamic) {
+      problem_->add_inertia(std::make_unique<physics::InertiaTerm>(
+          mesh_, dofs_, f_.u, cells, std::vector<Real>(2, 1e-6), physics::MassMatrix::Consistent,
+          physics::GeneralizedAlpha::from_spectral_radius(0.5)));
+      problem_->set_dynamic(true);
+    }
   }
 
   BoxModel(const BoxModel&) = delete; // the term holds references to the mesh and the DOFs
@@ -423,8 +432,9 @@ void check_term(bool ions) {
 /// free equations is the sum of the cells' blocks, the potential rows are coupling · G, with the
 /// rows and columns of rotated DOFs in their frames (the friction part of a rotated node a and
 /// a node b is m_ab friction Q_aᵀ Q_b: the identity for the lumped mass).
-void check_problem(bool ions, std::optional<bool> rotate_fluid = std::nullopt) {
-  BoxModel model(ions, rotate_fluid);
+void check_problem(bool ions, std::optional<bool> rotate_fluid = std::nullopt,
+                   bool dynamic = false) {
+  BoxModel model(ions, rotate_fluid, dynamic);
   solver::Linearization lin;
   ASSERT_EQ(model.problem().linearize(lin, true), solver::SolveStatus::Converged);
   const LocalMatrix J = lin.jacobian.toDense();
@@ -499,6 +509,10 @@ TEST(MixtureTransportCells, TriphasicProblemGivesTheAssembledJacobian) {
 }
 TEST(MixtureTransportCells, BiphasicProblemGivesTheAssembledJacobian) {
   check_problem(false);
+}
+
+TEST(MixtureTransportCells, TriphasicProblemInADynamicStepGivesTheWeightedJacobian) {
+  check_problem(true, std::nullopt, true);
 }
 
 TEST(MixtureTransportCells, TriphasicProblemWithARotatedFluidFrame) {

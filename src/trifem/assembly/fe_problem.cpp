@@ -59,7 +59,8 @@ std::vector<Vector> FeProblem::rigid_body_modes() const {
   return modes;
 }
 
-void FeProblem::to_equations(const physics::CellTransport& cell, linalg::TransportCell& out) const {
+void FeProblem::to_equations(const physics::CellTransport& cell, Real weight,
+                             linalg::TransportCell& out) const {
   const auto equation = [&](Index dof) { return dof >= 0 ? map_.equation(dof) : Index(-1); };
   for (int i = 0; i < 2; ++i)
     out.potential[i] = equation(cell.potential[i]);
@@ -81,12 +82,12 @@ void FeProblem::to_equations(const physics::CellTransport& cell, linalg::Transpo
         out.divergence(3 * a + k, field) = g.dot(axis);
         for (int other = 0; other < 3; ++other)
           out.flux_rate(3 * a + k, 3 * field + other) =
-              cell.flux_rate.block<3, 1>(3 * a, 3 * field + other).dot(axis);
+              weight * cell.flux_rate.block<3, 1>(3 * a, 3 * field + other).dot(axis);
       }
     }
-  out.coupling = cell.coupling;
-  out.friction = cell.friction;
-  out.gamma = cell.gamma;
+  out.coupling = weight * cell.coupling;
+  out.friction = weight * cell.friction; // the flux block is m_ab ⊗ friction: m unweighted
+  out.gamma = weight * cell.gamma;
   out.node = cell.node;
   out.lumped_mass = cell.lumped_mass;
 }
@@ -97,9 +98,11 @@ linalg::TransportCells FeProblem::transport_cells() const {
   std::vector<physics::CellTransport> cells;
   for (const auto& t : terms_)
     t->transport_cells(eval_state(), cells);
+  // a dynamic step weights the Jacobian of every term but the inertia by 1 − α_f
+  const Real weight = dynamic_ ? 1.0 - inertia_->method().alpha_f : 1.0;
   linalg::TransportCells out(cells.size());
   for (std::size_t c = 0; c < cells.size(); ++c)
-    to_equations(cells[c], out[c]);
+    to_equations(cells[c], weight, out[c]);
   return out;
 }
 

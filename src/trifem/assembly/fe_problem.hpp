@@ -162,8 +162,10 @@ private:
   void reclaim_jacobian(solver::Linearization& lin);
   /// Numbers the equations' fields and builds the assembler and its pattern.
   void build_assembler();
-  /// A term's cell over the equations (divergences in the rotated frames' components).
-  void to_equations(const physics::CellTransport& cell, linalg::TransportCell& out) const;
+  /// A term's cell over the equations (divergences in the rotated frames' components), its
+  /// Jacobian parts multiplied by the term's `weight`.
+  void to_equations(const physics::CellTransport& cell, Real weight,
+                    linalg::TransportCell& out) const;
   /// Term weights of the assembly: dynamic, (1 − α_f) for every term but the inertia (1);
   /// quasi-static, 1 for every term but the inertia (0).
   void apply_weights();

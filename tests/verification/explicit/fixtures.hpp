@@ -87,6 +87,8 @@ public:
     return *this;
   }
   std::unique_ptr<model::Model> build() const { return model::build_model(spec_); }
+  /// The case (e.g. to run it as another analysis).
+  io::CaseSpec& spec() { return spec_; }
 
 private:
   std::string add_curve(const io::CurveSpec& curve) {

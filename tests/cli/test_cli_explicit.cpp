@@ -88,6 +88,7 @@ TEST_F(CliExplicit, RunWritesResultsHistoryAndSummary) {
   const std::string summary = read_text(output() / "summary.json");
   EXPECT_TRUE(contains(summary, R"("status": "completed")")) << summary;
   EXPECT_TRUE(contains(summary, R"("analysis": "dynamic-explicit")")) << summary;
+  EXPECT_FALSE(contains(summary, "newton_iterations")) << summary;
   EXPECT_EQ(json_number(summary, "steps"), double(rows.size() - 2)) << "one row per step + t = 0";
   EXPECT_DOUBLE_EQ(last[0], 1e-3) << "the run ends at time.end_time";
   // The time step is the stability estimate (no time.dt), shortened so that each output

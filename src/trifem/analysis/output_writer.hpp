@@ -62,12 +62,7 @@ public:
   /// after each of io::kDefaultOutputCount equal parts of [0, end_time].
   bool is_output_time(Real time);
 
-  const std::filesystem::path& directory() const { return directory_; }
   std::filesystem::path pvd_file() const { return directory_ / "results.pvd"; }
-  /// The collection of the VTU files, for a later part of the run to continue (a mixed run).
-  io::PvdWriter& pvd() { return *pvd_; }
-  /// Output states written so far (the NNNN of the next file).
-  int state_count() const { return state_count_; }
   /// The history file rows go to now (history.csv unless use_history chose another).
   std::filesystem::path history_file() const { return directory_ / history_name_; }
   int vtu_count() const { return vtu_count_; }

@@ -4,6 +4,7 @@
 #include "trifem/analysis/explicit_step.hpp"
 #include "trifem/analysis/restart_fingerprint.hpp"
 #include "trifem/core/error.hpp"
+#include "trifem/io/vtu_writer.hpp"
 #include "trifem/model/steps.hpp"
 
 #include <algorithm>
@@ -159,24 +160,6 @@ void write_step(PayloadWriter& w, const model::Model& model) {
     w.integer(dof);
     w.number(force);
   }
-}
-
-void write_file(const std::filesystem::path& file, const std::string& bytes) {
-  auto temporary = file;
-  temporary += ".tmp";
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    if (!out)
-      throw OutputError(fmt::format("cannot write the restart file {}", temporary.string()));
-    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-    if (!out.flush())
-      throw OutputError(fmt::format("cannot write the restart file {}", temporary.string()));
-  }
-  std::error_code ec;
-  std::filesystem::rename(temporary, file, ec);
-  if (ec)
-    throw OutputError(
-        fmt::format("cannot write the restart file {}: {}", file.string(), ec.message()));
 }
 
 /// The bytes of `file`: as many as the file has, so a damaged length field cannot make the
@@ -451,7 +434,10 @@ void write_restart(const std::filesystem::path& file, const io::CaseSpec& spec,
   }
   w.numbers(resume.velocity.data(), static_cast<std::size_t>(resume.velocity.size()));
   w.numbers(resume.integrator.data(), resume.integrator.size());
-  write_file(file, w.sealed());
+  const std::string& bytes = w.sealed();
+  io::write_file_atomically(file, [&](std::ostream& out) {
+    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  });
 }
 
 Resume read_restart(const std::filesystem::path& file, const io::CaseSpec& spec,

@@ -558,7 +558,10 @@ public:
   void add_to(nlohmann::json& summary) const {
     if (summaries_.empty())
       return;
-    if (spec_.is_explicit()) {
+    if (spec_.is_explicit()) { // the entries of Newton's method do not apply
+      for (const char* key : {"newton_iterations", "linear_iterations", "cutbacks",
+                              "failed_attempts", "roundoff_floor_steps"})
+        summary.erase(key);
       summary["analysis"] = "dynamic-explicit";
       summary.update(summaries_.front());
       return;

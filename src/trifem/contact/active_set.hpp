@@ -77,12 +77,10 @@ public:
   bool wetted(Index k) const { return active_[k] == static_cast<char>(NodeContact::Wetted); }
   const std::vector<char>& flags() const { return active_; }
   Index num_active() const;
-  bool initialized() const { return initialized_; }
   const ActiveSetSettings& settings() const { return settings_; }
   ActiveSetSettings& settings() { return settings_; }
 
-  /// Evaluations and flips since the step began.
-  int evaluations_in_step() const { return evaluations_; }
+  /// Flips since the step began.
   Index flips_in_step() const { return flips_step_; }
   /// Nodes the rule would flip at the last evaluation but the freeze held (0: consistent).
   Index pending() const { return pending_; }

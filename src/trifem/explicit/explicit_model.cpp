@@ -12,12 +12,9 @@ namespace trifem::explicit_dynamics {
 
 ExplicitModel::ExplicitModel(const model::Model& model) : model_(model), mesh_(model.mesh) {
   TRIFEM_CHECK(mesh_.num_cells() > 0, "explicit model: the mesh has no cells");
-  for (const model::CellMaterial& m : model.materials) {
+  for (const model::CellMaterial& m : model.materials)
     TRIFEM_CHECK(m.solid && !m.mixture && m.density > 0.0,
                  "materials.{}: dynamic-explicit analyses need a solid law with a density", m.name);
-    laws_.push_back(m.solid.get());
-    densities_.push_back(m.density);
-  }
   TRIFEM_CHECK(!model.dofs.has_ties(), "dynamic-explicit analyses do not take rigid bodies");
   for (const dofs::DirichletCondition& c : model.problem->conditions())
     prescribed_motion_ =
@@ -40,10 +37,6 @@ ExplicitModel::ExplicitModel(const model::Model& model) : model_(model), mesh_(m
       free_mass_[i] = fixed_[i] ? 0.0 : mass_[i];
     }
   build_incidence();
-}
-
-bool ExplicitModel::has_loads() const {
-  return !model_.loads.empty();
 }
 
 void ExplicitModel::external_force(const Vector& U, Real time, Vector& f) const {
@@ -82,6 +75,14 @@ Vector ExplicitModel::gather(const Vector& x) const {
   for (Index i = 0; i < num_dofs(); ++i)
     v[i] = x[dofs_[i]];
   return v;
+}
+
+const material::ElasticLaw& ExplicitModel::law(Index c) const {
+  return *model_.materials[c].solid;
+}
+
+Real ExplicitModel::density(Index c) const {
+  return model_.materials[c].density;
 }
 
 fe::HexCoords ExplicitModel::cell_values(Index c, const Vector& U) const {

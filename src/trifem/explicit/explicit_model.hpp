@@ -33,13 +33,11 @@ public:
   /// belongs to no cell, or a cell is inverted.
   explicit ExplicitModel(const model::Model& model);
 
-  /// The model it views.
-  const model::Model& source() const { return model_; }
   const mesh::Mesh& mesh() const { return mesh_; }
   /// W(C) of cell c.
-  const material::ElasticLaw& law(Index c) const { return *laws_[c]; }
+  const material::ElasticLaw& law(Index c) const;
   /// ρ of cell c [t/mm³].
-  Real density(Index c) const { return densities_[c]; }
+  Real density(Index c) const;
   Index num_cells() const { return mesh_.num_cells(); }
   Index num_dofs() const { return 3 * mesh_.num_nodes(); }
 
@@ -63,8 +61,6 @@ public:
   void prescribe(Real time, Vector& U) const;
   const NodeIncidence& incidence() const { return incidence_; }
 
-  /// true if the model has load terms (surface loads of the case or of its steps).
-  bool has_loads() const;
   /// f = F_S(t, U) = −Σ over the model's load terms of their residual at U and time t [N]
   /// (follower pressures on the current surface, dead tractions per reference area), size
   /// num_dofs, overwritten; fixed DOFs included.
@@ -85,8 +81,6 @@ private:
 
   const model::Model& model_;
   const mesh::Mesh& mesh_;
-  std::vector<const material::ElasticLaw*> laws_;
-  std::vector<Real> densities_;
   std::vector<Index> dofs_;  ///< the model's DOF of 3 a + k
   std::vector<Index> local_; ///< 3 a + k of the model's displacement DOFs (−1: other fields)
   std::vector<fe::HexGeometry> geometry_;

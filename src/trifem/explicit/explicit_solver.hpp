@@ -104,8 +104,7 @@ public:
   const ExplicitModel& model() const { return model_; }
   const ExplicitSettings& settings() const { return settings_; }
 
-  const Vector& displacement() const { return U_; }       ///< U^n [mm]
-  const Vector& half_step_velocity() const { return V_; } ///< (U^n − U^{n−1})/Δt [mm/s]
+  const Vector& displacement() const { return U_; } ///< U^n [mm]
   /// Velocity at t_n, vⁿ = (v^{n−½} + Δt/2 M⁻¹(F_Sⁿ − Q_Vⁿ − H_n Λⁿ)) / (1 + cΔt/2) [mm/s]
   /// (the half-step velocity plus half a kick; 0 on fixed DOFs).
   Vector velocity() const;

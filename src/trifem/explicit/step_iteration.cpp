@@ -63,10 +63,7 @@ constexpr const char* kAxis[3] = {"x", "y", "z"};
 Vector ExplicitSolver::explicit_force(const CellFields& f, const Vector& U, Real time) const {
   Vector q, fs;
   gather(model_, f.internal, nullptr, q);
-  if (model_.has_loads()) // a follower pressure depends on U
-    model_.external_force(U, time, fs);
-  else
-    fs = f_ext_; // zero
+  model_.external_force(U, time, fs); // a follower pressure depends on U
   return fs - q;
 }
 

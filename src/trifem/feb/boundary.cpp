@@ -39,9 +39,7 @@ void zero_displacement(const Reader& r, pugi::xml_node bc, std::vector<io::Fixed
   io::FixedSpec f;
   f.key = key_of(r, bc);
   f.set = r.node_set(bc);
-  for (pugi::xml_node c : bc.children()) {
-    if (!is_element(c))
-      continue;
+  for (pugi::xml_node c : elements(bc)) {
     const std::string_view name = c.name();
     const int k = name == "x_dof" ? 0 : name == "y_dof" ? 1 : name == "z_dof" ? 2 : -1;
     if (k < 0)
@@ -64,9 +62,7 @@ void prescribed_displacement(const Reader& r, pugi::xml_node bc,
   const pugi::xml_node value = r.doc.child(bc, value_key);
   p.value = r.doc.number(value);
   p.curve = r.curve_of(value);
-  for (pugi::xml_node c : bc.children()) {
-    if (!is_element(c))
-      continue;
+  for (pugi::xml_node c : elements(bc)) {
     const std::string_view name = c.name();
     if (name == "relative")
       p.relative = flag(r, c);
@@ -104,9 +100,7 @@ void prescribed_effective(Reader& r, pugi::xml_node bc, bool step, bool concentr
     charge = r.chem.charge(r.doc, dof, name.substr(1));
   }
   const pugi::xml_node value = r.doc.child(bc, "value");
-  for (pugi::xml_node c : bc.children()) {
-    if (!is_element(c))
-      continue;
+  for (pugi::xml_node c : elements(bc)) {
     const std::string_view name = c.name();
     if (name == "relative" && flag(r, c))
       r.doc.fail(c, "a relative fluid pressure or concentration is not supported");
@@ -144,9 +138,7 @@ void fix(Reader& r, pugi::xml_node bc, std::vector<io::FixedSpec>& fixed, bool s
 
 void read_boundary(Reader& r, pugi::xml_node section, std::vector<io::FixedSpec>& fixed,
                    std::vector<io::PrescribedSpec>& prescribed, bool step) {
-  for (pugi::xml_node bc : section.children()) {
-    if (!is_element(bc))
-      continue;
+  for (pugi::xml_node bc : elements(section)) {
     if (std::string_view(bc.name()) != "bc")
       r.doc.fail(bc, fmt::format("<{}> is not supported in <Boundary> (expected <bc>)", bc.name()));
     const std::string type = r.doc.attribute(bc, "type");
@@ -185,9 +177,7 @@ io::PressureSpec pressure_load(const Reader& r, pugi::xml_node load) {
   const pugi::xml_node value = r.doc.child(load, "pressure");
   p.value = r.doc.number(value);
   p.curve = r.curve_of(value);
-  for (pugi::xml_node c : load.children()) {
-    if (!is_element(c))
-      continue;
+  for (pugi::xml_node c : elements(load)) {
     const std::string_view name = c.name();
     if (name == "linear" && flag(r, c))
       r.doc.fail(c, "a linear (non-follower) pressure is not supported: trifem's pressure "
@@ -208,9 +198,7 @@ io::TractionSpec traction_load(const Reader& r, pugi::xml_node load) {
   io::TractionSpec t;
   t.surface = r.surface(load);
   Real scale = 1.0;
-  for (pugi::xml_node c : load.children()) {
-    if (!is_element(c))
-      continue;
+  for (pugi::xml_node c : elements(load)) {
     const std::string_view name = c.name();
     if (name == "scale") {
       scale = r.doc.number(c);
@@ -237,9 +225,7 @@ io::TractionSpec traction_load(const Reader& r, pugi::xml_node load) {
 /// every other child is one of `known`.
 void check_load_children(const Reader& r, pugi::xml_node load,
                          std::initializer_list<std::string_view> known) {
-  for (pugi::xml_node c : load.children()) {
-    if (!is_element(c))
-      continue;
+  for (pugi::xml_node c : elements(load)) {
     const std::string_view name = c.name();
     if (name == "linear" && flag(r, c))
       r.doc.fail(c, "a linear (non-follower) load is not supported: trifem's surface loads of "
@@ -322,9 +308,7 @@ io::PrescribedSpec fluid_flux(Reader& r, pugi::xml_node load, bool step) {
 void read_loads(Reader& r, pugi::xml_node section, std::vector<io::PressureSpec>& pressures,
                 std::vector<io::TractionSpec>& tractions,
                 std::vector<io::PrescribedSpec>& prescribed, bool step) {
-  for (pugi::xml_node load : section.children()) {
-    if (!is_element(load))
-      continue;
+  for (pugi::xml_node load : elements(section)) {
     const std::string type = load.attribute("type").value();
     const bool surface_load = std::string_view(load.name()) == "surface_load";
     if (surface_load && type == "pressure") {

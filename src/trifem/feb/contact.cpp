@@ -109,9 +109,7 @@ void check_type(const Reader& r, pugi::xml_node c, const std::string& type) {
 /// The parameters of an interface: enforcement settings are ignored, the others must keep
 /// the defaults that describe trifem's frictionless contact.
 void check_parameters(Reader& r, pugi::xml_node c, bool& noted) {
-  for (pugi::xml_node p : c.children()) {
-    if (p.type() != pugi::node_element)
-      continue;
+  for (pugi::xml_node p : elements(c)) {
     const std::string_view name = p.name();
     if (contains(kEnforcement, name)) {
       if (!noted)
@@ -155,9 +153,7 @@ constexpr Real kInitialOverlap = 0.05;
 void read_contact(Reader& r, pugi::xml_node section, pugi::xml_node mesh) {
   const std::map<std::string, Pair> pairs = surface_pairs(r, mesh);
   bool noted = false;
-  for (pugi::xml_node c : section.children()) {
-    if (c.type() != pugi::node_element)
-      continue;
+  for (pugi::xml_node c : elements(section)) {
     if (std::string_view(c.name()) != "contact")
       r.doc.fail(c, fmt::format("<{}> is not supported in <Contact>", c.name()));
     check_type(r, c, r.doc.attribute(c, "type"));

@@ -20,9 +20,8 @@ std::string lower(std::string s) {
 std::vector<std::pair<Real, Real>> curve_points(const Reader& r, pugi::xml_node lc) {
   std::vector<std::pair<Real, Real>> points;
   const pugi::xml_node list = lc.child("points") ? lc.child("points") : lc;
-  for (pugi::xml_node p : list.children()) {
-    if (!is_element(p) ||
-        (std::string_view(p.name()) != "pt" && std::string_view(p.name()) != "point"))
+  for (pugi::xml_node p : elements(list)) {
+    if (std::string_view(p.name()) != "pt" && std::string_view(p.name()) != "point")
       continue;
     const std::vector<Real> v = r.doc.numbers(p, 2);
     if (!points.empty() && v[0] <= points.back().first)
@@ -66,9 +65,7 @@ void read_curve(Reader& r, pugi::xml_node lc) {
   io::CurveSpec curve;
   curve.points = curve_points(r, lc);
   CurveExtent extent{lc, false, curve.points.front().first, curve.points.back().first};
-  for (pugi::xml_node c : lc.children()) {
-    if (!is_element(c))
-      continue;
+  for (pugi::xml_node c : elements(lc)) {
     const std::string_view key = c.name();
     if (key == "interpolate") {
       curve.interpolation = interpolation(r, c, r.doc.text(c), curve.points.size());
@@ -140,9 +137,7 @@ FebAnalysis read_analysis(const Reader& r, pugi::xml_node control) {
 /// The time stepper of a Control (FEBio's auto time stepper -> trifem's step control).
 void read_time_stepper(Reader& r, pugi::xml_node stepper, io::TimeSpec& t) {
   t.growth = 1.5;
-  for (pugi::xml_node c : stepper.children()) {
-    if (!is_element(c))
-      continue;
+  for (pugi::xml_node c : elements(stepper)) {
     const std::string_view key = c.name();
     if (key == "dtmin") {
       t.dt_min = std::max(0.0, r.doc.number(c));
@@ -223,9 +218,7 @@ std::string step_name(std::string name, std::size_t k) {
 } // namespace
 
 void read_load_data(Reader& r, pugi::xml_node section) {
-  for (pugi::xml_node lc : section.children()) {
-    if (!is_element(lc))
-      continue;
+  for (pugi::xml_node lc : elements(section)) {
     const std::string_view kind = lc.name();
     if (kind != "load_controller" && kind != "loadcurve")
       r.doc.fail(lc, fmt::format("<{}> is not supported in <LoadData>", kind));
@@ -240,9 +233,7 @@ io::TimeSpec read_control(Reader& r, pugi::xml_node control, Real start, FebAnal
   io::TimeSpec t;
   long steps = 0;
   t.growth = 1.0; // without a time stepper FEBio keeps step_size
-  for (pugi::xml_node c : control.children()) {
-    if (!is_element(c))
-      continue;
+  for (pugi::xml_node c : elements(control)) {
     const std::string_view key = c.name();
     if (key == "time_steps")
       steps = r.doc.integer(c);
@@ -283,9 +274,7 @@ void read_steps(Reader& r, pugi::xml_node root) {
     return;
   }
   Real start = 0.0;
-  for (pugi::xml_node s : steps.children()) {
-    if (!is_element(s))
-      continue;
+  for (pugi::xml_node s : elements(steps)) {
     if (std::string_view(s.name()) != "step")
       r.doc.fail(s, "expected <step> elements");
     const std::size_t k = r.spec.steps.size() + 1;
@@ -301,9 +290,7 @@ void read_steps(Reader& r, pugi::xml_node root) {
     if (analysis == FebAnalysis::Dynamic)
       step.analysis = io::AnalysisType::Dynamic;
     start = step.time.end_time;
-    for (pugi::xml_node part : s.children()) {
-      if (!is_element(part))
-        continue;
+    for (pugi::xml_node part : elements(s)) {
       const std::string_view kind = part.name();
       if (kind == "Boundary")
         read_boundary(r, part, step.fixed, step.prescribed, true);

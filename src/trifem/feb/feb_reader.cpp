@@ -74,9 +74,7 @@ void read_module(Reader& r, pugi::xml_node root) {
 
 /// Sections that are refused with a reason (everything else unknown is refused too).
 void check_sections(const Reader& r, pugi::xml_node root) {
-  for (pugi::xml_node s : root.children()) {
-    if (s.type() != pugi::node_element)
-      continue;
+  for (pugi::xml_node s : detail::elements(root)) {
     const std::string_view name = s.name();
     static constexpr std::string_view known[] = {
         "Module",  "Globals", "Control", "Material", "Mesh",     "MeshDomains", "Boundary",

@@ -92,9 +92,7 @@ material::LawSpec solid_law(const Reader& r, pugi::xml_node node) {
         node, "type",
         fmt::format("material type '{}' is not supported (supported: {})", type, known_types()));
   material::LawSpec spec{law->trifem, {}, {}};
-  for (pugi::xml_node p : node.children()) {
-    if (p.type() != pugi::node_element)
-      continue;
+  for (pugi::xml_node p : elements(node)) {
     const std::string name = p.name();
     if (name == "pressure_model") {
       const std::string model = r.doc.text(p);
@@ -150,9 +148,7 @@ void permeability(const Reader& r, pugi::xml_node node, material::ParameterValue
                            "perm-Holmes-Mow, perm-exp-iso)",
                            type));
   }
-  for (pugi::xml_node p : node.children()) {
-    if (p.type() != pugi::node_element)
-      continue;
+  for (pugi::xml_node p : elements(node)) {
     const auto it = std::find_if(names.begin(), names.end(), [&](const auto& q) {
       return std::string_view(p.name()) == q.first;
     });
@@ -185,9 +181,7 @@ void validate_mixture(const Reader& r, pugi::xml_node node, io::MaterialSpec& m)
 io::MaterialSpec biphasic(const Reader& r, pugi::xml_node node) {
   io::MaterialSpec m;
   m.type = "biphasic";
-  for (pugi::xml_node p : node.children()) {
-    if (p.type() != pugi::node_element)
-      continue;
+  for (pugi::xml_node p : elements(node)) {
     const std::string name = p.name();
     if (name == "solid")
       m.solid = solid_law(r, p);
@@ -213,9 +207,7 @@ void triphasic_solute(const Reader& r, pugi::xml_node node, io::MaterialSpec& m)
   const std::string ref = r.doc.attribute(node, "sol");
   const int charge = r.chem.charge(r.doc, node, ref);
   const char* sign = charge > 0 ? "plus" : "minus";
-  for (pugi::xml_node p : node.children()) {
-    if (p.type() != pugi::node_element)
-      continue;
+  for (pugi::xml_node p : elements(node)) {
     const std::string name = p.name();
     const std::string type = r.doc.attribute(p, "type");
     if (name == "diffusivity") {
@@ -260,9 +252,7 @@ io::MaterialSpec triphasic(Reader& r, pugi::xml_node node, const std::string& na
   io::MaterialSpec m;
   m.type = "triphasic";
   int solutes = 0;
-  for (pugi::xml_node p : node.children()) {
-    if (p.type() != pugi::node_element)
-      continue;
+  for (pugi::xml_node p : elements(node)) {
     const std::string key = p.name();
     if (key == "solid") {
       m.solid = solid_law(r, p);
@@ -346,9 +336,7 @@ void map_fixed_charges(Reader& r) {
 }
 
 void read_materials(Reader& r, pugi::xml_node section) {
-  for (pugi::xml_node node : section.children()) {
-    if (node.type() != pugi::node_element)
-      continue;
+  for (pugi::xml_node node : elements(section)) {
     if (std::string_view(node.name()) != "material")
       r.doc.fail(node, "expected <material> elements");
     const std::string id = node.attribute("id").value();

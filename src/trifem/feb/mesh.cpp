@@ -10,9 +10,7 @@ namespace trifem::feb::detail {
 namespace {
 
 void read_nodes(Reader& r, pugi::xml_node section) {
-  for (pugi::xml_node n : section.children()) {
-    if (!is_element(n))
-      continue;
+  for (pugi::xml_node n : elements(section)) {
     if (std::string_view(n.name()) != "node")
       r.doc.fail(n, "expected <node> elements");
     const long id = n.attribute("id").as_llong(-1);
@@ -42,9 +40,7 @@ void read_elements(Reader& r, pugi::xml_node part) {
     r.doc.fail(part, "name", fmt::format("a second <Elements> part named '{}'", name));
   r.parts[name] = part;
   std::vector<Index> cells;
-  for (pugi::xml_node e : part.children()) {
-    if (!is_element(e))
-      continue;
+  for (pugi::xml_node e : elements(part)) {
     if (std::string_view(e.name()) != "elem")
       r.doc.fail(e, "expected <elem> elements");
     const long id = e.attribute("id").as_llong(-1);
@@ -78,9 +74,7 @@ void read_elements(Reader& r, pugi::xml_node part) {
 std::vector<long> set_ids(const Reader& r, pugi::xml_node set) {
   std::vector<long> ids;
   bool children = false;
-  for (pugi::xml_node n : set.children()) {
-    if (!is_element(n))
-      continue;
+  for (pugi::xml_node n : elements(set)) {
     children = true;
     if (!n.attribute("id"))
       r.doc.fail(n, "expected an id attribute");
@@ -99,9 +93,7 @@ void read_surface(Reader& r, pugi::xml_node surface) {
   const std::string name = r.doc.attribute(surface, "name");
   std::vector<std::array<Index, 4>> quads;
   std::vector<pugi::xml_node> elements;
-  for (pugi::xml_node f : surface.children()) {
-    if (!is_element(f))
-      continue;
+  for (pugi::xml_node f : detail::elements(surface)) {
     if (std::string_view(f.name()) != "quad4")
       r.doc.fail(f, fmt::format("surface facet type '{}' is not supported (trifem has quad4 faces "
                                 "of hex8 cells only)",
@@ -152,9 +144,7 @@ void read_element_set(Reader& r, pugi::xml_node set) {
 }
 
 void read_domains(Reader& r, pugi::xml_node domains) {
-  for (pugi::xml_node d : domains.children()) {
-    if (!is_element(d))
-      continue;
+  for (pugi::xml_node d : elements(domains)) {
     if (std::string_view(d.name()) != "SolidDomain")
       r.doc.fail(
           d, fmt::format("<{}> is not supported (trifem has solid hex8 domains only)", d.name()));
@@ -179,9 +169,7 @@ void read_mesh(Reader& r, pugi::xml_node mesh, pugi::xml_node domains) {
     read_elements(r, n);
   if (r.parts.empty())
     r.doc.fail(mesh, "the mesh has no <Elements>");
-  for (pugi::xml_node n : mesh.children()) {
-    if (!is_element(n))
-      continue;
+  for (pugi::xml_node n : elements(mesh)) {
     const std::string_view kind = n.name();
     if (kind == "NodeSet")
       read_node_set(r, n);

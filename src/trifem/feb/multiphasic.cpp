@@ -16,9 +16,7 @@ constexpr Real kGasConstant = 8.314;
 
 void read_constants(Reader& r, pugi::xml_node constants) {
   r.chem.constants = constants;
-  for (pugi::xml_node c : constants.children()) {
-    if (!is_element(c))
-      continue;
+  for (pugi::xml_node c : elements(constants)) {
     const std::string_view name = c.name();
     Real* target = name == "T"    ? &r.chem.T
                    : name == "R"  ? &r.chem.R
@@ -34,9 +32,7 @@ void read_constants(Reader& r, pugi::xml_node constants) {
 void read_solutes(Reader& r, pugi::xml_node solutes) {
   if (!r.multiphasic_module)
     r.doc.fail(solutes, "<Solutes> needs the multiphasic module");
-  for (pugi::xml_node s : solutes.children()) {
-    if (!is_element(s))
-      continue;
+  for (pugi::xml_node s : elements(solutes)) {
     if (std::string_view(s.name()) != "solute")
       r.doc.fail(s, "expected <solute> elements");
     const std::string id = r.doc.attribute(s, "id");
@@ -250,9 +246,7 @@ void check_initial(Reader& r) {
 } // namespace
 
 void read_globals(Reader& r, pugi::xml_node section) {
-  for (pugi::xml_node g : section.children()) {
-    if (!is_element(g))
-      continue;
+  for (pugi::xml_node g : elements(section)) {
     const std::string_view name = g.name();
     if (name == "Constants")
       read_constants(r, g);
@@ -274,9 +268,7 @@ void read_globals(Reader& r, pugi::xml_node section) {
 }
 
 void read_initial(Reader& r, pugi::xml_node section) {
-  for (pugi::xml_node ic : section.children()) {
-    if (!is_element(ic))
-      continue;
+  for (pugi::xml_node ic : elements(section)) {
     if (std::string_view(ic.name()) != "ic")
       r.doc.fail(ic, fmt::format("<{}> is not supported in <Initial> (expected <ic>)", ic.name()));
     const std::string type = r.doc.attribute(ic, "type");

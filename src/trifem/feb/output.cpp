@@ -112,9 +112,7 @@ void read_log_entry(Reader& r, pugi::xml_node d) {
 } // namespace
 
 void read_output(Reader& r, pugi::xml_node section) {
-  for (pugi::xml_node c : section.children()) {
-    if (c.type() != pugi::node_element)
-      continue;
+  for (pugi::xml_node c : elements(section)) {
     const std::string_view kind = c.name();
     if (kind == "plotfile")
       continue; // trifem writes its own VTU files

@@ -98,4 +98,12 @@ std::vector<Index> Reader::nodes_of(pugi::xml_node node, const std::vector<long>
   return nodes;
 }
 
+std::vector<pugi::xml_node> elements(pugi::xml_node node) {
+  std::vector<pugi::xml_node> children;
+  for (pugi::xml_node c : node.children())
+    if (is_element(c))
+      children.push_back(c);
+  return children;
+}
+
 } // namespace trifem::feb::detail

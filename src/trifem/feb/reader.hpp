@@ -106,6 +106,9 @@ inline bool is_element(pugi::xml_node n) {
   return n.type() == pugi::node_element;
 }
 
+/// The element children of `node` in document order (those for which is_element holds).
+std::vector<pugi::xml_node> elements(pugi::xml_node node);
+
 /// Runs `f` (a mesh operation), turning its InputError into one located at `node`.
 template <class F>
 void with_mesh_errors(const Reader& r, pugi::xml_node node, F&& f) {

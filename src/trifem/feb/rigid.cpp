@@ -35,8 +35,8 @@ int translation(const Reader& r, pugi::xml_node dof) {
 /// rigid_fixed: Rx_dof ... Rw_dof flags.
 void rigid_fixed(Reader& r, pugi::xml_node bc) {
   RigidBodyInput& body = body_of(r, bc);
-  for (pugi::xml_node c : bc.children()) {
-    if (!is_element(c) || std::string_view(c.name()) == "rb")
+  for (pugi::xml_node c : elements(bc)) {
+    if (std::string_view(c.name()) == "rb")
       continue;
     static constexpr std::string_view names[] = {"Rx_dof", "Ry_dof", "Rz_dof",
                                                  "Ru_dof", "Rv_dof", "Rw_dof"};
@@ -52,9 +52,7 @@ void rigid_drive(Reader& r, pugi::xml_node node, io::RigidDrive drive) {
   RigidBodyInput& body = body_of(r, node);
   const int k = translation(r, r.doc.child(node, "dof"));
   const pugi::xml_node value = r.doc.child(node, "value");
-  for (pugi::xml_node c : node.children()) {
-    if (!is_element(c))
-      continue;
+  for (pugi::xml_node c : elements(node)) {
     const std::string_view name = c.name();
     if (name == "relative" && r.doc.integer(c) != 0)
       r.doc.fail(c, "a relative rigid displacement or force is not supported");
@@ -119,9 +117,7 @@ void attach_rigid(Reader& r, pugi::xml_node bc, bool step) {
 }
 
 void read_rigid(Reader& r, pugi::xml_node section) {
-  for (pugi::xml_node c : section.children()) {
-    if (!is_element(c))
-      continue;
+  for (pugi::xml_node c : elements(section)) {
     const std::string kind = c.name(), type = r.doc.attribute(c, "type");
     if (kind == "rigid_bc" && type == "rigid_fixed")
       rigid_fixed(r, c);

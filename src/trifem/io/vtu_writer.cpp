@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// VTK XML unstructured grid (.vtu) writer: appended raw, inline base64 and ascii encodings.
+// VTK XML unstructured grid (.vtu) writer: raw binary appended data.
 #include "trifem/io/vtu_writer.hpp"
 
 #include "trifem/core/error.hpp"
@@ -184,48 +184,6 @@ std::size_t count_non_finite(const Piece& piece) {
   return count;
 }
 
-/// Streaming base64 encoder (RFC 4648 alphabet, '=' padding, no line breaks).
-class Base64Writer {
-public:
-  explicit Base64Writer(std::ostream& out) : out_(out) {}
-  void put(std::span<const std::byte> bytes) {
-    for (const std::byte b : bytes) {
-      group_[filled_++] = static_cast<std::uint8_t>(b);
-      if (filled_ == 3)
-        emit_group();
-    }
-  }
-  /// Encodes the last partial group with padding and flushes the output.
-  void finish() {
-    if (filled_ > 0)
-      emit_group();
-    out_.write(buffer_.data(), static_cast<std::streamsize>(buffer_.size()));
-    buffer_.clear();
-  }
-
-private:
-  void emit_group() {
-    static constexpr char kAlphabet[] =
-        "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-    for (int i = filled_; i < 3; ++i)
-      group_[i] = 0;
-    const std::uint32_t bits = (std::uint32_t{group_[0]} << 16) | (std::uint32_t{group_[1]} << 8) |
-                               std::uint32_t{group_[2]};
-    for (int k = 0; k < 4; ++k)
-      buffer_ += k <= filled_ ? kAlphabet[(bits >> (18 - 6 * k)) & 0x3F] : '=';
-    filled_ = 0;
-    if (buffer_.size() >= (1u << 16)) {
-      out_.write(buffer_.data(), static_cast<std::streamsize>(buffer_.size()));
-      buffer_.clear();
-    }
-  }
-
-  std::ostream& out_;
-  std::array<std::uint8_t, 3> group_{};
-  int filled_ = 0;
-  std::string buffer_;
-};
-
 void write_raw(std::ostream& out, std::span<const std::byte> bytes) {
   out.write(reinterpret_cast<const char*>(bytes.data()),
             static_cast<std::streamsize>(bytes.size()));
@@ -235,51 +193,16 @@ std::span<const std::byte> header_bytes(const std::uint64_t& byte_count) {
   return std::as_bytes(std::span<const std::uint64_t, 1>(&byte_count, 1));
 }
 
-void write_ascii_values(std::ostream& out, const Array& array) {
-  const std::size_t per_line =
-      array.components > 1 ? static_cast<std::size_t>(array.components) : 6;
-  fmt::memory_buffer buffer;
-  std::visit(
-      [&](auto values) {
-        for (std::size_t i = 0; i < values.size(); ++i) {
-          const char* separator = i % per_line == 0 ? "\n          " : " ";
-          if constexpr (std::is_same_v<decltype(values), std::span<const std::uint8_t>>)
-            fmt::format_to(std::back_inserter(buffer), "{}{}", separator, unsigned{values[i]});
-          else
-            fmt::format_to(std::back_inserter(buffer), "{}{}", separator, values[i]);
-        }
-      },
-      array.values);
-  out.write(buffer.data(), static_cast<std::streamsize>(buffer.size()));
-}
-
-void write_data_array(std::ostream& out, const Array& array, VtuEncoding encoding) {
+void write_data_array(std::ostream& out, const Array& array) {
   out << fmt::format(R"(        <DataArray type="{}" Name="{}" NumberOfComponents="{}")",
-                     array.type, xml_escape(array.name), array.components);
-  if (encoding == VtuEncoding::Appended) {
-    out << fmt::format(R"( format="appended" offset="{}"/>)", array.offset) << '\n';
-    return;
-  }
-  if (encoding == VtuEncoding::Base64) {
-    out << " format=\"binary\">\n          ";
-    const std::span<const std::byte> bytes = bytes_of(array);
-    const std::uint64_t byte_count = bytes.size();
-    Base64Writer encoder(out);
-    encoder.put(header_bytes(byte_count));
-    encoder.put(bytes);
-    encoder.finish();
-  } else {
-    out << " format=\"ascii\">";
-    write_ascii_values(out, array);
-  }
-  out << "\n        </DataArray>\n";
+                     array.type, xml_escape(array.name), array.components)
+      << fmt::format(R"( format="appended" offset="{}"/>)", array.offset) << '\n';
 }
 
-void write_section(std::ostream& out, std::string_view tag, const std::vector<Array>& arrays,
-                   VtuEncoding encoding) {
+void write_section(std::ostream& out, std::string_view tag, const std::vector<Array>& arrays) {
   out << "      <" << tag << ">\n";
   for (const Array& array : arrays)
-    write_data_array(out, array, encoding);
+    write_data_array(out, array);
   out << "      </" << tag << ">\n";
 }
 
@@ -294,8 +217,7 @@ void write_appended_data(std::ostream& out, Piece& piece) {
   out << "\n  </AppendedData>\n";
 }
 
-void write_document(std::ostream& out, Piece& piece, std::size_t n_points, std::size_t n_cells,
-                    VtuEncoding encoding) {
+void write_document(std::ostream& out, Piece& piece, std::size_t n_points, std::size_t n_cells) {
   constexpr bool kLittle = std::endian::native == std::endian::little;
   out << "<?xml version=\"1.0\"?>\n"
       << fmt::format(R"(<VTKFile type="UnstructuredGrid" version="1.0" byte_order="{}")",
@@ -303,19 +225,18 @@ void write_document(std::ostream& out, Piece& piece, std::size_t n_points, std::
       << " header_type=\"UInt64\">\n  <UnstructuredGrid>\n"
       << fmt::format(R"(    <Piece NumberOfPoints="{}" NumberOfCells="{}">)", n_points, n_cells)
       << '\n';
-  write_section(out, "PointData", piece.point_data, encoding);
-  write_section(out, "CellData", piece.cell_data, encoding);
-  write_section(out, "Points", piece.points, encoding);
-  write_section(out, "Cells", piece.cells, encoding);
+  write_section(out, "PointData", piece.point_data);
+  write_section(out, "CellData", piece.cell_data);
+  write_section(out, "Points", piece.points);
+  write_section(out, "Cells", piece.cells);
   out << "    </Piece>\n  </UnstructuredGrid>\n";
-  if (encoding == VtuEncoding::Appended)
-    write_appended_data(out, piece);
+  write_appended_data(out, piece);
   out << "</VTKFile>\n";
 }
 
 } // namespace
 
-std::size_t write_vtu(const fs::path& file, const UnstructuredGrid& grid, VtuEncoding encoding) {
+std::size_t write_vtu(const fs::path& file, const UnstructuredGrid& grid) {
   verify_grid(grid);
   Piece piece = make_piece(grid);
   std::uint64_t offset = 0;
@@ -324,7 +245,7 @@ std::size_t write_vtu(const fs::path& file, const UnstructuredGrid& grid, VtuEnc
     offset += sizeof(std::uint64_t) + bytes_of(array).size();
   });
   write_file_atomically(file, [&](std::ostream& out) {
-    write_document(out, piece, grid.points.size(), grid.types.size(), encoding);
+    write_document(out, piece, grid.points.size(), grid.types.size());
   });
   return count_non_finite(piece);
 }

@@ -26,8 +26,6 @@ struct DataArray {
 
 /// VTK cell type codes used by trifem.
 namespace vtk_cell {
-inline constexpr std::uint8_t kVertex = 1;
-inline constexpr std::uint8_t kLine = 3;
 inline constexpr std::uint8_t kQuad = 9;
 inline constexpr std::uint8_t kHexahedron = 12;
 } // namespace vtk_cell
@@ -48,29 +46,21 @@ struct UnstructuredGrid {
   std::size_t cell_count() const { return types.size(); }
 };
 
-/// How write_vtu stores the arrays.
-enum class VtuEncoding {
-  Appended, ///< raw binary appended data (default; smallest and fastest)
-  Base64,   ///< inline binary, base64 encoded (pure-text file)
-  Ascii     ///< human readable, for debugging (numbers in shortest round-trip form)
-};
-
 /// Writes a .vtu XML file (VTK UnstructuredGrid, version 1.0, header_type UInt64, byte order of
-/// the host, i.e. LittleEndian on x86-64/arm64). Points and data arrays are Float64,
-/// connectivity and offsets Int64, types UInt8.
+/// the host, i.e. LittleEndian on x86-64/arm64; arrays as raw binary appended data). Points and
+/// data arrays are Float64, connectivity and offsets Int64, types UInt8.
 /// Sizes are checked with TRIFEM_VERIFY (an inconsistent grid is a bug). Non-finite values are
 /// written as they are (VTK accepts NaN); the function returns how many point coordinates and
 /// data values are non-finite so the caller can report them.
 /// Writes to "<file>.tmp" then renames, so a crash never leaves a truncated file. Throws
-/// InputError (naming the path) if the file cannot be written.
-std::size_t write_vtu(const std::filesystem::path& file, const UnstructuredGrid& grid,
-                      VtuEncoding encoding = VtuEncoding::Appended);
+/// OutputError (naming the path) if the file cannot be written.
+std::size_t write_vtu(const std::filesystem::path& file, const UnstructuredGrid& grid);
 
 /// Escapes the XML special characters & < > " ' of `text` for use in attribute values.
 std::string xml_escape(std::string_view text);
 
 /// Writes `file` through `write`: the content goes to "<file>.tmp", which is renamed onto `file`
-/// only once it is complete. Throws InputError naming the path if the file cannot be written
+/// only once it is complete. Throws OutputError naming the path if the file cannot be written
 /// (the temporary is removed then).
 void write_file_atomically(const std::filesystem::path& file,
                            const std::function<void(std::ostream&)>& write);

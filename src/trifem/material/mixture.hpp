@@ -14,12 +14,6 @@
 
 namespace trifem::material {
 
-/// Basis of the fixed-charge density input.
-enum class FixedChargeBasis {
-  Water, ///< per unit interstitial water volume (the paper's symbol definition)
-  Tissue ///< per unit reference tissue volume (converted: cF0_water = cF0_tissue / phi_w0)
-};
-
 /// Validated mixture coefficients (mm-N-s-mmol units). The element evaluates the transport laws
 /// at its current state; the plain numbers `permeability`, `d_plus` and `d_minus` are their values
 /// in the reference state (characteristic scales and messages), set by make_mixture.

@@ -33,8 +33,6 @@ public:
 
   /// The local basis (columns e1, e2, e3 in global components).
   const Mat3& basis() const { return Q_; }
-  /// The law in local components.
-  const ElasticLaw& local_law() const { return *law_; }
 
 private:
   Mat3 local(const Mat3& C) const { return Q_.transpose() * C * Q_; }

@@ -198,11 +198,4 @@ Vector InertiaTerm::lumped_mass() const {
   return out;
 }
 
-Real InertiaTerm::kinetic_energy() const {
-  Vector v = Vector::Zero(map_.num_dofs());
-  for (std::size_t i = 0; i < dofs_.size(); ++i)
-    v[dofs_[i]] = v_[static_cast<Index>(i)];
-  return 0.5 * v.dot(mass_times(v));
-}
-
 } // namespace trifem::physics

@@ -78,8 +78,6 @@ public:
   Vector mass_times(const Vector& u) const;
   /// The row sums of M at every DOF (zero outside dofs()): the lumped mass.
   Vector lumped_mass() const;
-  /// Kinetic energy v·M v / 2 of the velocity of step n [mJ].
-  Real kinetic_energy() const;
 
 private:
   /// The Newmark acceleration a_{n+1} of the entry i of dofs() for the displacements

@@ -281,11 +281,4 @@ Real MixtureTerm::water_volume(Index e) const {
   return history_[e].V_old - props_[e]->phi_s0 * history_[e].V0;
 }
 
-Real MixtureTerm::total_water_volume() const {
-  Real v = 0.0;
-  for (Index e = 0; e < num_elements(); ++e)
-    v += water_volume(e);
-  return v;
-}
-
 } // namespace trifem::physics

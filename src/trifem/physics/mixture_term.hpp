@@ -57,9 +57,8 @@ public:
 
   /// Element chemistry, fluxes and stresses at a committed state x (physical units).
   MixtureCellOutput output(Index e, const Vector& x) const;
-  /// Total ion moles [mmol] and water volume [mm^3] of the committed state.
+  /// Total ion moles [mmol] of the committed state.
   Real total_moles(bool cation) const;
-  Real total_water_volume() const;
   /// Water volume [mm^3] of element e in the committed state, V - phi_s0 V0.
   Real water_volume(Index e) const;
 

@@ -74,48 +74,6 @@ std::vector<std::string_view> tags(std::string_view xml, std::string_view elemen
   return found;
 }
 
-std::vector<std::byte> base64_decode(std::string_view text) {
-  static const std::string kAlphabet =
-      "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::vector<std::byte> bytes;
-  std::uint32_t bits = 0;
-  int n_bits = 0;
-  for (const char c : text) {
-    if (c == '=' || std::isspace(static_cast<unsigned char>(c)))
-      continue;
-    const std::size_t v = kAlphabet.find(c);
-    EXPECT_NE(v, std::string::npos) << "bad base64 character " << c;
-    bits = (bits << 6) | static_cast<std::uint32_t>(v);
-    n_bits += 6;
-    if (n_bits >= 8) {
-      n_bits -= 8;
-      bytes.push_back(static_cast<std::byte>((bits >> n_bits) & 0xFF));
-    }
-  }
-  return bytes;
-}
-
-/// Ascii tokens converted to the bytes of the array's VTK type.
-std::vector<std::byte> ascii_decode(std::string_view text, std::string_view type) {
-  std::vector<std::byte> bytes;
-  std::istringstream in{std::string(text)};
-  auto append = [&](auto value) {
-    const auto raw = std::bit_cast<std::array<std::byte, sizeof(value)>>(value);
-    bytes.insert(bytes.end(), raw.begin(), raw.end());
-  };
-  for (std::string token; in >> token;) {
-    if (type == "Float64")
-      append(std::strtod(token.c_str(), nullptr));
-    else if (type == "Int64")
-      append(static_cast<std::int64_t>(std::strtoll(token.c_str(), nullptr, 10)));
-    else if (type == "UInt8")
-      append(static_cast<std::uint8_t>(std::strtoul(token.c_str(), nullptr, 10)));
-    else
-      ADD_FAILURE() << "unexpected type " << type;
-  }
-  return bytes;
-}
-
 /// A .vtu file read back: XML part and the raw appended block.
 class VtuFile {
 public:
@@ -166,21 +124,8 @@ public:
 
 private:
   std::vector<std::byte> decode(std::string_view tag) const {
-    const std::string format = attribute(tag, "format");
-    if (format == "appended")
-      return appended(std::stoull(attribute(tag, "offset")));
-    const std::size_t begin = static_cast<std::size_t>(tag.data() + tag.size() - text_.data());
-    const std::string_view content =
-        std::string_view(text_).substr(begin, text_.find("</DataArray>", begin) - begin);
-    if (format == "ascii")
-      return ascii_decode(content, attribute(tag, "type"));
-    EXPECT_EQ(format, "binary");
-    std::vector<std::byte> raw = base64_decode(content);
-    EXPECT_GE(raw.size(), 8u);
-    std::uint64_t n = 0;
-    std::memcpy(&n, raw.data(), 8);
-    EXPECT_EQ(n, raw.size() - 8) << "base64 header byte count";
-    return {raw.begin() + 8, raw.end()};
+    EXPECT_EQ(attribute(tag, "format"), "appended");
+    return appended(std::stoull(attribute(tag, "offset")));
   }
 
   std::vector<std::byte> appended(std::uint64_t offset) const {
@@ -301,9 +246,6 @@ void expect_round_trip(const fs::path& file, const UnstructuredGrid& grid) {
   EXPECT_FALSE(fs::exists(fs::path(file.string() + ".tmp")));
 }
 
-constexpr std::array<VtuEncoding, 3> kEncodings = {VtuEncoding::Appended, VtuEncoding::Base64,
-                                                   VtuEncoding::Ascii};
-
 TEST_F(WriterTest, AddCellKeepsOffsetsConsistent) {
   const UnstructuredGrid grid = two_hexes();
   EXPECT_EQ(grid.offsets, (std::vector<Index>{8, 16}));
@@ -311,16 +253,13 @@ TEST_F(WriterTest, AddCellKeepsOffsetsConsistent) {
   EXPECT_EQ(grid.connectivity.size(), 16u);
 }
 
-TEST_F(WriterTest, VtuRoundTripsHexAndQuadGridsInEveryEncoding) {
-  for (const VtuEncoding encoding : kEncodings) {
-    SCOPED_TRACE(static_cast<int>(encoding));
-    const UnstructuredGrid hexes = two_hexes();
-    const UnstructuredGrid quads = two_quads();
-    EXPECT_EQ(write_vtu(dir_ / "hexes.vtu", hexes, encoding), 0u);
-    EXPECT_EQ(write_vtu(dir_ / "quads.vtu", quads, encoding), 0u);
-    expect_round_trip(dir_ / "hexes.vtu", hexes);
-    expect_round_trip(dir_ / "quads.vtu", quads);
-  }
+TEST_F(WriterTest, VtuRoundTripsHexAndQuadGrids) {
+  const UnstructuredGrid hexes = two_hexes();
+  const UnstructuredGrid quads = two_quads();
+  EXPECT_EQ(write_vtu(dir_ / "hexes.vtu", hexes), 0u);
+  EXPECT_EQ(write_vtu(dir_ / "quads.vtu", quads), 0u);
+  expect_round_trip(dir_ / "hexes.vtu", hexes);
+  expect_round_trip(dir_ / "quads.vtu", quads);
 }
 
 TEST_F(WriterTest, PiecesHoldTheirCellsWithTheirPointsAndData) {
@@ -372,49 +311,41 @@ TEST_F(WriterTest, PvtuListsThePiecesAndTheArraysOfTheGrid) {
 }
 
 TEST_F(WriterTest, VtuEscapesSpecialCharactersInNames) {
-  for (const VtuEncoding encoding : kEncodings) {
-    write_vtu(dir_ / "hexes.vtu", two_hexes(), encoding);
-    const std::string xml(VtuFile(dir_ / "hexes.vtu").xml());
-    EXPECT_NE(xml.find("Name=\"pressure &amp; &lt;p&gt; &quot;kPa&quot; &apos;x&apos;\""),
-              std::string::npos);
-    EXPECT_EQ(xml.find("<p>"), std::string::npos);
-    EXPECT_NE(xml.find("Name=\"displacement [mm]\""), std::string::npos);
-  }
+  write_vtu(dir_ / "hexes.vtu", two_hexes());
+  const std::string xml(VtuFile(dir_ / "hexes.vtu").xml());
+  EXPECT_NE(xml.find("Name=\"pressure &amp; &lt;p&gt; &quot;kPa&quot; &apos;x&apos;\""),
+            std::string::npos);
+  EXPECT_EQ(xml.find("<p>"), std::string::npos);
+  EXPECT_NE(xml.find("Name=\"displacement [mm]\""), std::string::npos);
 }
 
 TEST_F(WriterTest, VtuOfEmptyGridIsValid) {
-  for (const VtuEncoding encoding : kEncodings) {
-    UnstructuredGrid empty;
-    empty.point_data.push_back({"u", 3, {}});
-    empty.cell_data.push_back({"s", 1, {}});
-    EXPECT_EQ(write_vtu(dir_ / "empty.vtu", empty, encoding), 0u);
-    expect_round_trip(dir_ / "empty.vtu", empty);
-    EXPECT_NE(read_text(dir_ / "empty.vtu").find("</VTKFile>"), std::string::npos);
-  }
+  UnstructuredGrid empty;
+  empty.point_data.push_back({"u", 3, {}});
+  empty.cell_data.push_back({"s", 1, {}});
+  EXPECT_EQ(write_vtu(dir_ / "empty.vtu", empty), 0u);
+  expect_round_trip(dir_ / "empty.vtu", empty);
+  EXPECT_NE(read_text(dir_ / "empty.vtu").find("</VTKFile>"), std::string::npos);
 }
 
 TEST_F(WriterTest, VtuOfPointsWithoutCells) {
   UnstructuredGrid cloud;
   cloud.points = {Vec3(1, 2, 3), Vec3(-1, 0.5, 1e-9)};
   cloud.point_data.push_back(make_data("p", 1, 2, 0));
-  for (const VtuEncoding encoding : kEncodings) {
-    EXPECT_EQ(write_vtu(dir_ / "cloud.vtu", cloud, encoding), 0u);
-    expect_round_trip(dir_ / "cloud.vtu", cloud);
-  }
+  EXPECT_EQ(write_vtu(dir_ / "cloud.vtu", cloud), 0u);
+  expect_round_trip(dir_ / "cloud.vtu", cloud);
 }
 
 TEST_F(WriterTest, VtuWritesAndCountsNonFiniteValues) {
-  for (const VtuEncoding encoding : kEncodings) {
-    UnstructuredGrid grid = two_quads();
-    grid.point_data[0].values[2] = std::numeric_limits<double>::quiet_NaN();
-    grid.cell_data[0].values[1] = -std::numeric_limits<double>::infinity();
-    EXPECT_EQ(write_vtu(dir_ / "bad.vtu", grid, encoding), 2u);
-    const VtuFile vtu(dir_ / "bad.vtu");
-    const std::vector<double> p = vtu.values<double>("contact pressure");
-    ASSERT_EQ(p.size(), 6u);
-    EXPECT_TRUE(std::isnan(p[2]));
-    EXPECT_EQ(vtu.values<double>("gap <mm>").at(1), -std::numeric_limits<double>::infinity());
-  }
+  UnstructuredGrid grid = two_quads();
+  grid.point_data[0].values[2] = std::numeric_limits<double>::quiet_NaN();
+  grid.cell_data[0].values[1] = -std::numeric_limits<double>::infinity();
+  EXPECT_EQ(write_vtu(dir_ / "bad.vtu", grid), 2u);
+  const VtuFile vtu(dir_ / "bad.vtu");
+  const std::vector<double> p = vtu.values<double>("contact pressure");
+  ASSERT_EQ(p.size(), 6u);
+  EXPECT_TRUE(std::isnan(p[2]));
+  EXPECT_EQ(vtu.values<double>("gap <mm>").at(1), -std::numeric_limits<double>::infinity());
 }
 
 TEST_F(WriterTest, VtuRejectsInconsistentGrid) {

@@ -2,6 +2,7 @@
 // End-to-end tests of dynamic-explicit analyses ([analysis] type = "dynamic-explicit"): result
 // files, the time step, the keys they reject, and the stop on a non-finite value.
 #include "cli_harness.hpp"
+#include "restart_file_layout.hpp"
 
 #include <cmath>
 #include <cstdlib>
@@ -271,6 +272,20 @@ TEST_F(CliExplicit, ARunRestartedInsideTheRunContinuesTheUninterruptedOne) {
   }
   const std::string summary = read_text(resumed / "summary.json");
   EXPECT_EQ(json_number(summary, "steps"), json_number(read_text(whole / "summary.json"), "steps"));
+
+  // an integrator state of the right size with an invalid value (as another program could
+  // write it, the checksum resealed) is an input error naming the file
+  std::string bytes = read_text(files[1]);
+  const trifem::test::RestartLayout layout = trifem::test::restart_layout(bytes);
+  trifem::test::put<double>(bytes, layout.integrator + 8, -1.0); // the halvings
+  trifem::test::reseal(bytes);
+  const fs::path damaged = write_file("damaged.bin", bytes);
+  r = trifem(
+      {"run", file.string(), "-o", (output() / "damaged").string(), "--restart", damaged.string()});
+  EXPECT_EQ(r.exit_code, kInvalidInput) << r;
+  EXPECT_TRUE(contains(r.err, damaged.string() + ": the dynamic-explicit step's state is invalid "
+                                                 "(-1 halvings)"))
+      << r;
 }
 
 TEST_F(CliExplicit, FluxFieldIsRejected) {

@@ -191,8 +191,9 @@ void ExplicitStep::log_settings() const {
 }
 
 namespace {
-constexpr std::size_t kStepScalars =
-    4; ///< halvings, the energy balance's scale, largest error, flag
+/// The values of state() before the integrator's: the halvings and the energy balance's scale,
+/// largest error and flag.
+constexpr std::size_t kStepScalars = 4;
 } // namespace
 
 std::vector<double> ExplicitStep::state() const {

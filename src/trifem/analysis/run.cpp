@@ -493,11 +493,12 @@ public:
     if (whole_)
       whole_->log_settings();
   }
-  /// Continues the whole case's step from `resume` (read into the model); InputError if the
-  /// file's integrator state does not fit. A run continued inside one of several steps
-  /// restores it when the step begins.
-  void continue_from(const Resume& resume) {
+  /// Continues the whole case's step from `resume` (read from `file` into the model);
+  /// InputError naming the file if its integrator state does not fit. A run continued inside
+  /// one of several steps restores it when the step begins.
+  void continue_from(const Resume& resume, const std::filesystem::path& file) {
     resume_ = &resume;
+    resume_file_ = file.string();
     if (whole_)
       restore(*whole_);
   }
@@ -588,13 +589,14 @@ private:
     try {
       step.restore(resume_->integrator);
     } catch (const InputError& e) {
-      throw InputError(fmt::format("restart file: {}", e.what()));
+      throw InputError(fmt::format("{}: {}", resume_file_, e.what()));
     }
   }
 
   const io::CaseSpec& spec_;
   model::Model& model_;
   const Resume* resume_ = nullptr; ///< the run continues from it (until its step begins)
+  std::string resume_file_;
   RestartWriter restart_;
   std::list<io::CaseSpec> parts_; ///< what each step sees (its steps refer to them)
   std::unique_ptr<ExplicitStep> whole_;
@@ -613,7 +615,7 @@ int run_model(const io::CaseSpec& spec, const std::filesystem::path& output_dir,
   std::optional<Resume> resume;
   if (!options.restart_file.empty()) {
     resume = resume_from(options.restart_file, spec, *model);
-    with_case_file(spec, [&] { explicit_steps.continue_from(*resume); });
+    explicit_steps.continue_from(*resume, options.restart_file);
   }
   const bool write_restarts = options.write_restart || spec.output.restart;
   std::unique_ptr<linalg::LinearSolver> linear_solver = linear_solver_for(spec);

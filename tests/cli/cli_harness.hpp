@@ -108,6 +108,16 @@ inline std::size_t count_of(std::string_view text, std::string_view part) {
   return n;
 }
 
+/// The restart files of a run directory, in order.
+inline std::vector<fs::path> restart_files(const fs::path& dir) {
+  std::vector<fs::path> files;
+  for (const auto& e : fs::directory_iterator(dir))
+    if (e.path().filename().string().starts_with("restart_"))
+      files.push_back(e.path());
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
 /// The unit of a history column ("top.uz [mm]" -> "mm"; "" if none).
 inline std::string unit_of(const std::string& name) {
   const auto open = name.rfind('[');

@@ -204,11 +204,7 @@ TEST_F(CliDynamic, ARunRestartedInsideTheDynamicStepContinuesTheUninterruptedOne
   const fs::path whole = output() / "whole", resumed = output() / "resumed";
   Result r = trifem({"-q", "run", file.string(), "-o", whole.string(), "--write-restart"});
   ASSERT_EQ(r.exit_code, kSuccess) << r;
-  std::vector<fs::path> files;
-  for (const auto& e : fs::directory_iterator(whole))
-    if (e.path().filename().string().starts_with("restart_"))
-      files.push_back(e.path());
-  std::sort(files.begin(), files.end());
+  const std::vector<fs::path> files = restart_files(whole);
   ASSERT_GE(files.size(), 3u);
   const fs::path restart = files[files.size() - 3]; // 1.0001 s (then 1.0002 s and the end)
   r = trifem({"-q", "run", file.string(), "-o", resumed.string(), "--restart", restart.string()});

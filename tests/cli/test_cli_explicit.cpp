@@ -243,11 +243,7 @@ TEST_F(CliExplicit, ARunRestartedInsideTheRunContinuesTheUninterruptedOne) {
   const fs::path whole = output() / "whole", resumed = output() / "resumed";
   Result r = trifem({"-q", "run", file.string(), "-o", whole.string(), "--write-restart"});
   ASSERT_EQ(r.exit_code, kSuccess) << r;
-  std::vector<fs::path> files;
-  for (const auto& e : fs::directory_iterator(whole))
-    if (e.path().filename().string().starts_with("restart_"))
-      files.push_back(e.path());
-  std::sort(files.begin(), files.end());
+  const std::vector<fs::path> files = restart_files(whole);
   ASSERT_EQ(files.size(), 4u) << "one per output time: 0.25, 0.5, 0.75 and 1 ms";
   r = trifem({"-q", "run", file.string(), "-o", resumed.string(), "--restart", files[1].string()});
   ASSERT_EQ(r.exit_code, kSuccess) << r;

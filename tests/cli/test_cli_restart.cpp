@@ -28,16 +28,6 @@ fs::path example_case(const std::string& name) {
   return kExamples / name / (name + ".toml");
 }
 
-/// The restart files of a run directory, in order.
-std::vector<fs::path> restart_files(const fs::path& dir) {
-  std::vector<fs::path> files;
-  for (const auto& e : fs::directory_iterator(dir))
-    if (e.path().filename().string().starts_with("restart_"))
-      files.push_back(e.path());
-  std::sort(files.begin(), files.end());
-  return files;
-}
-
 class CliRestart : public Cli {
 protected:
   /// Runs the example `name` whole, writing restart files, then again from the restart file

@@ -4,6 +4,7 @@
 #include "trifem/core/error.hpp"
 #include "trifem/core/interrupt.hpp"
 #include "trifem/core/log.hpp"
+#include "trifem/parallel/communicator.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -63,10 +64,15 @@ public:
           const model::Model& model)
       : view_(view), solver_(solver), residual_(Vector::Zero(model.dofs.num_dofs())) {}
 
-  /// The state after `report` (the model's state is set by the caller).
-  void update(const ed::StepReport& report) {
+  /// The state after `report` (the model's state is set by the caller), with the velocity if
+  /// a VTU state follows. Collective on several processes: the values every process writes
+  /// (rank 0 its history row, each its piece) are evaluated here.
+  void update(const ed::StepReport& report, bool volume) {
     report_ = report;
     view_.scatter(solver_.reaction_force(), residual_);
+    energies_ = solver_.energies();
+    if (volume)
+      velocity_ = solver_.velocity();
   }
   std::vector<std::string> columns() const override {
     return {"halvings",           "constraint_residual", "max|Jbar-1|",
@@ -74,7 +80,7 @@ public:
             "external_work [mJ]", "damping_work [mJ]",   "total_energy [mJ]"};
   }
   void append_values(std::vector<double>& row) const override {
-    const ed::Energies e = solver_.energies();
+    const ed::Energies& e = energies_;
     row.insert(row.end(), {static_cast<double>(report_.halvings), report_.constraint_residual,
                            solver_.max_volume_change(), solver_.max_gauss_volume_change(),
                            e.kinetic, e.strain, e.external_work, e.damping_work, e.total()});
@@ -84,7 +90,7 @@ public:
   /// instead of the model's cell arrays (whose stresses leave out the multiplier's pressure).
   void add_arrays(std::vector<io::DataArray>& point,
                   std::vector<io::DataArray>& cell) const override {
-    const Vector v = solver_.velocity();
+    const Vector& v = velocity_;
     point.push_back({"velocity [mm/s]", 3, std::vector<double>(v.data(), v.data() + v.size())});
     cell = {cell_array("multiplier [MPa]", solver_.multiplier()),
             cell_array("pressure [MPa]", multiplier_pressure(solver_)),
@@ -95,7 +101,8 @@ private:
   const ed::ExplicitModel& view_;
   const ed::ExplicitSolver& solver_;
   ed::StepReport report_;
-  Vector residual_;
+  ed::Energies energies_;
+  Vector residual_, velocity_;
 };
 
 Real explicit_output_interval(const io::CaseSpec& spec, Real start) {
@@ -227,7 +234,7 @@ void ExplicitStep::write(OutputWriter& output, const ed::StepReport& report, boo
   view_->scatter(solver_->displacement(), x);
   model_.problem->set_state(x);
   model_.problem->set_time(solver_->time());
-  results_->update(report);
+  results_->update(report, volume);
   output.write(solver_->time(), static_cast<int>(solver_->step_count()), report.dt,
                report.iterations, volume);
   output_seconds_ += std::chrono::duration<double>(Clock::now() - start).count();
@@ -239,7 +246,7 @@ void ExplicitStep::advance(OutputWriter& output, solver::RunReport& run,
   for (const StepTarget& target : explicit_step_targets(part_, start_)) {
     const Real eps = 1e-12 * std::max(target.time, solver_->time_step_info().used);
     while (solver_->time() < target.time - eps) {
-      if (interrupt::requested()) {
+      if (parallel::any(interrupt::requested())) { // a signal to one process stops them all
         run.interrupted = true;
         run.failure = fmt::format("interrupted at t = {:.6g} s", solver_->time());
         return;

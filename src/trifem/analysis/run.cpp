@@ -699,21 +699,12 @@ int run_model(const io::CaseSpec& spec, const std::filesystem::path& output_dir,
   return finish_run(spec, output_dir, summary_json, run);
 }
 
-int run_any_case(const io::CaseSpec& spec, const std::filesystem::path& output_dir,
-                 const RunOptions& options) {
-  TRIFEM_CHECK(!parallel::active() || !(spec.is_explicit() || spec.has_explicit_step()),
-               "{}: the explicit analysis runs on one process; run this case without mpirun "
-               "(started on {} processes)",
-               spec.file.string(), parallel::size());
-  return run_model(spec, output_dir, options);
-}
-
 } // namespace
 
 int run_case(const io::CaseSpec& spec, const std::filesystem::path& output_dir,
              const RunOptions& options) {
   try {
-    return run_any_case(spec, output_dir, options);
+    return run_model(spec, output_dir, options);
   } catch (const std::bad_alloc&) { // reported by the caller; the summary must not say running
     abandon_summary("out of memory: the model is too large for the memory available");
     throw;

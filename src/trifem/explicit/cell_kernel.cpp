@@ -2,6 +2,7 @@
 #include "trifem/explicit/cell_kernel.hpp"
 
 #include "trifem/explicit/parallel.hpp"
+#include "trifem/parallel/communicator.hpp"
 
 #include <cmath>
 #include <limits>
@@ -71,6 +72,24 @@ int evaluate_cell(const fe::HexGeometry& geo, const fe::HexCoords& u,
   return kOk;
 }
 
+/// The cell scalars of evaluate_cells whole on every process (ExplicitModel::sum_cell_parts),
+/// in one sum.
+void sum_cell_scalars(const ExplicitModel& model, const CellRequest& request, CellFields& out) {
+  std::vector<Vector*> parts = {&out.volume_change, &out.gauss_volume_change};
+  if (request.psi)
+    parts.push_back(&out.psi);
+  if (request.energy)
+    parts.push_back(&out.energy);
+  const Index n = model.num_cells();
+  Vector all(n * static_cast<Index>(parts.size()));
+  for (std::size_t i = 0; i < parts.size(); ++i)
+    for (Index c = 0; c < n; ++c)
+      all[static_cast<Index>(i) * n + c] = model.owns_cell(c) ? (*parts[i])[c] : 0.0;
+  parallel::sum(all);
+  for (std::size_t i = 0; i < parts.size(); ++i)
+    *parts[i] = all.segment(static_cast<Index>(i) * n, n);
+}
+
 } // namespace
 
 void CellFields::resize(Index n) {
@@ -87,9 +106,11 @@ CellStatus evaluate_cells(const ExplicitModel& model, Constraint constraint, con
   const Index n = model.num_cells();
   if (static_cast<Index>(out.internal.size()) != n)
     out.resize(n);
-  Index first_bad = std::numeric_limits<Index>::max();
+  Index first_bad = n; // none
 #pragma omp parallel for schedule(static) reduction(min : first_bad) if (n >= kMinParallelLoop)
   for (Index c = 0; c < n; ++c) {
+    if (!model.evaluates(c))
+      continue;
     Real W = 0.0;
     const int code = evaluate_cell(model.geometry()[c], model.cell_values(c, U), model.law(c),
                                    constraint, request, out.internal[c], out.gradient[c],
@@ -99,9 +120,15 @@ CellStatus evaluate_cells(const ExplicitModel& model, Constraint constraint, con
     if (code != kOk)
       first_bad = std::min(first_bad, c);
   }
-  if (first_bad == std::numeric_limits<Index>::max())
+  if (model.distributed()) {
+    sum_cell_scalars(model, request, out);
+    for (const Real bad : parallel::gather(static_cast<Real>(first_bad)))
+      first_bad = std::min(first_bad, static_cast<Index>(bad));
+  }
+  if (first_bad == n)
     return {};
-  // Re-evaluate the first failing cell serially to name the quantity (deterministic).
+  // Re-evaluate the first failing cell serially to name the quantity (deterministic; every
+  // process holds every cell).
   CellVector q, h;
   Real psi = 0.0, W = 0.0, dJ = 0.0, dev = 0.0;
   const int code = evaluate_cell(model.geometry()[first_bad], model.cell_values(first_bad, U),
@@ -118,6 +145,10 @@ void gather(const ExplicitModel& model, const std::vector<CellVector>& v, const 
   y.resize(3 * nn);
 #pragma omp parallel for schedule(static) if (nn >= kMinParallelLoop)
   for (Index a = 0; a < nn; ++a) {
+    if (!model.owns_node(a)) {
+      y.segment<3>(3 * a).setZero();
+      continue;
+    }
     Vec3 sum = Vec3::Zero();
     for (Index i = inc.offsets[a]; i < inc.offsets[a + 1]; ++i) {
       const auto [c, l] = inc.entries[i];
@@ -125,6 +156,8 @@ void gather(const ExplicitModel& model, const std::vector<CellVector>& v, const 
     }
     y.segment<3>(3 * a) = sum;
   }
+  if (model.distributed())
+    parallel::sum(y);
 }
 
 void cell_dot(const ExplicitModel& model, const std::vector<CellVector>& v, const Vector& x,
@@ -135,10 +168,13 @@ void cell_dot(const ExplicitModel& model, const std::vector<CellVector>& v, cons
   for (Index c = 0; c < n; ++c) {
     const mesh::Hex8& nodes = model.mesh().cell(c);
     Real s = 0.0;
-    for (int a = 0; a < 8; ++a)
-      s += v[c].segment<3>(3 * a).dot(x.segment<3>(3 * nodes[a]));
+    if (model.owns_cell(c))
+      for (int a = 0; a < 8; ++a)
+        s += v[c].segment<3>(3 * a).dot(x.segment<3>(3 * nodes[a]));
     z[c] = s;
   }
+  if (model.distributed())
+    parallel::sum(z);
 }
 
 } // namespace trifem::explicit_dynamics

@@ -50,16 +50,20 @@ struct CellStatus {
 };
 
 /// Evaluates the requested quantities of every cell at the displacement U (OpenMP over cells).
-/// Ψ = J − 1 gives ∂Ψ/∂F = J F⁻ᵀ; Ψ = ln J gives F⁻ᵀ.
+/// Ψ = J − 1 gives ∂Ψ/∂F = J F⁻ᵀ; Ψ = ln J gives F⁻ᵀ. On several processes each evaluates its
+/// cells (ExplicitModel::evaluates): the cell vectors (q_e, h_e) hold those, the scalars are
+/// whole, and the status is that of the first failing cell of all (collective).
 CellStatus evaluate_cells(const ExplicitModel& model, Constraint constraint, const Vector& U,
                           const CellRequest& request, CellFields& out);
 
 /// y_{3a+k} = Σ_{(e,l) incident to a} w_e v_e[3l+k] with w_e = weights[e] (or 1 if empty):
 /// the nodal assembly of cell vectors, as a gather (deterministic, no atomics; OpenMP over nodes).
+/// On several processes each gathers its own nodes and the parts are summed (collective).
 void gather(const ExplicitModel& model, const std::vector<CellVector>& v, const Vector* weights,
             Vector& y);
 
-/// z_e = Σ_a Σ_k v_e[3a+k] x_{3 node(e,a) + k}: the transpose of gather, per cell (H^T x).
+/// z_e = Σ_a Σ_k v_e[3a+k] x_{3 node(e,a) + k}: the transpose of gather, per cell (H^T x); on
+/// several processes, each of its own cells, summed (collective).
 void cell_dot(const ExplicitModel& model, const std::vector<CellVector>& v, const Vector& x,
               Vector& z);
 

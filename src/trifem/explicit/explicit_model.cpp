@@ -3,8 +3,10 @@
 
 #include "trifem/core/error.hpp"
 #include "trifem/fe/quadrature.hpp"
+#include "trifem/linalg/nested_dissection.hpp"
 #include "trifem/mesh/hex_faces.hpp"
 #include "trifem/model/model.hpp"
+#include "trifem/parallel/communicator.hpp"
 
 #include <algorithm>
 
@@ -37,6 +39,7 @@ ExplicitModel::ExplicitModel(const model::Model& model) : model_(model), mesh_(m
       free_mass_[i] = fixed_[i] ? 0.0 : mass_[i];
     }
   build_incidence();
+  build_partition();
 }
 
 void ExplicitModel::external_force(const Vector& U, Real time, Vector& f) const {
@@ -132,6 +135,54 @@ void ExplicitModel::build_mass() {
   mass_.resize(num_dofs());
   for (Index a = 0; a < mesh_.num_nodes(); ++a)
     mass_.segment<3>(3 * a).setConstant(nodal[a]);
+}
+
+void ExplicitModel::build_partition() {
+  if (!parallel::active())
+    return;
+  const Index nn = mesh_.num_nodes();
+  rank_ = parallel::rank();
+  node_owner_.assign(nn, 0);
+  if (parallel::is_root()) { // the node graph: nodes sharing a cell
+    std::vector<Index> start = {0}, column;
+    for (Index a = 0; a < nn; ++a) {
+      const auto first = static_cast<std::ptrdiff_t>(column.size());
+      for (Index i = incidence_.offsets[a]; i < incidence_.offsets[a + 1]; ++i)
+        for (Index b : mesh_.cell(incidence_.entries[i].first))
+          column.push_back(b);
+      std::sort(column.begin() + first, column.end());
+      column.erase(std::unique(column.begin() + first, column.end()), column.end());
+      start.push_back(static_cast<Index>(column.size()));
+    }
+    node_owner_ = linalg::partition_rows({nn, start.data(), column.data()}, parallel::size());
+  }
+  parallel::broadcast(node_owner_);
+  const Index n = mesh_.num_cells();
+  cell_owner_.resize(n);
+  evaluated_.assign(n, 0);
+  for (Index c = 0; c < n; ++c) {
+    cell_owner_[c] = node_owner_[mesh_.cell(c)[0]];
+    for (Index a : mesh_.cell(c))
+      evaluated_[c] = evaluated_[c] || node_owner_[a] == rank_;
+  }
+}
+
+void ExplicitModel::sum_node_parts(Vector& v) const {
+  if (!distributed())
+    return;
+  for (Index a = 0; a < mesh_.num_nodes(); ++a)
+    if (!owns_node(a))
+      v.segment<3>(3 * a).setZero();
+  parallel::sum(v);
+}
+
+void ExplicitModel::sum_cell_parts(Vector& v) const {
+  if (!distributed())
+    return;
+  for (Index c = 0; c < mesh_.num_cells(); ++c)
+    if (!owns_cell(c))
+      v[c] = 0.0;
+  parallel::sum(v);
 }
 
 void ExplicitModel::build_incidence() {

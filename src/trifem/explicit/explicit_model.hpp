@@ -61,6 +61,23 @@ public:
   void prescribe(Real time, Vector& U) const;
   const NodeIncidence& incidence() const { return incidence_; }
 
+  /// On several processes (parallel::active()) the nodes are partitioned (METIS, the cells'
+  /// couplings); a process gathers the forces of the nodes it owns, evaluates the cells that
+  /// have one of them (all those the forces of its nodes need) and reports the cell values of
+  /// the cells it owns (those whose first node it owns). Every vector over nodes or cells is
+  /// whole on every process, the same bits everywhere. On one process all are its own.
+  bool distributed() const { return !node_owner_.empty(); }
+  bool owns_node(Index a) const { return node_owner_.empty() || node_owner_[a] == rank_; }
+  bool owns_cell(Index c) const { return cell_owner_.empty() || cell_owner_[c] == rank_; }
+  bool evaluates(Index c) const { return evaluated_.empty() || evaluated_[c] != 0; }
+  /// The owning process of every cell (empty on one process).
+  const std::vector<int>& cell_owners() const { return cell_owner_; }
+  /// Replaces `v` (per node 3 a + k, or per cell) by the sum over the processes of its entries
+  /// at this process's own nodes (or cells), the others taken as 0: the whole vector from the
+  /// parts each owner computed. A no-op on one process.
+  void sum_node_parts(Vector& v) const;
+  void sum_cell_parts(Vector& v) const;
+
   /// f = F_S(t, U) = −Σ over the model's load terms of their residual at U and time t [N]
   /// (follower pressures on the current surface, dead tractions per reference area), size
   /// num_dofs, overwritten; fixed DOFs included.
@@ -78,6 +95,7 @@ private:
   void build_geometry();
   void build_mass();
   void build_incidence();
+  void build_partition();
 
   const model::Model& model_;
   const mesh::Mesh& mesh_;
@@ -88,6 +106,9 @@ private:
   std::vector<char> fixed_;
   bool prescribed_motion_ = false;
   NodeIncidence incidence_;
+  std::vector<int> node_owner_, cell_owner_; ///< empty on one process
+  std::vector<char> evaluated_;              ///< empty on one process
+  int rank_ = 0;
 };
 
 } // namespace trifem::explicit_dynamics

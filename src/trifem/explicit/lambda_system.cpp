@@ -5,6 +5,7 @@
 #include "trifem/explicit/parallel.hpp"
 
 #include "trifem/linalg/cholmod_solver.hpp"
+#include "trifem/linalg/linear_solver.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -19,12 +20,63 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 } // namespace
 
 LambdaSystem::LambdaSystem(const ExplicitModel& model)
-    : model_(model), cholesky_(linalg::make_cholmod_solver()) {
-  build_pattern();
-  cholesky_->analyze_pattern(A_);
-  TRIFEM_VERIFY(cholesky_->failure().reason.empty(),
-                "symbolic analysis of the multiplier system failed: {}",
-                cholesky_->failure().reason);
+    : model_(model), solver_(model.distributed() ? linalg::make_linear_solver("mumps")
+                                                 : linalg::make_cholmod_solver()) {
+  if (model.distributed()) {
+    build_part_pattern();
+    solver_->set_partition(model.cell_owners());
+  } else {
+    build_pattern();
+  }
+  solver_->analyze_pattern(A_);
+  TRIFEM_VERIFY(solver_->failure().reason.empty(),
+                "symbolic analysis of the multiplier system failed: {}", solver_->failure().reason);
+}
+
+void LambdaSystem::build_part_pattern() {
+  const Index n = model_.num_cells();
+  const NodeIncidence& inc = model_.incidence();
+  std::vector<Eigen::Triplet<Real>> entries;
+  for (Index f = 0; f < n; ++f)
+    if (model_.owns_cell(f))
+      entries.emplace_back(f, f, 0.0);
+  for (Index a = 0; a < model_.mesh().num_nodes(); ++a)
+    if (model_.owns_node(a))
+      for (Index i = inc.offsets[a]; i < inc.offsets[a + 1]; ++i)
+        for (Index j = inc.offsets[a]; j < inc.offsets[a + 1]; ++j)
+          entries.emplace_back(inc.entries[i].first, inc.entries[j].first, 0.0);
+  A_ = SparseMatrix(n, n);
+  A_.setFromTriplets(entries.begin(), entries.end());
+  slots_.clear(); // the value index of each entry, in the order assemble_part() visits them
+  for (const Eigen::Triplet<Real>& t : entries) {
+    const Index* begin = A_.innerIndexPtr() + A_.outerIndexPtr()[t.col()];
+    const Index* end = A_.innerIndexPtr() + A_.outerIndexPtr()[t.col() + 1];
+    slots_.push_back(
+        static_cast<Index>(std::lower_bound(begin, end, t.row()) - A_.innerIndexPtr()));
+  }
+}
+
+void LambdaSystem::assemble_part(const std::vector<CellVector>& h, const Vector& inverse_mass,
+                                 Real h2, const Vector& diagonal) {
+  const NodeIncidence& inc = model_.incidence();
+  Real* values = A_.valuePtr();
+  std::fill(values, values + A_.nonZeros(), 0.0);
+  std::size_t s = 0;
+  for (Index f = 0; f < model_.num_cells(); ++f)
+    if (model_.owns_cell(f))
+      values[slots_[s++]] += diagonal[f];
+  for (Index a = 0; a < model_.mesh().num_nodes(); ++a) {
+    if (!model_.owns_node(a))
+      continue;
+    for (Index i = inc.offsets[a]; i < inc.offsets[a + 1]; ++i) {
+      const auto [e, le] = inc.entries[i];
+      const Vec3 w = h2 * inverse_mass.segment<3>(3 * a).cwiseProduct(h[e].segment<3>(3 * le));
+      for (Index j = inc.offsets[a]; j < inc.offsets[a + 1]; ++j) {
+        const auto [f, lf] = inc.entries[j];
+        values[slots_[s++]] += w.dot(h[f].segment<3>(3 * lf));
+      }
+    }
+  }
 }
 
 void LambdaSystem::build_pattern() {
@@ -90,10 +142,13 @@ void LambdaSystem::assemble(const std::vector<CellVector>& h, const Vector& inve
 bool LambdaSystem::factorize(const std::vector<CellVector>& h, const Vector& inverse_mass, Real h2,
                              const Vector& diagonal) {
   auto start = std::chrono::steady_clock::now();
-  assemble(h, inverse_mass, h2, diagonal);
+  if (model_.distributed())
+    assemble_part(h, inverse_mass, h2, diagonal);
+  else
+    assemble(h, inverse_mass, h2, diagonal);
   timings_.assemble += seconds_since(start);
   start = std::chrono::steady_clock::now();
-  const bool positive_definite = cholesky_->factorize(A_);
+  const bool positive_definite = solver_->factorize(A_);
   timings_.factorize += seconds_since(start);
   ++timings_.factorizations;
   return positive_definite;
@@ -101,7 +156,7 @@ bool LambdaSystem::factorize(const std::vector<CellVector>& h, const Vector& inv
 
 void LambdaSystem::solve(const Vector& b, Vector& x) {
   const auto start = std::chrono::steady_clock::now();
-  cholesky_->solve(b, x);
+  solver_->solve(b, x);
   timings_.solve += seconds_since(start);
   ++timings_.solves;
 }

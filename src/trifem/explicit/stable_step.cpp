@@ -35,6 +35,8 @@ void apply_stiffness(const ExplicitModel& model, Constraint constraint, const Ve
   scratch.resize(n);
 #pragma omp parallel for schedule(static) if (n >= kMinParallelLoop)
   for (Index c = 0; c < n; ++c) {
+    if (!model.evaluates(c)) // (gather reads the cells of this process's nodes only)
+      continue;
     const physics::HexMatrix K = cell_stiffness(model, constraint, U, lambda, c);
     const fe::HexCoords vc = model.cell_values(c, v);
     CellVector ve;
@@ -53,8 +55,10 @@ public:
     CellFields fields;
     evaluate_cells(model, constraint, U, {false, true, false}, fields);
     h_ = std::move(fields.gradient);
-    Vector diagonal(model.num_cells());
+    Vector diagonal = Vector::Zero(model.num_cells());
     for (Index c = 0; c < model.num_cells(); ++c) {
+      if (!model.evaluates(c))
+        continue;
       Real d = 0.0;
       for (int a = 0; a < 8; ++a) {
         const Index node = model.mesh().cell(c)[a];

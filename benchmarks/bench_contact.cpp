@@ -92,8 +92,8 @@ struct ContactFixture {
   Vector x;
 
   explicit ContactFixture(int n) : n_s(n), mesh(two_layers(n)) {
-    u = map.add_field("displacement", mesh.num_nodes(), 3);
-    lambda = map.add_field("contact_pressure",
+    u = map.add_field("displacement", FieldRole::displacement, mesh.num_nodes(), 3);
+    lambda = map.add_field("contact_pressure", FieldRole::multiplier,
                            static_cast<Index>(mesh.node_set("lower.zmax").size()), 1);
     for (Index node : mesh.node_set("lower.zmin"))
       for (int k = 0; k < 3; ++k)

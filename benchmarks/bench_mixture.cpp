@@ -133,12 +133,12 @@ struct ColumnModel {
     spec.divisions = {n, n, 4 * n};
     mesh = mesh::make_box(spec);
     props = std::make_shared<material::MixtureProperties>(paper_tissue(true));
-    f.u = map.add_field("displacement", mesh.num_nodes(), 3);
-    f.w = map.add_field("fluid_flux", mesh.num_nodes(), 3);
-    f.j_plus = map.add_field("cation_flux", mesh.num_nodes(), 3);
-    f.j_minus = map.add_field("anion_flux", mesh.num_nodes(), 3);
-    f.p = map.add_field("pressure", mesh.num_cells(), 1);
-    f.eta = map.add_field("potential", mesh.num_cells(), 1);
+    f.u = map.add_field("displacement", FieldRole::displacement, mesh.num_nodes(), 3);
+    f.w = map.add_field("fluid_flux", FieldRole::flux, mesh.num_nodes(), 3);
+    f.j_plus = map.add_field("cation_flux", FieldRole::flux, mesh.num_nodes(), 3);
+    f.j_minus = map.add_field("anion_flux", FieldRole::flux, mesh.num_nodes(), 3);
+    f.p = map.add_field("pressure", FieldRole::potential, mesh.num_cells(), 1);
+    f.eta = map.add_field("potential", FieldRole::potential, mesh.num_cells(), 1);
 
     for (const char* face : {"box.xmin", "box.xmax"})
       confine(face, 0);

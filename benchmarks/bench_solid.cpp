@@ -91,7 +91,7 @@ struct BoxModel {
     spec.divisions = {n, n, n};
     mesh = mesh::make_box(spec);
     law = make_law("neo-hookean");
-    u = map.add_field("displacement", mesh.num_nodes(), 3);
+    u = map.add_field("displacement", FieldRole::displacement, mesh.num_nodes(), 3);
     dofs::DirichletCondition bottom;
     for (Index node : mesh.node_set("box.zmin"))
       for (int k = 0; k < 3; ++k)

@@ -15,12 +15,12 @@ void expect_tangent_matches(Real pressure) {
   const mesh::Mesh mesh = mesh::make_box(spec);
   dofs::DofMap map;
   physics::MixtureFields f;
-  f.u = map.add_field("u", mesh.num_nodes(), 3);
-  f.w = map.add_field("w", mesh.num_nodes(), 3);
-  f.j_plus = map.add_field("j+", mesh.num_nodes(), 3);
-  f.j_minus = map.add_field("j-", mesh.num_nodes(), 3);
-  f.p = map.add_field("p", 1, 1);
-  f.eta = map.add_field("eta", 1, 1);
+  f.u = map.add_field("u", FieldRole::displacement, mesh.num_nodes(), 3);
+  f.w = map.add_field("w", FieldRole::flux, mesh.num_nodes(), 3);
+  f.j_plus = map.add_field("j+", FieldRole::flux, mesh.num_nodes(), 3);
+  f.j_minus = map.add_field("j-", FieldRole::flux, mesh.num_nodes(), 3);
+  f.p = map.add_field("p", FieldRole::potential, 1, 1);
+  f.eta = map.add_field("eta", FieldRole::potential, 1, 1);
   map.finalize();
   material::Electrochemistry chem;
   const physics::BathTerm term(mesh, map, f, mesh.surface("box.xmax").facets, chem, 4e-5,

@@ -37,7 +37,7 @@ struct DynamicBlock {
     box.divisions = {2, 1, 2};
     box.grading = Vec3(1.7, 1.0, 0.6); // cells of different shapes
     mesh = mesh::make_box(box);
-    u = dofs.add_field("displacement", mesh.num_nodes(), 3);
+    u = dofs.add_field("displacement", FieldRole::displacement, mesh.num_nodes(), 3);
     dofs::DirichletCondition clamp{{}, 0.0, dofs::LoadCurve::constant(1.0)};
     for (Index n : mesh.node_set("box.xmin"))
       for (int k = 0; k < 3; ++k)

@@ -155,7 +155,7 @@ TEST(PressureLoad, FollowerTangentMatchesFiniteDifferences) {
   spec.divisions = {1, 1, 1};
   const mesh::Mesh mesh = mesh::make_box(spec);
   dofs::DofMap map;
-  const auto u = map.add_field("displacement", mesh.num_nodes(), 3);
+  const auto u = map.add_field("displacement", FieldRole::displacement, mesh.num_nodes(), 3);
   map.finalize();
   const auto& facets = mesh.surface("box.zmax").facets;
   physics::PressureTerm term(mesh, map, u, facets, 0.7, dofs::LoadCurve::constant());

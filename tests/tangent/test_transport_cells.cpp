@@ -265,15 +265,15 @@ public:
       : mesh_(mesh::make_box({"box", Vec3::Zero(), Vec3(2.0, 1.0, 1.0), {2, 1, 1}})),
         rotate_fluid_(rotate_fluid) {
     props_ = std::make_shared<material::MixtureProperties>(make_setup(ions, "neo-hookean").mat);
-    f_.u = dofs_.add_field("displacement", mesh_.num_nodes(), 3);
-    f_.w = dofs_.add_field("fluid_flux", mesh_.num_nodes(), 3);
+    f_.u = dofs_.add_field("displacement", FieldRole::displacement, mesh_.num_nodes(), 3);
+    f_.w = dofs_.add_field("fluid_flux", FieldRole::flux, mesh_.num_nodes(), 3);
     if (ions) {
-      f_.j_plus = dofs_.add_field("cation_flux", mesh_.num_nodes(), 3);
-      f_.j_minus = dofs_.add_field("anion_flux", mesh_.num_nodes(), 3);
+      f_.j_plus = dofs_.add_field("cation_flux", FieldRole::flux, mesh_.num_nodes(), 3);
+      f_.j_minus = dofs_.add_field("anion_flux", FieldRole::flux, mesh_.num_nodes(), 3);
     }
-    f_.p = dofs_.add_field("pressure", mesh_.num_cells(), 1);
+    f_.p = dofs_.add_field("pressure", FieldRole::potential, mesh_.num_cells(), 1);
     if (ions)
-      f_.eta = dofs_.add_field("potential", mesh_.num_cells(), 1);
+      f_.eta = dofs_.add_field("potential", FieldRole::potential, mesh_.num_cells(), 1);
     dofs::DirichletCondition bottom;
     for (Index n : mesh_.node_set("box.zmin"))
       for (dofs::FieldId field : {f_.w, f_.j_plus, f_.j_minus})

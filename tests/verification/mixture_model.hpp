@@ -45,15 +45,15 @@ struct MixtureModel {
 
   MixtureModel(mesh::Mesh m, material::MixtureProperties p) : mesh(std::move(m)) {
     props = std::make_shared<material::MixtureProperties>(std::move(p));
-    f.u = dofs.add_field("displacement", mesh.num_nodes(), 3);
-    f.w = dofs.add_field("fluid_flux", mesh.num_nodes(), 3);
+    f.u = dofs.add_field("displacement", FieldRole::displacement, mesh.num_nodes(), 3);
+    f.w = dofs.add_field("fluid_flux", FieldRole::flux, mesh.num_nodes(), 3);
     if (props->charged) {
-      f.j_plus = dofs.add_field("cation_flux", mesh.num_nodes(), 3);
-      f.j_minus = dofs.add_field("anion_flux", mesh.num_nodes(), 3);
+      f.j_plus = dofs.add_field("cation_flux", FieldRole::flux, mesh.num_nodes(), 3);
+      f.j_minus = dofs.add_field("anion_flux", FieldRole::flux, mesh.num_nodes(), 3);
     }
-    f.p = dofs.add_field("pressure", mesh.num_cells(), 1);
+    f.p = dofs.add_field("pressure", FieldRole::potential, mesh.num_cells(), 1);
     if (props->charged)
-      f.eta = dofs.add_field("potential", mesh.num_cells(), 1);
+      f.eta = dofs.add_field("potential", FieldRole::potential, mesh.num_cells(), 1);
   }
 
   /// Fixes component k of `field` on a node set to value * curve(t).

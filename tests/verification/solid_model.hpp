@@ -27,7 +27,7 @@ struct SolidModel {
 
   SolidModel(mesh::Mesh m, const std::string& law_type, material::ParameterValues params)
       : mesh(std::move(m)), law(material::create_law(law_type, params, "test")) {
-    u = dofs.add_field("displacement", mesh.num_nodes(), 3);
+    u = dofs.add_field("displacement", FieldRole::displacement, mesh.num_nodes(), 3);
   }
 
   /// Fixes component k of the nodes to value * curve(t) (curve = t by default: ramp 0..1).

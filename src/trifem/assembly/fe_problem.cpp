@@ -138,6 +138,13 @@ void FeProblem::build_assembler() {
   reset_system();
 }
 
+std::vector<FieldRole> FeProblem::field_roles() const {
+  std::vector<FieldRole> roles;
+  for (int f = 0; f < map_.num_fields(); ++f)
+    roles.push_back(map_.field(dofs::FieldId{f}).role);
+  return roles;
+}
+
 void FeProblem::reset_system() {
   system_ = AssembledSystem{Vector::Zero(map_.num_dofs()), {}, {}};
   pattern_pending_ = true;

@@ -86,6 +86,7 @@ public:
   Index num_equations() const override { return map_.num_equations(); }
   const std::vector<int>& equation_fields() const override { return equation_fields_; }
   const std::vector<solver::FieldScale>& field_scales() const override { return scales_; }
+  std::vector<FieldRole> field_roles() const override;
   int pattern_id() const override { return pattern_id_; }
   const std::vector<int>& equation_owners() const override { return equation_owner_; }
   std::vector<Vector> rigid_body_modes() const override;

@@ -7,10 +7,10 @@
 
 namespace trifem::dofs {
 
-FieldId DofMap::add_field(std::string name, Index num_entities, int components) {
+FieldId DofMap::add_field(std::string name, FieldRole role, Index num_entities, int components) {
   TRIFEM_VERIFY(!finalized_, "cannot add field '{}' after finalize()", name);
   TRIFEM_VERIFY(num_entities >= 0 && components > 0, "bad size of field '{}'", name);
-  fields_.push_back({std::move(name), num_entities, components, num_dofs_});
+  fields_.push_back({std::move(name), role, num_entities, components, num_dofs_});
   num_dofs_ += num_entities * components;
   constrained_.resize(num_dofs_, 0);
   for (Index d = static_cast<Index>(leader_.size()); !leader_.empty() && d < num_dofs_; ++d)

@@ -9,6 +9,7 @@
 // the reactions.
 #pragma once
 
+#include "trifem/core/field_role.hpp"
 #include "trifem/core/types.hpp"
 
 #include <string>
@@ -26,6 +27,7 @@ struct FieldId {
 /// Description of a field.
 struct FieldInfo {
   std::string name;
+  FieldRole role = FieldRole::displacement;
   Index num_entities = 0;
   int components = 0;
   Index offset = 0; ///< first DOF of the field
@@ -34,8 +36,8 @@ struct FieldInfo {
 /// DOF numbering and the free/constrained split.
 class DofMap {
 public:
-  /// Adds a field on `num_entities` entities with `components` components each.
-  FieldId add_field(std::string name, Index num_entities, int components);
+  /// Adds a field of `role` on `num_entities` entities with `components` components each.
+  FieldId add_field(std::string name, FieldRole role, Index num_entities, int components);
 
   Index num_dofs() const { return num_dofs_; }
   int num_fields() const { return static_cast<int>(fields_.size()); }

@@ -24,7 +24,7 @@ LambdaSystem::LambdaSystem(const ExplicitModel& model)
                                                  : linalg::make_cholmod_solver()) {
   if (model.distributed()) {
     build_part_pattern();
-    solver_->set_partition(model.cell_owners());
+    solver_->set_hints({{}, {}, {}, model.cell_owners()});
   } else {
     build_pattern();
   }

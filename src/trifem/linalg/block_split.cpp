@@ -4,35 +4,19 @@
 #include <algorithm>
 
 namespace trifem::linalg {
-namespace {
-
-enum class FieldRole { displacement, flux, potential };
-
-FieldRole role_of(const std::string& name) {
-  if (name == "fluid_flux" || name == "cation_flux" || name == "anion_flux")
-    return FieldRole::flux;
-  if (name == "pressure" || name == "electric_potential" ||
-      name.rfind("contact_multipliers", 0) == 0)
-    return FieldRole::potential;
-  return FieldRole::displacement;
-}
-
-} // namespace
 
 BlockSplit BlockSplit::from_fields(const std::vector<int>& equation_fields,
-                                   const std::vector<std::string>& field_names) {
-  std::vector<FieldRole> roles;
-  for (const std::string& name : field_names)
-    roles.push_back(role_of(name));
+                                   const std::vector<FieldRole>& roles) {
   BlockSplit split;
   for (std::size_t eq = 0; eq < equation_fields.size(); ++eq) {
     const int field = equation_fields[eq];
     const FieldRole role = field >= 0 && field < static_cast<int>(roles.size())
                                ? roles[field]
                                : FieldRole::displacement;
-    std::vector<Index>& group = role == FieldRole::flux        ? split.flux
-                                : role == FieldRole::potential ? split.potential
-                                                               : split.displacement;
+    std::vector<Index>& group = role == FieldRole::flux ? split.flux
+                                : role == FieldRole::potential || role == FieldRole::multiplier
+                                    ? split.potential
+                                    : split.displacement;
     group.push_back(static_cast<Index>(eq));
   }
   return split;

@@ -3,9 +3,9 @@
 // (docs/theory/solvers.md).
 #pragma once
 
+#include "trifem/core/field_role.hpp"
 #include "trifem/core/types.hpp"
 
-#include <string>
 #include <vector>
 
 namespace trifem::linalg {
@@ -13,13 +13,13 @@ namespace trifem::linalg {
 /// Equation indices (ascending) of the primal unknowns, split into displacement and fluxes, and
 /// of the potentials (Lagrange multipliers: pressure, electric potential, contact multipliers).
 struct BlockSplit {
-  std::vector<Index> displacement; ///< displacement (and every field that is not named below)
-  std::vector<Index> flux;         ///< fluid_flux, cation_flux, anion_flux
-  std::vector<Index> potential;    ///< pressure, electric_potential, contact_multipliers_*
+  std::vector<Index> displacement; ///< displacement (and equations of no field)
+  std::vector<Index> flux;         ///< water, cation and anion fluxes
+  std::vector<Index> potential;    ///< pressure, electric potential, contact multipliers
 
-  /// From the field of each equation (an index into `field_names`).
+  /// From the field of each equation (an index into `roles`).
   static BlockSplit from_fields(const std::vector<int>& equation_fields,
-                                const std::vector<std::string>& field_names);
+                                const std::vector<FieldRole>& roles);
   /// Displacement and flux equations together, ascending.
   std::vector<Index> primal() const;
   bool empty() const { return displacement.empty() && flux.empty() && potential.empty(); }

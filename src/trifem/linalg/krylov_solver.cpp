@@ -136,15 +136,12 @@ public:
   KrylovSolver(const KrylovSolver&) = delete;
   KrylovSolver& operator=(const KrylovSolver&) = delete;
 
-  void set_fields(const std::vector<int>& equation_fields,
-                  const std::vector<std::string>& field_names) override {
-    split_ = BlockSplit::from_fields(equation_fields, field_names);
-    equation_fields_ = equation_fields;
-    field_names_ = field_names;
+  void set_hints(const SystemHints& hints) override {
+    LinearSolver::set_hints(hints); // one process only
+    split_ = BlockSplit::from_fields(hints.equation_fields, hints.field_roles);
+    hints_ = hints;
     fallback_.reset();
   }
-
-  void set_near_null_space(std::vector<Vector> modes) override { near_null_ = std::move(modes); }
 
   bool wants_transport_cells() const override {
     return settings_.schur == SchurApproximation::drained && !split_.flux.empty() &&
@@ -362,13 +359,12 @@ private:
     check(KSPSetFromOptions(solvers[1]), "PETSc options");
   }
 
-  /// The model has contact multipliers (active or not; a field the model leaves unnamed, as it
-  /// does them, counts): the displacement block alone may then hold a body only the contact
-  /// supports, and the drained transport block does not hold the multipliers.
+  /// The model has contact multipliers (active or not): the displacement block alone may then
+  /// hold a body only the contact supports, and the drained transport block does not hold the
+  /// multipliers.
   bool has_contact() const {
-    return std::any_of(field_names_.begin(), field_names_.end(), [](const std::string& field) {
-      return field.empty() || field.rfind("contact_multipliers", 0) == 0;
-    });
+    const std::vector<FieldRole>& roles = hints_.field_roles;
+    return std::find(roles.begin(), roles.end(), FieldRole::multiplier) != roles.end();
   }
 
   /// The displacement block: multigrid ("amg") or MUMPS LU; the transport block: the drained
@@ -562,7 +558,7 @@ private:
       fallback_ = std::make_unique<KrylovSolver>(
           "", KrylovSettings{.relative_tolerance = tolerance_,
                              .max_iterations = settings_.max_iterations});
-      fallback_->set_fields(equation_fields_, field_names_);
+      fallback_->set_hints(hints_);
       fallback_->analyze_pattern(*matrix_values_);
     }
     if (!fixed_tolerance_)
@@ -594,10 +590,10 @@ private:
   /// The rigid-body modes on the equations `rows` (ascending), orthonormal; empty when the
   /// problem gave none.
   std::vector<Vector> modes_over(const std::vector<Index>& rows) const {
-    for (const Vector& mode : near_null_)
+    for (const Vector& mode : hints_.near_null_space)
       if (mode.size() != n_)
         return {};
-    return orthonormal_restriction(near_null_, rows);
+    return orthonormal_restriction(hints_.near_null_space, rows);
   }
 
   static bool has_type(PC pc, PCType type) {
@@ -653,9 +649,7 @@ private:
   const bool fixed_tolerance_;  ///< -ksp_rtol among the options: it wins
   const bool fixed_iterations_; ///< -ksp_max_it among the options: it wins
   BlockSplit split_;
-  std::vector<Vector> near_null_; ///< rigid-body modes over the equations (may be empty)
-  std::vector<int> equation_fields_;
-  std::vector<std::string> field_names_;
+  SystemHints hints_; ///< the fields' roles, the rigid-body modes over the equations
   const SparseMatrix* matrix_values_ = nullptr; ///< the matrix of the last factorize
   std::unique_ptr<LinearSolver> fallback_;      ///< "amg": LU blocks after a failed solve
   bool fallback_ready_ = false; ///< fallback_ factorized matrix_values_ (and serves it)
@@ -695,7 +689,8 @@ void check_options_are_used(const std::string& options, KrylovSettings settings)
         A.insert(i, j) = dense[i][j];
   A.makeCompressed();
   KrylovSolver probe(options, settings);
-  probe.set_fields({0, 0, 1, 1, 2}, {"displacement", "fluid_flux", "pressure"});
+  probe.set_hints(
+      {{0, 0, 1, 1, 2}, {FieldRole::displacement, FieldRole::flux, FieldRole::potential}, {}, {}});
   probe.analyze_pattern(A);
   if (!probe.factorize(A))
     throw InputError(fmt::format("solver.petsc_options = '{}': a 5x5 test system could not be "

@@ -11,8 +11,8 @@
 
 namespace trifem::linalg {
 
-void LinearSolver::set_partition(const std::vector<int>& equation_owner) {
-  if (!equation_owner.empty())
+void LinearSolver::set_hints(const SystemHints& hints) {
+  if (!hints.equation_owner.empty())
     throw InputError(fmt::format("the linear solver '{}' runs on one process only", name()));
 }
 

@@ -3,6 +3,7 @@
 // up the preconditioner) per matrix, solve.
 #pragma once
 
+#include "trifem/core/field_role.hpp"
 #include "trifem/core/types.hpp"
 #include "trifem/linalg/transport_cells.hpp"
 
@@ -12,6 +13,22 @@
 #include <vector>
 
 namespace trifem::linalg {
+
+/// What a linear solver may use beyond the matrix (LinearSolver::set_hints); all empty when
+/// nothing is known.
+struct SystemHints {
+  /// The field of every equation (an index into `field_roles`, −1: none) and the role of each
+  /// field: block preconditioners split the system by role, direct solvers ignore them.
+  std::vector<int> equation_fields;
+  std::vector<FieldRole> field_roles;
+  /// The near-null space of the displacement block (the solid's rigid-body motions over the
+  /// equations): algebraic multigrid uses it, the other backends ignore it.
+  std::vector<Vector> near_null_space;
+  /// On several processes: the owner of every equation; each process then gives its own part
+  /// of the matrix (its elements' couplings) and the whole right-hand side, and receives the
+  /// whole solution. Empty: one process.
+  std::vector<int> equation_owner;
+};
 
 /// Why the last analyze_pattern / factorize / solve failed.
 struct LinearSolverFailure {
@@ -30,27 +47,14 @@ public:
   virtual bool factorize(const SparseMatrix& A) = 0;
   /// Solves A x = b with the last factorization; false on failure.
   virtual bool solve(const Vector& b, Vector& x) = 0;
-  /// The field of every equation (an index into `field_names`), before analyze_pattern of a
-  /// new pattern. Block preconditioners split the system by field; direct solvers ignore it.
-  virtual void set_fields(const std::vector<int>& equation_fields,
-                          const std::vector<std::string>& field_names) {
-    (void)equation_fields;
-    (void)field_names;
-  }
-  /// The near-null space of the displacement block (the solid's rigid-body motions over the
-  /// equations), before analyze_pattern of a new pattern; algebraic multigrid uses it, the
-  /// other backends ignore it.
-  virtual void set_near_null_space(std::vector<Vector> modes) { (void)modes; }
+  /// What is known of the system beyond its matrix, before analyze_pattern of a new pattern.
+  /// The base refuses a partition (the backends that run on one process only).
+  virtual void set_hints(const SystemHints& hints);
   /// True if the backend's preconditioner uses the mixture cells' transport data
   /// (set_transport_cells before every factorize); computing them costs a pass over the cells.
   virtual bool wants_transport_cells() const { return false; }
   /// The mixture cells at the state of the next matrix, before its factorize.
   virtual void set_transport_cells(TransportCells cells) { (void)cells; }
-  /// On several processes: the owner of every equation, before analyze_pattern of a new
-  /// pattern; each process then gives its own part of the matrix (its elements' couplings)
-  /// and the whole right-hand side, and receives the whole solution. Empty: one process.
-  /// Backends that run on one process only refuse a non-empty partition.
-  virtual void set_partition(const std::vector<int>& equation_owner);
   /// The residual reduction asked of the next solves of an iterative backend (Newton's forcing
   /// term; ‖A x − b‖ ≤ tolerance ‖b‖); direct backends ignore it, and a tolerance given as a
   /// PETSc option (-ksp_rtol) wins over it.

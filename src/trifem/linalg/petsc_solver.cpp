@@ -89,8 +89,8 @@ const char* pc_failure_text(PCFailedReason reason) {
   }
 }
 
-/// MUMPS LU through a PETSc KSP of type preonly, on one process or (after set_partition) on
-/// all the processes of the run, each giving its part of the matrix.
+/// MUMPS LU through a PETSc KSP of type preonly, on one process or (after set_hints with a
+/// partition) on all the processes of the run, each giving its part of the matrix.
 class MumpsSolver final : public LinearSolver {
 public:
   MumpsSolver(const std::string& options, bool reuse, FactorPrecision precision)
@@ -174,11 +174,11 @@ public:
     return solve_from(b, x, warm);
   }
 
-  void set_partition(const std::vector<int>& equation_owner) override {
+  void set_hints(const SystemHints& hints) override {
     layout_.reset();
-    if (!equation_owner.empty())
-      layout_ =
-          std::make_unique<petsc::RowLayout>(equation_owner, parallel::rank(), parallel::size());
+    if (!hints.equation_owner.empty())
+      layout_ = std::make_unique<petsc::RowLayout>(hints.equation_owner, parallel::rank(),
+                                                   parallel::size());
     single_ = single_asked_ && !layout_; // SinglePrecisionLu runs on one process
   }
 

@@ -139,8 +139,8 @@ void add_contact_fields(const io::CaseSpec& spec, Model& model) {
     const auto nodes = static_cast<Index>(mesh::surface_nodes(slave).size());
     // components: contact pressure [+ water potential [+ c_ref x ion potentials]]
     const int components = model.fields.j_plus.valid() ? 4 : model.fields.w.valid() ? 2 : 1;
-    model.contact_fields.push_back(
-        model.dofs.add_field(fmt::format("contact_multipliers_{}", i + 1), nodes, components));
+    model.contact_fields.push_back(model.dofs.add_field(
+        fmt::format("contact_multipliers_{}", i + 1), FieldRole::multiplier, nodes, components));
   }
 }
 

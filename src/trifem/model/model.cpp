@@ -74,17 +74,17 @@ void add_fields(const std::vector<CellMaterial>& materials, Model& model) {
   }
   const Index nodes = model.mesh.num_nodes(), cells = model.mesh.num_cells();
   physics::MixtureFields& f = model.fields;
-  f.u = model.dofs.add_field("displacement", nodes, 3);
+  f.u = model.dofs.add_field("displacement", FieldRole::displacement, nodes, 3);
   if (mixture)
-    f.w = model.dofs.add_field("fluid_flux", nodes, 3);
+    f.w = model.dofs.add_field("fluid_flux", FieldRole::flux, nodes, 3);
   if (ions) {
-    f.j_plus = model.dofs.add_field("cation_flux", nodes, 3);
-    f.j_minus = model.dofs.add_field("anion_flux", nodes, 3);
+    f.j_plus = model.dofs.add_field("cation_flux", FieldRole::flux, nodes, 3);
+    f.j_minus = model.dofs.add_field("anion_flux", FieldRole::flux, nodes, 3);
   }
   if (mixture)
-    f.p = model.dofs.add_field("pressure", cells, 1);
+    f.p = model.dofs.add_field("pressure", FieldRole::potential, cells, 1);
   if (ions)
-    f.eta = model.dofs.add_field("electric_potential", cells, 1);
+    f.eta = model.dofs.add_field("electric_potential", FieldRole::potential, cells, 1);
 }
 
 /// Bulk terms: a solid term for pure-solid cells, a mixture term for mixture cells.

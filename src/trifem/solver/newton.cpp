@@ -213,12 +213,8 @@ SolveStatus NewtonSolver::factor_and_solve(NonlinearProblem& problem, Linearizat
   }
   auto start = Clock::now();
   if (analyzed_pattern_ != problem.pattern_id()) {
-    std::vector<std::string> names;
-    for (const FieldScale& f : problem.field_scales())
-      names.push_back(f.name);
-    linear_->set_fields(problem.equation_fields(), names);
-    linear_->set_near_null_space(problem.rigid_body_modes());
-    linear_->set_partition(problem.equation_owners());
+    linear_->set_hints({problem.equation_fields(), problem.field_roles(),
+                        problem.rigid_body_modes(), problem.equation_owners()});
     linear_->analyze_pattern(lin.jacobian);
     analyzed_pattern_ = problem.pattern_id();
   }

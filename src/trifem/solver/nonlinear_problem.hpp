@@ -49,9 +49,11 @@ class NonlinearProblem {
 public:
   virtual ~NonlinearProblem() = default;
   virtual Index num_equations() const = 0;
-  /// Field index of every equation, and the scales of each field.
+  /// Field index of every equation, and the scales and the role of each field (no roles: all
+  /// count as displacements).
   virtual const std::vector<int>& equation_fields() const = 0;
   virtual const std::vector<FieldScale>& field_scales() const = 0;
+  virtual std::vector<FieldRole> field_roles() const { return {}; }
   /// Changes whenever the sparsity pattern of the Jacobian changes (symbolic re-analysis).
   virtual int pattern_id() const = 0;
   /// On several processes: the process that owns each equation (the linear solver's rows);

@@ -9,8 +9,8 @@ using namespace trifem;
 
 TEST(DofMap, NumbersFieldsContiguouslyAndSplitsFreeAndConstrained) {
   dofs::DofMap map;
-  const auto u = map.add_field("u", 4, 3);
-  const auto p = map.add_field("p", 2, 1);
+  const auto u = map.add_field("u", FieldRole::displacement, 4, 3);
+  const auto p = map.add_field("p", FieldRole::potential, 2, 1);
   EXPECT_EQ(map.num_dofs(), 14);
   EXPECT_EQ(map.dof(u, 2, 1), 7);
   EXPECT_EQ(map.dof(p, 1, 0), 13);
@@ -30,10 +30,11 @@ TEST(DofMap, NumbersFieldsContiguouslyAndSplitsFreeAndConstrained) {
 
 TEST(DofMap, TiedDofsShareTheirLeadersEquation) {
   dofs::DofMap map;
-  const auto u = map.add_field("u", 4, 1);
+  const auto u = map.add_field("u", FieldRole::displacement, 4, 1);
   map.tie(map.dof(u, 0, 0), map.dof(u, 3, 0)); // the follower precedes its leader
   map.tie(map.dof(u, 2, 0), map.dof(u, 3, 0));
-  const auto p = map.add_field("p", 1, 1); // a field added after a tie is untied
+  const auto p =
+      map.add_field("p", FieldRole::potential, 1, 1); // a field added after a tie is untied
   map.finalize();
   EXPECT_EQ(map.num_equations(), 3);
   EXPECT_EQ(map.num_constrained(), 0);
@@ -46,11 +47,11 @@ TEST(DofMap, TiedDofsShareTheirLeadersEquation) {
 
 TEST(DofMap, TieRejectsChainsAndMixedConstraints) {
   dofs::DofMap chain;
-  chain.add_field("u", 3, 1);
+  chain.add_field("u", FieldRole::displacement, 3, 1);
   chain.tie(0, 1);
   EXPECT_THROW(chain.tie(2, 0), LogicError); // 0 follows 1: it cannot lead
   dofs::DofMap mixed;
-  mixed.add_field("u", 2, 1);
+  mixed.add_field("u", FieldRole::displacement, 2, 1);
   mixed.tie(0, 1);
   mixed.constrain(1);
   EXPECT_THROW(mixed.finalize(), LogicError);

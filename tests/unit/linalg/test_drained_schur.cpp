@@ -200,7 +200,8 @@ int krylov_iterations(const TwoCells& s, const std::string& schur, Real& residua
     fields.push_back(i < TwoCells::kDisplacements              ? 0
                      : i < TwoCells::kDisplacements + s.fluxes ? 1
                                                                : 2);
-  solver->set_fields(fields, {"displacement", "fluid_flux", "pressure"});
+  solver->set_hints(
+      {fields, {FieldRole::displacement, FieldRole::flux, FieldRole::potential}, {}, {}});
   EXPECT_EQ(solver->wants_transport_cells(), schur == "drained");
   solver->analyze_pattern(s.A);
   solver->set_transport_cells(s.cells);

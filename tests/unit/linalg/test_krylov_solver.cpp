@@ -23,8 +23,8 @@ namespace {
 /// that constrain both through B (unsymmetric coupling) with a zero diagonal block.
 struct MixedSystem {
   SparseMatrix A;
-  std::vector<int> fields; ///< 0 displacement, 1 fluid_flux, 2 pressure
-  std::vector<std::string> names{"displacement", "fluid_flux", "pressure"};
+  std::vector<int> fields; ///< 0 displacement, 1 fluid flux, 2 pressure
+  std::vector<FieldRole> roles{FieldRole::displacement, FieldRole::flux, FieldRole::potential};
 };
 
 /// `support`: the displacement block's diagonal shift over the number of cells (negative: an
@@ -68,7 +68,7 @@ Vector mixed_right_hand_side(Index size) {
 
 /// Solves the mixed system with `solver` (fields given) and returns ‖A x − b‖ / ‖b‖.
 Real relative_residual(linalg::LinearSolver& solver, const MixedSystem& s) {
-  solver.set_fields(s.fields, s.names);
+  solver.set_hints({s.fields, s.roles, {}, {}});
   solver.analyze_pattern(s.A);
   EXPECT_TRUE(solver.factorize(s.A)) << solver.failure().reason;
   const Vector b = mixed_right_hand_side(s.A.rows());
@@ -80,11 +80,11 @@ Real relative_residual(linalg::LinearSolver& solver, const MixedSystem& s) {
 } // namespace
 
 TEST(BlockSplit, GroupsEquationsIntoDisplacementFluxesAndPotentials) {
-  const std::vector<std::string> names{"displacement",         "fluid_flux", "cation_flux",
-                                       "anion_flux",           "pressure",   "electric_potential",
-                                       "contact_multipliers_2"};
+  using enum FieldRole;
+  const std::vector<FieldRole> roles{displacement, flux,      flux,      flux,
+                                     potential,    potential, multiplier};
   const std::vector<int> fields{0, 1, 0, 2, 3, 4, 5, 6, 1};
-  const linalg::BlockSplit split = linalg::BlockSplit::from_fields(fields, names);
+  const linalg::BlockSplit split = linalg::BlockSplit::from_fields(fields, roles);
   EXPECT_EQ(split.displacement, (std::vector<Index>{0, 2}));
   EXPECT_EQ(split.flux, (std::vector<Index>{1, 3, 4, 8}));
   EXPECT_EQ(split.potential, (std::vector<Index>{5, 6, 7}));
@@ -120,7 +120,7 @@ TEST(KrylovSolver, WhereMultigridFailsTheSolveIsRepeatedWithTheLuBlocks) {
   spdlog::default_logger()->sinks().push_back(
       std::make_shared<spdlog::sinks::ostream_sink_st>(log));
   auto solver = linalg::make_linear_solver("krylov", "", false, "amg");
-  solver->set_fields(s.fields, s.names);
+  solver->set_hints({s.fields, s.roles, {}, {}});
   solver->analyze_pattern(s.A);
   ASSERT_TRUE(solver->factorize(s.A)) << solver->failure().reason;
   Vector x;
@@ -144,7 +144,7 @@ TEST(KrylovSolver, ASolveToALooseToleranceIsContinuedToATightOne) {
   for (const std::string preconditioner : {"lu", "amg"}) {
     SCOPED_TRACE(preconditioner);
     auto solver = linalg::make_linear_solver("krylov", "", false, preconditioner);
-    solver->set_fields(s.fields, s.names);
+    solver->set_hints({s.fields, s.roles, {}, {}});
     solver->analyze_pattern(s.A);
     ASSERT_TRUE(solver->factorize(s.A)) << solver->failure().reason;
     Vector x;
@@ -182,7 +182,7 @@ TEST(KrylovSolver, ASolveThatDoesNotConvergeSaysWhyAndIsCurable) {
   auto solver = linalg::make_linear_solver(
       "krylov", "-ksp_max_it 2 -fieldsplit_primal_pc_type jacobi -fieldsplit_potential_pc_type "
                 "jacobi");
-  solver->set_fields(s.fields, s.names);
+  solver->set_hints({s.fields, s.roles, {}, {}});
   solver->analyze_pattern(s.A);
   ASSERT_TRUE(solver->factorize(s.A)) << solver->failure().reason;
   Vector x;

@@ -80,9 +80,9 @@ struct ContactModel {
                std::string master, std::string slave)
       : mesh(std::move(m)), law(material::create_law(law_type, params, "test")),
         master_name(std::move(master)), slave_name(std::move(slave)) {
-    u = dofs.add_field("displacement", mesh.num_nodes(), 3);
+    u = dofs.add_field("displacement", FieldRole::displacement, mesh.num_nodes(), 3);
     const Index slave_nodes = static_cast<Index>(mesh.node_set(slave_name).size());
-    lambda = dofs.add_field("contact_pressure", slave_nodes, 1);
+    lambda = dofs.add_field("contact_pressure", FieldRole::multiplier, slave_nodes, 1);
   }
 
   /// Fixes component k of the nodes to value * curve(t) (ramp 0..1 by default).

@@ -38,9 +38,9 @@ std::unique_ptr<Setup> make_setup(const Layout& layout, contact::Integration int
   auto s = std::make_unique<Setup>();
   s->mesh = test::make_block("master", layout.master, {-0.5, 0.0}, layout.master);
   s->mesh.append(test::make_block("slave", layout.slave, {0.0, 0.5}, layout.slave));
-  s->u = s->dofs.add_field("displacement", s->mesh.num_nodes(), 3);
+  s->u = s->dofs.add_field("displacement", FieldRole::displacement, s->mesh.num_nodes(), 3);
   const auto ns = static_cast<Index>(s->mesh.node_set("slave.ymin").size());
-  s->lambda = s->dofs.add_field("contact_pressure", ns, 1);
+  s->lambda = s->dofs.add_field("contact_pressure", FieldRole::multiplier, ns, 1);
   contact::ContactSettings settings;
   settings.integration = integration;
   settings.scale = 4.0;

@@ -74,7 +74,7 @@ struct SplitColumn {
     m = std::make_unique<test::MixtureModel>(std::move(mesh), test::paper_tissue(true));
     const auto law = std::make_shared<contact::MixtureContactLaw>(
         contact::MixtureContactFields{m->f.u, m->f.w, m->f.j_plus, m->f.j_minus});
-    lambda = m->dofs.add_field("contact_multipliers",
+    lambda = m->dofs.add_field("contact_multipliers", FieldRole::multiplier,
                                static_cast<Index>(m->mesh.node_set("upper.zmin").size()),
                                law->num_components());
     confine(*m, "lower");

@@ -33,15 +33,16 @@ std::unique_ptr<Setup> make_setup(const std::vector<Real>& master, const std::ve
   s->mesh = test::make_block("master", master, {-0.5, 0.0}, master);
   s->mesh.append(test::make_block("slave", slave, {0.0, 0.5}, slave));
   const Index nn = s->mesh.num_nodes();
-  s->f.u = s->dofs.add_field("displacement", nn, 3);
-  s->f.w = s->dofs.add_field("fluid_flux", nn, 3);
+  s->f.u = s->dofs.add_field("displacement", FieldRole::displacement, nn, 3);
+  s->f.w = s->dofs.add_field("fluid_flux", FieldRole::flux, nn, 3);
   if (ions) {
-    s->f.j_plus = s->dofs.add_field("cation_flux", nn, 3);
-    s->f.j_minus = s->dofs.add_field("anion_flux", nn, 3);
+    s->f.j_plus = s->dofs.add_field("cation_flux", FieldRole::flux, nn, 3);
+    s->f.j_minus = s->dofs.add_field("anion_flux", FieldRole::flux, nn, 3);
   }
   auto law = std::make_shared<contact::MixtureContactLaw>(s->f);
   const auto ns = static_cast<Index>(s->mesh.node_set("slave.ymin").size());
-  s->lambda = s->dofs.add_field("contact_multipliers", ns, law->num_components());
+  s->lambda =
+      s->dofs.add_field("contact_multipliers", FieldRole::multiplier, ns, law->num_components());
   contact::ContactSettings settings;
   settings.integration = integration;
   settings.scale = 4.0;

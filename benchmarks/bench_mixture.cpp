@@ -263,13 +263,14 @@ void bm_confined_compression(benchmark::State& state) {
       linearize_ms = ms_since(start);
     }
     nnz = lin.jacobian.nonZeros();
-    auto lu = linalg::make_linear_solver("umfpack");
+    auto lu = linalg::make_linear_solver({LinearSolverKind::umfpack});
     const auto start = Clock::now();
     lu->analyze_pattern(lin.jacobian);
     analyze_ms = ms_since(start);
     model->problem->reject_step();
   }
-  solver::NewtonSolver newton(solver::NewtonSettings{}, linalg::make_linear_solver("umfpack"));
+  solver::NewtonSolver newton(solver::NewtonSettings{},
+                              linalg::make_linear_solver({LinearSolverKind::umfpack}));
   solver::RunReport report = model->run(newton, 1); // warm-up: symbolic analysis
   if (!report.success) {
     state.SkipWithError(("the warm-up run failed: " + report.failure).c_str());

@@ -203,7 +203,7 @@ void bm_factorize(benchmark::State& state) {
     state.SkipWithError("the benchmark state is inadmissible (J <= 0)");
     return;
   }
-  auto lu = linalg::make_linear_solver("umfpack");
+  auto lu = linalg::make_linear_solver({LinearSolverKind::umfpack});
   lu->analyze_pattern(fx.system.Kff);
   bool ok = true;
   for (auto _ : state) {
@@ -223,7 +223,7 @@ void bm_solve(benchmark::State& state) {
     state.SkipWithError("the benchmark state is inadmissible (J <= 0)");
     return;
   }
-  auto lu = linalg::make_linear_solver("umfpack");
+  auto lu = linalg::make_linear_solver({LinearSolverKind::umfpack});
   lu->analyze_pattern(fx.system.Kff);
   if (!lu->factorize(fx.system.Kff)) {
     state.SkipWithError("UMFPACK factorization failed");
@@ -259,7 +259,8 @@ void bm_newton_step(benchmark::State& state) {
   std::vector<solver::FieldScale> scales = {
       {"displacement", model.law->p_wave_modulus() * L * L, L}};
   assembly::FeProblem problem(model.map, model.conditions, std::move(terms), std::move(scales));
-  solver::NewtonSolver newton(solver::NewtonSettings{}, linalg::make_linear_solver("umfpack"));
+  solver::NewtonSolver newton(solver::NewtonSettings{},
+                              linalg::make_linear_solver({LinearSolverKind::umfpack}));
   const Vector rest = Vector::Zero(model.map.num_dofs());
 
   auto solve_once = [&] {

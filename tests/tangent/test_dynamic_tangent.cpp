@@ -73,7 +73,7 @@ struct DynamicBlock {
 /// unknowns, perturbed by up to `shift`), each (field, field) block to 1e-6 of its largest entry.
 void expect_the_finite_difference_tangent(assembly::FeProblem& p, Real dt1, Real dt2, Real h,
                                           Real shift) {
-  solver::NewtonSolver newton({}, linalg::make_linear_solver("umfpack"));
+  solver::NewtonSolver newton({}, linalg::make_linear_solver({LinearSolverKind::umfpack}));
   p.begin_step(dt1, dt1); // one step in motion: v, a and g of step n are not zero
   ASSERT_EQ(newton.solve(p).status, solver::SolveStatus::Converged);
   p.commit_step();

@@ -66,10 +66,10 @@ TEST(JacobianLending, OneNewtonSolverForAllStepsGivesTheStatesOfANewOnePerStep) 
   // one Newton solver keeps its linearization (and the lent storage) between steps; a new
   // solver per step starts each step with a new one (the pattern built anew)
   test::SolidModel kept = stretched_box(), fresh = stretched_box();
-  solver::NewtonSolver newton({}, linalg::make_linear_solver("sparselu"));
+  solver::NewtonSolver newton({}, linalg::make_linear_solver({LinearSolverKind::sparselu}));
   for (const Real t : {0.5, 1.0}) {
     for (test::SolidModel* model : {&kept, &fresh}) {
-      solver::NewtonSolver once({}, linalg::make_linear_solver("sparselu"));
+      solver::NewtonSolver once({}, linalg::make_linear_solver({LinearSolverKind::sparselu}));
       model->problem->begin_step(t, 0.5);
       const solver::NewtonReport report = (model == &kept ? newton : once).solve(*model->problem);
       ASSERT_EQ(report.status, solver::SolveStatus::Converged);

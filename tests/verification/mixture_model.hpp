@@ -124,7 +124,7 @@ struct MixtureModel {
     s.target_iterations = 5;
     s.must_points = std::move(must_points);
     solver::StepController controller(s);
-    solver::NewtonSolver newton({}, linalg::make_linear_solver("umfpack"));
+    solver::NewtonSolver newton({}, linalg::make_linear_solver({LinearSolverKind::umfpack}));
     return solver::run_time_loop(
         *problem, newton, controller, observer ? observer : [](const solver::StepInfo&) {});
   }

@@ -63,7 +63,7 @@ struct SolidModel {
 
   /// One Newton solve of the step ending at `time`.
   solver::NewtonReport solve_step(Real time, Real dt, solver::NewtonSettings settings = {}) {
-    solver::NewtonSolver newton(settings, linalg::make_linear_solver("umfpack"));
+    solver::NewtonSolver newton(settings, linalg::make_linear_solver({LinearSolverKind::umfpack}));
     problem->begin_step(time, dt);
     solver::NewtonReport report = newton.solve(*problem);
     if (report.status == solver::SolveStatus::Converged)

@@ -4,10 +4,10 @@
 #include "trifem/core/error.hpp"
 #include "trifem/core/interrupt.hpp"
 #include "trifem/core/log.hpp"
+#include "trifem/core/timer.hpp"
 #include "trifem/parallel/communicator.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <set>
 
@@ -15,7 +15,6 @@ namespace trifem::analysis {
 namespace {
 
 namespace ed = explicit_dynamics;
-using Clock = std::chrono::steady_clock;
 
 /// More VTU files than this from `output.interval = 0` get a warning.
 constexpr double kManyFiles = 1000.0;
@@ -105,11 +104,26 @@ private:
   Vector residual_, velocity_;
 };
 
+namespace {
+
+/// A time an explicit step must land on.
+struct StepTarget {
+  Real time = 0.0;     ///< [s]
+  bool output = false; ///< an output time (VTU file); otherwise a point of a load curve
+};
+
+/// The VTU output interval of an explicit step from `start` [s]: output.interval if given (0:
+/// every step), otherwise (end_time − start) / io::kDefaultOutputCount (about 100 files, the
+/// steps landing on them).
 Real explicit_output_interval(const io::CaseSpec& spec, Real start) {
   return spec.output.interval_given ? spec.output.interval
                                     : (spec.time.end_time - start) / io::kDefaultOutputCount;
 }
 
+/// The times the step from `start` must land on, ascending, each > start: the multiples of the
+/// output interval (counted from 0 if output.interval is given, from `start` otherwise),
+/// output.times and time.end_time (the last) as output times, and the points of the load curves
+/// in between (as the quasi-static must points).
 std::vector<StepTarget> explicit_step_targets(const io::CaseSpec& spec, Real start) {
   const Real end = spec.time.end_time, interval = explicit_output_interval(spec, start);
   const Real origin = spec.output.interval_given ? 0.0 : start; // of the periodic output times
@@ -137,6 +151,8 @@ std::vector<StepTarget> explicit_step_targets(const io::CaseSpec& spec, Real sta
   }
   return merged;
 }
+
+} // namespace
 
 io::CaseSpec explicit_part(const io::CaseSpec& spec, std::optional<std::size_t> k) {
   io::CaseSpec part = spec;
@@ -229,7 +245,7 @@ void ExplicitStep::restore(const std::vector<double>& state) {
 }
 
 void ExplicitStep::write(OutputWriter& output, const ed::StepReport& report, bool volume) {
-  const auto start = Clock::now();
+  ScopedTimer timer(output_seconds_);
   Vector x = model_.problem->state();
   view_->scatter(solver_->displacement(), x);
   model_.problem->set_state(x);
@@ -237,7 +253,6 @@ void ExplicitStep::write(OutputWriter& output, const ed::StepReport& report, boo
   results_->update(report, volume);
   output.write(solver_->time(), static_cast<int>(solver_->step_count()), report.dt,
                report.iterations, volume);
-  output_seconds_ += std::chrono::duration<double>(Clock::now() - start).count();
 }
 
 void ExplicitStep::advance(OutputWriter& output, solver::RunReport& run,
@@ -291,7 +306,7 @@ void ExplicitStep::advance(OutputWriter& output, solver::RunReport& run,
 
 solver::RunReport ExplicitStep::run(OutputWriter& output, const std::string& history,
                                     bool initial_volume, const RestartWriter& restart) {
-  const auto start = Clock::now();
+  const auto start = WallClock::now();
   solver::RunReport run;
   run.end_time = solver_->time();
   log::info("  initial strain energy {:.6g} mJ", solver_->initial_energy());
@@ -311,7 +326,7 @@ solver::RunReport ExplicitStep::run(OutputWriter& output, const std::string& his
     log::warn("the energy balance error reached {:.3g} % of the largest energy: check the "
               "results ({}, total_energy [mJ])",
               100.0 * balance_.max_error(), history);
-  wall_seconds_ = std::chrono::duration<double>(Clock::now() - start).count();
+  wall_seconds_ = seconds_since(start);
   return run;
 }
 

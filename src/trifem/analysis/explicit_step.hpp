@@ -26,23 +26,6 @@ namespace trifem::analysis {
 /// integrator state: ExplicitStep::state); called at the output times.
 using RestartWriter = std::function<void(const Resume& resume)>;
 
-/// A time an explicit step must land on.
-struct StepTarget {
-  Real time = 0.0;     ///< [s]
-  bool output = false; ///< an output time (VTU file); otherwise a point of a load curve
-};
-
-/// The VTU output interval of an explicit step from `start` [s]: output.interval if given (0:
-/// every step), otherwise (end_time − start) / io::kDefaultOutputCount (about 100 files, the
-/// steps landing on them).
-Real explicit_output_interval(const io::CaseSpec& spec, Real start = 0.0);
-
-/// The times the step from `start` must land on, ascending, each > start: the multiples of the
-/// output interval (counted from 0 if output.interval is given, from `start` otherwise),
-/// output.times and time.end_time (the last) as output times, and the points of the load curves
-/// in between (as the quasi-static must points).
-std::vector<StepTarget> explicit_step_targets(const io::CaseSpec& spec, Real start = 0.0);
-
 /// The case as its dynamic-explicit step `k` sees it: the step's end_time and dt as [time]
 /// (nullopt: the whole case, a dynamic-explicit analysis).
 io::CaseSpec explicit_part(const io::CaseSpec& spec, std::optional<std::size_t> k);

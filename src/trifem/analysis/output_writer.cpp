@@ -9,12 +9,12 @@
 
 #include "trifem/core/error.hpp"
 #include "trifem/core/log.hpp"
+#include "trifem/core/timer.hpp"
 #include "trifem/io/pvtu_writer.hpp"
 #include "trifem/io/vtu_writer.hpp"
 #include "trifem/parallel/communicator.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 
 namespace trifem::analysis {
@@ -238,13 +238,12 @@ void OutputWriter::write_state(Real time) {
 void OutputWriter::write_last_state(Real time) {
   if (state_count_ > 0 && last_state_time_ == time)
     return;
-  const auto start = std::chrono::steady_clock::now();
+  ScopedTimer timer(seconds_);
   parallel::agree_on_output([&] { write_state(time); });
-  seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 void OutputWriter::write(Real time, int step, Real dt, int iterations, bool volume) {
-  const auto start = std::chrono::steady_clock::now();
+  ScopedTimer timer(seconds_);
   parallel::agree_on_output([&] { // all go on, or all stop, if one process cannot write
     if (writes_files_)
       (step_history_ ? *step_history_ : *history_)
@@ -252,7 +251,6 @@ void OutputWriter::write(Real time, int step, Real dt, int iterations, bool volu
   });
   if (volume) // every process writes its part (write_vtu agrees on the pieces first)
     parallel::agree_on_output([&] { write_state(time); });
-  seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 } // namespace trifem::analysis

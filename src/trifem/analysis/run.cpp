@@ -169,26 +169,24 @@ std::unique_ptr<model::Model> build_model_for(const io::CaseSpec& spec) {
 /// the case file.
 std::unique_ptr<linalg::LinearSolver> linear_solver_for(const io::CaseSpec& spec) {
   try {
-    return linalg::make_linear_solver(
-        spec.solver.linear_solver, spec.solver.petsc_options, spec.solver.reuse_factorization,
-        spec.solver.preconditioner, factor_precision(spec.solver), spec.solver.schur_approximation);
+    return linalg::make_linear_solver(spec.solver.linear_solver);
   } catch (const InputError& e) {
     throw InputError(fmt::format("{}: {}", spec.file.string(), e.what()));
   }
 }
 
 /// The sparse direct solver, and for "auto" the backend it takes for this many equations.
-void log_linear_solver(const io::SolverSpec& solver, Index equations) {
-  const std::string& name = solver.linear_solver;
+void log_linear_solver(const LinearSolverChoice& solver, Index equations) {
+  const char* name = to_string(solver.kind);
   const std::string reusing =
-      fmt::format("mumps reusing {}-precision factorizations", solver.factorization_precision);
+      fmt::format("mumps reusing {}-precision factorizations", to_string(solver.precision));
   if (parallel::active())
     log::info("  linear solver: MUMPS on the distributed matrix ({} processes; the case names "
               "'{}')",
               parallel::size(), name);
-  else if (name == "mumps" && solver.reuse_factorization)
+  else if (solver.kind == LinearSolverKind::mumps && solver.reuse_factorization)
     log::info("  linear solver: {}", reusing);
-  else if (name != "auto")
+  else if (solver.kind != LinearSolverKind::automatic)
     log::info("  linear solver: {}", name);
   else
     log::info("  linear solver: auto, {} for {} equations (sparselu below {}, unless its "
@@ -445,11 +443,6 @@ solver::RunReport run_steps(const io::CaseSpec& spec, model::Model& model,
   return run;
 }
 
-linalg::FactorPrecision factor_precision(const io::SolverSpec& s) {
-  return s.factorization_precision == "double" ? linalg::FactorPrecision::full
-                                               : linalg::FactorPrecision::single;
-}
-
 solver::NewtonSettings newton_settings(const io::SolverSpec& s) {
   solver::NewtonSettings n;
   n.max_iterations = s.max_iterations;
@@ -631,7 +624,7 @@ int run_model(const io::CaseSpec& spec, const std::filesystem::path& output_dir,
 
   solver::NewtonSolver newton(newton_settings(spec.solver), std::move(linear_solver));
   if (!spec.is_explicit())
-    log_linear_solver(spec.solver, model->problem->num_equations());
+    log_linear_solver(spec.solver.linear_solver, model->problem->num_equations());
   const solver::StepController* controller = nullptr; // of the current analysis step
   solver::RunReport run;
   solver::Linearization initial;

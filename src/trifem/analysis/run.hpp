@@ -64,9 +64,6 @@ solver::RunReport run_steps(const io::CaseSpec& spec, model::Model& model,
 /// Newton settings of a case ([solver]).
 solver::NewtonSettings newton_settings(const io::SolverSpec& s);
 
-/// The precision of the factorizations MUMPS reuses ([solver] factorization_precision).
-linalg::FactorPrecision factor_precision(const io::SolverSpec& s);
-
 /// Options of `trifem run` beyond the case file.
 struct RunOptions {
   std::filesystem::path restart_file; ///< continue from this restart file (empty: from t = 0)

@@ -102,9 +102,7 @@ void ExplicitModel::build_geometry() {
   volumes_.resize(n);
   lengths_.resize(n);
   for (Index c = 0; c < n; ++c) {
-    fe::HexCoords X;
-    for (int a = 0; a < 8; ++a)
-      X.row(a) = mesh_.node(mesh_.cell(c)[a]).transpose();
+    const fe::HexCoords X = fe::cell_coordinates(mesh_, c);
     auto geo = fe::hex8_geometry(X);
     TRIFEM_CHECK(geo.has_value(), "explicit model: cell {} is inverted or degenerate", c);
     geometry_[c] = *geo;

@@ -47,6 +47,10 @@ Real ExplicitSolver::inverse_penalty() const {
   return std::isinf(settings_.penalty) ? 0.0 : 1.0 / settings_.penalty;
 }
 
+Vector ExplicitSolver::multiplier_diagonal() const {
+  return inverse_penalty() * model_.volumes();
+}
+
 namespace {
 
 /// `v`, or zeros if it is empty; InputError naming `what` if its size is not `n`.
@@ -228,11 +232,11 @@ Real ExplicitSolver::max_gauss_volume_change() const {
   return fields_.gauss_volume_change.lpNorm<Eigen::Infinity>();
 }
 
-Vector ExplicitSolver::reaction_force() const {
+Vector ExplicitSolver::reaction_force(const Vector& lambda) const {
   Vector force = f_int_ - f_ext_;
   if (settings_.multiplier) {
     Vector pressure;
-    gather(model_, fields_.gradient, &lambda_, pressure);
+    gather(model_, fields_.gradient, &lambda, pressure);
     force += pressure;
   }
   return force;

@@ -110,7 +110,7 @@ public:
   Vector velocity() const;
   /// Q_V(Uⁿ) + H_n Λⁿ − F_S(t_n, Uⁿ) per DOF [N]. On fixed DOFs (zero acceleration) this is the
   /// support reaction, the force the support exerts on the body; on free DOFs it is −M aⁿ.
-  Vector reaction_force() const;
+  Vector reaction_force() const { return reaction_force(lambda_); }
   const Vector& multiplier() const { return lambda_; } ///< Λ^n per cell [MPa]
   const CellFields& fields() const { return fields_; } ///< cell results at U^n
   /// max over cells of |J̄_e − 1|, J̄_e = cell-mean J, at U^n: the volume change the P0
@@ -156,7 +156,8 @@ private:
   bool converged(int k, const Vector& U, const Vector& U_prev, const Vector& lambda,
                  const CellFields& f, StepReport& r, Real& du_prev, int& growing) const;
   Real constraint_residual(const CellFields& f, const Vector& lambda) const;
-  StepReport cell_failure(const CellStatus& s) const;
+  /// Evaluates the cells at U (timed as forces); the step's failure if a cell fails.
+  StepReport evaluate(const Vector& U, const CellRequest& request, CellFields& fields);
   StepReport factorization_failure() const;
   StepReport check_finite(const Vector& U, const Vector& lambda) const;
   void commit(Real dt, Real dt_avg, Vector& U, Vector& lambda, CellFields& fields);
@@ -164,6 +165,10 @@ private:
   void sync_lambda_timings();
   Vector explicit_force(const CellFields& f, const Vector& U, Real time) const;
   Real inverse_penalty() const;
+  /// Γ/α: V_e/α per cell, the diagonal of the multiplier matrix A2.21.
+  Vector multiplier_diagonal() const;
+  /// Q_V + H Λ − F_S at U^n with the multiplier `lambda`.
+  Vector reaction_force(const Vector& lambda) const;
   StepReport fatal(StepStatus status, const std::string& what) const;
 
   const ExplicitModel& model_;

@@ -2,26 +2,19 @@
 #include "trifem/explicit/lambda_system.hpp"
 
 #include "trifem/core/error.hpp"
+#include "trifem/core/timer.hpp"
 #include "trifem/explicit/parallel.hpp"
 
 #include "trifem/linalg/cholmod_solver.hpp"
 #include "trifem/linalg/linear_solver.hpp"
 
 #include <algorithm>
-#include <chrono>
 
 namespace trifem::explicit_dynamics {
-namespace {
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-} // namespace
-
 LambdaSystem::LambdaSystem(const ExplicitModel& model)
-    : model_(model), solver_(model.distributed() ? linalg::make_linear_solver("mumps")
-                                                 : linalg::make_cholmod_solver()) {
+    : model_(model),
+      solver_(model.distributed() ? linalg::make_linear_solver({LinearSolverKind::mumps})
+                                  : linalg::make_cholmod_solver()) {
   if (model.distributed()) {
     build_part_pattern();
     solver_->set_hints({{}, {}, {}, model.cell_owners()});
@@ -141,24 +134,21 @@ void LambdaSystem::assemble(const std::vector<CellVector>& h, const Vector& inve
 
 bool LambdaSystem::factorize(const std::vector<CellVector>& h, const Vector& inverse_mass, Real h2,
                              const Vector& diagonal) {
-  auto start = std::chrono::steady_clock::now();
-  if (model_.distributed())
-    assemble_part(h, inverse_mass, h2, diagonal);
-  else
-    assemble(h, inverse_mass, h2, diagonal);
-  timings_.assemble += seconds_since(start);
-  start = std::chrono::steady_clock::now();
-  const bool positive_definite = solver_->factorize(A_);
-  timings_.factorize += seconds_since(start);
+  {
+    ScopedTimer timer(timings_.assemble);
+    if (model_.distributed())
+      assemble_part(h, inverse_mass, h2, diagonal);
+    else
+      assemble(h, inverse_mass, h2, diagonal);
+  }
+  ScopedTimer timer(timings_.factorize);
   ++timings_.factorizations;
-  return positive_definite;
+  return solver_->factorize(A_);
 }
 
 void LambdaSystem::solve(const Vector& b, Vector& x) {
-  const auto start = std::chrono::steady_clock::now();
+  ScopedTimer timer(timings_.solve);
   solver_->solve(b, x);
-  timings_.solve += seconds_since(start);
-  ++timings_.solves;
 }
 
 } // namespace trifem::explicit_dynamics

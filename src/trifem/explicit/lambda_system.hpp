@@ -19,7 +19,6 @@ struct LambdaTimings {
   double factorize = 0.0;
   double solve = 0.0;
   long factorizations = 0;
-  long solves = 0;
 };
 
 /// A_ef = δ_ef V_e/α + h² Σ_{a,k} h_e[a,k] M⁻¹_{ak} h_f[a,k] (cells e, f sharing node a).

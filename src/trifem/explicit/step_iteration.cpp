@@ -24,29 +24,14 @@
 #include "trifem/explicit/explicit_solver.hpp"
 
 #include "trifem/core/error.hpp"
+#include "trifem/core/timer.hpp"
 #include "trifem/explicit/lambda_system.hpp"
 
-#include <chrono>
 #include <cmath>
 #include <limits>
 
 namespace trifem::explicit_dynamics {
 namespace {
-
-/// Adds the wall-clock time of its scope to an accumulator.
-class ScopedTimer {
-public:
-  explicit ScopedTimer(double& sink) : sink_(sink), start_(std::chrono::steady_clock::now()) {}
-  ~ScopedTimer() {
-    sink_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-  }
-  ScopedTimer(const ScopedTimer&) = delete;
-  ScopedTimer& operator=(const ScopedTimer&) = delete;
-
-private:
-  double& sink_;
-  std::chrono::steady_clock::time_point start_;
-};
 
 /// Index of the first non-finite entry, or -1.
 Index first_non_finite(const Vector& v) {
@@ -95,12 +80,9 @@ StepReport ExplicitSolver::try_step(Real dt) {
                      ? iterate_forces(h2, U_pred, time_ + dt, U, lambda, work_)
                      : iterate_multiplier(h2, U_pred, U, lambda, work_);
   r.dt = dt;
-  if (r.ok() && settings_.reading == Reading::B) { // Q_V, H, Ψ at U^{n+1} for the next step
-    ScopedTimer timer(timings_.forces);
-    const CellStatus s = evaluate_cells(model_, settings_.constraint, U, {}, work_);
-    if (!s.ok())
-      r = cell_failure(s);
-  }
+  if (r.ok() && settings_.reading == Reading::B) // Q_V, H, Ψ at U^{n+1} for the next step
+    if (StepReport bad = evaluate(U, {}, work_); !bad.ok())
+      r = bad;
   if (r.ok()) {
     commit(dt, dt_avg, U, lambda, work_);
     total_iterations_ += r.iterations;
@@ -156,12 +138,8 @@ StepReport ExplicitSolver::iterate_forces(Real h2, const Vector& U_pred, Real t_
   Real du_prev = std::numeric_limits<Real>::infinity();
   int growing = 0;
   for (int k = 0;; ++k) {
-    {
-      ScopedTimer timer(timings_.forces);
-      const CellStatus s = evaluate_cells(model_, settings_.constraint, U, request, fields);
-      if (!s.ok())
-        return cell_failure(s);
-    }
+    if (StepReport bad = evaluate(U, request, fields); !bad.ok())
+      return bad;
     StepReport r;
     if (k > 0 && (converged(k, U, U_prev, lambda, fields, r, du_prev, growing) || !r.ok()))
       return r;
@@ -171,8 +149,7 @@ StepReport ExplicitSolver::iterate_forces(Real h2, const Vector& U_pred, Real t_
     }
     U_prev = U;
     if (settings_.multiplier) {
-      const Vector diagonal = inverse_penalty() * model_.volumes();
-      if (!system_->factorize(fields.gradient, minv, h2, diagonal))
+      if (!system_->factorize(fields.gradient, minv, h2, multiplier_diagonal()))
         return factorization_failure();
       Vector HtdU;
       cell_dot(model_, fields.gradient, U - U_m, HtdU);
@@ -225,9 +202,8 @@ bool ExplicitSolver::needs_factorization(Real h2) const {
 }
 
 bool ExplicitSolver::factorize_multiplier_matrix(Real h2) {
-  const Vector diagonal = inverse_penalty() * model_.volumes();
   factorization_ = {h2, 0, -1, 0};
-  if (system_->factorize(fields_.gradient, model_.inverse_mass(), h2, diagonal)) // A_n
+  if (system_->factorize(fields_.gradient, model_.inverse_mass(), h2, multiplier_diagonal()))
     return true;
   factorization_.age = -1;
   return false;
@@ -242,18 +218,13 @@ void ExplicitSolver::FactorizationState::record(int iterations) {
 
 StepReport ExplicitSolver::multiplier_loop(Real h2, Vector& U, Vector& lambda, CellFields& fields) {
   const Vector& minv = model_.inverse_mass();
-  const Vector diagonal = inverse_penalty() * model_.volumes();
+  const Vector diagonal = multiplier_diagonal();
   Vector U_prev, delta, pressure;
   Real du_prev = std::numeric_limits<Real>::infinity();
   int growing = 0;
   for (int k = 0;; ++k) {
-    {
-      ScopedTimer timer(timings_.forces);
-      const CellStatus s =
-          evaluate_cells(model_, settings_.constraint, U, {false, false, true, false}, fields);
-      if (!s.ok())
-        return cell_failure(s);
-    }
+    if (StepReport bad = evaluate(U, {false, false, true, false}, fields); !bad.ok())
+      return bad;
     StepReport r;
     if (k > 0 && (converged(k, U, U_prev, lambda, fields, r, du_prev, growing) || !r.ok()))
       return r;
@@ -270,7 +241,12 @@ StepReport ExplicitSolver::multiplier_loop(Real h2, Vector& U, Vector& lambda, C
   }
 }
 
-StepReport ExplicitSolver::cell_failure(const CellStatus& s) const {
+StepReport ExplicitSolver::evaluate(const Vector& U, const CellRequest& request,
+                                    CellFields& fields) {
+  ScopedTimer timer(timings_.forces);
+  const CellStatus s = evaluate_cells(model_, settings_.constraint, U, request, fields);
+  if (s.ok())
+    return {};
   if (s.failure == CellFailure::NegativeJacobian)
     return fatal(StepStatus::NegativeJacobian,
                  fmt::format("{} <= 0 in cell {}", s.quantity, s.cell));
@@ -296,14 +272,8 @@ void ExplicitSolver::commit(Real dt, Real dt_avg, Vector& U, Vector& lambda, Cel
   // The force of the step on the moving supports, as the free DOFs felt it: reading B
   // Q_n + H_n Λ^{n+1} − F_n (after update_end_forces, reading A: all of it at U^{n+1}).
   Vector support;
-  if (model_.has_prescribed_motion() && settings_.reading == Reading::B) {
-    support = f_int_ - f_ext_;
-    if (settings_.multiplier) {
-      Vector pressure;
-      gather(model_, fields_.gradient, &lambda, pressure);
-      support += pressure;
-    }
-  }
+  if (model_.has_prescribed_motion() && settings_.reading == Reading::B)
+    support = reaction_force(lambda);
   Vector V_new = (U - U_) / dt;
   const Vector v_mid = 0.5 * (V_ + V_new);
   damping_work_ += settings_.damping * dt_avg * v_mid.cwiseAbs2().dot(model_.free_mass());

@@ -46,6 +46,13 @@ QuadShapeGrad quad4_shape_grad(const Vec2& xi) {
   return G;
 }
 
+HexCoords cell_coordinates(const mesh::Mesh& mesh, Index c) {
+  HexCoords X;
+  for (int a = 0; a < 8; ++a)
+    X.row(a) = mesh.node(mesh.cell(c)[a]).transpose();
+  return X;
+}
+
 std::optional<HexGeometry> hex8_geometry(const HexCoords& X) {
   HexGeometry geo;
   const auto& rule = hex_gauss_2x2x2();

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "trifem/fe/quadrature.hpp"
+#include "trifem/mesh/mesh.hpp"
 
 #include <array>
 #include <optional>
@@ -31,6 +32,9 @@ struct HexGeometry {
   std::array<HexShapeGrad, 8> dN_dX; ///< gradients with respect to reference coordinates
   std::array<Real, 8> dV;            ///< det(dX/dxi) * weight
 };
+
+/// The reference coordinates of the nodes of cell `c` of `mesh`.
+HexCoords cell_coordinates(const mesh::Mesh& mesh, Index c);
 
 /// Geometry of the cell with nodal coordinates X; empty if det(dX/dxi) <= 0 at a Gauss point
 /// (inverted or degenerate cell).

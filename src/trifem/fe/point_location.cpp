@@ -20,13 +20,6 @@ Real snap(Real xi) {
   return xi;
 }
 
-HexCoords cell_nodes(const mesh::Mesh& mesh, Index c) {
-  HexCoords X;
-  for (int a = 0; a < 8; ++a)
-    X.row(a) = mesh.node(mesh.cell(c)[a]).transpose();
-  return X;
-}
-
 /// True if X lies in the bounding box of the cell, widened by kInside of its size.
 bool in_bounding_box(const HexCoords& nodes, const Vec3& X) {
   const Vec3 lo = nodes.colwise().minCoeff().transpose(), hi = nodes.colwise().maxCoeff();
@@ -55,7 +48,7 @@ std::optional<Vec3> natural_coordinates(const HexCoords& nodes, const Vec3& X) {
 
 std::optional<CellPoint> locate_point(const mesh::Mesh& mesh, const Vec3& X) {
   for (Index c = 0; c < mesh.num_cells(); ++c) {
-    const HexCoords nodes = cell_nodes(mesh, c);
+    const HexCoords nodes = cell_coordinates(mesh, c);
     if (!in_bounding_box(nodes, X))
       continue;
     const std::optional<Vec3> xi = natural_coordinates(nodes, X);

@@ -380,6 +380,48 @@ void read_time_keys(const Table& t, TimeSpec& s, Real start, bool allow_duration
 
 namespace {
 
+/// Fails at `key` of `t` (if given) unless `applies`: it does not apply to `kind`.
+void check_applies(const Table& t, std::string_view key, bool applies, std::string_view to_what,
+                   LinearSolverKind kind) {
+  if (t.find(key) && !applies)
+    fail(t.find(key), t.path(key),
+         fmt::format("applies to {}, not to linear_solver = \"{}\"", to_what, to_string(kind)));
+}
+
+/// linear_solver and the keys of its backend, each checked against it.
+void read_linear_solver(const Table& t, LinearSolverChoice& c) {
+  using enum LinearSolverKind;
+  static const Options<LinearSolverKind> kinds = {{"auto", automatic},
+                                                  {"umfpack", umfpack},
+                                                  {"sparselu", sparselu},
+                                                  {"mumps", mumps},
+                                                  {"krylov", krylov}};
+  c.kind = t.choice("linear_solver", kinds, std::optional(c.kind));
+  c.petsc_options = t.get<std::string>("petsc_options").value_or("");
+  check_applies(t, "petsc_options", c.petsc_options.empty() || c.kind == mumps || c.kind == krylov,
+                "the PETSc backends (linear_solver = \"mumps\" or \"krylov\")", c.kind);
+  c.reuse_factorization = t.get<bool>("reuse_factorization").value_or(false);
+  check_applies(t, "reuse_factorization", !c.reuse_factorization || c.kind == mumps,
+                "linear_solver = \"mumps\"", c.kind);
+  static const Options<KrylovPreconditioner> preconditioners = {{"lu", KrylovPreconditioner::lu},
+                                                                {"amg", KrylovPreconditioner::amg}};
+  c.preconditioner = t.choice("preconditioner", preconditioners, std::optional(c.preconditioner));
+  check_applies(t, "preconditioner",
+                c.preconditioner == KrylovPreconditioner::lu || c.kind == krylov,
+                "linear_solver = \"krylov\"", c.kind);
+  static const Options<SchurApproximation> schurs = {{"selfp", SchurApproximation::selfp},
+                                                     {"drained", SchurApproximation::drained}};
+  c.schur = t.choice("schur_approximation", schurs, std::optional(c.schur));
+  check_applies(t, "schur_approximation", c.kind == krylov, "linear_solver = \"krylov\"", c.kind);
+  static const Options<FactorPrecision> precisions = {{"single", FactorPrecision::single},
+                                                      {"double", FactorPrecision::full}};
+  c.precision = t.choice("factorization_precision", precisions, std::optional(c.precision));
+  if (t.find("factorization_precision") && c.kind != automatic && !c.reuse_factorization)
+    fail(t.find("factorization_precision"), t.path("factorization_precision"),
+         "applies to reused factorizations: linear_solver = \"auto\", or \"mumps\" with "
+         "reuse_factorization = true");
+}
+
 void read_solver(const Table& root, CaseSpec& spec) {
   const auto t = root.table("solver");
   if (!t)
@@ -387,11 +429,6 @@ void read_solver(const Table& root, CaseSpec& spec) {
   t->allow({"max_iterations", "residual_tolerance", "increment_tolerance", "line_search",
             "linear_solver", "petsc_options", "reuse_factorization", "preconditioner",
             "factorization_precision", "schur_approximation"});
-  static const Options<std::string_view> solvers = {{"auto", "auto"},
-                                                    {"umfpack", "umfpack"},
-                                                    {"sparselu", "sparselu"},
-                                                    {"mumps", "mumps"},
-                                                    {"krylov", "krylov"}};
   SolverSpec& s = spec.solver;
   s.max_iterations = t->integer("max_iterations", 1, s.max_iterations, kMaxNewtonIterations);
   s.residual_tolerance = t->number(
@@ -399,42 +436,7 @@ void read_solver(const Table& root, CaseSpec& spec) {
   s.increment_tolerance = t->number(
       "increment_tolerance", {.range = Range::open(0.0, 1.0), .fallback = s.increment_tolerance});
   s.line_search = t->get<bool>("line_search").value_or(s.line_search);
-  s.linear_solver = std::string(
-      t->choice("linear_solver", solvers, std::optional<std::string_view>(s.linear_solver)));
-  s.petsc_options = t->get<std::string>("petsc_options").value_or("");
-  if (!s.petsc_options.empty() && s.linear_solver != "mumps" && s.linear_solver != "krylov")
-    fail(t->find("petsc_options"), t->path("petsc_options"),
-         fmt::format(
-             "applies to the PETSc backends (linear_solver = \"mumps\" or \"krylov\"), not to "
-             "linear_solver = \"{}\"",
-             s.linear_solver));
-  s.reuse_factorization = t->get<bool>("reuse_factorization").value_or(false);
-  if (s.reuse_factorization && s.linear_solver != "mumps")
-    fail(t->find("reuse_factorization"), t->path("reuse_factorization"),
-         fmt::format("applies to linear_solver = \"mumps\", not to linear_solver = \"{}\"",
-                     s.linear_solver));
-  static const Options<std::string_view> preconditioners = {{"lu", "lu"}, {"amg", "amg"}};
-  s.preconditioner = std::string(t->choice("preconditioner", preconditioners,
-                                           std::optional<std::string_view>(s.preconditioner)));
-  if (s.preconditioner != "lu" && s.linear_solver != "krylov")
-    fail(t->find("preconditioner"), t->path("preconditioner"),
-         fmt::format("applies to linear_solver = \"krylov\", not to linear_solver = \"{}\"",
-                     s.linear_solver));
-  static const Options<std::string_view> schurs = {{"selfp", "selfp"}, {"drained", "drained"}};
-  s.schur_approximation = std::string(t->choice(
-      "schur_approximation", schurs, std::optional<std::string_view>(s.schur_approximation)));
-  if (t->find("schur_approximation") && s.linear_solver != "krylov")
-    fail(t->find("schur_approximation"), t->path("schur_approximation"),
-         fmt::format("applies to linear_solver = \"krylov\", not to linear_solver = \"{}\"",
-                     s.linear_solver));
-  static const Options<std::string_view> precisions = {{"single", "single"}, {"double", "double"}};
-  s.factorization_precision =
-      std::string(t->choice("factorization_precision", precisions,
-                            std::optional<std::string_view>(s.factorization_precision)));
-  if (t->find("factorization_precision") && s.linear_solver != "auto" && !s.reuse_factorization)
-    fail(t->find("factorization_precision"), t->path("factorization_precision"),
-         "applies to reused factorizations: linear_solver = \"auto\", or \"mumps\" with "
-         "reuse_factorization = true");
+  read_linear_solver(*t, s.linear_solver);
 }
 
 // ---------------------------------------------------------------------------------------------

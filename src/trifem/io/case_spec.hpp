@@ -3,6 +3,7 @@
 // application turns it into a model. No TOML types leak past the reader.
 #pragma once
 
+#include "trifem/core/solver_choice.hpp"
 #include "trifem/dofs/load_curve.hpp"
 #include "trifem/material/material_axes.hpp"
 #include "trifem/material/registry.hpp"
@@ -323,13 +324,7 @@ struct SolverSpec {
   Real residual_tolerance = 1e-8;  ///< relative to the characteristic residual of each field
   Real increment_tolerance = 1e-8; ///< relative to the characteristic size of each field
   bool line_search = true;
-  std::string linear_solver = "auto";        ///< "auto", "umfpack", "sparselu", "mumps", "krylov"
-  std::string petsc_options;                 ///< "-key value ..." for the PETSc backends
-  bool reuse_factorization = false;          ///< mumps: one factorization for several iterations
-  std::string preconditioner = "lu";         ///< krylov: "lu" (MUMPS blocks) or "amg" (multigrid)
-  std::string schur_approximation = "selfp"; ///< krylov: "selfp" or "drained"
-  /// of the factorizations MUMPS reuses (mumps with reuse_factorization, auto): "single", "double"
-  std::string factorization_precision = "single";
+  LinearSolverChoice linear_solver; ///< linear_solver and the keys of its backend
 };
 
 /// [[output.reaction]]: total reaction force on a node set, in history.csv.

@@ -283,16 +283,17 @@ void write_solver(const SolverSpec& s, TomlText& t) {
   t.number("residual_tolerance", s.residual_tolerance);
   t.number("increment_tolerance", s.increment_tolerance);
   t.raw("line_search", s.line_search ? "true" : "false");
-  t.string("linear_solver", s.linear_solver);
-  t.optional_string("petsc_options", s.petsc_options);
-  if (s.reuse_factorization)
+  const LinearSolverChoice& c = s.linear_solver;
+  t.string("linear_solver", to_string(c.kind));
+  t.optional_string("petsc_options", c.petsc_options);
+  if (c.reuse_factorization)
     t.raw("reuse_factorization", "true");
-  if (s.preconditioner != "lu")
-    t.optional_string("preconditioner", s.preconditioner);
-  if (s.schur_approximation != "selfp")
-    t.string("schur_approximation", s.schur_approximation);
-  if (s.factorization_precision != "single")
-    t.string("factorization_precision", s.factorization_precision);
+  if (c.preconditioner != KrylovPreconditioner::lu)
+    t.string("preconditioner", to_string(c.preconditioner));
+  if (c.schur != SchurApproximation::selfp)
+    t.string("schur_approximation", to_string(c.schur));
+  if (c.precision != FactorPrecision::single)
+    t.string("factorization_precision", to_string(c.precision));
 }
 
 void write_output(const OutputSpec& o, TomlText& t) {

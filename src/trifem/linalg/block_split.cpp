@@ -13,10 +13,9 @@ BlockSplit BlockSplit::from_fields(const std::vector<int>& equation_fields,
     const FieldRole role = field >= 0 && field < static_cast<int>(roles.size())
                                ? roles[field]
                                : FieldRole::displacement;
-    std::vector<Index>& group = role == FieldRole::flux ? split.flux
-                                : role == FieldRole::potential || role == FieldRole::multiplier
-                                    ? split.potential
-                                    : split.displacement;
+    std::vector<Index>& group = role == FieldRole::flux        ? split.flux
+                                : role == FieldRole::potential ? split.potential
+                                                               : split.displacement;
     group.push_back(static_cast<Index>(eq));
   }
   return split;

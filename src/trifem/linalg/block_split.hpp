@@ -11,11 +11,13 @@
 namespace trifem::linalg {
 
 /// Equation indices (ascending) of the primal unknowns, split into displacement and fluxes, and
-/// of the potentials (Lagrange multipliers: pressure, electric potential, contact multipliers).
+/// of the potentials (the cells' Lagrange multipliers: pressure, electric potential).
 struct BlockSplit {
-  std::vector<Index> displacement; ///< displacement (and equations of no field)
-  std::vector<Index> flux;         ///< water, cation and anion fluxes
-  std::vector<Index> potential;    ///< pressure, electric potential, contact multipliers
+  /// displacement, with the contact multipliers (the primal block's LU factorizes their saddle
+  /// point; the potentials' Schur approximations leave them out) and equations of no field
+  std::vector<Index> displacement;
+  std::vector<Index> flux;      ///< water, cation and anion fluxes
+  std::vector<Index> potential; ///< pressure, electric potential
 
   /// From the field of each equation (an index into `roles`).
   static BlockSplit from_fields(const std::vector<int>& equation_fields,

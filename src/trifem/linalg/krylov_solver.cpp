@@ -703,23 +703,6 @@ void check_options_are_used(const std::string& options, KrylovSettings settings)
 
 } // namespace
 
-SchurApproximation schur_approximation(const std::string& name) {
-  if (name == "selfp")
-    return SchurApproximation::selfp;
-  if (name == "drained")
-    return SchurApproximation::drained;
-  throw InputError(
-      fmt::format("unknown Schur approximation '{}' (expected selfp or drained)", name));
-}
-
-KrylovPreconditioner krylov_preconditioner(const std::string& name) {
-  if (name == "lu")
-    return KrylovPreconditioner::lu;
-  if (name == "amg")
-    return KrylovPreconditioner::amg;
-  throw InputError(fmt::format("unknown Krylov preconditioner '{}' (expected lu or amg)", name));
-}
-
 std::unique_ptr<LinearSolver> make_krylov_solver(const std::string& petsc_options,
                                                  KrylovSettings settings) {
   if (!petsc_options.empty())

@@ -14,29 +14,6 @@
 
 namespace trifem::linalg {
 
-/// How the fieldsplit preconditioner solves its blocks (docs/theory/solvers.md §3).
-enum class KrylovPreconditioner {
-  lu,  ///< MUMPS LU of the primal block and of the Schur approximation
-  amg, ///< primal block: algebraic multigrid (GAMG with the rigid-body modes) on the
-       ///< displacement, then ILU(0) on the fluxes; MUMPS LU of the Schur approximation
-};
-
-/// "lu" or "amg"; InputError otherwise.
-KrylovPreconditioner krylov_preconditioner(const std::string& name);
-
-/// How the fieldsplit approximates the potentials' Schur complement (docs/theory/solvers.md §4).
-enum class SchurApproximation {
-  selfp,   ///< PETSc's selfp: C − B diag(A)⁻¹ Bᵀ, factorized by MUMPS
-  drained, ///< the split displacement | transport (fluxes and potentials), the transport block
-           ///< solved through the augmented system of drained_schur.hpp (factorized by MUMPS):
-           ///< exact flux block up to the lumping of its friction, selfp's undrained part plus
-           ///< a fixed-stress term; with contact multipliers the split primal | potential and
-           ///< the augmented system for the potentials' Schur complement
-};
-
-/// "selfp" or "drained"; InputError otherwise.
-SchurApproximation schur_approximation(const std::string& name);
-
 /// Settings of the Krylov backend that are not PETSc options.
 struct KrylovSettings {
   double relative_tolerance = 1e-10; ///< residual reduction of each solve (-ksp_rtol overrides)

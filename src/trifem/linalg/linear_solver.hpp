@@ -4,6 +4,7 @@
 #pragma once
 
 #include "trifem/core/field_role.hpp"
+#include "trifem/core/solver_choice.hpp"
 #include "trifem/core/types.hpp"
 #include "trifem/linalg/transport_cells.hpp"
 
@@ -74,29 +75,11 @@ public:
   virtual LinearSolverFailure failure() const { return {}; }
 };
 
-/// The precision of the factorizations that precondition FGMRES where MUMPS reuses them
-/// (reuse_factorization, "auto"): single precision halves the memory of the factors and about
-/// the time of a factorization, and cuts that of a solve by a third (measured on a 44 413-equation
-/// block); FGMRES still iterates in double precision, to the tolerance Newton asks for.
-enum class FactorPrecision { single, full };
-
-/// Names of the available backends.
-std::vector<std::string> available_linear_solvers();
-
-/// Creates the backend `name`; InputError listing the available ones otherwise. `petsc_options`
-/// ("-key value ...") are passed to the PETSc backends (InputError for the others, or when PETSc
-/// does not use one of them).
-/// `reuse_factorization` (mumps only) lets one factorization serve several Newton iterations
-/// (make_mumps_solver).
-/// On several processes (parallel::active()) every direct backend's name gives MUMPS on the
-/// distributed matrix, and `krylov` is an InputError.
-/// `preconditioner` (krylov only): "lu" or "amg" (KrylovPreconditioner).
-/// `precision`: of the reused factorizations (mumps reusing them, and auto's mumps).
-/// `schur` (krylov only): "selfp" or "drained" (SchurApproximation).
-std::unique_ptr<LinearSolver>
-make_linear_solver(const std::string& name, const std::string& petsc_options = "",
-                   bool reuse_factorization = false, const std::string& preconditioner = "lu",
-                   FactorPrecision precision = FactorPrecision::single,
-                   const std::string& schur = "selfp");
+/// Creates the backend of `choice`. `petsc_options` are passed to the PETSc backends
+/// (InputError when PETSc does not use one of them); `reuse_factorization` lets one MUMPS
+/// factorization serve several Newton iterations (make_mumps_solver). On several processes
+/// (parallel::active()) every direct backend gives MUMPS on the distributed matrix, and `krylov`
+/// is an InputError.
+std::unique_ptr<LinearSolver> make_linear_solver(const LinearSolverChoice& choice);
 
 } // namespace trifem::linalg

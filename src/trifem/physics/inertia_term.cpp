@@ -48,9 +48,7 @@ InertiaTerm::InertiaTerm(const mesh::Mesh& mesh, const dofs::DofMap& dofs,
   mass_.reserve(cells_.size());
   for (std::size_t i = 0; i < cells_.size(); ++i) {
     TRIFEM_VERIFY(densities[i] > 0.0 && std::isfinite(densities[i]), "density must be positive");
-    fe::HexCoords X;
-    for (int a = 0; a < 8; ++a)
-      X.row(a) = mesh.node(mesh.cell(cells_[i])[a]).transpose();
+    const fe::HexCoords X = fe::cell_coordinates(mesh, cells_[i]);
     const auto m = cell_mass(X, densities[i], mass);
     TRIFEM_CHECK(m.has_value(),
                  "cell {} is inverted or degenerate (det(dX/dxi) <= 0 at a Gauss point); "

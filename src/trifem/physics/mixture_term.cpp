@@ -74,9 +74,7 @@ MixtureTerm::MixtureTerm(const mesh::Mesh& mesh, const dofs::DofMap& dofs, Mixtu
   for (std::size_t e = 0; e < cells_.size(); ++e) {
     TRIFEM_CHECK(!props_[e]->charged || has_ions(),
                  "cell {} is triphasic but the model has no ion fields", cells_[e]);
-    fe::HexCoords X;
-    for (int a = 0; a < 8; ++a)
-      X.row(a) = mesh.node(mesh.cell(cells_[e])[a]).transpose();
+    const fe::HexCoords X = fe::cell_coordinates(mesh, cells_[e]);
     auto geo = fe::hex8_geometry(X);
     TRIFEM_CHECK(geo.has_value(), "cell {} is inverted or degenerate; check its node order",
                  cells_[e]);

@@ -19,9 +19,7 @@ SolidTerm::SolidTerm(const mesh::Mesh& mesh, const dofs::DofMap& dofs, dofs::Fie
   TRIFEM_VERIFY(elements_.size() == cells_.size(), "one formulation per cell expected");
   geometry_.reserve(cells_.size());
   for (Index c : cells_) {
-    fe::HexCoords X;
-    for (int a = 0; a < 8; ++a)
-      X.row(a) = mesh.node(mesh.cell(c)[a]).transpose();
+    const fe::HexCoords X = fe::cell_coordinates(mesh, c);
     auto geo = fe::hex8_geometry(X);
     TRIFEM_CHECK(geo.has_value(),
                  "cell {} is inverted or degenerate (det(dX/dxi) <= 0 at a Gauss point); "

@@ -3,6 +3,7 @@
 
 #include "trifem/core/interrupt.hpp"
 #include "trifem/core/log.hpp"
+#include "trifem/core/timer.hpp"
 #include "trifem/parallel/communicator.hpp"
 
 #include <algorithm>
@@ -10,16 +11,6 @@
 #include <limits>
 
 namespace trifem::solver {
-namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
-} // namespace
-
 const char* to_string(SolveStatus status) {
   switch (status) {
   case SolveStatus::Converged:
@@ -211,7 +202,7 @@ SolveStatus NewtonSolver::factor_and_solve(NonlinearProblem& problem, Linearizat
     dx.resize(0);
     return SolveStatus::Converged;
   }
-  auto start = Clock::now();
+  auto start = WallClock::now();
   if (analyzed_pattern_ != problem.pattern_id()) {
     linear_->set_hints({problem.equation_fields(), problem.field_roles(),
                         problem.rigid_body_modes(), problem.equation_owners()});
@@ -224,7 +215,7 @@ SolveStatus NewtonSolver::factor_and_solve(NonlinearProblem& problem, Linearizat
   times_.factorization += seconds_since(start);
   if (!factored)
     return linear_failure_status();
-  start = Clock::now();
+  start = WallClock::now();
   const Vector rhs = -(lin.residual + lin.constraint_rhs);
   const bool solved = solve_to(problem, lin.jacobian, rhs, dx, reduction, first);
   times_.solve += seconds_since(start);
@@ -247,7 +238,7 @@ SolveStatus NewtonSolver::line_search(NonlinearProblem& problem, const Vector& d
   for (int trial = 0; trial <= settings_.max_backtracks; ++trial) {
     if (trial > 0)
       problem.restore_iterate();
-    const auto start = Clock::now();
+    const auto start = WallClock::now();
     const bool admissible = problem.update(dx, step) == SolveStatus::Converged &&
                             problem.linearize(lin, true) == SolveStatus::Converged &&
                             lin.residual.allFinite();
@@ -278,7 +269,7 @@ NewtonReport NewtonSolver::solve(NonlinearProblem& problem) {
 NewtonReport NewtonSolver::solve(NonlinearProblem& problem, const std::vector<Real>& reference) {
   NewtonReport report;
   Linearization& lin = lin_; // kept between solves: the problem lends it its matrix storage
-  auto start = Clock::now();
+  auto start = WallClock::now();
   if (problem.linearize(lin, true) != SolveStatus::Converged) {
     report.status = SolveStatus::Inadmissible;
     report.failure_reason =

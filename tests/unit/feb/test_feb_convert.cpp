@@ -184,18 +184,18 @@ TEST(TomlConvertRigid, RigidBodiesReadBackAsWritten) {
 // The Krylov backend's preconditioner is written and reads back (the default is not written).
 TEST(TomlConvertSolver, KrylovPreconditionerReadsBackAsWritten) {
   io::CaseSpec spec = analysis::read_case_file(kData / "uniaxial_neo_hookean.feb");
-  spec.solver.linear_solver = "krylov";
+  spec.solver.linear_solver.kind = LinearSolverKind::krylov;
   const fs::path dir = fresh_dir("krylov_amg");
   io::write_case(spec, dir / "case.toml");
   std::ifstream written(dir / "case.toml");
   const std::string text{std::istreambuf_iterator<char>(written), {}};
   EXPECT_NE(text.find("linear_solver = \"krylov\""), std::string::npos) << text;
   EXPECT_EQ(text.find("preconditioner"), std::string::npos) << text;
-  spec.solver.preconditioner = "amg";
+  spec.solver.linear_solver.preconditioner = KrylovPreconditioner::amg;
   io::write_case(spec, dir / "case.toml");
   const io::CaseSpec back = analysis::read_case_file(dir / "case.toml");
-  EXPECT_EQ(back.solver.linear_solver, "krylov");
-  EXPECT_EQ(back.solver.preconditioner, "amg");
+  EXPECT_EQ(back.solver.linear_solver.kind, LinearSolverKind::krylov);
+  EXPECT_EQ(back.solver.linear_solver.preconditioner, KrylovPreconditioner::amg);
   fs::remove_all(dir);
 }
 
@@ -213,28 +213,31 @@ TEST(TomlConvertAnalysis, LumpedFluxMassReadsBackAsWritten) {
 
 TEST(TomlConvertSolver, FactorizationPrecisionReadsBackAsWritten) {
   io::CaseSpec spec = analysis::read_case_file(kData / "uniaxial_neo_hookean.feb");
-  spec.solver.linear_solver = "mumps";
-  spec.solver.reuse_factorization = true;
+  spec.solver.linear_solver.kind = LinearSolverKind::mumps;
+  spec.solver.linear_solver.reuse_factorization = true;
   const fs::path dir = fresh_dir("factorization_precision");
   io::write_case(spec, dir / "case.toml");
-  EXPECT_EQ(analysis::read_case_file(dir / "case.toml").solver.factorization_precision, "single");
-  spec.solver.factorization_precision = "double";
+  EXPECT_EQ(analysis::read_case_file(dir / "case.toml").solver.linear_solver.precision,
+            FactorPrecision::single);
+  spec.solver.linear_solver.precision = FactorPrecision::full;
   io::write_case(spec, dir / "case.toml");
   const io::CaseSpec back = analysis::read_case_file(dir / "case.toml");
-  EXPECT_TRUE(back.solver.reuse_factorization);
-  EXPECT_EQ(back.solver.factorization_precision, "double");
+  EXPECT_TRUE(back.solver.linear_solver.reuse_factorization);
+  EXPECT_EQ(back.solver.linear_solver.precision, FactorPrecision::full);
   fs::remove_all(dir);
 }
 
 TEST(TomlConvertSolver, SchurApproximationReadsBackAsWritten) {
   io::CaseSpec spec = analysis::read_case_file(kData / "uniaxial_neo_hookean.feb");
-  spec.solver.linear_solver = "krylov";
+  spec.solver.linear_solver.kind = LinearSolverKind::krylov;
   const fs::path dir = fresh_dir("schur_approximation");
   io::write_case(spec, dir / "case.toml");
-  EXPECT_EQ(analysis::read_case_file(dir / "case.toml").solver.schur_approximation, "selfp");
-  spec.solver.schur_approximation = "drained";
+  EXPECT_EQ(analysis::read_case_file(dir / "case.toml").solver.linear_solver.schur,
+            SchurApproximation::selfp);
+  spec.solver.linear_solver.schur = SchurApproximation::drained;
   io::write_case(spec, dir / "case.toml");
-  EXPECT_EQ(analysis::read_case_file(dir / "case.toml").solver.schur_approximation, "drained");
+  EXPECT_EQ(analysis::read_case_file(dir / "case.toml").solver.linear_solver.schur,
+            SchurApproximation::drained);
   fs::remove_all(dir);
 }
 

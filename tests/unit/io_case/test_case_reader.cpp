@@ -155,7 +155,7 @@ TEST(CaseReader, CompleteCaseBoundaryLoadsAndSettings) {
   EXPECT_DOUBLE_EQ(c.solver.residual_tolerance, 1e-9);
   EXPECT_DOUBLE_EQ(c.solver.increment_tolerance, 1e-7);
   EXPECT_FALSE(c.solver.line_search);
-  EXPECT_EQ(c.solver.linear_solver, "sparselu");
+  EXPECT_EQ(c.solver.linear_solver.kind, trifem::LinearSolverKind::sparselu);
 
   EXPECT_DOUBLE_EQ(c.output.interval, 0.5);
   EXPECT_EQ(c.output.times, (std::vector<Real>{0.25, 1.5})); // sorted, duplicates dropped
@@ -180,7 +180,7 @@ TEST(CaseReader, MinimalCaseGetsDefaults) {
   EXPECT_DOUBLE_EQ(c.time.cutback, 0.5);
   EXPECT_EQ(c.solver.max_iterations, 20);
   EXPECT_TRUE(c.solver.line_search);
-  EXPECT_EQ(c.solver.linear_solver, "auto");
+  EXPECT_EQ(c.solver.linear_solver.kind, trifem::LinearSolverKind::automatic);
   EXPECT_DOUBLE_EQ(c.output.interval, 0.0);
   EXPECT_TRUE(c.output.vtu);
   EXPECT_TRUE(c.fixed.empty());

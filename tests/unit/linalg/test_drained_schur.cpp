@@ -193,8 +193,8 @@ namespace {
 
 /// FGMRES iterations of the Krylov backend ("lu" blocks, Schur approximation `schur`) on the
 /// two cells' system to 1e-10; the relative residual reached in `residual`.
-int krylov_iterations(const TwoCells& s, const std::string& schur, Real& residual) {
-  auto solver = make_linear_solver("krylov", "", false, "lu", FactorPrecision::single, schur);
+int krylov_iterations(const TwoCells& s, SchurApproximation schur, Real& residual) {
+  auto solver = make_linear_solver({.kind = LinearSolverKind::krylov, .schur = schur});
   std::vector<int> fields;
   for (Index i = 0; i < s.A.rows(); ++i)
     fields.push_back(i < TwoCells::kDisplacements              ? 0
@@ -202,7 +202,7 @@ int krylov_iterations(const TwoCells& s, const std::string& schur, Real& residua
                                                                : 2);
   solver->set_hints(
       {fields, {FieldRole::displacement, FieldRole::flux, FieldRole::potential}, {}, {}});
-  EXPECT_EQ(solver->wants_transport_cells(), schur == "drained");
+  EXPECT_EQ(solver->wants_transport_cells(), schur == SchurApproximation::drained);
   solver->analyze_pattern(s.A);
   solver->set_transport_cells(s.cells);
   EXPECT_TRUE(solver->factorize(s.A)) << solver->failure().reason;
@@ -220,31 +220,32 @@ TEST(DrainedSchur, MakesTheKrylovBackendsFactorizationExactForALumpedFluxBlock) 
   // exact, the full block factorization is the inverse and FGMRES converges at once
   const TwoCells s = make_two_cells(false);
   Real residual = 1.0;
-  EXPECT_LE(krylov_iterations(s, "drained", residual), 2);
+  EXPECT_LE(krylov_iterations(s, SchurApproximation::drained, residual), 2);
   EXPECT_LT(residual, 1e-9);
-  EXPECT_GE(krylov_iterations(s, "selfp", residual), 5); // the diagonal approximation
+  EXPECT_GE(krylov_iterations(s, SchurApproximation::selfp, residual),
+            5); // the diagonal approximation
   EXPECT_LT(residual, 1e-9);
   // with the undrained coupling (its diagonal approximation) it still solves
-  EXPECT_LE(krylov_iterations(make_two_cells(true), "drained", residual), 100);
+  EXPECT_LE(krylov_iterations(make_two_cells(true), SchurApproximation::drained, residual), 100);
   EXPECT_LT(residual, 1e-9);
 }
 
 TEST(DrainedSchur, OptionsOfItsSolverAreReadAndCheckedWithTheKrylovBackend) {
-  EXPECT_NO_THROW(make_linear_solver("krylov", "-drained_schur_pc_factor_mat_solver_type mumps",
-                                     false, "lu", FactorPrecision::single, "drained"));
+  EXPECT_NO_THROW(
+      make_linear_solver({.kind = LinearSolverKind::krylov,
+                          .petsc_options = "-drained_schur_pc_factor_mat_solver_type mumps",
+                          .schur = SchurApproximation::drained}));
   try { // not read without the drained approximation
-    make_linear_solver("krylov", "-drained_schur_pc_factor_mat_solver_type mumps");
+    make_linear_solver({.kind = LinearSolverKind::krylov,
+                        .petsc_options = "-drained_schur_pc_factor_mat_solver_type mumps"});
     FAIL() << "no error";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("-drained_schur_pc_factor_mat_solver_type"),
               std::string::npos)
         << e.what();
   }
-  EXPECT_THROW(make_linear_solver("krylov", "-drained_schur_pc_type no_such_type", false, "lu",
-                                  FactorPrecision::single, "drained"),
-               InputError);
-  EXPECT_THROW(make_linear_solver("mumps", "", false, "lu", FactorPrecision::single, "drained"),
-               InputError);
-  EXPECT_THROW(make_linear_solver("krylov", "", false, "lu", FactorPrecision::single, "exact"),
+  EXPECT_THROW(make_linear_solver({.kind = LinearSolverKind::krylov,
+                                   .petsc_options = "-drained_schur_pc_type no_such_type",
+                                   .schur = SchurApproximation::drained}),
                InputError);
 }

@@ -61,7 +61,7 @@ private:
 solver::NewtonReport solve(NoisyLinearProblem& problem) {
   solver::NewtonSettings settings;
   settings.line_search = false;
-  solver::NewtonSolver newton(settings, linalg::make_linear_solver("sparselu"));
+  solver::NewtonSolver newton(settings, linalg::make_linear_solver({LinearSolverKind::sparselu}));
   return newton.solve(problem);
 }
 

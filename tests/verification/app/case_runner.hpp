@@ -30,12 +30,8 @@ inline CaseRun run_case_spec(io::CaseSpec spec, const CaseObserver& observer = {
   CaseRun run;
   run.spec = std::move(spec);
   run.model = model::build_model(run.spec);
-  solver::NewtonSolver newton(
-      analysis::newton_settings(run.spec.solver),
-      linalg::make_linear_solver(run.spec.solver.linear_solver, run.spec.solver.petsc_options,
-                                 run.spec.solver.reuse_factorization,
-                                 run.spec.solver.preconditioner,
-                                 analysis::factor_precision(run.spec.solver)));
+  solver::NewtonSolver newton(analysis::newton_settings(run.spec.solver),
+                              linalg::make_linear_solver(run.spec.solver.linear_solver));
   solver::StepController controller(analysis::step_settings(run.spec));
   solver::Linearization initial; // the state at t = 0 (reactions of the initial state)
   run.model->problem->linearize(initial, false);

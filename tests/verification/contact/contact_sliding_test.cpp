@@ -146,7 +146,7 @@ TEST(ContactSliding, LoadedNodeLeavingTheMasterSurfaceRejectsTheStep) {
   int step = 1;
   for (; step <= 42 && reason.empty(); ++step) {
     m->problem->begin_step(step, 1.0);
-    solver::NewtonSolver solver(newton, linalg::make_linear_solver("umfpack"));
+    solver::NewtonSolver solver(newton, linalg::make_linear_solver({LinearSolverKind::umfpack}));
     const solver::NewtonReport report = solver.solve(*m->problem);
     ASSERT_EQ(report.status, solver::SolveStatus::Converged) << "step " << step;
     reason = m->problem->step_rejection();

@@ -72,7 +72,7 @@ TEST(ImplicitSphere, StepPressureOscillationMatchesTheRadialOdeAndTheExplicitAns
   spec.time.dt = spec.time.dt_max = period / 50.0;
   const std::unique_ptr<model::Model> model = implicit.build();
   solver::NewtonSolver newton(analysis::newton_settings(spec.solver),
-                              linalg::make_linear_solver("umfpack"));
+                              linalg::make_linear_solver({LinearSolverKind::umfpack}));
   std::vector<Real> times = {0.0}, radii = {mean_radius(*model, "shell.inner")};
   const solver::RunReport run = analysis::run_steps(
       spec, *model, newton,

@@ -72,8 +72,8 @@ int evaluate_cell(const fe::HexGeometry& geo, const fe::HexCoords& u,
   return kOk;
 }
 
-/// The cell scalars of evaluate_cells whole on every process (ExplicitModel::sum_cell_parts),
-/// in one sum.
+/// The cell scalars of evaluate_cells whole on every process: each process's own cells, the
+/// others taken as 0, summed over the processes in one sum.
 void sum_cell_scalars(const ExplicitModel& model, const CellRequest& request, CellFields& out) {
   std::vector<Vector*> parts = {&out.volume_change, &out.gauss_volume_change};
   if (request.psi)

@@ -165,24 +165,6 @@ void ExplicitModel::build_partition() {
   }
 }
 
-void ExplicitModel::sum_node_parts(Vector& v) const {
-  if (!distributed())
-    return;
-  for (Index a = 0; a < mesh_.num_nodes(); ++a)
-    if (!owns_node(a))
-      v.segment<3>(3 * a).setZero();
-  parallel::sum(v);
-}
-
-void ExplicitModel::sum_cell_parts(Vector& v) const {
-  if (!distributed())
-    return;
-  for (Index c = 0; c < mesh_.num_cells(); ++c)
-    if (!owns_cell(c))
-      v[c] = 0.0;
-  parallel::sum(v);
-}
-
 void ExplicitModel::build_incidence() {
   const Index nn = mesh_.num_nodes();
   incidence_.offsets.assign(nn + 1, 0);

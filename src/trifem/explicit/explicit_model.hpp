@@ -72,11 +72,6 @@ public:
   bool evaluates(Index c) const { return evaluated_.empty() || evaluated_[c] != 0; }
   /// The owning process of every cell (empty on one process).
   const std::vector<int>& cell_owners() const { return cell_owner_; }
-  /// Replaces `v` (per node 3 a + k, or per cell) by the sum over the processes of its entries
-  /// at this process's own nodes (or cells), the others taken as 0: the whole vector from the
-  /// parts each owner computed. A no-op on one process.
-  void sum_node_parts(Vector& v) const;
-  void sum_cell_parts(Vector& v) const;
 
   /// f = F_S(t, U) = −Σ over the model's load terms of their residual at U and time t [N]
   /// (follower pressures on the current surface, dead tractions per reference area), size

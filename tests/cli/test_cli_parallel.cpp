@@ -7,8 +7,8 @@
 // contact interface split between processes gives the same answer; bad input and an unwritable
 // output directory fail with one error line; a write error or an input error of one process
 // alone stops them all, with one error line, and so does a signal to one process; the explicit
-// analysis, alone or between quasi-static steps, gives the one-process histories to 1e-10; the
-// Krylov backend is refused.
+// analysis, alone, restarted or between quasi-static steps, gives the one-process histories to
+// 1e-10; the Krylov backend is refused.
 #include "cli_harness.hpp"
 
 #include <cstdlib>
@@ -323,6 +323,39 @@ TEST_F(CliParallel, TheExplicitCantileverGivesTheOneProcessHistory) {
   // the multiplier's pressure (solved by MUMPS on the processes), a follower pressure and the
   // clamp's reaction, through the first quarter of the bending period (440 steps)
   expect_the_one_process_history("explicit_cantilever", {{"end_time", "end_time = 0.005"}}, 1e-10);
+}
+
+TEST_F(CliParallel, AnExplicitRunRestartedOnTwoProcessesContinuesTheOneProcessRun) {
+  // restart files written on 2 processes hold the integrator's state of every process (the
+  // same bits everywhere): continued on 2 processes from the middle of the run, the rows after
+  // the restart are those of the uninterrupted one-process run (both write restart files, so
+  // both factorize the multiplier matrix afresh at the same steps)
+  const fs::path file = example("explicit_cantilever", {{"end_time", "end_time = 0.005"}});
+  const fs::path one = output() / "one", two = output() / "two", resumed = output() / "resumed";
+  Result r = trifem({"-q", "run", file.string(), "-o", one.string(), "--write-restart"});
+  ASSERT_EQ(r.exit_code, kSuccess) << r;
+  r = mpirun(2, {"-q", "run", file.string(), "-o", two.string(), "--write-restart"});
+  ASSERT_EQ(r.exit_code, kSuccess) << r;
+  const std::vector<fs::path> files = restart_files(two);
+  ASSERT_EQ(files.size(), 10u) << "one per output time, every 0.5 ms";
+  r = mpirun(2,
+             {"-q", "run", file.string(), "-o", resumed.string(), "--restart", files[4].string()});
+  ASSERT_EQ(r.exit_code, kSuccess) << r;
+  const History a = read_history(one / "history.csv");
+  const History b = read_history(resumed / "history.csv");
+  ASSERT_EQ(a.names, b.names);
+  EXPECT_NEAR(b["time [s]"].front(), 2.5e-3, 1e-15);
+  ASSERT_GT(b.columns[0].size(), 100u);
+  const std::size_t offset = a.columns[0].size() - b.columns[0].size();
+  const std::map<std::string, double> scale = unit_scales(a);
+  for (std::size_t c = 0; c < a.names.size(); ++c) {
+    if (a.names[c] == "iterations")
+      continue;
+    for (std::size_t i = 1; i < b.columns[c].size(); ++i) // row 0: the restart state itself
+      ASSERT_LE(std::abs(b.columns[c][i] - a.columns[c][offset + i]),
+                1e-10 * scale.at(unit_of(a.names[c])))
+          << a.names[c] << " at t = " << b.columns[0][i];
+  }
 }
 
 TEST_F(CliParallel, QuasiStaticExplicitQuasiStaticStepsGiveTheOneProcessHistories) {

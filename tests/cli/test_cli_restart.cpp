@@ -30,9 +30,9 @@ fs::path example_case(const std::string& name) {
 
 class CliRestart : public Cli {
 protected:
-  /// Runs the example `name` whole, writing restart files, then again from the restart file
+  /// Runs the case `file` whole, writing restart files, then again from the restart file
   /// chosen by `pick` (from the list, in order), and compares the two histories.
-  void check_restart(const std::string& name,
+  void check_restart(const fs::path& file,
                      const std::function<fs::path(const std::vector<fs::path>&)>& pick) const;
   /// The case of the example `name`; sliding_layers through its first stroke and a quarter of
   /// the way back (39 of its 160 steps: load ramp, sliding and reversal, in a quarter of the
@@ -62,20 +62,52 @@ fs::path CliRestart::case_of(const std::string& name) const {
 class CliRestartExamples : public CliRestart, public testing::WithParamInterface<std::string> {};
 
 TEST_P(CliRestartExamples, ContinuedRunEqualsTheUninterruptedOne) {
-  check_restart(GetParam(), [](const auto& files) { return files[(files.size() - 1) / 2]; });
+  check_restart(case_of(GetParam()),
+                [](const auto& files) { return files[(files.size() - 1) / 2]; });
 }
 
 /// The swelling example restarted inside its second analysis step (the relative prescribed
 /// top displacement keeps the offsets of the step's start, not of the restart state).
 TEST_F(CliRestart, ContinuedInsideALaterAnalysisStep) {
-  check_restart("swell_then_compress", [](const auto& files) { return files[files.size() - 2]; });
+  check_restart(case_of("swell_then_compress"),
+                [](const auto& files) { return files[files.size() - 2]; });
+}
+
+/// A rotating rigid body (its rotation vector is part of the state): the lid of a clamped
+/// cube pulled up, twisted by a moment about z and turned about x, continued from the middle.
+TEST_F(CliRestart, ContinuedWhileARigidBodyRotates) {
+  const fs::path file = write_file("rotating_lid.toml", R"(
+[[mesh.box]]
+name = "cube"
+size = [1.0, 1.0, 1.0]
+divisions = [2, 2, 2]
+material = "soft"
+[materials.soft]
+type = "neo-hookean"
+E = 1.0
+nu = 0.3
+[curves.ramp]
+points = [[0.0, 0.0], [1.0, 1.0]]
+[[boundary.fixed]]
+set = "cube.zmin"
+[[rigid_body]]
+name = "lid"
+set = "cube.zmax"
+z = { force = 0.05, curve = "ramp" }
+rx = { rotation = 0.3, curve = "ramp" }
+rz = { moment = 0.02, curve = "ramp" }
+[time]
+end_time = 1.0
+dt = 0.125
+[solver]
+linear_solver = "sparselu"
+)");
+  check_restart(file, [](const auto& files) { return files[(files.size() - 1) / 2]; });
 }
 
 void CliRestart::check_restart(
-    const std::string& name,
-    const std::function<fs::path(const std::vector<fs::path>&)>& pick) const {
+    const fs::path& file, const std::function<fs::path(const std::vector<fs::path>&)>& pick) const {
   const fs::path whole = output() / "whole", resumed = output() / "resumed";
-  const fs::path file = case_of(name);
   Result r = trifem({"-q", "run", file.string(), "-o", whole.string(), "--write-restart"});
   ASSERT_EQ(r.exit_code, kSuccess) << r;
   const std::vector<fs::path> files = restart_files(whole);

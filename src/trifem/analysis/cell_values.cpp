@@ -54,6 +54,8 @@ CellEvaluator::CellEvaluator(const model::Model& model)
 CellValues CellEvaluator::values(Index c, const Vector& x) const {
   CellValues v;
   const Index e = element_[c];
+  if (model_.materials[c].rigid()) // moves rigidly: no strain, no stress
+    return v;
   if (model_.materials[c].mixture) {
     add_mixture_values(model_, model_.mixture->output(e, x), c, x, v);
   } else {

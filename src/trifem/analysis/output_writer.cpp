@@ -39,6 +39,12 @@ std::vector<std::string> model_columns(const model::Model& model) {
       cols.push_back(fmt::format("{}.{} [mm]", b.name, c));
     for (const char* c : {"Fx", "Fy", "Fz"})
       cols.push_back(fmt::format("{}.{} [N]", b.name, c));
+    if (b.rotating < 0)
+      continue;
+    for (const char* c : {"rx", "ry", "rz"})
+      cols.push_back(fmt::format("{}.{} [rad]", b.name, c));
+    for (const char* c : {"Mx", "My", "Mz"})
+      cols.push_back(fmt::format("{}.{} [N mm]", b.name, c));
   }
   if (model.mixture) {
     cols.push_back("water_outflow [mm^3/s]");
@@ -178,6 +184,10 @@ std::vector<double> OutputWriter::history_row(Real time, int step, Real dt, int 
     const Vec3 u = model::rigid_body_displacement(model_, b),
                f = model::rigid_body_force(model_, b, time);
     row.insert(row.end(), {u.x(), u.y(), u.z(), f.x(), f.y(), f.z()});
+    if (b.rotating < 0)
+      continue;
+    const Vec3 r = model::rigid_body_rotation(model_, b), m = model::rigid_body_moment(model_, b);
+    row.insert(row.end(), {r.x(), r.y(), r.z(), m.x(), m.y(), m.z()});
   }
   if (balance_) {
     const Balance b = balance_->measure();

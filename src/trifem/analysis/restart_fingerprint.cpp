@@ -284,6 +284,19 @@ std::uint64_t rigid_bodies_hash(const io::CaseSpec& spec) {
       h.real(d.value);
       h.text(d.curve);
     }
+    if (!b.rotates) // a body that only translates hashes its translation alone
+      continue;
+    h.integer(static_cast<std::int64_t>(b.blocks.size()));
+    for (const std::string& block : b.blocks)
+      h.text(block);
+    h.flag(b.center.has_value());
+    if (b.center)
+      h.vec3(*b.center);
+    for (const io::RigidComponentSpec& d : b.rotation_drives) {
+      h.kind(d.drive);
+      h.real(d.value);
+      h.text(d.curve);
+    }
   }
   return h.value();
 }

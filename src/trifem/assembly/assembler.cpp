@@ -31,8 +31,9 @@ inline const Index* find_row(const Index* from, const Index* end, Index row) {
 struct Scratch {
   physics::LocalVector r;
   physics::LocalMatrix K;
-  std::vector<Index> rows;  ///< equation of each local DOF (-1: constrained)
-  std::vector<Index> order; ///< the local DOFs with an equation, by ascending equation
+  dofs::CondensedElement condensed; ///< r and K on the rigid bodies' unknowns
+  std::vector<Index> rows;          ///< equation of each local DOF (-1: constrained)
+  std::vector<Index> order;         ///< the local DOFs with an equation, by ascending equation
 };
 
 /// Rotates an element contribution to the local frames of its rotated nodal DOFs:
@@ -68,15 +69,11 @@ void rotate(const dofs::NodalFrames& frames, std::span<const Index> dofs, Scratc
   }
 }
 
-/// Adds the element residual and tangent to the system. Each column of the tangent is added
+/// Adds an element tangent K on `dofs` (none dependent) to the system. Each column is added
 /// along the matrix column in one forward walk, its rows taken in ascending order.
-void scatter(const dofs::DofMap& map, std::span<const Index> dofs, Scratch& s, AssembledSystem& out,
-             bool with_jacobian) {
+void scatter_jacobian(const dofs::DofMap& map, std::span<const Index> dofs,
+                      const physics::LocalMatrix& K, Scratch& s, AssembledSystem& out) {
   const Index n = static_cast<Index>(dofs.size());
-  for (Index i = 0; i < n; ++i)
-    out.residual[dofs[i]] += s.r[i];
-  if (!with_jacobian)
-    return;
   s.rows.resize(n);
   s.order.clear();
   for (Index i = 0; i < n; ++i) {
@@ -95,13 +92,33 @@ void scatter(const dofs::DofMap& map, std::span<const Index> dofs, Scratch& s, A
     const Index* end = inner + A.outerIndexPtr()[col + 1];
     Real* values = A.valuePtr();
     for (Index i : s.order) {
-      const Real v = s.K(i, j);
+      const Real v = K(i, j);
       if (v == 0.0)
         continue;
       at = find_row(at, end, s.rows[i]);
       values[at - inner] += v;
     }
   }
+}
+
+/// Adds the element residual and tangent to the system. The residual of DOFs that follow a
+/// rigid body stays at them (the force on the node) and its condensation goes to the body's
+/// unknowns, with the condensed tangent.
+void scatter(const dofs::DofMap& map, const dofs::RigidMap* rigid, const physics::EvalState& state,
+             std::span<const Index> dofs, Scratch& s, AssembledSystem& out, bool with_jacobian) {
+  const Index n = static_cast<Index>(dofs.size());
+  for (Index i = 0; i < n; ++i)
+    out.residual[dofs[i]] += s.r[i];
+  if (rigid && rigid->condense(dofs, state.x, s.r, with_jacobian ? &s.K : nullptr, s.condensed)) {
+    const auto& condensed = s.condensed;
+    for (Index i = condensed.first_body_dof; i < static_cast<Index>(condensed.dofs.size()); ++i)
+      out.residual[condensed.dofs[i]] += condensed.residual[i];
+    if (with_jacobian)
+      scatter_jacobian(map, condensed.dofs, condensed.jacobian, s, out);
+    return;
+  }
+  if (with_jacobian)
+    scatter_jacobian(map, dofs, s.K, s, out);
 }
 
 /// The elements of `stencils` that process `rank` assembles: those whose first equation it
@@ -135,11 +152,27 @@ Stencils subset(const Stencils& stencils, const std::vector<Index>& which) {
   return s;
 }
 
+/// The stencils of `stencils` after condensation onto the rigid bodies' unknowns.
+Stencils condense(const Stencils& stencils, const dofs::RigidMap& rigid) {
+  Stencils out;
+  out.offsets.reserve(stencils.offsets.size());
+  out.offsets.push_back(0);
+  std::vector<Index> dofs;
+  for (Index e = 0; e < stencils.size(); ++e) {
+    rigid.expand(stencils.of(e), dofs);
+    out.dofs.insert(out.dofs.end(), dofs.begin(), dofs.end());
+    out.offsets.push_back(static_cast<Index>(out.dofs.size()));
+  }
+  return out;
+}
+
 } // namespace
 
 Assembler::Assembler(const dofs::DofMap& map, std::vector<const physics::Term*> terms,
-                     const dofs::NodalFrames* frames, bool awaits_ownership)
-    : map_(map), terms_(std::move(terms)), frames_(frames), awaits_ownership_(awaits_ownership) {
+                     const dofs::NodalFrames* frames, bool awaits_ownership,
+                     const dofs::RigidMap* rigid)
+    : map_(map), terms_(std::move(terms)), frames_(frames),
+      rigid_(rigid && !rigid->empty() ? rigid : nullptr), awaits_ownership_(awaits_ownership) {
   TRIFEM_VERIFY(map.finalized(), "the DOF map must be finalized before assembly");
   rebuild();
 }
@@ -153,20 +186,24 @@ void Assembler::set_ownership(std::vector<int> equation_owner, int rank) {
 
 void Assembler::rebuild() {
   stencils_.clear();
+  condensed_.clear();
   colours_.clear();
   owned_.clear();
   pattern_built_ = false;
   pattern_ = {};
   for (const physics::Term* t : terms_) {
     stencils_.push_back(collect_stencils(*t));
+    if (rigid_)
+      condensed_.push_back(condense(stencils_.back(), *rigid_));
+    const Stencils& coupled = rigid_ ? condensed_.back() : stencils_.back();
     if (awaits_ownership_)
       continue;
     if (equation_owner_.empty()) {
-      colours_.push_back(colour_elements(stencils_.back(), map_));
+      colours_.push_back(colour_elements(coupled, map_));
       continue;
     }
-    const std::vector<Index> mine = owned_elements(stencils_.back(), map_, equation_owner_, rank_);
-    owned_.push_back(subset(stencils_.back(), mine));
+    const std::vector<Index> mine = owned_elements(coupled, map_, equation_owner_, rank_);
+    owned_.push_back(subset(coupled, mine));
     std::vector<std::vector<Index>> colours = colour_elements(owned_.back(), map_);
     for (auto& colour : colours)
       for (Index& e : colour)
@@ -180,7 +217,7 @@ void Assembler::build_pattern_once() {
   if (pattern_built_)
     return;
   std::vector<const Stencils*> sets;
-  for (const auto& s : equation_owner_.empty() ? stencils_ : owned_)
+  for (const auto& s : !equation_owner_.empty() ? owned_ : rigid_ ? condensed_ : stencils_)
     sets.push_back(&s);
   pattern_ = build_pattern(map_, sets);
   pattern_built_ = true;
@@ -190,7 +227,7 @@ SparseMatrix Assembler::body_couplings() const {
   std::vector<const Stencils*> sets;
   for (std::size_t t = 0; t < terms_.size(); ++t)
     if (!terms_[t]->joins_bodies())
-      sets.push_back(&stencils_[t]);
+      sets.push_back(rigid_ ? &condensed_[t] : &stencils_[t]);
   return build_pattern(map_, sets).Kff;
 }
 
@@ -233,7 +270,7 @@ bool Assembler::assemble_term(std::size_t t, const physics::EvalState& state, As
         }
         if (frames_ && !frames_->empty())
           rotate(*frames_, stencils.of(e), s, with_jacobian);
-        scatter(map_, stencils.of(e), s, out, with_jacobian);
+        scatter(map_, rigid_, state, stencils.of(e), s, out, with_jacobian);
       }
     }
   }

@@ -12,10 +12,17 @@ namespace trifem::assembly {
 
 FeProblem::FeProblem(const dofs::DofMap& map, std::vector<dofs::DirichletCondition> conditions,
                      std::vector<std::unique_ptr<physics::Term>> terms,
-                     std::vector<solver::FieldScale> scales, dofs::NodalFrames frames)
+                     std::vector<solver::FieldScale> scales, dofs::NodalFrames frames,
+                     dofs::RigidMap rigid)
     : map_(map), conditions_(std::move(conditions)), terms_(std::move(terms)),
-      scales_(std::move(scales)), frames_(std::move(frames)) {
+      scales_(std::move(scales)), frames_(std::move(frames)), rigid_(std::move(rigid)) {
   TRIFEM_VERIFY(static_cast<int>(scales_.size()) == map.num_fields(), "one scale per field");
+  for (Index d = 0; d < map.num_dofs() && !rigid_.empty(); ++d)
+    TRIFEM_VERIFY((rigid_.body_of(d) >= 0) == map.is_dependent(d) &&
+                      (rigid_.body_of(d) < 0 || frames_.frame_of(d) < 0),
+                  "DOF {}: the followers of rigid bodies must be the dependent DOFs, in no "
+                  "rotated frame",
+                  d);
   build_assembler();
   x_ = x_old_ = saved_ = target_ = Vector::Zero(map.num_dofs());
   dofs::prescribed_values(conditions_, time_, x_);
@@ -48,11 +55,21 @@ std::vector<Vector> FeProblem::rigid_body_modes() const {
       for (int c = 0; c < 3; ++c)
         all[map_.dof(displacement_, node, c)] = motion[c];
     }
+    for (const dofs::RigidBodyDofs& body : rigid_.bodies()) { // u_c and Θ of the motion
+      const Vec3 rotation = mode < 3 ? Vec3::Zero() : Vec3(Vec3::Unit(mode - 3));
+      const Vec3 motion = mode < 3 ? Vec3(Vec3::Unit(mode)) : rotation.cross(body.centre - centre);
+      for (int c = 0; c < 3; ++c) {
+        all[body.translation[c]] = motion[c];
+        all[body.rotation[c]] = rotation[c];
+      }
+    }
     frames_.to_local(all);
     Vector mode_vector = Vector::Zero(map_.num_equations());
     for (Index dof = 0; dof < map_.num_dofs(); ++dof)
       if (const Index eq = map_.equation(dof);
-          eq >= 0 && map_.leader(dof) == dof && map_.field_of(dof) == displacement_)
+          eq >= 0 && map_.leader(dof) == dof &&
+          (map_.field_of(dof) == displacement_ ||
+           map_.field(map_.field_of(dof)).role == FieldRole::rigid_motion))
         mode_vector[eq] = all[dof];
     modes.push_back(std::move(mode_vector));
   }
@@ -132,7 +149,8 @@ void FeProblem::build_assembler() {
     views.push_back(t.get());
   // on several processes the whole pattern is never built: each builds its part once the
   // equations are split (partition)
-  assembler_ = std::make_unique<Assembler>(map_, std::move(views), &frames_, parallel::active());
+  assembler_ =
+      std::make_unique<Assembler>(map_, std::move(views), &frames_, parallel::active(), &rigid_);
   apply_weights();
   partition();
   reset_system();
@@ -199,6 +217,9 @@ void FeProblem::apply_weights() {
 
 void FeProblem::set_dynamic(bool dynamic, bool start, const Vector& velocity) {
   TRIFEM_VERIFY(!dynamic || inertia_ != nullptr, "a dynamic step needs the inertia term");
+  TRIFEM_CHECK(!dynamic || rigid_.empty(),
+               "dynamic steps do not take rotating rigid bodies yet (a rigid body made of "
+               "tied nodes does)");
   if (dynamic && !dynamic_ && start)
     start_motion(velocity);
   if (dynamic && !dynamic_) // the support forces of the state the step starts from
@@ -230,6 +251,7 @@ Vector FeProblem::static_residual() {
 }
 
 void FeProblem::sync() {
+  rigid_.apply(x_);
   x_global_ = x_;
   frames_.to_global(x_global_);
 }
@@ -238,6 +260,7 @@ void FeProblem::set_state(const Vector& x) {
   TRIFEM_VERIFY(x.size() == map_.num_dofs(), "state size mismatch");
   x_ = x;
   frames_.to_local(x_);
+  rigid_.apply(x_);
   x_old_ = target_ = x_;
   sync();
   x_old_global_ = x_global_;

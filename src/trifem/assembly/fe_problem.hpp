@@ -6,6 +6,7 @@
 #include "trifem/assembly/system_pattern.hpp"
 #include "trifem/dofs/dirichlet.hpp"
 #include "trifem/dofs/nodal_frames.hpp"
+#include "trifem/dofs/rigid_map.hpp"
 #include "trifem/physics/inertia_term.hpp"
 #include "trifem/solver/nonlinear_problem.hpp"
 
@@ -27,9 +28,11 @@ public:
   /// `frames` (optional, outlives the assembler): rotated nodal DOFs; element contributions
   /// are rotated to the local frames before scattering. `awaits_ownership`: a run on several
   /// processes, whose colours and pattern set_ownership() builds (only the stencils are
-  /// collected here, for body_couplings()).
+  /// collected here, for body_couplings()). `rigid` (optional, outlives the assembler): rigid
+  /// bodies whose followers' contributions are condensed onto the bodies' unknowns.
   Assembler(const dofs::DofMap& map, std::vector<const physics::Term*> terms,
-            const dofs::NodalFrames* frames = nullptr, bool awaits_ownership = false);
+            const dofs::NodalFrames* frames = nullptr, bool awaits_ownership = false,
+            const dofs::RigidMap* rigid = nullptr);
   /// Assembles residual and (if with_jacobian) both Jacobian blocks. False if some element
   /// reported an inadmissible state.
   bool assemble(const physics::EvalState& state, AssembledSystem& out, bool with_jacobian) const;
@@ -62,10 +65,12 @@ private:
   std::vector<const physics::Term*> terms_;
   std::vector<Real> weights_; ///< per term (empty: all 1)
   const dofs::NodalFrames* frames_;
+  const dofs::RigidMap* rigid_;     ///< nullptr: no rigid bodies
   std::vector<int> equation_owner_; ///< empty: this process assembles every element
   int rank_ = 0;
-  bool awaits_ownership_ = false; ///< until set_ownership(): stencils only
-  std::vector<Stencils> stencils_;
+  bool awaits_ownership_ = false;   ///< until set_ownership(): stencils only
+  std::vector<Stencils> stencils_;  ///< per term: what its elements evaluate
+  std::vector<Stencils> condensed_; ///< with rigid bodies: what they couple (RigidMap::expand)
   std::vector<std::vector<std::vector<Index>>> colours_;
   std::vector<Stencils> owned_; ///< on several processes: the stencils of this one's elements
   SystemPattern pattern_;
@@ -78,9 +83,12 @@ public:
   /// `map` must be finalized with the constrained DOFs of `conditions`. `scales` gives one
   /// FieldScale per field of `map`.
   /// `frames`: rotated nodal DOFs (their values and prescribed values are local components).
+  /// `rigid`: rigid bodies, whose followers must be the dependent DOFs of `map` (and in no
+  /// rotated frame).
   FeProblem(const dofs::DofMap& map, std::vector<dofs::DirichletCondition> conditions,
             std::vector<std::unique_ptr<physics::Term>> terms,
-            std::vector<solver::FieldScale> scales, dofs::NodalFrames frames = {});
+            std::vector<solver::FieldScale> scales, dofs::NodalFrames frames = {},
+            dofs::RigidMap rigid = {});
 
   // NonlinearProblem
   Index num_equations() const override { return map_.num_equations(); }
@@ -149,11 +157,13 @@ public:
   /// steps, that of the last accepted state, g + M a (the support forces).
   const Vector& full_residual() const { return dynamic_ ? committed_residual_ : system_.residual; }
   const dofs::DofMap& dof_map() const { return map_; }
+  const dofs::RigidMap& rigid_map() const { return rigid_; }
   const std::vector<std::unique_ptr<physics::Term>>& terms() const { return terms_; }
 
 private:
   physics::EvalState eval_state() const { return {x_global_, x_old_global_, time_, dt_}; }
-  /// Refreshes the global-component copy of the state after x_ changed.
+  /// Refreshes the follower DOFs of rigid bodies and the global-component copy of the state
+  /// after x_ changed.
   void sync();
   /// On several processes: splits the equations between them (METIS on the pattern, computed
   /// on rank 0 and broadcast) and restricts the assembler to this process's elements.
@@ -195,6 +205,7 @@ private:
   bool jacobian_lent_ = false;   ///< system_.Kff's storage is with a Linearization (linearize)
   Index lent_nonzeros_ = 0;      ///< the lent matrix's nonzeros
   dofs::NodalFrames frames_;
+  dofs::RigidMap rigid_;
   Vector x_, x_old_, saved_, target_;
   Vector x_global_, x_old_global_;
   Real time_ = 0.0, time_old_ = 0.0, dt_ = 0.0;

@@ -110,6 +110,8 @@ SystemPattern build_pattern(const dofs::DofMap& map, const std::vector<const Ste
     }
     std::sort(rows.begin(), rows.end());
     rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
+    if (map.is_dependent(col)) // in no stencil of a condensed set
+      continue;
     if (const Index eq = map.equation(col); eq < 0)
       fc[map.constrained_index(col)] = rows;
     else if (ff[eq].empty())

@@ -10,7 +10,8 @@ enum class FieldRole {
   displacement, ///< the solid's displacement (a primal unknown)
   flux,         ///< a relative flux: water, cations, anions (primal unknowns)
   potential,    ///< a per-cell Lagrange multiplier: pressure, electric potential
-  multiplier    ///< the multipliers of a contact interface
+  multiplier,   ///< the multipliers of a contact interface
+  rigid_motion  ///< translation and rotation of a rigid body (primal, like displacement)
 };
 
 } // namespace trifem

@@ -15,6 +15,8 @@ FieldId DofMap::add_field(std::string name, FieldRole role, Index num_entities, 
   constrained_.resize(num_dofs_, 0);
   for (Index d = static_cast<Index>(leader_.size()); !leader_.empty() && d < num_dofs_; ++d)
     leader_.push_back(d);
+  if (!dependent_.empty())
+    dependent_.resize(num_dofs_, 0);
   return FieldId{static_cast<int>(fields_.size()) - 1};
 }
 
@@ -48,6 +50,13 @@ void DofMap::tie(Index follower, Index leader) {
   leader_[follower] = leader;
 }
 
+void DofMap::make_dependent(Index dof) {
+  TRIFEM_VERIFY(!finalized_, "cannot make DOF {} dependent after finalize()", dof);
+  TRIFEM_VERIFY(dof >= 0 && dof < num_dofs_, "DOF {} out of range", dof);
+  dependent_.resize(num_dofs_, 0);
+  dependent_[dof] = 1;
+}
+
 void DofMap::finalize() {
   equation_.assign(num_dofs_, -1);
   constrained_index_.assign(num_dofs_, -1);
@@ -55,6 +64,12 @@ void DofMap::finalize() {
   constrained_dofs_.clear();
   for (Index d = 0; d < num_dofs_; ++d) {
     const Index lead = leader(d);
+    if (is_dependent(d)) {
+      TRIFEM_VERIFY(!constrained_[d] && lead == d, "DOF {} is dependent and {}", d,
+                    constrained_[d] ? "constrained" : "tied");
+      continue;
+    }
+    TRIFEM_VERIFY(!is_dependent(lead), "DOF {} is tied to the dependent DOF {}", d, lead);
     TRIFEM_VERIFY(constrained_[d] == constrained_[lead],
                   "tied DOFs {} and {}: one is constrained, the other free", d, lead);
     if (constrained_[d]) {
@@ -68,7 +83,7 @@ void DofMap::finalize() {
     }
   }
   for (Index d = 0; d < num_dofs_ && has_ties(); ++d)
-    if (!constrained_[d])
+    if (!constrained_[d] && !is_dependent(d))
       equation_[d] = equation_[leader(d)];
   num_equations_ = static_cast<Index>(equation_dofs_.size());
   finalized_ = true;

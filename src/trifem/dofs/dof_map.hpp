@@ -63,6 +63,12 @@ public:
   Index leader(Index dof) const { return leader_.empty() ? dof : leader_[dof]; }
   bool has_ties() const { return !leader_.empty(); }
 
+  /// Makes `dof` dependent: it gets neither an equation nor a constrained index, its value
+  /// follows other unknowns (a node carried by a rotating rigid body, RigidMap). It may be
+  /// neither constrained nor tied. Must precede finalize(); reset_constraints() keeps it.
+  void make_dependent(Index dof);
+  bool is_dependent(Index dof) const { return !dependent_.empty() && dependent_[dof]; }
+
   /// Numbers equations (free leader DOFs, in DOF order; followers get their leader's) and
   /// constrained DOFs.
   void finalize();
@@ -73,9 +79,9 @@ public:
 
   Index num_equations() const { return num_equations_; }
   Index num_constrained() const { return static_cast<Index>(constrained_dofs_.size()); }
-  /// Equation of a free DOF (tied DOFs share one), or -1.
+  /// Equation of a free DOF (tied DOFs share one), or -1 (constrained or dependent).
   Index equation(Index dof) const { return equation_[dof]; }
-  /// Index among constrained DOFs, or -1.
+  /// Index among constrained DOFs, or -1 (free or dependent).
   Index constrained_index(Index dof) const { return constrained_index_[dof]; }
   /// Leader DOF of an equation.
   Index dof_of_equation(Index eq) const { return equation_dofs_[eq]; }
@@ -88,7 +94,8 @@ private:
   Index num_equations_ = 0;
   bool finalized_ = false;
   std::vector<char> constrained_;
-  std::vector<Index> leader_; ///< empty until the first tie()
+  std::vector<Index> leader_;   ///< empty until the first tie()
+  std::vector<char> dependent_; ///< empty until the first make_dependent()
   std::vector<Index> equation_, constrained_index_, equation_dofs_, constrained_dofs_;
 };
 

@@ -18,9 +18,12 @@ namespace {
 constexpr std::string_view kSolidContacts[] = {"sliding-elastic", "sliding-facet-on-facet",
                                                "sliding-node-on-facet"};
 
-/// Parameters of the enforcement (penalty, augmentation, search, stiffness symmetry): they do
-/// not change the contact conditions, which trifem's multipliers hold exactly.
+/// Parameters of the enforcement (penalty, augmentation, search, stiffness symmetry, and the
+/// penalty of friction, which fric_coeff = 0 switches off): they do not change the contact
+/// conditions, which trifem's multipliers hold exactly.
 constexpr std::string_view kEnforcement[] = {"laugon",
+                                             "fric_penalty",
+                                             "ktmult",
                                              "tolerance",
                                              "gaptol",
                                              "ptol",

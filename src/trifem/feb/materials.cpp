@@ -364,7 +364,7 @@ void read_materials(Reader& r, pugi::xml_node section) {
     if (!id.empty())
       r.material_by_id[id] = name;
   }
-  if (r.spec.materials.empty())
+  if (r.spec.materials.empty() && r.rigid_bodies.empty())
     r.doc.fail(section, "the file defines no material");
 }
 

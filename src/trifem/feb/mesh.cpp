@@ -145,6 +145,11 @@ void read_element_set(Reader& r, pugi::xml_node set) {
 
 void read_domains(Reader& r, pugi::xml_node domains) {
   for (pugi::xml_node d : elements(domains)) {
+    if (std::string_view(d.name()) != "SolidDomain" &&
+        r.rigid_bodies.contains(d.attribute("mat").value()))
+      r.doc.fail(d, fmt::format("a rigid body made of a <{}> (a surface without a volume mesh) "
+                                "is not supported yet: give the body solid elements",
+                                d.name()));
     if (std::string_view(d.name()) != "SolidDomain")
       r.doc.fail(
           d, fmt::format("<{}> is not supported (trifem has solid hex8 domains only)", d.name()));
@@ -152,6 +157,10 @@ void read_domains(Reader& r, pugi::xml_node domains) {
     const std::string mat = r.doc.attribute(d, "mat");
     if (!r.parts.contains(name))
       r.doc.fail(d, "name", fmt::format("no <Elements> part is named '{}'", name));
+    if (const auto body = r.rigid_bodies.find(mat); body != r.rigid_bodies.end()) {
+      body->second.blocks.push_back(name); // the part moves with the rigid body
+      continue;
+    }
     if (!r.spec.materials.contains(mat))
       r.doc.fail(d, "mat", fmt::format("no material is named '{}'", mat));
     r.mesh.materials[name] = mat;
@@ -184,8 +193,14 @@ void read_mesh(Reader& r, pugi::xml_node mesh, pugi::xml_node domains) {
   }
   if (domains)
     read_domains(r, domains);
+  const auto rigid = [&](const std::string& part) {
+    for (const auto& [body, input] : r.rigid_bodies)
+      if (std::find(input.blocks.begin(), input.blocks.end(), part) != input.blocks.end())
+        return true;
+    return false;
+  };
   for (const auto& [name, part] : r.parts)
-    if (!r.mesh.materials.contains(name))
+    if (!r.mesh.materials.contains(name) && !rigid(name))
       r.doc.fail(part,
                  fmt::format("the part '{}' has no material (no <SolidDomain> names it)", name));
   r.drained.assign(r.mesh.mesh.num_nodes(), 0);

@@ -18,12 +18,17 @@ void read_constants(Reader& r, pugi::xml_node constants) {
   r.chem.constants = constants;
   for (pugi::xml_node c : elements(constants)) {
     const std::string_view name = c.name();
+    if (name == "P") { // FEBio's ambient pressure (of its fluid modules): 0 changes nothing
+      if (r.doc.number(c) != 0.0)
+        r.doc.fail(c, "an ambient pressure P other than 0 is not supported");
+      continue;
+    }
     Real* target = name == "T"    ? &r.chem.T
                    : name == "R"  ? &r.chem.R
                    : name == "Fc" ? &r.chem.faraday
                                   : nullptr;
     if (!target)
-      r.doc.fail(c, fmt::format("unknown constant '{}' (expected T, R, Fc)", name));
+      r.doc.fail(c, fmt::format("unknown constant '{}' (expected T, R, Fc, P)", name));
     *target = r.doc.number(c); // checked where used (FEBio Studio writes 0 for solid models)
   }
 }

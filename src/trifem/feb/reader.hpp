@@ -54,8 +54,10 @@ struct RigidBodyInput {
   pugi::xml_node material;
   pugi::xml_node attachment;
   std::string set;                              ///< the attached node set
+  std::vector<std::string> blocks;              ///< the parts (solid domains) of the body
   std::array<bool, 6> fixed{};                  ///< rigid_fixed: x, y, z, then the rotations
   std::array<io::RigidComponentSpec, 3> drives; ///< rigid_displacement, rigid_force
+  std::array<io::RigidComponentSpec, 3> rotation_drives; ///< rigid_rotation, rigid_moment
 };
 
 /// Everything the section readers share while a file is read.

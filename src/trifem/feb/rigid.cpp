@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
-// Rigid bodies: a "rigid body" material attached to nodes (bc type "rigid") and driven by the
-// <Rigid> section, as a translating [[rigid_body]] (docs/feb.md).
+// Rigid bodies: a "rigid body" material on solid elements or attached to nodes (bc type
+// "rigid"), driven by the <Rigid> section, as a [[rigid_body]] that translates (its rotation
+// held) or rotates (docs/feb.md).
 #include "trifem/feb/reader.hpp"
 
 #include <algorithm>
@@ -27,9 +28,16 @@ int translation(const Reader& r, pugi::xml_node dof) {
     d.erase(0, 1);
   if (d == "x" || d == "y" || d == "z")
     return d[0] - 'x';
-  r.doc.fail(dof, fmt::format("dof '{}' is not supported: trifem's rigid bodies translate only "
-                              "(x, y, z or Rx, Ry, Rz)",
-                              r.doc.text(dof)));
+  r.doc.fail(dof,
+             fmt::format("dof '{}' is not a translation (x, y, z or Rx, Ry, Rz)", r.doc.text(dof)));
+}
+
+/// Ru, Rv, Rw -> 0, 1, 2 (components of the rotation vector).
+int rotation(const Reader& r, pugi::xml_node dof) {
+  const std::string d = r.doc.text(dof);
+  if (d == "Ru" || d == "Rv" || d == "Rw")
+    return d[1] - 'u';
+  r.doc.fail(dof, fmt::format("dof '{}' is not a rotation (Ru, Rv, Rw)", d));
 }
 
 /// rigid_fixed: Rx_dof ... Rw_dof flags.
@@ -47,10 +55,12 @@ void rigid_fixed(Reader& r, pugi::xml_node bc) {
   }
 }
 
-/// rigid_displacement (rigid_bc) and rigid_force (rigid_load): value x curve on one translation.
-void rigid_drive(Reader& r, pugi::xml_node node, io::RigidDrive drive) {
+/// rigid_displacement and rigid_rotation (rigid_bc), rigid_force and rigid_moment (rigid_load):
+/// value x curve on one translation or rotation component.
+void rigid_drive(Reader& r, pugi::xml_node node, io::RigidDrive drive, bool rotating) {
   RigidBodyInput& body = body_of(r, node);
-  const int k = translation(r, r.doc.child(node, "dof"));
+  const pugi::xml_node dof = r.doc.child(node, "dof");
+  const int k = rotating ? rotation(r, dof) : translation(r, dof);
   const pugi::xml_node value = r.doc.child(node, "value");
   for (pugi::xml_node c : elements(node)) {
     const std::string_view name = c.name();
@@ -65,9 +75,10 @@ void rigid_drive(Reader& r, pugi::xml_node node, io::RigidDrive drive) {
       r.doc.fail(c,
                  fmt::format("unknown parameter '{}' of {}", name, node.attribute("type").value()));
   }
-  if (body.drives[k].drive != io::RigidDrive::Free)
-    r.doc.fail(node, "a second displacement or force on the same component of the body");
-  body.drives[k] = {drive, r.doc.number(value), r.curve_of(value)};
+  io::RigidComponentSpec& component = rotating ? body.rotation_drives[k] : body.drives[k];
+  if (component.drive != io::RigidDrive::Free)
+    r.doc.fail(node, "a second motion or load on the same component of the body");
+  component = {drive, r.doc.number(value), r.curve_of(value)};
 }
 
 /// The components of the body's nodes that zero-displacement conditions fix at every node.
@@ -93,6 +104,45 @@ std::string body_name(std::string name) {
     if (!std::isalnum(static_cast<unsigned char>(c)))
       c = '_';
   return name;
+}
+
+/// A body of elements, or one whose rotation is not held, has six unknowns.
+bool rotates(const RigidBodyInput& body) {
+  if (!body.blocks.empty())
+    return true;
+  for (int k = 0; k < 3; ++k)
+    if (!body.fixed[3 + k] || body.rotation_drives[k].drive != io::RigidDrive::Free)
+      return true;
+  return false;
+}
+
+/// A fixed component is held at 0; a driven one keeps its drive; the others are free.
+io::RigidComponentSpec component(const Reader& r, const RigidBodyInput& body, bool fixed,
+                                 const io::RigidComponentSpec& drive, std::string_view what) {
+  if (fixed && drive.drive != io::RigidDrive::Free)
+    r.doc.fail(body.material, fmt::format("{} of the body is both fixed and driven", what));
+  return fixed ? io::RigidComponentSpec{io::RigidDrive::Displacement, 0.0, ""} : drive;
+}
+
+/// A rotating [[rigid_body]]: its elements and attached nodes; center_of_mass, if given, is
+/// its center.
+io::RigidBodySpec rotating_body(const Reader& r, const std::string& name,
+                                const RigidBodyInput& body) {
+  io::RigidBodySpec spec;
+  spec.key = fmt::format("rigid body '{}'", name);
+  spec.name = body_name(name);
+  spec.set = body.set;
+  spec.blocks = body.blocks;
+  spec.rotates = true;
+  if (const pugi::xml_node c = body.material.child("center_of_mass"))
+    spec.center = r.doc.vector(c);
+  for (int k = 0; k < 3; ++k) {
+    spec.drives[k] =
+        component(r, body, body.fixed[k], body.drives[k], fmt::format("translation {}", "xyz"[k]));
+    spec.rotation_drives[k] = component(r, body, body.fixed[3 + k], body.rotation_drives[k],
+                                        fmt::format("rotation R{}", "uvw"[k]));
+  }
+  return spec;
 }
 
 } // namespace
@@ -121,28 +171,30 @@ void read_rigid(Reader& r, pugi::xml_node section) {
     const std::string kind = c.name(), type = r.doc.attribute(c, "type");
     if (kind == "rigid_bc" && type == "rigid_fixed")
       rigid_fixed(r, c);
-    else if (kind == "rigid_bc" && type == "rigid_displacement")
-      rigid_drive(r, c, io::RigidDrive::Displacement);
-    else if (kind == "rigid_load" && type == "rigid_force")
-      rigid_drive(r, c, io::RigidDrive::Force);
+    else if (kind == "rigid_bc" && (type == "rigid_displacement" || type == "rigid_rotation"))
+      rigid_drive(r, c, io::RigidDrive::Displacement, type == "rigid_rotation");
+    else if (kind == "rigid_load" && (type == "rigid_force" || type == "rigid_moment"))
+      rigid_drive(r, c, io::RigidDrive::Force, type == "rigid_moment");
     else
       r.doc.fail(c, "type",
                  fmt::format("<{} type=\"{}\"> is not supported (supported: rigid_bc of type "
-                             "rigid_fixed or rigid_displacement, rigid_load of type rigid_force)",
+                             "rigid_fixed, rigid_displacement or rigid_rotation, rigid_load of "
+                             "type rigid_force or rigid_moment)",
                              kind, type));
   }
 }
 
 void map_rigid_bodies(Reader& r) {
   for (const auto& [name, body] : r.rigid_bodies) {
-    if (body.set.empty()) {
-      r.warn(body.material, "a rigid body attached to no nodes (no bc of type rigid) is ignored");
+    if (body.set.empty() && body.blocks.empty()) {
+      r.warn(body.material, "a rigid body of no elements attached to no nodes (no bc of type "
+                            "rigid) is ignored");
       continue;
     }
-    for (int k = 3; k < 6; ++k)
-      if (!body.fixed[k])
-        r.doc.fail(body.attachment, "the body may rotate (a rotation is not fixed by "
-                                    "rigid_fixed): trifem's rigid bodies translate only");
+    if (rotates(body)) {
+      r.spec.rigid_bodies.push_back(rotating_body(r, name, body));
+      continue;
+    }
     io::RigidBodySpec spec;
     spec.key = fmt::format("rigid body '{}'", name);
     spec.name = body_name(name);

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Case reader, part 4: [[rigid_body]] (a node set moving with one rigid translation).
+// Case reader, part 4: [[rigid_body]] (a node set moving with one rigid translation, or
+// translating and rotating).
 #include "trifem/io/toml_table.hpp"
 
 #include <algorithm>
@@ -7,23 +8,84 @@
 namespace trifem::io::detail {
 namespace {
 
-/// The table of component `k` ("x", "y" or "z") of a rigid body: exactly one of
-/// `displacement` [mm] and `force` [N], and an optional curve.
-RigidComponentSpec read_component(const Table& t, const CaseSpec& spec) {
-  t.allow({"displacement", "force", "curve"});
-  const bool displacement = t.find("displacement") != nullptr;
-  const bool force = t.find("force") != nullptr;
-  if (displacement == force)
+/// The keys and units of a translation and of a rotation component.
+struct ComponentKeys {
+  std::string_view motion, motion_unit, load, load_unit;
+};
+constexpr ComponentKeys kTranslation{"displacement", "mm", "force", "N"};
+constexpr ComponentKeys kRotation{"rotation", "rad", "moment", "N mm"};
+
+/// The table of a component of a rigid body (x, y, z: `keys` kTranslation; rx, ry, rz:
+/// kRotation): exactly one of the motion and the load, and an optional curve.
+RigidComponentSpec read_component(const Table& t, const CaseSpec& spec, const ComponentKeys& keys) {
+  t.allow({keys.motion, keys.load, "curve"});
+  const bool motion = t.find(keys.motion) != nullptr;
+  const bool load = t.find(keys.load) != nullptr;
+  if (motion == load)
     fail(t.where(), t.path(),
-         displacement ? "give either displacement or force, not both"
-                      : "expected displacement = <mm> or force = <N> (omit the component to "
-                        "leave it free)");
+         motion ? fmt::format("give either {} or {}, not both", keys.motion, keys.load)
+                : fmt::format("expected {} = <{}> or {} = <{}> (omit the component to leave it "
+                              "free)",
+                              keys.motion, keys.motion_unit, keys.load, keys.load_unit));
   RigidComponentSpec c;
-  c.drive = displacement ? RigidDrive::Displacement : RigidDrive::Force;
-  c.value =
-      displacement ? t.number("displacement", {.unit = "mm"}) : t.number("force", {.unit = "N"});
+  c.drive = motion ? RigidDrive::Displacement : RigidDrive::Force;
+  c.value = motion ? t.number(keys.motion, {.unit = keys.motion_unit})
+                   : t.number(keys.load, {.unit = keys.load_unit});
   c.curve = read_curve_reference(t, spec);
   return c;
+}
+
+/// blocks = [...]: cell blocks of the mesh with no material (each of one body only).
+std::vector<std::string> read_blocks(const Table& t, const CaseSpec& spec) {
+  std::vector<std::string> blocks =
+      t.get<std::vector<std::string>>("blocks").value_or(std::vector<std::string>{});
+  for (std::size_t i = 0; i < blocks.size(); ++i) {
+    const std::string path = element_path(t.path("blocks"), i);
+    const auto where = &(*t.find("blocks")->as_array())[i];
+    for (const BoxMeshSpec& box : spec.boxes)
+      if (box.box.name == blocks[i] && !box.material.empty())
+        fail(where, fmt::format("{} = '{}'", path, blocks[i]),
+             fmt::format("the box has the material '{}': the cells of a rigid body have none "
+                         "(remove its material)",
+                         box.material));
+    for (const RigidBodySpec& other : spec.rigid_bodies)
+      if (std::find(other.blocks.begin(), other.blocks.end(), blocks[i]) != other.blocks.end())
+        fail(where, fmt::format("{} = '{}'", path, blocks[i]),
+             fmt::format("the block already belongs to {}", other.key));
+  }
+  return blocks;
+}
+
+/// rotation = "free" | "fixed" (the default unless rx, ry or rz is given), center and the
+/// rotation components rx, ry, rz of a rigid body.
+void read_rotation(const Table& t, const CaseSpec& spec, RigidBodySpec& b) {
+  constexpr const char* kComponents[] = {"rx", "ry", "rz"};
+  bool driven = false;
+  for (const char* key : kComponents)
+    driven = driven || t.find(key) != nullptr;
+  static const Options<bool> rotations = {{"fixed", false}, {"free", true}};
+  b.rotates =
+      t.choice("rotation", rotations, std::optional(driven || !b.blocks.empty()), "rotation");
+  if (!b.rotates && !b.blocks.empty())
+    fail(t.find("rotation"), fmt::format("{} = 'fixed'", t.path("rotation")),
+         "a body made of cells (blocks) rotates; hold its rotation with rx, ry, rz = { rotation "
+         "= 0.0 }");
+  if (!b.rotates && driven)
+    fail(t.find("rotation"), fmt::format("{} = 'fixed'", t.path("rotation")),
+         "the body does not rotate, so rx, ry and rz cannot be given (set rotation = \"free\")");
+  if (!b.rotates && t.find("center"))
+    fail(t.find("center"), t.path("center"),
+         "only a rotating body (rotation = \"free\") has a center");
+  if (!b.rotates)
+    return;
+  if (b.components.size() != 3)
+    fail(t.find("components"), t.path("components"),
+         "a rotating body carries all three components of its nodes (remove components)");
+  if (t.find("center"))
+    b.center = t.vec3("center", {.unit = "mm"}, std::nullopt);
+  for (int k = 0; k < 3; ++k)
+    if (const auto c = t.table(kComponents[k]))
+      b.rotation_drives[k] = read_component(*c, spec, kRotation);
 }
 
 /// Rejects a rigid body on a node set that a boundary condition already constrains.
@@ -46,7 +108,8 @@ void check_unconstrained(const Table& t, const RigidBodySpec& b, const CaseSpec&
 
 void read_rigid_bodies(const Table& root, CaseSpec& spec) {
   for (const Table& t : root.tables("rigid_body")) {
-    t.allow({"name", "set", "components", "x", "y", "z"});
+    t.allow({"name", "set", "blocks", "components", "x", "y", "z", "rotation", "center", "rx", "ry",
+             "rz"});
     RigidBodySpec b;
     b.key = t.path();
     b.name = read_identifier(t, "name", false);
@@ -54,7 +117,8 @@ void read_rigid_bodies(const Table& root, CaseSpec& spec) {
       if (other.name == b.name)
         fail(t.find("name"), fmt::format("{} = '{}'", t.path("name"), b.name),
              fmt::format("duplicate rigid body name (already used by {})", other.key));
-    b.set = t.name("set");
+    b.blocks = read_blocks(t, spec);
+    b.set = t.name("set", b.blocks.empty());
     b.components = read_components(t);
     for (int k = 0; k < 3; ++k) {
       const auto c = t.table(kAxis[k]);
@@ -64,8 +128,9 @@ void read_rigid_bodies(const Table& root, CaseSpec& spec) {
         fail(c->where(), c->path(),
              fmt::format("component {} is not tied to the rigid body (not in {})", kAxis[k],
                          t.path("components")));
-      b.drives[k] = read_component(*c, spec);
+      b.drives[k] = read_component(*c, spec, kTranslation);
     }
+    read_rotation(t, spec, b);
     check_unconstrained(t, b, spec);
     spec.rigid_bodies.push_back(std::move(b));
   }

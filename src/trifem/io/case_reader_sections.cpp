@@ -472,8 +472,9 @@ BoxMeshSpec read_box(const Table& t, const CaseSpec& spec) {
            "out of range, expected an integer >= 1");
   check_node_count(t, b.box.divisions);
   b.box.grading = t.vec3("grading", {.range = Range::positive()}, Vec3::Ones());
-  b.material = t.name("material");
-  check_reference(t, "material", b.material, spec.materials, "material", "materials");
+  b.material = t.name("material", false); // none: the cells of a rigid body ([[rigid_body]])
+  if (!b.material.empty())
+    check_reference(t, "material", b.material, spec.materials, "material", "materials");
   return b;
 }
 
@@ -582,7 +583,8 @@ std::string read_average_name(const Table& t, const OutputSpec& s) {
 std::map<std::string, std::string> named_blocks(const CaseSpec& spec) {
   std::map<std::string, std::string> blocks;
   for (const BoxMeshSpec& b : spec.boxes)
-    blocks.emplace(b.box.name, b.material);
+    if (!b.material.empty()) // the cells of a rigid body otherwise
+      blocks.emplace(b.box.name, b.material);
   for (const GmshMeshSpec& g : spec.gmsh)
     blocks.insert(g.materials.begin(), g.materials.end());
   return blocks;

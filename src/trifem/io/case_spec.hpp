@@ -23,7 +23,8 @@
 
 namespace trifem::io {
 
-/// [[mesh.box]]: a structured box; `material` assigns its cell block.
+/// [[mesh.box]]: a structured box; `material` assigns its cell block (empty: the cells of a
+/// rigid body, named in its `blocks`).
 struct BoxMeshSpec {
   mesh::BoxSpec box;
   std::string material;
@@ -176,14 +177,14 @@ struct ContactSpec {
   Real penetration_tolerance = -1.0;
 };
 
-/// How one translation component of a rigid body is driven.
+/// How one translation (rotation) component of a rigid body is driven.
 enum class RigidDrive {
-  Free,         ///< no prescribed value, no applied force
-  Displacement, ///< translation = value * curve(t) [mm]
-  Force,        ///< applied force = value * curve(t) [N]
+  Free,         ///< no prescribed value, no applied force (moment)
+  Displacement, ///< translation [mm] (rotation [rad]) = value * curve(t)
+  Force,        ///< applied force [N] (moment [N mm]) = value * curve(t)
 };
 
-/// One component of a [[rigid_body]] (the keys x, y, z).
+/// One component of a [[rigid_body]] (the keys x, y, z, and rx, ry, rz of a rotating body).
 struct RigidComponentSpec {
   RigidDrive drive = RigidDrive::Free;
   Real value = 0.0;
@@ -193,13 +194,20 @@ struct RigidComponentSpec {
 /// [[rigid_body]]: the nodes of `set` move with one rigid translation (rotation fixed), the
 /// unknown of the body, e.g. a bone bonded to cartilage. Only the listed `components` are tied
 /// (default all; the others stay per node, e.g. for plane strain); each is free, driven by a
-/// displacement or by a force.
+/// displacement or by a force. A rotating body (rotation = "free") has six unknowns, the
+/// translation of its `center` and its rotation vector (rx, ry, rz), each free or driven.
 struct RigidBodySpec {
   std::string key; ///< "rigid_body[1]" (for messages)
   std::string name;
   std::string set;
   std::vector<Component> components = {0, 1, 2};
   std::array<RigidComponentSpec, 3> drives; ///< by component (Free unless given)
+  bool rotates = false;
+  std::optional<Vec3> center; ///< of a rotating body [mm]; none: the centroid of its nodes
+  std::array<RigidComponentSpec, 3> rotation_drives; ///< rx, ry, rz of a rotating body
+  /// Cell blocks that move with the body (rigid cells: no material, no unknowns of their own);
+  /// a body with blocks rotates. Their nodes, and those of `set` (may then be empty), follow it.
+  std::vector<std::string> blocks;
 };
 
 /// [[loads.traction]]: dead traction per reference area on a surface [MPa].

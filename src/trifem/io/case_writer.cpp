@@ -52,7 +52,8 @@ void write_meshes(const CaseSpec& spec, TomlText& t) {
     t.raw("divisions",
           fmt::format("[{}, {}, {}]", b.box.divisions[0], b.box.divisions[1], b.box.divisions[2]));
     t.vector("grading", b.box.grading);
-    t.string("material", b.material);
+    if (!b.material.empty())
+      t.string("material", b.material);
   }
   for (const GmshMeshSpec& g : spec.gmsh) {
     t.header("[[mesh.gmsh]]");
@@ -178,23 +179,43 @@ void write_contacts(const CaseSpec& spec, TomlText& t) {
   }
 }
 
-/// [[rigid_body]]: the tied components, each driven one with its table (free ones have none).
+/// The table of a driven component of a rigid body (`motion` and `load`: its keys).
+void write_rigid_component(TomlText& t, std::string_view key, const RigidComponentSpec& d,
+                           const char* motion, const char* load) {
+  if (d.drive == RigidDrive::Free)
+    return;
+  std::vector<std::pair<std::string, std::string>> entries = {
+      {d.drive == RigidDrive::Force ? load : motion, TomlText::number(d.value)}};
+  if (!d.curve.empty())
+    entries.emplace_back("curve", TomlText::quoted(d.curve));
+  t.inline_table(key, entries);
+}
+
+/// [[rigid_body]]: the tied components, each driven one with its table (free ones have none),
+/// and the rotation of a rotating body.
 void write_rigid_bodies(const CaseSpec& spec, TomlText& t) {
   for (const RigidBodySpec& b : spec.rigid_bodies) {
     t.header("[[rigid_body]]");
     t.string("name", b.name);
-    t.string("set", b.set);
+    if (!b.set.empty())
+      t.string("set", b.set);
     t.raw("components", components(b.components));
-    for (Component k : b.components) {
-      const RigidComponentSpec& d = b.drives[k];
-      if (d.drive == RigidDrive::Free)
-        continue;
-      std::vector<std::pair<std::string, std::string>> entries = {
-          {d.drive == RigidDrive::Force ? "force" : "displacement", TomlText::number(d.value)}};
-      if (!d.curve.empty())
-        entries.emplace_back("curve", TomlText::quoted(d.curve));
-      t.inline_table(kAxes[k], entries);
+    if (!b.blocks.empty()) {
+      std::string list;
+      for (const std::string& block : b.blocks)
+        list += (list.empty() ? "" : ", ") + TomlText::quoted(block);
+      t.raw("blocks", "[" + list + "]");
     }
+    for (Component k : b.components)
+      write_rigid_component(t, kAxes[k], b.drives[k], "displacement", "force");
+    if (!b.rotates)
+      continue;
+    t.string("rotation", "free");
+    if (b.center)
+      t.vector("center", *b.center);
+    constexpr std::string_view kRotationKeys[] = {"rx", "ry", "rz"};
+    for (int k = 0; k < 3; ++k)
+      write_rigid_component(t, kRotationKeys[k], b.rotation_drives[k], "rotation", "moment");
   }
 }
 

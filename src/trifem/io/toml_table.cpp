@@ -140,6 +140,9 @@ std::string_view expected(Tag<std::vector<Real>>) {
 std::string_view expected(Tag<std::vector<Point>>) {
   return "an array of [t, value] pairs";
 }
+std::string_view expected(Tag<std::vector<std::string>>) {
+  return "an array of strings";
+}
 
 Real convert(const toml::node& n, std::string_view path, Tag<Real>) {
   Real v = 0.0;

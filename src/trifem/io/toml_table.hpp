@@ -91,6 +91,7 @@ std::string_view expected(Tag<std::array<int, 3>>);
 std::string_view expected(Tag<Point>);
 std::string_view expected(Tag<std::vector<Real>>);
 std::string_view expected(Tag<std::vector<Point>>);
+std::string_view expected(Tag<std::vector<std::string>>);
 
 Real convert(const toml::node& n, std::string_view path, Tag<Real>);
 int convert(const toml::node& n, std::string_view path, Tag<int>);

@@ -13,8 +13,9 @@ namespace trifem::linalg {
 /// Equation indices (ascending) of the primal unknowns, split into displacement and fluxes, and
 /// of the potentials (the cells' Lagrange multipliers: pressure, electric potential).
 struct BlockSplit {
-  /// displacement, with the contact multipliers (the primal block's LU factorizes their saddle
-  /// point; the potentials' Schur approximations leave them out) and equations of no field
+  /// displacement, with rigid bodies and the contact multipliers (the primal block's LU factorizes
+  /// their saddle point; the potentials' Schur approximations leave them out) and equations of no
+  /// field
   std::vector<Index> displacement;
   std::vector<Index> flux;      ///< water, cation and anion fluxes
   std::vector<Index> potential; ///< pressure, electric potential

@@ -134,6 +134,8 @@ std::vector<Mat3> orient_cells(const io::CaseSpec& spec, const mesh::Mesh& mesh,
   std::vector<Mat3> basis(material_of.size(), Mat3::Identity());
   std::map<std::pair<std::string, BasisKey>, CellMaterial> shared;
   for (std::size_t c = 0; c < material_of.size(); ++c) {
+    if (!material_of[c])
+      continue; // a cell of a rigid body
     const std::string& name = *material_of[c];
     const auto& axes = spec.materials.at(name).axes;
     if (!axes)

@@ -60,9 +60,22 @@ std::vector<CellMaterial> cell_materials(const io::CaseSpec& spec, const mesh::M
     for (Index c : with_context("mesh", [&] { return mesh.cell_block(name); }))
       per_cell[c] = by_name.at(material);
   }
+  std::vector<char> rigid(mesh.num_cells(), 0);
+  for (const io::RigidBodySpec& b : spec.rigid_bodies)
+    for (const std::string& block : b.blocks)
+      for (Index c : with_context(b.key + ".blocks", [&] { return mesh.cell_block(block); })) {
+        TRIFEM_CHECK(per_cell[c].rigid(),
+                     "{}.blocks: cell {} of block '{}' has the material '{}' (the cells of a "
+                     "rigid body have none)",
+                     b.key, c, block, per_cell[c].name);
+        per_cell[c].name = b.name;
+        rigid[c] = 1;
+      }
   for (Index c = 0; c < mesh.num_cells(); ++c)
-    TRIFEM_CHECK(per_cell[c].solid || per_cell[c].mixture,
-                 "mesh: cell {} has no material (assign one to its cell block)", c);
+    TRIFEM_CHECK(!per_cell[c].rigid() || rigid[c],
+                 "mesh: cell {} has no material (assign one to its cell block, or name the block "
+                 "in a [[rigid_body]]'s blocks)",
+                 c);
   return per_cell;
 }
 
@@ -98,7 +111,7 @@ bulk_terms(const io::CaseSpec& spec, const std::vector<CellMaterial>& materials,
     if (materials[c].mixture) {
       mixture_cells.push_back(c);
       mixtures.push_back(materials[c].mixture);
-    } else {
+    } else if (materials[c].solid) { // not a rigid cell
       solid_cells.push_back(c);
       laws.push_back(materials[c].solid);
       elements.push_back(materials[c].element);
@@ -125,20 +138,29 @@ bulk_terms(const io::CaseSpec& spec, const std::vector<CellMaterial>& materials,
 }
 
 /// DOFs that no term touches (nodes outside every cell, ion DOFs of biphasic regions, ...)
-/// are fixed at zero: they would make the Jacobian singular.
+/// are fixed at zero: they would make the Jacobian singular. Tied DOFs count as one unknown
+/// (used if one of them is); the nodes of rotating rigid bodies follow their body and the
+/// bodies' unknowns are reached through them: neither is fixed. Nor are DOFs `conditions`
+/// constrain already.
 dofs::DirichletCondition unused_dofs(const Model& model,
-                                     const std::vector<std::unique_ptr<physics::Term>>& terms) {
-  std::vector<char> used(model.dofs.num_dofs(), 0);
+                                     const std::vector<std::unique_ptr<physics::Term>>& terms,
+                                     const std::vector<dofs::DirichletCondition>& conditions) {
+  const dofs::DofMap& map = model.dofs;
+  std::vector<char> used(map.num_dofs(), 0);
   std::vector<Index> dofs;
   for (const auto& t : terms)
     for (Index e = 0; e < t->num_elements(); ++e) {
       t->element_dofs(e, dofs);
       for (Index d : dofs)
-        used[d] = 1;
+        used[map.leader(d)] = 1;
     }
+  for (const auto& c : conditions)
+    for (Index d : c.dofs)
+      used[d] = 1;
   dofs::DirichletCondition c;
-  for (Index d = 0; d < model.dofs.num_dofs(); ++d)
-    if (!used[d])
+  for (Index d = 0; d < map.num_dofs(); ++d)
+    if (!used[map.leader(d)] && !used[d] && !map.is_dependent(d) &&
+        map.field(map.field_of(d)).role != FieldRole::rigid_motion)
       c.dofs.push_back(d);
   return c;
 }
@@ -168,11 +190,15 @@ void set_scales(const std::vector<CellMaterial>& materials, Model& model) {
   model.length_scale = (hi - lo).norm();
   model.modulus_scale = 0.0;
   for (const auto& m : materials) {
+    if (m.rigid())
+      continue;
     const auto& solid = m.mixture ? m.mixture->solid : m.solid;
     model.modulus_scale = std::max(model.modulus_scale, solid->p_wave_modulus());
     if (m.mixture)
       model.permeability_scale = std::max(model.permeability_scale, m.mixture->permeability);
   }
+  if (model.modulus_scale == 0.0) // rigid cells only: the scales of a unit modulus
+    model.modulus_scale = 1.0;
 }
 
 /// Characteristic sizes per field: length L, modulus M, flux M kappa / L; residual scales are
@@ -184,6 +210,10 @@ std::vector<solver::FieldScale> field_scales(const Model& model) {
   const physics::MixtureFields& f = model.fields;
   for (auto [id, size] :
        {std::pair{f.u, L}, {f.w, flux}, {f.j_plus, flux}, {f.j_minus, flux}, {f.p, M}, {f.eta, M}})
+    if (id.valid())
+      s[id.index] = {model.dofs.field(id).name, energy / size, size};
+  // rotating rigid bodies: their center moves like the tissue, their rotation is of order 1 rad
+  for (auto [id, size] : {std::pair{model.rigid_translation, L}, {model.rigid_rotation, 1.0}})
     if (id.valid())
       s[id.index] = {model.dofs.field(id).name, energy / size, size};
   return s;
@@ -206,7 +236,8 @@ mesh::Mesh build_mesh(const io::CaseSpec& spec, std::map<std::string, std::strin
   mesh::Mesh mesh;
   for (const auto& b : spec.boxes) {
     mesh.append(mesh::make_box(b.box));
-    materials[b.box.name] = b.material;
+    if (!b.material.empty()) // the cells of a rigid body otherwise
+      materials[b.box.name] = b.material;
   }
   for (std::size_t i = 0; i < spec.gmsh.size(); ++i) {
     const auto& g = spec.gmsh[i];
@@ -261,10 +292,12 @@ std::unique_ptr<Model> build_model(const io::CaseSpec& spec) {
     terms.push_back(std::move(t));
   }
   auto bcs = boundary_conditions(spec, *model);
-  bcs.push_back(unused_dofs(*model, terms));
+  RigidBodyParts rigid = rigid_bodies(spec, *model, bcs);
+  bcs.push_back(unused_dofs(*model, terms, bcs));
   dofs::NodalFrames frames = impermeable_surfaces(spec, *model, bcs);
-  if (auto forces = rigid_bodies(spec, *model, bcs))
-    terms.push_back(std::move(forces));
+  check_frames_of_rotating_bodies(spec, *model, frames);
+  for (auto& t : rigid.loads)
+    terms.push_back(std::move(t));
   model->case_conditions = bcs;
   for (auto& t : step_terms(spec, *model)) {
     model->loads.push_back(t.get());
@@ -273,8 +306,9 @@ std::unique_ptr<Model> build_model(const io::CaseSpec& spec) {
   dofs::constrain_all(bcs, model->dofs);
   model->dofs.finalize();
 
-  model->problem = std::make_unique<assembly::FeProblem>(
-      model->dofs, std::move(bcs), std::move(terms), field_scales(*model), std::move(frames));
+  model->problem = std::make_unique<assembly::FeProblem>(model->dofs, std::move(bcs),
+                                                         std::move(terms), field_scales(*model),
+                                                         std::move(frames), std::move(rigid.map));
   model->problem->set_node_positions(model->fields.u, model->mesh.nodes());
   if (spec.has_dynamic_step())
     model->problem->add_inertia(inertia_term(spec, *model));

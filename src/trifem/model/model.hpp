@@ -41,11 +41,13 @@ struct Average {
 
 /// The law of one cell: a solid law, or a mixture (which has its own solid).
 struct CellMaterial {
-  std::string name; ///< of its [materials.<name>] table
+  std::string name; ///< of its [materials.<name>] table (of its body, for a rigid cell)
   std::shared_ptr<const material::ElasticLaw> solid;
   std::shared_ptr<const material::MixtureProperties> mixture;
   physics::SolidElement element = physics::SolidElement::Displacement; ///< of a solid law
   Real density = 0.0; ///< per reference volume [t/mm³] (0: not given)
+  /// A cell of a rigid body: no law, no unknowns of its own (its nodes follow the body).
+  bool rigid() const { return !solid && !mixture; }
 };
 
 /// The element `auto` chooses for a solid law: mean dilatation when its small-strain bulk
@@ -55,12 +57,14 @@ inline constexpr Real kNearlyIncompressible = 10.0;
 physics::SolidElement solid_element(io::SolidElementSpec requested,
                                     const material::ElasticLaw& law);
 
-/// A [[rigid_body]]: the displacement DOFs of its nodes per component (the first one leads).
+/// A [[rigid_body]]: the displacement DOFs of its nodes per component (the first one leads of
+/// a body that only translates; a rotating body's nodes follow its own unknowns).
 struct RigidBody {
   std::string name;
   std::array<bool, 3> tied = {false, false, false}; ///< components moving with the body
   std::array<std::vector<Index>, 3> dofs;           ///< of the tied components
   std::array<physics::NodalForce, 3> force; ///< applied force per component (magnitude 0: none)
+  int rotating = -1; ///< a rotating body: its index among the problem's RigidMap bodies
 };
 
 /// The conditions of one [[step]] (acting in addition to the case's own) and how the conditions
@@ -102,6 +106,8 @@ struct Model {
   std::vector<Probe> probes;
   std::vector<Average> averages;
   std::vector<RigidBody> rigid_bodies;
+  /// The translation and rotation of the rotating rigid bodies (invalid: none).
+  dofs::FieldId rigid_translation, rigid_rotation;
   std::vector<ModelStep> steps; ///< empty: one step with the case's conditions only
   std::vector<dofs::DirichletCondition> case_conditions; ///< the conditions of every step
   int active_step = -1;                                  ///< index into steps (-1: none)

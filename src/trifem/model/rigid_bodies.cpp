@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "trifem/model/rigid_bodies.hpp"
 
+#include "trifem/fe/hex8.hpp"
 #include "trifem/model/conditions.hpp"
+#include "trifem/physics/rigid_moment_term.hpp"
 
 #include <set>
 
@@ -16,60 +18,202 @@ std::set<Index> constrained_dofs(const std::vector<dofs::DirichletCondition>& co
   return out;
 }
 
-/// One rigid body: ties, prescribed components and forces.
-RigidBody make_body(const io::CaseSpec& spec, const io::RigidBodySpec& b, Model& model,
-                    const std::set<Index>& constrained, std::set<Index>& used,
-                    std::vector<dofs::DirichletCondition>& conditions) {
-  const std::vector<Index>& nodes = with_context(
-      b.key + ".set", [&]() -> const std::vector<Index>& { return model.mesh.node_set(b.set); });
+/// What the bodies collect while they are built.
+struct Collected {
+  std::set<Index> constrained; ///< by the other conditions
+  std::set<Index> used;        ///< by a body
+  std::vector<physics::NodalForce> forces;
+  std::vector<physics::RigidMoment> moments;
+  std::vector<dofs::RigidBodyDofs> rotating;
+};
+
+/// Registers displacement DOF `d` of node `n` with body `b`, or says why it cannot be.
+void claim(const io::RigidBodySpec& b, const Model& model, Index n, int k, Index d, Collected& c) {
+  TRIFEM_CHECK(c.used.insert(d).second, "{}: node {} belongs to two rigid bodies", b.key, n);
+  TRIFEM_CHECK(!c.constrained.contains(d),
+               "{}: component {} of node {} (at {:.6g} {:.6g} {:.6g}) of set '{}' is also "
+               "constrained by a boundary condition; drive the rigid body's {} instead "
+               "(e.g. {}.{} = {{ displacement = 0.0 }})",
+               b.key, "xyz"[k], n, model.mesh.node(n).x(), model.mesh.node(n).y(),
+               model.mesh.node(n).z(), b.set, "xyz"[k], b.key, "xyz"[k]);
+}
+
+/// A body that only translates: ties, prescribed components and forces.
+RigidBody translating_body(const io::CaseSpec& spec, const io::RigidBodySpec& b, Model& model,
+                           const std::vector<Index>& nodes, Collected& c,
+                           std::vector<dofs::DirichletCondition>& conditions) {
   RigidBody body;
   body.name = b.name;
   for (int k : b.components) {
-    const io::RigidComponentSpec& c = b.drives[k];
+    const io::RigidComponentSpec& drive = b.drives[k];
     for (Index n : nodes) {
       const Index d = model.dofs.dof(model.fields.u, n, k);
-      TRIFEM_CHECK(used.insert(d).second, "{}: node {} belongs to two rigid bodies", b.key, n);
-      TRIFEM_CHECK(!constrained.contains(d),
-                   "{}: component {} of node {} (at {:.6g} {:.6g} {:.6g}) of set '{}' is also "
-                   "constrained by a boundary condition; drive the rigid body's {} instead "
-                   "(e.g. {}.{} = {{ displacement = 0.0 }})",
-                   b.key, "xyz"[k], n, model.mesh.node(n).x(), model.mesh.node(n).y(),
-                   model.mesh.node(n).z(), b.set, "xyz"[k], b.key, "xyz"[k]);
+      claim(b, model, n, k, d, c);
       body.dofs[k].push_back(d);
     }
     body.force[k].dof = body.dofs[k].front();
     body.tied[k] = true;
-    if (c.drive == io::RigidDrive::Displacement) {
-      conditions.push_back({body.dofs[k], c.value, make_curve(spec, c.curve)});
+    if (drive.drive == io::RigidDrive::Displacement) {
+      conditions.push_back({body.dofs[k], drive.value, make_curve(spec, drive.curve)});
       continue;
     }
     for (Index d : body.dofs[k])
       if (d != body.dofs[k].front())
         model.dofs.tie(d, body.dofs[k].front());
-    if (c.drive == io::RigidDrive::Force) {
-      body.force[k].magnitude = c.value;
-      body.force[k].curve = make_curve(spec, c.curve);
+    if (drive.drive == io::RigidDrive::Force) {
+      body.force[k].magnitude = drive.value;
+      body.force[k].curve = make_curve(spec, drive.curve);
     }
   }
+  for (const physics::NodalForce& f : body.force)
+    if (f.magnitude != 0.0)
+      c.forces.push_back(f);
+  return body;
+}
+
+/// The center of a rotating body: given; else the centroid of its cells (its center of mass:
+/// rigid cells have a uniform density); else the centroid of its nodes.
+Vec3 body_center(const io::RigidBodySpec& b, const Model& model, const std::vector<Index>& nodes) {
+  if (b.center)
+    return *b.center;
+  Vec3 moment = Vec3::Zero();
+  Real volume = 0.0;
+  for (const std::string& block : b.blocks)
+    for (Index c : model.mesh.cell_block(block)) {
+      const fe::HexCoords X = fe::cell_coordinates(model.mesh, c);
+      const std::optional<fe::HexGeometry> geo = fe::hex8_geometry(X);
+      TRIFEM_CHECK(geo.has_value(), "{}.blocks: cell {} of block '{}' is inverted", b.key, c,
+                   block);
+      const auto& points = fe::hex_gauss_2x2x2();
+      for (std::size_t q = 0; q < points.size(); ++q) {
+        moment += geo->dV[q] * (X.transpose() * fe::hex8_shape(points[q].xi));
+        volume += geo->dV[q];
+      }
+    }
+  if (volume > 0.0)
+    return moment / volume;
+  Vec3 sum = Vec3::Zero();
+  for (Index n : nodes)
+    sum += model.mesh.node(n);
+  return sum / static_cast<Real>(nodes.size());
+}
+
+/// The nodes of a body: those of its set and of its cells, ascending.
+std::vector<Index> body_nodes(const io::RigidBodySpec& b, const Model& model) {
+  std::set<Index> nodes;
+  if (!b.set.empty()) {
+    const std::vector<Index>& in_set = with_context(
+        b.key + ".set", [&]() -> const std::vector<Index>& { return model.mesh.node_set(b.set); });
+    nodes.insert(in_set.begin(), in_set.end());
+  }
+  for (const std::string& block : b.blocks)
+    for (Index c : model.mesh.cell_block(block))
+      for (Index n : model.mesh.cell(c))
+        nodes.insert(n);
+  return {nodes.begin(), nodes.end()};
+}
+
+/// A rotating body (index `index` among them): its nodes follow its unknowns, whose driven
+/// components are prescribed or loaded.
+RigidBody rotating_body(const io::CaseSpec& spec, const io::RigidBodySpec& b, int index,
+                        Model& model, const std::vector<Index>& nodes, Collected& c,
+                        std::vector<dofs::DirichletCondition>& conditions) {
+  TRIFEM_CHECK(!spec.has_dynamic_step(),
+               "{}: rotating rigid bodies are not supported in dynamic analyses yet (a body that "
+               "only translates is)",
+               b.key);
+  RigidBody body;
+  body.name = b.name;
+  body.tied = {true, true, true};
+  body.rotating = index;
+  dofs::RigidBodyDofs r;
+  r.centre = body_center(b, model, nodes);
+  for (int k = 0; k < 3; ++k) {
+    r.translation[k] = model.dofs.dof(model.rigid_translation, index, k);
+    r.rotation[k] = model.dofs.dof(model.rigid_rotation, index, k);
+  }
+  for (Index n : nodes) {
+    std::array<Index, 3> follower{};
+    for (int k = 0; k < 3; ++k) {
+      follower[k] = model.dofs.dof(model.fields.u, n, k);
+      claim(b, model, n, k, follower[k], c);
+      model.dofs.make_dependent(follower[k]);
+      body.dofs[k].push_back(follower[k]);
+    }
+    r.followers.push_back(follower);
+    r.arms.push_back(model.mesh.node(n) - r.centre);
+  }
+  for (int k = 0; k < 3; ++k) {
+    const io::RigidComponentSpec& move = b.drives[k];
+    const io::RigidComponentSpec& turn = b.rotation_drives[k];
+    for (const auto& [drive, dof] : {std::pair{&move, r.translation[k]}, {&turn, r.rotation[k]}})
+      if (drive->drive == io::RigidDrive::Displacement)
+        conditions.push_back({{dof}, drive->value, make_curve(spec, drive->curve)});
+    body.force[k].dof = r.translation[k];
+    if (move.drive == io::RigidDrive::Force) {
+      body.force[k].magnitude = move.value;
+      body.force[k].curve = make_curve(spec, move.curve);
+      c.forces.push_back(body.force[k]);
+    }
+    if (turn.drive == io::RigidDrive::Force)
+      c.moments.push_back({r.rotation, turn.value * Vec3::Unit(k), make_curve(spec, turn.curve)});
+  }
+  c.rotating.push_back(std::move(r));
   return body;
 }
 
 } // namespace
 
-std::unique_ptr<physics::Term> rigid_bodies(const io::CaseSpec& spec, Model& model,
-                                            std::vector<dofs::DirichletCondition>& conditions) {
-  const std::set<Index> constrained = constrained_dofs(conditions);
-  std::set<Index> used;
-  std::vector<physics::NodalForce> forces;
-  for (const io::RigidBodySpec& b : spec.rigid_bodies) {
-    model.rigid_bodies.push_back(make_body(spec, b, model, constrained, used, conditions));
-    for (const physics::NodalForce& f : model.rigid_bodies.back().force)
-      if (f.magnitude != 0.0)
-        forces.push_back(f);
+RigidBodyParts rigid_bodies(const io::CaseSpec& spec, Model& model,
+                            std::vector<dofs::DirichletCondition>& conditions) {
+  Collected c;
+  c.constrained = constrained_dofs(conditions);
+  int rotating = 0;
+  for (const io::RigidBodySpec& b : spec.rigid_bodies)
+    rotating += b.rotates ? 1 : 0;
+  if (rotating > 0) {
+    model.rigid_translation =
+        model.dofs.add_field("rigid_translation", FieldRole::rigid_motion, rotating, 3);
+    model.rigid_rotation =
+        model.dofs.add_field("rigid_rotation", FieldRole::rigid_motion, rotating, 3);
   }
-  if (forces.empty())
-    return nullptr;
-  return std::make_unique<physics::NodalForceTerm>(std::move(forces));
+  for (const io::RigidBodySpec& b : spec.rigid_bodies) {
+    const std::vector<Index> nodes = body_nodes(b, model);
+    TRIFEM_CHECK(!nodes.empty(), "{}: the rigid body has no nodes (node set '{}' is empty)", b.key,
+                 b.set);
+    const int index = static_cast<int>(c.rotating.size());
+    model.rigid_bodies.push_back(b.rotates
+                                     ? rotating_body(spec, b, index, model, nodes, c, conditions)
+                                     : translating_body(spec, b, model, nodes, c, conditions));
+  }
+  RigidBodyParts parts;
+  if (!c.forces.empty())
+    parts.loads.push_back(std::make_unique<physics::NodalForceTerm>(std::move(c.forces)));
+  if (!c.moments.empty())
+    parts.loads.push_back(std::make_unique<physics::RigidMomentTerm>(std::move(c.moments)));
+  parts.map = dofs::RigidMap(std::move(c.rotating), model.dofs.num_dofs());
+  return parts;
+}
+
+void check_frames_of_rotating_bodies(const io::CaseSpec& spec, const Model& model,
+                                     const dofs::NodalFrames& frames) {
+  if (frames.empty())
+    return;
+  for (std::size_t i = 0; i < spec.rigid_bodies.size(); ++i) {
+    const RigidBody& body = model.rigid_bodies[i];
+    if (body.rotating < 0)
+      continue;
+    for (Index d : body.dofs[0]) {
+      const Index node = (d - model.dofs.field(model.fields.u).offset) / 3;
+      for (dofs::FieldId f : {model.fields.w, model.fields.j_plus, model.fields.j_minus})
+        TRIFEM_CHECK(!f.valid() || frames.frame_of(model.dofs.dof(f, node, 0)) < 0,
+                     "{}: node {} of the rotating body lies on an impermeable surface "
+                     "([[boundary.impermeable]]), whose normal would not turn with the body; "
+                     "fix the fluxes of the body's nodes instead ([[boundary.fixed]] field = "
+                     "\"fluxes\")",
+                     spec.rigid_bodies[i].key, node);
+    }
+  }
 }
 
 Vec3 rigid_body_force(const Model& model, const RigidBody& b, Real time) {
@@ -78,7 +222,8 @@ Vec3 rigid_body_force(const Model& model, const RigidBody& b, Real time) {
   for (int k = 0; k < 3; ++k) {
     if (!b.tied[k])
       continue;
-    f[k] = b.force[k].value(time);
+    if (b.rotating < 0) // the applied force is in the leader's residual
+      f[k] = b.force[k].value(time);
     for (Index d : b.dofs[k])
       f[k] += R[d];
   }
@@ -90,8 +235,29 @@ Vec3 rigid_body_displacement(const Model& model, const RigidBody& b) {
   Vec3 u = Vec3::Zero();
   for (int k = 0; k < 3; ++k)
     if (b.tied[k])
-      u[k] = x[b.dofs[k].front()];
+      u[k] = x[b.rotating >= 0 ? b.force[k].dof : b.dofs[k].front()];
   return u;
+}
+
+Vec3 rigid_body_rotation(const Model& model, const RigidBody& b) {
+  const dofs::RigidBodyDofs& r = model.problem->rigid_map().bodies()[b.rotating];
+  const Vector& x = model.problem->state();
+  return {x[r.rotation[0]], x[r.rotation[1]], x[r.rotation[2]]};
+}
+
+Vec3 rigid_body_moment(const Model& model, const RigidBody& b) {
+  const dofs::RigidBodyDofs& r = model.problem->rigid_map().bodies()[b.rotating];
+  const Vector& x = model.problem->state();
+  const Vector& R = model.problem->full_residual();
+  const Vec3 center =
+      r.centre + Vec3(x[r.translation[0]], x[r.translation[1]], x[r.translation[2]]);
+  Vec3 m = Vec3::Zero();
+  for (std::size_t a = 0; a < r.followers.size(); ++a) {
+    const auto& d = r.followers[a];
+    const Vec3 position = r.centre + r.arms[a] + Vec3(x[d[0]], x[d[1]], x[d[2]]);
+    m += (position - center).cross(Vec3(R[d[0]], R[d[1]], R[d[2]]));
+  }
+  return m;
 }
 
 } // namespace trifem::model

@@ -1,18 +1,31 @@
 // SPDX-License-Identifier: MIT
-// [[rigid_body]]: node sets that move with one rigid translation (helpers of build_model).
+// [[rigid_body]]: node sets that move with one rigid translation, or translate and rotate
+// (helpers of build_model).
 #pragma once
 
 #include "trifem/model/model.hpp"
 
 namespace trifem::model {
 
-/// Ties the displacement DOFs of every [[rigid_body]] (free and force-driven components share
-/// one unknown, the body's translation), prescribes its displacement-driven components and
-/// returns the term applying its forces (null if there are none). Fills model.rigid_bodies.
-/// Must run after every other condition has been added to `conditions` (a component may not
-/// be constrained twice) and before the DOF map is finalized.
-std::unique_ptr<physics::Term> rigid_bodies(const io::CaseSpec& spec, Model& model,
-                                            std::vector<dofs::DirichletCondition>& conditions);
+/// What the rigid bodies add to the problem.
+struct RigidBodyParts {
+  std::vector<std::unique_ptr<physics::Term>> loads; ///< their forces and moments
+  dofs::RigidMap map;                                ///< the rotating bodies
+};
+
+/// Builds every [[rigid_body]] and fills model.rigid_bodies. A body that only translates ties
+/// the displacement DOFs of its nodes (free and force-driven components share one unknown, the
+/// body's translation); a rotating one adds its six unknowns (fields model.rigid_translation
+/// and model.rigid_rotation) and makes its nodes' displacements follow them. Prescribed
+/// components are added to `conditions`. Must run after every other condition has been added to
+/// `conditions` (a component may not be constrained twice) and before the DOF map is finalized.
+RigidBodyParts rigid_bodies(const io::CaseSpec& spec, Model& model,
+                            std::vector<dofs::DirichletCondition>& conditions);
+
+/// Throws InputError if a node carried by a rotating body has a flux DOF in a rotated nodal
+/// frame (an impermeable surface): the frame is fixed in space and would not turn with it.
+void check_frames_of_rotating_bodies(const io::CaseSpec& spec, const Model& model,
+                                     const dofs::NodalFrames& frames);
 
 /// The force rigid body `b` applies to the tissue [N]: the resultant of the internal forces
 /// at its nodes (sum of the residual over its DOFs plus the applied force). Equals the applied
@@ -20,7 +33,15 @@ std::unique_ptr<physics::Term> rigid_bodies(const io::CaseSpec& spec, Model& mod
 /// ones (the same sign convention as [[output.reaction]]).
 Vec3 rigid_body_force(const Model& model, const RigidBody& b, Real time);
 
-/// The translation of rigid body `b` [mm] (0 in the components it does not tie).
+/// The translation of rigid body `b` [mm] (of its center if it rotates; 0 in the components
+/// it does not tie).
 Vec3 rigid_body_displacement(const Model& model, const RigidBody& b);
+
+/// The rotation vector of a rotating rigid body [rad].
+Vec3 rigid_body_rotation(const Model& model, const RigidBody& b);
+
+/// The moment a rotating rigid body applies to the tissue about its current center [N mm]:
+/// Σ (x_a − x_c) × R_a over its nodes (the sign convention of rigid_body_force).
+Vec3 rigid_body_moment(const Model& model, const RigidBody& b);
 
 } // namespace trifem::model

@@ -23,6 +23,9 @@ std::unordered_set<Index> held_dofs(const Model& model) {
       held.insert(d);
       held.insert(lead);
     }
+  for (Index d = 0; d < model.dofs.num_dofs(); ++d)
+    if (model.dofs.is_dependent(d)) // a node carried by a rotating body
+      held.insert(d);
   return held;
 }
 

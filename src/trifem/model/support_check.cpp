@@ -49,7 +49,8 @@ void check_support(const io::CaseSpec& spec, const Model& model) {
   for (Index n = 0; n < mesh.num_nodes(); ++n)
     for (int k = 0; k < 3; ++k) {
       const Index d = model.dofs.dof(model.fields.u, n, k);
-      if (model.dofs.is_constrained(d) || model.dofs.leader(d) != d) // fixed, or a rigid body
+      if (model.dofs.is_constrained(d) || model.dofs.leader(d) != d ||
+          model.dofs.is_dependent(d)) // fixed, or a rigid body
         held[component[n]][k] = true;
     }
   for (Index n = 0; n < mesh.num_nodes(); ++n) {

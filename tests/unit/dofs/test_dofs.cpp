@@ -57,6 +57,35 @@ TEST(DofMap, TieRejectsChainsAndMixedConstraints) {
   EXPECT_THROW(mixed.finalize(), LogicError);
 }
 
+TEST(DofMap, DependentDofsHaveNeitherAnEquationNorAConstrainedIndex) {
+  dofs::DofMap map;
+  map.add_field("u", FieldRole::displacement, 4, 1);
+  map.make_dependent(1);
+  map.constrain(3);
+  map.add_field("rigid", FieldRole::rigid_motion, 1, 2); // added after: not dependent
+  map.finalize();
+  EXPECT_TRUE(map.is_dependent(1));
+  EXPECT_FALSE(map.is_dependent(4));
+  EXPECT_EQ(map.equation(1), -1);
+  EXPECT_EQ(map.constrained_index(1), -1);
+  EXPECT_EQ(map.num_equations(), 4); // 0, 2, 4, 5
+  EXPECT_EQ(map.num_constrained(), 1);
+  map.reset_constraints(); // keeps the dependent DOF
+  map.finalize();
+  EXPECT_EQ(map.equation(1), -1);
+  EXPECT_EQ(map.num_equations(), 5);
+  dofs::DofMap both;
+  both.add_field("u", FieldRole::displacement, 2, 1);
+  both.make_dependent(0);
+  both.constrain(0);
+  EXPECT_THROW(both.finalize(), LogicError);
+  dofs::DofMap tied;
+  tied.add_field("u", FieldRole::displacement, 2, 1);
+  tied.tie(1, 0);
+  tied.make_dependent(0);
+  EXPECT_THROW(tied.finalize(), LogicError); // 1 would follow a DOF without an equation
+}
+
 TEST(Dirichlet, PrescribedValuesFollowTheCurve) {
   dofs::DirichletCondition c{
       {1, 3}, 2.0, dofs::LoadCurve({{0, 0}, {2, 1}}, dofs::Interpolation::Linear)};

@@ -225,6 +225,13 @@ std::string stacked_with(const std::string& from, const std::string& to) {
 
 } // namespace
 
+TEST(FebContact, TheFrictionPenaltyOfAFrictionlessInterfaceIsIgnored) {
+  EXPECT_NO_THROW(feb::parse_feb(
+      stacked_with("<fric_coeff>0</fric_coeff>",
+                   "<fric_coeff>0</fric_coeff><fric_penalty>10</fric_penalty><ktmult>1</ktmult>"),
+      "good.feb"));
+}
+
 TEST(FebErrors, UnsupportedContact) {
   expect_contains(
       feb_error(stacked_with("<fric_coeff>0</fric_coeff>", "<fric_coeff>0.3</fric_coeff>")),
@@ -284,19 +291,49 @@ TEST(FebRigid, AttachedBodyWithFixedRotationsTranslates) {
   EXPECT_FALSE(spec.materials.contains("plate")); // no elements: not a material of the mesh
 }
 
-TEST(FebRigid, RefusesRotationsAndUnknownConditions) {
-  expect_contains(feb_error(with_rigid_body(R"(<Rigid>
+TEST(FebRigid, AnAttachedBodyWhoseRotationIsNotHeldRotates) {
+  const io::CaseSpec spec = feb::parse_feb(with_rigid_body(R"(<Rigid>
   <rigid_bc type="rigid_fixed"><rb>plate</rb><Rx_dof>1</Rx_dof></rigid_bc>
-</Rigid>)")),
-                  {"bad.feb:19: febio_spec/Boundary/bc[@type='rigid'][@name='glue']: ",
-                   "trifem's rigid bodies translate only"});
+  <rigid_load type="rigid_moment"><rb>plate</rb><dof>Rv</dof><value>0.25</value></rigid_load>
+</Rigid>)"),
+                                           "good.feb");
+  ASSERT_EQ(spec.rigid_bodies.size(), 1u);
+  const io::RigidBodySpec& b = spec.rigid_bodies[0];
+  EXPECT_TRUE(b.rotates);
+  EXPECT_EQ(b.set, "bottom");
+  ASSERT_TRUE(b.center.has_value()); // center_of_mass
+  EXPECT_EQ(*b.center, Vec3::Zero());
+  EXPECT_EQ(b.drives[0].drive, io::RigidDrive::Displacement); // Rx fixed: held at 0
+  EXPECT_EQ(b.drives[1].drive, io::RigidDrive::Free);
+  EXPECT_EQ(b.rotation_drives[0].drive, io::RigidDrive::Free);
+  EXPECT_EQ(b.rotation_drives[1].drive, io::RigidDrive::Force); // the moment about v
+  EXPECT_EQ(b.rotation_drives[1].value, 0.25);
+}
+
+TEST(FebRigid, RefusesUnknownConditionsAndBodies) {
   expect_contains(
       feb_error(with_rigid_body(R"(<Rigid>
-  <rigid_bc type="rigid_rotation"><rb>plate</rb></rigid_bc>
+  <rigid_bc type="rigid_euler_angles"><rb>plate</rb></rigid_bc>
 </Rigid>)")),
-      {"febio_spec/Rigid/rigid_bc[@type='rigid_rotation']/@type: ", "is not supported"});
+      {"febio_spec/Rigid/rigid_bc[@type='rigid_euler_angles']/@type: ", "is not supported"});
+  expect_contains(feb_error(with_rigid_body(R"(<Rigid>
+  <rigid_bc type="rigid_rotation"><rb>plate</rb><dof>x</dof><value>1</value></rigid_bc>
+</Rigid>)")),
+                  {"/dof: ", "dof 'x' is not a rotation (Ru, Rv, Rw)"});
   expect_contains(feb_error(with_rigid_body(R"(<Rigid>
   <rigid_load type="rigid_force"><rb>bone</rb><dof>Rz</dof><value>1</value></rigid_load>
 </Rigid>)")),
                   {"/rb: ", "'bone' is not a material of type 'rigid body'"});
+}
+
+TEST(FebGlobals, AnAmbientPressureOfZeroIsAcceptedAndOtherValuesRefused) {
+  const auto with_p = [](const std::string& p) {
+    std::string text = solid_model_text(kMaterial, kHex, kFixed);
+    text.replace(text.find("<Control>"), 9,
+                 "<Globals><Constants><T>0</T><P>" + p + "</P></Constants></Globals>\n  <Control>");
+    return text;
+  };
+  EXPECT_NO_THROW(feb::parse_feb(with_p("0"), "good.feb"));
+  expect_contains(feb_error(with_p("101325")),
+                  {"Globals/Constants/P: ", "an ambient pressure P other than 0"});
 }

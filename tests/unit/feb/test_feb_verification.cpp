@@ -9,6 +9,7 @@
 #include "trifem/feb/feb_reader.hpp"
 #include "trifem/linalg/linear_solver.hpp"
 #include "trifem/model/model.hpp"
+#include "trifem/model/rigid_bodies.hpp"
 
 #include <gtest/gtest.h>
 
@@ -390,4 +391,76 @@ TEST(FebVerification, SteadyStateSwellingStepReachesTheDonnanEquilibrium) {
     ++ramp_steps;
   }
   EXPECT_GE(ramp_steps, 3);
+}
+
+namespace {
+
+/// A clamped neo-Hookean hex under a hex of a "rigid body" material (sharing its top nodes)
+/// turned by 0.3 rad about z (rigid_rotation Rw); its center of mass held (rigid_fixed).
+const char* kRigidLid = R"(<?xml version="1.0"?>
+<febio_spec version="4.0">
+  <Module type="solid"/>
+  <Control><analysis>STATIC</analysis><time_steps>2</time_steps><step_size>0.5</step_size></Control>
+  <Material>
+    <material id="1" name="tissue" type="neo-Hookean"><E>1</E><v>0.3</v></material>
+    <material id="2" name="bone" type="rigid body"><density>1</density></material>
+  </Material>
+  <Mesh>
+    <Nodes name="all">
+      <node id="1">0,0,0</node><node id="2">1,0,0</node><node id="3">1,1,0</node><node id="4">0,1,0</node>
+      <node id="5">0,0,1</node><node id="6">1,0,1</node><node id="7">1,1,1</node><node id="8">0,1,1</node>
+      <node id="9">0,0,1.5</node><node id="10">1,0,1.5</node><node id="11">1,1,1.5</node><node id="12">0,1,1.5</node>
+    </Nodes>
+    <Elements type="hex8" name="Soft"><elem id="1">1,2,3,4,5,6,7,8</elem></Elements>
+    <Elements type="hex8" name="Bone"><elem id="2">5,6,7,8,9,10,11,12</elem></Elements>
+    <NodeSet name="bottom">1, 2, 3, 4</NodeSet>
+  </Mesh>
+  <MeshDomains><SolidDomain name="Soft" mat="tissue"/><SolidDomain name="Bone" mat="bone"/></MeshDomains>
+  <Boundary>
+    <bc name="fix" node_set="bottom" type="zero displacement"><x_dof>1</x_dof><y_dof>1</y_dof><z_dof>1</z_dof></bc>
+  </Boundary>
+  <Rigid>
+    <rigid_bc type="rigid_fixed"><rb>bone</rb><Rx_dof>1</Rx_dof><Ry_dof>1</Ry_dof><Rz_dof>1</Rz_dof><Ru_dof>1</Ru_dof><Rv_dof>1</Rv_dof></rigid_bc>
+    <rigid_bc type="rigid_rotation"><rb>bone</rb><dof>Rw</dof><value lc="1">0.3</value><relative>0</relative></rigid_bc>
+  </Rigid>
+  <LoadData>
+    <load_controller id="1" type="loadcurve"><interpolate>LINEAR</interpolate>
+      <points><pt>0,0</pt><pt>1,1</pt></points></load_controller>
+  </LoadData>
+</febio_spec>
+)";
+
+} // namespace
+
+TEST(FebRigid, ABodyOfElementsTurnsRigidlyAboutItsCenterOfMassAndTheBaseHoldsItsMoment) {
+  FebRun run = test::run_feb_case(feb::parse_feb(kRigidLid, "rigid_lid.feb"));
+  ASSERT_TRUE(run.report.success) << run.report.failure;
+  const model::Model& m = *run.model;
+  ASSERT_EQ(m.rigid_bodies.size(), 1u);
+  const dofs::RigidBodyDofs& body = m.problem->rigid_map().bodies().at(0);
+  EXPECT_LT((body.centre - Vec3(0.5, 0.5, 1.25)).norm(), 1e-15); // the element's centroid
+  const Vector& x = m.problem->state();
+  const auto position = [&](Index n) {
+    Vec3 p = m.mesh.node(n);
+    for (int k = 0; k < 3; ++k)
+      p[k] += x[m.dofs.dof(m.fields.u, n, k)];
+    return p;
+  };
+  const Real c = std::cos(0.3), s = std::sin(0.3);
+  Mat3 R;
+  R << c, -s, 0.0, s, c, 0.0, 0.0, 0.0, 1.0;
+  Real error = 0.0;
+  for (Index n = 4; n < 12; ++n) // the rigid element's nodes (ids 5-12)
+    error =
+        std::max(error, (position(n) - (body.centre + R * (m.mesh.node(n) - body.centre))).norm());
+  EXPECT_LT(error, 1e-14);
+  // the moment the body applies to the tissue is held by the clamped base
+  const Vec3 moment = model::rigid_body_moment(m, m.rigid_bodies[0]);
+  const Vector& r = m.problem->full_residual();
+  Real base = 0.0;
+  for (Index n = 0; n < 4; ++n)
+    base += position(n).x() * r[m.dofs.dof(m.fields.u, n, 1)] -
+            position(n).y() * r[m.dofs.dof(m.fields.u, n, 0)];
+  EXPECT_GT(moment.z(), 0.01);
+  EXPECT_NEAR(base, -moment.z(), 1e-10 * moment.z());
 }

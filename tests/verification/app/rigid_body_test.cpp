@@ -4,9 +4,11 @@
 // three are the same boundary value problem, so reactions and displacements must agree.
 #include "case_runner.hpp"
 #include "trifem/model/rigid_bodies.hpp"
+#include "trifem/tensor/rotation.hpp"
 
 #include <gtest/gtest.h>
 
+#include <numbers>
 #include <string>
 
 using namespace trifem;
@@ -134,4 +136,246 @@ set = "cube.zmax"
         }
       },
       InputError);
+}
+
+namespace {
+
+/// A 2x2x2 neo-Hookean cube without supports; `bodies` is appended.
+std::string free_cube_case(const std::string& bodies) {
+  return R"(
+[[mesh.box]]
+name = "cube"
+size = [1.0, 1.0, 1.0]
+divisions = [2, 2, 2]
+grading = [1.5, 0.8, 1.2]
+material = "soft"
+[materials.soft]
+type = "neo-hookean"
+E = 1.0
+nu = 0.3
+[curves.ramp]
+points = [[0.0, 0.0], [1.0, 1.0]]
+[time]
+end_time = 1.0
+dt = 0.25
+[solver]
+residual_tolerance = 1e-12
+increment_tolerance = 1e-13
+)" + bodies;
+}
+
+/// Expects `run` to fail with an InputError whose message contains every one of `parts`.
+void expect_input_error(const std::string& text, const std::vector<std::string>& parts) {
+  try {
+    test::run_case_text(text, "bad.toml");
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    for (const std::string& part : parts)
+      EXPECT_NE(std::string(e.what()).find(part), std::string::npos) << e.what();
+  }
+}
+
+} // namespace
+
+TEST(RigidBody, ACubeCarriedThroughHalfATurnByARotatingBodyMovesRigidly) {
+  // the top face carries the cube: a translation and half a turn about (1, 2, 3)/√14 through
+  // the given center, in four steps; the cube stays stress free, so every node moves rigidly
+  const Vec3 axis = Vec3(1.0, 2.0, 3.0).normalized(), center(0.3, -0.2, 0.5), shift(0.2, -0.1, 0.4);
+  const Vec3 theta = std::numbers::pi * axis;
+  std::string body = fmt::format(R"(
+[[rigid_body]]
+name = "lid"
+set = "cube.zmax"
+rotation = "free"
+center = [{:.17g}, {:.17g}, {:.17g}]
+)",
+                                 center.x(), center.y(), center.z());
+  for (int k = 0; k < 3; ++k)
+    body += fmt::format("{} = {{ displacement = {:.17g}, curve = \"ramp\" }}\n"
+                        "r{} = {{ rotation = {:.17g}, curve = \"ramp\" }}\n",
+                        "xyz"[k], shift[k], "xyz"[k], theta[k]);
+  const test::CaseRun run = test::run_case_text(free_cube_case(body), "turn.toml");
+  ASSERT_TRUE(run.report.success) << run.report.failure;
+  const model::Model& m = *run.model;
+  const Mat3 R = rotation::matrix(theta);
+  Real error = 0.0;
+  for (Index n = 0; n < m.mesh.num_nodes(); ++n) {
+    const Vec3 X = m.mesh.node(n);
+    const Vector& x = m.problem->state();
+    const Vec3 u(x[m.dofs.dof(m.fields.u, n, 0)], x[m.dofs.dof(m.fields.u, n, 1)],
+                 x[m.dofs.dof(m.fields.u, n, 2)]);
+    error = std::max(error, (X + u - (center + shift + R * (X - center))).norm());
+  }
+  EXPECT_LT(error, 1e-12); // cube size 1
+  const model::RigidBody& lid = m.rigid_bodies.at(0);
+  EXPECT_LT((model::rigid_body_rotation(m, lid) - theta).norm(), 1e-15 * std::numbers::pi);
+  EXPECT_LT((model::rigid_body_displacement(m, lid) - shift).norm(), 1e-15);
+  // a stress-free cube: no force, no moment
+  EXPECT_LT(model::rigid_body_force(m, lid, 1.0).norm(), 1e-12);
+  EXPECT_LT(model::rigid_body_moment(m, lid).norm(), 1e-12);
+}
+
+TEST(RigidBody, AMomentOnARotatingBodyTwistsTheCubeAndTheBaseBalancesIt) {
+  constexpr Real kMoment = 0.02; // [N mm] on a cube of modulus 1 and size 1: a few degrees
+  const test::CaseRun run = test::run_case_text(cube_case(R"(
+[[rigid_body]]
+name = "lid"
+set = "cube.zmax"
+rz = { moment = 0.02, curve = "ramp" }
+)"),
+                                                "twist.toml");
+  ASSERT_TRUE(run.report.success) << run.report.failure;
+  const model::Model& m = *run.model;
+  const model::RigidBody& lid = m.rigid_bodies.at(0);
+  const Vec3 moment = model::rigid_body_moment(m, lid);
+  EXPECT_NEAR(moment.z(), kMoment, 1e-10 * kMoment); // the applied moment, at equilibrium
+  EXPECT_LT(moment.head<2>().norm(), 1e-10 * kMoment);
+  EXPECT_LT(model::rigid_body_force(m, lid, 1.0).norm(), 1e-10 * kMoment); // L = 1
+  EXPECT_GT(model::rigid_body_rotation(m, lid).z(), 0.01);                 // it turned, about z
+  // the clamped base holds the cube with the opposite moment
+  const Vector& x = m.problem->state();
+  const Vector& R = m.problem->full_residual();
+  Vec3 base = Vec3::Zero();
+  for (Index n : m.mesh.node_set("cube.zmin")) {
+    Vec3 position = m.mesh.node(n), reaction;
+    for (int k = 0; k < 3; ++k) {
+      position[k] += x[m.dofs.dof(m.fields.u, n, k)];
+      reaction[k] = R[m.dofs.dof(m.fields.u, n, k)];
+    }
+    base += position.cross(reaction);
+  }
+  EXPECT_NEAR(base.z(), -kMoment, 1e-10 * kMoment);
+}
+
+TEST(RigidBody, RotationKeysOfABodyThatDoesNotRotateAreInputErrors) {
+  expect_input_error(cube_case(R"(
+[[rigid_body]]
+name = "lid"
+set = "cube.zmax"
+rotation = "fixed"
+rx = { rotation = 0.1 }
+)"),
+                     {"rigid_body[1].rotation", "rx, ry and rz"});
+  expect_input_error(cube_case(R"(
+[[rigid_body]]
+name = "lid"
+set = "cube.zmax"
+components = ["x", "y"]
+rotation = "free"
+)"),
+                     {"rigid_body[1].components", "all three"});
+  expect_input_error(cube_case(R"(
+[[rigid_body]]
+name = "lid"
+set = "cube.zmax"
+rz = { rotation = 0.1, moment = 1.0 }
+)"),
+                     {"rigid_body[1].rz", "either rotation or moment"});
+}
+
+namespace {
+
+/// A clamped 2x2x2 cube whose top face a rigid body turns by 0.4 rad about z, its center and
+/// its other rotations held; `body` is appended (its blocks or set, center).
+std::string turned_top_case(const std::string& mesh, const std::string& body) {
+  return R"(
+[[mesh.box]]
+name = "tissue"
+size = [1.0, 1.0, 1.0]
+divisions = [2, 2, 2]
+material = "soft"
+)" + mesh +
+         R"(
+[materials.soft]
+type = "neo-hookean"
+E = 1.0
+nu = 0.3
+[curves.ramp]
+points = [[0.0, 0.0], [1.0, 1.0]]
+[[boundary.fixed]]
+set = "tissue.zmin"
+[time]
+end_time = 1.0
+dt = 0.5
+[solver]
+residual_tolerance = 1e-12
+increment_tolerance = 1e-13
+[[rigid_body]]
+name = "bone"
+rotation = "free"
+x = { displacement = 0.0 }
+y = { displacement = 0.0 }
+z = { displacement = 0.0 }
+rx = { rotation = 0.0 }
+ry = { rotation = 0.0 }
+rz = { rotation = 0.4, curve = "ramp" }
+)" + body;
+}
+
+Vec3 position(const model::Model& m, Index n) {
+  const Vector& x = m.problem->state();
+  return m.mesh.node(n) + Vec3(x[m.dofs.dof(m.fields.u, n, 0)], x[m.dofs.dof(m.fields.u, n, 1)],
+                               x[m.dofs.dof(m.fields.u, n, 2)]);
+}
+
+} // namespace
+
+TEST(RigidBody, ABodyOfCellsMovesRigidlyAboutItsCentroidAndCarriesNoStiffness) {
+  // the bone: a block of cells without material above the tissue, its center by default the
+  // centroid of its cells (0.5, 0.5, 1.45); the same body given as the tissue's top face and
+  // that center must turn the tissue the same way (rigid cells add no stiffness)
+  const test::CaseRun cells = test::run_case_text(turned_top_case(R"(
+[[mesh.box]]
+name = "bone"
+origin = [0.0, 0.0, 1.2]
+size = [1.0, 1.0, 0.5]
+divisions = [2, 2, 1]
+)",
+                                                                  R"(blocks = ["bone"]
+set = "tissue.zmax"
+)"),
+                                                  "cells.toml");
+  ASSERT_TRUE(cells.report.success) << cells.report.failure;
+  const test::CaseRun face = test::run_case_text(turned_top_case("", R"(set = "tissue.zmax"
+center = [0.5, 0.5, 1.45]
+)"),
+                                                 "face.toml");
+  ASSERT_TRUE(face.report.success) << face.report.failure;
+  const model::Model &a = *cells.model, &b = *face.model;
+  const Vec3 center = a.problem->rigid_map().bodies().at(0).centre;
+  EXPECT_LT((center - Vec3(0.5, 0.5, 1.45)).norm(), 1e-15);
+  Real difference = 0.0, motion = 0.0;
+  for (Index n = 0; n < b.mesh.num_nodes(); ++n) { // the tissue's nodes come first in both
+    difference = std::max(difference, (position(a, n) - position(b, n)).norm());
+    motion = std::max(motion, (position(b, n) - b.mesh.node(n)).norm());
+  }
+  EXPECT_GT(motion, 0.1);
+  EXPECT_LT(difference, 1e-12);
+  const model::RigidBody &bone_a = a.rigid_bodies.at(0), &bone_b = b.rigid_bodies.at(0);
+  EXPECT_NEAR(model::rigid_body_moment(a, bone_a).z(), model::rigid_body_moment(b, bone_b).z(),
+              1e-12 * std::abs(model::rigid_body_moment(b, bone_b).z()));
+  // the bone's own nodes turned rigidly about its center
+  const Mat3 R = rotation::matrix(Vec3(0.0, 0.0, 0.4));
+  Real rigid_error = 0.0;
+  for (Index n : a.mesh.node_set("bone.all"))
+    rigid_error =
+        std::max(rigid_error, (position(a, n) - (center + R * (a.mesh.node(n) - center))).norm());
+  EXPECT_LT(rigid_error, 1e-14);
+}
+
+TEST(RigidBody, CellsWithoutAMaterialOrABodyAreInputErrors) {
+  const std::string bone_box = R"(
+[[mesh.box]]
+name = "bone"
+origin = [0.0, 0.0, 1.2]
+size = [1.0, 1.0, 0.5]
+divisions = [2, 2, 1]
+)";
+  expect_input_error(turned_top_case(bone_box, "set = \"tissue.zmax\"\n"),
+                     {"has no material", "[[rigid_body]]'s blocks"});
+  expect_input_error(turned_top_case("", "blocks = [\"tissue\"]\n"),
+                     {"rigid_body[1].blocks[1]", "has the material 'soft'"});
+  std::string fixed = turned_top_case(bone_box, "blocks = [\"bone\"]\n");
+  fixed.replace(fixed.find("rotation = \"free\""), 17, "rotation = \"fixed\"");
+  expect_input_error(fixed, {"rigid_body[1].rotation", "rotates"});
 }

@@ -8,6 +8,7 @@
 #include "trifem/material/registry.hpp"
 #include "trifem/mesh/box.hpp"
 #include "trifem/physics/nodal_force_term.hpp"
+#include "trifem/physics/rigid_moment_term.hpp"
 #include "trifem/physics/solid_term.hpp"
 #include "trifem/solver/newton.hpp"
 #include "trifem/tensor/rotation.hpp"
@@ -316,4 +317,31 @@ TEST(RigidRotation, ABodyWhoseRotationIsHeldEqualsTiedNodes) {
   }
   ASSERT_GT(std::abs(tied.position(face.front()).x() - tied.mesh.node(face.front()).x()), 1e-3);
   EXPECT_LT(difference, 1e-12 * (1.0 + motion));
+}
+
+TEST(RigidRotation, TheTangentOfADeadMomentIsTheDerivativeOfItsResidual) {
+  // R_Θ = −T(Θ)ᵀ M(t), K = −H(Θ, M): central differences in Θ at rotations across the
+  // series threshold and up to 3 rad
+  const physics::RigidMomentTerm term(
+      {{{0, 1, 2}, Vec3(0.4, -1.1, 0.7), through({{0.0, 0.0}, {1.0, 2.0}})}});
+  for (const Real angle : {0.0, 0.2, 1.0, 3.0}) {
+    Vector x = angle * kAxis;
+    const physics::EvalState state{x, x, 0.5, 0.5};
+    physics::LocalVector r;
+    physics::LocalMatrix K;
+    ASSERT_TRUE(term.evaluate(0, state, r, &K));
+    const Vec3 moment = Vec3(0.4, -1.1, 0.7); // curve(0.5) = 1
+    EXPECT_LT((r + rotation::tangent(angle * kAxis).transpose() * moment).norm(), 1e-15) << angle;
+    const Real h = 1e-6;
+    for (int j = 0; j < 3; ++j) {
+      Vector plus = x, minus = x;
+      plus[j] += h;
+      minus[j] -= h;
+      physics::LocalVector rp, rm;
+      term.evaluate(0, {plus, plus, 0.5, 0.5}, rp, nullptr);
+      term.evaluate(0, {minus, minus, 0.5, 0.5}, rm, nullptr);
+      EXPECT_LT((K.col(j) - (rp - rm) / (2.0 * h)).norm(), 1e-8 * moment.norm())
+          << angle << " column " << j;
+    }
+  }
 }

@@ -43,6 +43,28 @@ inline CaseRun run_case_spec(io::CaseSpec spec, const CaseObserver& observer = {
   return run;
 }
 
+/// Parses `text` and runs it through its analysis steps as `trifem run` does (each [[step]]
+/// with its conditions; analysis::run_steps), calling `observer` with the model and the time
+/// after every step.
+inline CaseRun run_case_steps(std::string_view text, const std::filesystem::path& file,
+                              const std::function<void(const model::Model&, Real)>& observer = {}) {
+  CaseRun run;
+  run.spec = io::parse_case(text, file);
+  run.model = model::build_model(run.spec);
+  solver::NewtonSolver newton(analysis::newton_settings(run.spec.solver),
+                              linalg::make_linear_solver(run.spec.solver.linear_solver));
+  solver::Linearization initial; // the state at t = 0 (reactions of the initial state)
+  run.model->problem->linearize(initial, false);
+  run.report = analysis::run_steps(
+      run.spec, *run.model, newton,
+      [&](const solver::StepInfo& info) {
+        if (observer)
+          observer(*run.model, info.time);
+      },
+      [](const solver::StepController&) {});
+  return run;
+}
+
 /// Parses `text` (relative paths resolved against `file`) and runs it (run_case_spec).
 inline CaseRun run_case_text(std::string_view text, const std::filesystem::path& file,
                              const CaseObserver& observer = {}) {

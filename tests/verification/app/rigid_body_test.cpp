@@ -459,19 +459,12 @@ std::vector<analysis::CellValues> cell_values(const model::Model& m) {
 /// Runs `text` through its steps, keeping the cell quantities at t = 1; expects those at t = 2
 /// to be the same, tensors rotated by R (90° about (1, 2, 3)/√14), to 1e-10 of their scale.
 void expect_the_turned_state(const std::string& text, bool ions) {
-  test::CaseRun run;
-  run.spec = io::parse_case(text, "turned.toml");
-  run.model = model::build_model(run.spec);
-  solver::NewtonSolver newton(analysis::newton_settings(run.spec.solver),
-                              linalg::make_linear_solver(run.spec.solver.linear_solver));
   std::vector<analysis::CellValues> compressed;
-  run.report = analysis::run_steps(
-      run.spec, *run.model, newton,
-      [&](const solver::StepInfo& info) {
-        if (std::abs(info.time - 1.0) < 1e-9)
-          compressed = cell_values(*run.model);
-      },
-      [](const solver::StepController&) {});
+  const test::CaseRun run =
+      test::run_case_steps(text, "turned.toml", [&](const model::Model& m, Real time) {
+        if (std::abs(time - 1.0) < 1e-9)
+          compressed = cell_values(m);
+      });
   ASSERT_TRUE(run.report.success) << run.report.failure;
   ASSERT_EQ(compressed.size(), 8u);
   const std::vector<analysis::CellValues> turned = cell_values(*run.model);

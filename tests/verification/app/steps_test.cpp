@@ -24,21 +24,7 @@ namespace {
 /// Runs a case text through run_steps, calling `observer` after every accepted step.
 test::CaseRun run_stepped(const std::string& text,
                           const std::function<void(const model::Model&, Real)>& observer = {}) {
-  test::CaseRun run;
-  run.spec = io::parse_case(text, "steps.toml");
-  run.model = model::build_model(run.spec);
-  solver::NewtonSolver newton(analysis::newton_settings(run.spec.solver),
-                              linalg::make_linear_solver(run.spec.solver.linear_solver));
-  solver::Linearization initial;
-  run.model->problem->linearize(initial, false);
-  run.report = analysis::run_steps(
-      run.spec, *run.model, newton,
-      [&](const solver::StepInfo& info) {
-        if (observer)
-          observer(*run.model, info.time);
-      },
-      [](const solver::StepController&) {});
-  return run;
+  return test::run_case_steps(text, "steps.toml", observer);
 }
 
 /// Mean z displacement of the top nodes of the column.

@@ -105,6 +105,63 @@ linear_solver = "sparselu"
   check_restart(file, [](const auto& files) { return files[(files.size() - 1) / 2]; });
 }
 
+TEST_F(CliRestart, ContinuedWhileAJointTurnsABonePastHalfATurn) {
+  // a hinge driven through 1.5 turns (the bone's rotation vector is carried below π on the
+  // way), a damper and a cable on the bone: the restarted run repeats the history
+  const fs::path file = write_file("hinge.toml", R"(
+[[mesh.box]]
+name = "cube"
+size = [1.0, 1.0, 1.0]
+divisions = [1, 1, 1]
+material = "soft"
+[[mesh.box]]
+name = "bone"
+origin = [0.0, 0.0, 1.0]
+size = [1.0, 1.0, 0.3]
+divisions = [1, 1, 1]
+[materials.soft]
+type = "neo-hookean"
+E = 1.0
+nu = 0.3
+[curves.ramp]
+points = [[0.0, 0.0], [1.0, 1.0]]
+[[rigid_body]]
+name = "femur"
+set = "cube.zmax"
+blocks = ["bone"]
+[[connector]]
+type = "revolute"
+name = "hinge"
+body_a = "ground"
+body_b = "femur"
+origin = [0.5, 0.5, 1.3]
+axis = [0.0, 0.0, 1.0]
+rotation = { rotation = 9.42477796076938, curve = "ramp" }
+[[connector]]
+type = "damper"
+name = "damper"
+body_a = "ground"
+body_b = "femur"
+point_a = [2.0, 0.5, 1.3]
+point_b = [1.0, 0.5, 1.3]
+damping = 0.1
+[[connector]]
+type = "cable"
+name = "cable"
+body_a = "ground"
+body_b = "femur"
+point_a = [0.5, 3.0, 1.3]
+point_b = [0.5, 1.0, 1.3]
+stiffness = 0.5
+[time]
+end_time = 1.0
+dt = 0.1
+[solver]
+linear_solver = "sparselu"
+)");
+  check_restart(file, [](const auto& files) { return files[(files.size() - 1) / 2]; });
+}
+
 void CliRestart::check_restart(
     const fs::path& file, const std::function<fs::path(const std::vector<fs::path>&)>& pick) const {
   const fs::path whole = output() / "whole", resumed = output() / "resumed";

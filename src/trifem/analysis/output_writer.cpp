@@ -46,6 +46,15 @@ std::vector<std::string> model_columns(const model::Model& model) {
     for (const char* c : {"Mx", "My", "Mz"})
       cols.push_back(fmt::format("{}.{} [N mm]", b.name, c));
   }
+  if (model.connectors)
+    for (const physics::Connector& c : model.connectors->connectors()) {
+      for (const char* k : {"Fx", "Fy", "Fz"})
+        cols.push_back(fmt::format("{}.{} [N]", c.name, k));
+      for (const char* k : {"Mx", "My", "Mz"})
+        cols.push_back(fmt::format("{}.{} [N mm]", c.name, k));
+      for (const physics::ReportedMeasure& m : c.reported)
+        cols.push_back(fmt::format("{}.{} [{}]", c.name, m.name, m.unit));
+    }
   if (model.mixture) {
     cols.push_back("water_outflow [mm^3/s]");
     cols.push_back("water_volume [mm^3]");
@@ -55,6 +64,19 @@ std::vector<std::string> model_columns(const model::Model& model) {
                           "cation_moles [mmol]", "anion_moles [mmol]"})
       cols.push_back(c);
   return cols;
+}
+
+/// Per connector: the force and moment it applies to its body b (in the last committed state)
+/// and its reported measures.
+void append_connector_values(const physics::RigidConnectorTerm& term, const Vector& x,
+                             std::vector<double>& row) {
+  for (Index e = 0; e < term.num_elements(); ++e) {
+    const physics::ConnectorWrench& w = term.committed_wrenches()[e];
+    row.insert(row.end(),
+               {w.force.x(), w.force.y(), w.force.z(), w.moment.x(), w.moment.y(), w.moment.z()});
+    for (const physics::ReportedMeasure& m : term.connectors()[e].reported)
+      row.push_back(term.measure(e, m.measure, x));
+  }
 }
 
 /// Per-body water columns (when the model has several mixture bodies).
@@ -189,6 +211,8 @@ std::vector<double> OutputWriter::history_row(Real time, int step, Real dt, int 
     const Vec3 r = model::rigid_body_rotation(model_, b), m = model::rigid_body_moment(model_, b);
     row.insert(row.end(), {r.x(), r.y(), r.z(), m.x(), m.y(), m.z()});
   }
+  if (model_.connectors)
+    append_connector_values(*model_.connectors, x, row);
   if (balance_) {
     const Balance b = balance_->measure();
     row.push_back(b.outflow[0]);

@@ -272,6 +272,30 @@ std::uint64_t contact_hash(const io::CaseSpec& spec) {
   return h.value();
 }
 
+/// The connectors (nothing without any: the hash of a case without them is unchanged).
+void hash_connectors(const io::CaseSpec& spec, PartHasher& h) {
+  if (spec.connectors.empty())
+    return;
+  h.integer(static_cast<std::int64_t>(spec.connectors.size()));
+  for (const io::ConnectorSpec& c : spec.connectors) {
+    h.text(c.name);
+    h.kind(c.kind);
+    h.text(c.body_a);
+    h.text(c.body_b);
+    for (const Vec3& v :
+         {c.origin, c.axis, c.transverse.value_or(Vec3::Zero()), c.point_a, c.point_b})
+      h.vec3(v);
+    for (const io::RigidComponentSpec* d : {&c.rotation, &c.translation}) {
+      h.kind(d->drive);
+      h.real(d->value);
+      h.text(d->curve);
+    }
+    for (const Real v : {c.torsion_stiffness, c.stiffness, c.free_length.value_or(-1.0), c.force})
+      h.real(v);
+    h.text(c.curve);
+  }
+}
+
 std::uint64_t rigid_bodies_hash(const io::CaseSpec& spec) {
   PartHasher h;
   h.integer(static_cast<std::int64_t>(spec.rigid_bodies.size()));
@@ -297,7 +321,14 @@ std::uint64_t rigid_bodies_hash(const io::CaseSpec& spec) {
       h.real(d.value);
       h.text(d.curve);
     }
+    for (const io::RigidFollowerSpec& f : b.followers) { // (none: the hash is unchanged)
+      h.vec3(f.force);
+      h.vec3(f.point.value_or(Vec3::Constant(-1e300)));
+      h.vec3(f.moment);
+      h.text(f.curve);
+    }
   }
+  hash_connectors(spec, h);
   return h.value();
 }
 

@@ -380,6 +380,8 @@ void FeProblem::commit_step() {
     frames_.to_local(inertial);
     committed_residual_ = g + inertial;
   }
+  if (rigid_.wrap_rotations(x_, map_)) // a body that turned past π: the same rotation below it
+    sync();
   x_old_ = x_;
   x_old_global_ = x_global_;
   time_old_ = time_;

@@ -5,6 +5,7 @@
 #include "trifem/tensor/rotation.hpp"
 
 #include <algorithm>
+#include <numbers>
 
 namespace trifem::dofs {
 namespace {
@@ -43,6 +44,24 @@ RigidMap::RigidMap(std::vector<RigidBodyDofs> bodies, Index num_dofs) : bodies_(
         follower_of_[d] = 3 * f + k;
       }
   }
+}
+
+bool RigidMap::wrap_rotations(Vector& x, const DofMap& map) const {
+  bool changed = false;
+  for (const RigidBodyDofs& b : bodies_) {
+    if (std::any_of(b.rotation.begin(), b.rotation.end(),
+                    [&](Index d) { return map.is_constrained(d); }))
+      continue;
+    const Vec3 theta(x[b.rotation[0]], x[b.rotation[1]], x[b.rotation[2]]);
+    const Real angle = theta.norm();
+    if (angle <= std::numbers::pi)
+      continue;
+    const Vec3 wrapped = theta * (1.0 - 2.0 * std::numbers::pi / angle);
+    for (int k = 0; k < 3; ++k)
+      x[b.rotation[k]] = wrapped[k];
+    changed = true;
+  }
+  return changed;
 }
 
 void RigidMap::apply(Vector& x) const {

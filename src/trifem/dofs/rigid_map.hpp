@@ -51,6 +51,11 @@ public:
 
   /// Sets the follower DOFs of `x` (every DOF) from the bodies' unknowns in `x`.
   void apply(Vector& x) const;
+  /// Replaces a rotation vector Θ longer than π by the equivalent Θ (1 − 2π/θ), shorter than π,
+  /// in each body whose three rotation DOFs are free in `map`: T(Θ) is singular at θ = 2π, so
+  /// a body that keeps turning needs this between steps. True if any changed (the followers
+  /// do not: the rotation is the same).
+  bool wrap_rotations(Vector& x, const DofMap& map) const;
   /// The DOFs of an element on `dofs` after condensation: those that follow no body, in their
   /// order, then translation and rotation of each body the element touches, by body.
   void expand(std::span<const Index> dofs, std::vector<Index>& out) const;

@@ -58,6 +58,7 @@ struct RigidBodyInput {
   std::array<bool, 6> fixed{};                  ///< rigid_fixed: x, y, z, then the rotations
   std::array<io::RigidComponentSpec, 3> drives; ///< rigid_displacement, rigid_force
   std::array<io::RigidComponentSpec, 3> rotation_drives; ///< rigid_rotation, rigid_moment
+  bool connected = false;                                ///< a rigid_connector names it: it rotates
 };
 
 /// Everything the section readers share while a file is read.
@@ -80,6 +81,8 @@ struct Reader {
   std::vector<EffectiveCondition> effective;          ///< top-level fluid pressure, concentrations
   std::vector<EffectiveCondition> initial;            ///< <Initial> fluid pressure, concentrations
   std::map<std::string, RigidBodyInput> rigid_bodies; ///< by material name
+  /// The rigid connectors, their bodies named by material name until map_rigid_bodies
+  std::vector<io::ConnectorSpec> connectors;
   std::vector<std::string> flux_surfaces; ///< surfaces with a prescribed normal fluid flux
   /// prescribed fluid pressures other than 0 of a biphasic model: baths at that pressure
   std::vector<const EffectiveCondition*> pressure_baths;
@@ -164,8 +167,14 @@ void add_rigid_material(Reader& r, pugi::xml_node node, const std::string& name)
 void attach_rigid(Reader& r, pugi::xml_node bc, bool step);
 /// <Rigid>: rigid_fixed, rigid_displacement and rigid_force on the bodies.
 void read_rigid(Reader& r, pugi::xml_node section);
-/// The attached rigid bodies as translating [[rigid_body]]s (rotations must be fixed).
+/// The rigid bodies as [[rigid_body]]s (translating if attached by nodes with their rotations
+/// fixed and joined by no connector, else rotating), then the connectors as [[connector]]s.
 void map_rigid_bodies(Reader& r);
+/// <rigid_connector> of <Rigid>: joints, springs, dampers and contractile forces
+/// (connectors.cpp).
+void read_rigid_connector(Reader& r, pugi::xml_node node);
+/// The name of a [[rigid_body]] for FEBio's body `name` (letters, digits and _ only).
+std::string rigid_body_name(std::string name);
 /// Contact: each <contact> of a supported type as a contact pair of its <SurfacePair> (in
 /// `mesh`): slave = the primary surface, master = the secondary one.
 void read_contact(Reader& r, pugi::xml_node section, pugi::xml_node mesh);

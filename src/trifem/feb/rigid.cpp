@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cctype>
 #include <fmt/format.h>
+#include <set>
 
 namespace trifem::feb::detail {
 namespace {
@@ -98,17 +99,9 @@ std::array<bool, 3> fixed_at_every_node(const Reader& r, const std::string& set)
   return fixed;
 }
 
-/// A body name trifem accepts (letters, digits, _).
-std::string body_name(std::string name) {
-  for (char& c : name)
-    if (!std::isalnum(static_cast<unsigned char>(c)))
-      c = '_';
-  return name;
-}
-
 /// A body of elements, or one whose rotation is not held, has six unknowns.
 bool rotates(const RigidBodyInput& body) {
-  if (!body.blocks.empty())
+  if (!body.blocks.empty() || body.connected)
     return true;
   for (int k = 0; k < 3; ++k)
     if (!body.fixed[3 + k] || body.rotation_drives[k].drive != io::RigidDrive::Free)
@@ -130,7 +123,7 @@ io::RigidBodySpec rotating_body(const Reader& r, const std::string& name,
                                 const RigidBodyInput& body) {
   io::RigidBodySpec spec;
   spec.key = fmt::format("rigid body '{}'", name);
-  spec.name = body_name(name);
+  spec.name = rigid_body_name(name);
   spec.set = body.set;
   spec.blocks = body.blocks;
   spec.rotates = true;
@@ -145,7 +138,30 @@ io::RigidBodySpec rotating_body(const Reader& r, const std::string& name,
   return spec;
 }
 
+/// A rigid body of no elements and no nodes that connectors join to others: held in all six
+/// components, it is the ground (space).
+void check_ground(const Reader& r, const RigidBodyInput& body) {
+  const bool held =
+      std::all_of(body.fixed.begin(), body.fixed.end(), [](bool f) { return f; }) &&
+      std::all_of(
+          body.drives.begin(), body.drives.end(),
+          [](const io::RigidComponentSpec& d) { return d.drive == io::RigidDrive::Free; }) &&
+      std::all_of(body.rotation_drives.begin(), body.rotation_drives.end(),
+                  [](const io::RigidComponentSpec& d) { return d.drive == io::RigidDrive::Free; });
+  if (!held)
+    r.doc.fail(body.material, "a rigid body of no elements and no nodes joined by a connector is "
+                              "supported as the ground only: fix all six of its degrees of "
+                              "freedom (rigid_fixed), or give it elements");
+}
+
 } // namespace
+
+std::string rigid_body_name(std::string name) {
+  for (char& c : name)
+    if (!std::isalnum(static_cast<unsigned char>(c)))
+      c = '_';
+  return name == "ground" ? "ground_body" : name; // "ground": space in a [[connector]]
+}
 
 void add_rigid_material(Reader& r, pugi::xml_node node, const std::string& name) {
   for (pugi::xml_node p : node.children())
@@ -175,17 +191,25 @@ void read_rigid(Reader& r, pugi::xml_node section) {
       rigid_drive(r, c, io::RigidDrive::Displacement, type == "rigid_rotation");
     else if (kind == "rigid_load" && (type == "rigid_force" || type == "rigid_moment"))
       rigid_drive(r, c, io::RigidDrive::Force, type == "rigid_moment");
+    else if (kind == "rigid_connector")
+      read_rigid_connector(r, c);
     else
       r.doc.fail(c, "type",
                  fmt::format("<{} type=\"{}\"> is not supported (supported: rigid_bc of type "
                              "rigid_fixed, rigid_displacement or rigid_rotation, rigid_load of "
-                             "type rigid_force or rigid_moment)",
+                             "type rigid_force or rigid_moment, rigid_connector)",
                              kind, type));
   }
 }
 
 void map_rigid_bodies(Reader& r) {
+  std::set<std::string> grounds; // bodies of nothing that connectors hold to: space
   for (const auto& [name, body] : r.rigid_bodies) {
+    if (body.set.empty() && body.blocks.empty() && body.connected) {
+      check_ground(r, body);
+      grounds.insert(name);
+      continue;
+    }
     if (body.set.empty() && body.blocks.empty()) {
       r.warn(body.material, "a rigid body of no elements attached to no nodes (no bc of type "
                             "rigid) is ignored");
@@ -197,7 +221,7 @@ void map_rigid_bodies(Reader& r) {
     }
     io::RigidBodySpec spec;
     spec.key = fmt::format("rigid body '{}'", name);
-    spec.name = body_name(name);
+    spec.name = rigid_body_name(name);
     spec.set = body.set;
     spec.components.clear();
     const std::array<bool, 3> held = fixed_at_every_node(r, body.set);
@@ -213,6 +237,11 @@ void map_rigid_bodies(Reader& r) {
     }
     if (!spec.components.empty())
       r.spec.rigid_bodies.push_back(spec);
+  }
+  for (io::ConnectorSpec& c : r.connectors) {
+    c.body_a = grounds.contains(c.body_a) ? "ground" : rigid_body_name(c.body_a);
+    c.body_b = grounds.contains(c.body_b) ? "ground" : rigid_body_name(c.body_b);
+    r.spec.connectors.push_back(std::move(c));
   }
 }
 

@@ -88,6 +88,25 @@ void read_rotation(const Table& t, const CaseSpec& spec, RigidBodySpec& b) {
       b.rotation_drives[k] = read_component(*c, spec, kRotation);
 }
 
+/// [[rigid_body.follower]]: force (at point) and moment turning with a rotating body.
+void read_followers(const Table& t, const CaseSpec& spec, RigidBodySpec& b) {
+  for (const Table& f : t.tables("follower")) {
+    f.allow({"force", "point", "moment", "curve"});
+    if (!b.rotates)
+      fail(f.where(), f.path(),
+           "a follower load turns with its body: the body must rotate (rotation = \"free\")");
+    if (!f.find("force") && !f.find("moment"))
+      fail(f.where(), f.path(), "expected force = [<N>, <N>, <N>] and/or moment = [<N mm>, ...]");
+    RigidFollowerSpec load;
+    load.force = f.vec3("force", {.unit = "N"}, Vec3::Zero());
+    load.moment = f.vec3("moment", {.unit = "N mm"}, Vec3::Zero());
+    if (f.find("point"))
+      load.point = f.vec3("point", {.unit = "mm"}, std::nullopt);
+    load.curve = read_curve_reference(f, spec);
+    b.followers.push_back(load);
+  }
+}
+
 /// Rejects a rigid body on a node set that a boundary condition already constrains.
 void check_unconstrained(const Table& t, const RigidBodySpec& b, const CaseSpec& spec) {
   for (const FixedSpec& f : spec.fixed)
@@ -106,13 +125,20 @@ void check_unconstrained(const Table& t, const RigidBodySpec& b, const CaseSpec&
 
 } // namespace
 
+RigidComponentSpec read_rigid_component(const Table& t, const CaseSpec& spec, bool rotation) {
+  return read_component(t, spec, rotation ? kRotation : kTranslation);
+}
+
 void read_rigid_bodies(const Table& root, CaseSpec& spec) {
   for (const Table& t : root.tables("rigid_body")) {
     t.allow({"name", "set", "blocks", "components", "x", "y", "z", "rotation", "center", "rx", "ry",
-             "rz"});
+             "rz", "follower"});
     RigidBodySpec b;
     b.key = t.path();
     b.name = read_identifier(t, "name", false);
+    if (b.name == "ground")
+      fail(t.find("name"), fmt::format("{} = 'ground'", t.path("name")),
+           "the name 'ground' is reserved: it stands for space in a [[connector]]");
     for (const RigidBodySpec& other : spec.rigid_bodies)
       if (other.name == b.name)
         fail(t.find("name"), fmt::format("{} = '{}'", t.path("name"), b.name),
@@ -131,6 +157,7 @@ void read_rigid_bodies(const Table& root, CaseSpec& spec) {
       b.drives[k] = read_component(*c, spec, kTranslation);
     }
     read_rotation(t, spec, b);
+    read_followers(t, spec, b);
     check_unconstrained(t, b, spec);
     spec.rigid_bodies.push_back(std::move(b));
   }

@@ -680,8 +680,8 @@ void read_output(const Table& root, CaseSpec& spec) {
 void read_sections(const toml::table& document, CaseSpec& spec) {
   const Table root(document, "", &spec.warnings);
   root.allow({"title", "mesh", "materials", "curves", "boundary", "loads", "contact", "rigid_body",
-              "analysis", "electrochemistry", "time", "step", "solver", "explicit", "dynamic",
-              "output"});
+              "connector", "analysis", "electrochemistry", "time", "step", "solver", "explicit",
+              "dynamic", "output"});
   spec.title = root.get<std::string>("title").value_or("");
   read_analysis_type(root, spec); // the other sections depend on it
   check_analysis_sections(root, spec);
@@ -692,6 +692,7 @@ void read_sections(const toml::table& document, CaseSpec& spec) {
   read_loads(root, spec);
   read_contacts(root, spec);
   read_rigid_bodies(root, spec);
+  read_connectors(root, spec);
   read_analysis(root, spec);
   read_electrochemistry(root, spec);
   read_solver(root, spec);

@@ -191,6 +191,15 @@ struct RigidComponentSpec {
   std::string curve; ///< empty: constant 1
 };
 
+/// [[rigid_body.follower]]: a force at a point of a rotating body and a moment, given in the
+/// reference configuration and turning with the body.
+struct RigidFollowerSpec {
+  Vec3 force = Vec3::Zero();  ///< [N]
+  std::optional<Vec3> point;  ///< where the force acts [mm]; none: the body's center
+  Vec3 moment = Vec3::Zero(); ///< [N mm]
+  std::string curve;          ///< empty: constant 1
+};
+
 /// [[rigid_body]]: the nodes of `set` move with one rigid translation (rotation fixed), the
 /// unknown of the body, e.g. a bone bonded to cartilage. Only the listed `components` are tied
 /// (default all; the others stay per node, e.g. for plane strain); each is free, driven by a
@@ -208,6 +217,42 @@ struct RigidBodySpec {
   /// Cell blocks that move with the body (rigid cells: no material, no unknowns of their own);
   /// a body with blocks rotates. Their nodes, and those of `set` (may then be empty), follow it.
   std::vector<std::string> blocks;
+  std::vector<RigidFollowerSpec> followers; ///< of a rotating body
+};
+
+/// The kind of a [[connector]].
+enum class ConnectorKind {
+  Spherical,   ///< the origins coincide
+  Revolute,    ///< and the axes: one rotation about the axis is free
+  Prismatic,   ///< one translation along the axis is free
+  Cylindrical, ///< the rotation about the axis and the translation along it are free
+  Planar,      ///< the plane normal to the axis slides and turns in itself
+  Lock,        ///< the bodies move as one
+  Spring,      ///< a linear spring between two points
+  Cable,       ///< a spring in tension only (a ligament bundle)
+  Damper,      ///< a force proportional to the relative velocity of two points
+  Contractile  ///< a given force pulling two points together
+};
+
+/// [[connector]]: a joint or a link between two rigid bodies (or a body and "ground").
+struct ConnectorSpec {
+  std::string key; ///< "connector[1]" (for messages)
+  std::string name;
+  ConnectorKind kind = ConnectorKind::Spherical;
+  std::string body_a, body_b; ///< names of rotating [[rigid_body]]s, or "ground"
+  // joints
+  Vec3 origin = Vec3::Zero();
+  Vec3 axis = Vec3::UnitZ();
+  std::optional<Vec3> transverse;
+  RigidComponentSpec rotation;    ///< about the axis: rotation [rad] or moment [N mm]
+  RigidComponentSpec translation; ///< along the axis: displacement [mm] or force [N]
+  Real torsion_stiffness = 0.0;   ///< [N mm/rad]
+  // links
+  Vec3 point_a = Vec3::Zero(), point_b = Vec3::Zero();
+  Real stiffness = 0.0;            ///< [N/mm] (spring, cable) or [N s/mm] (damper)
+  std::optional<Real> free_length; ///< [mm]; none: the reference distance
+  Real force = 0.0;                ///< [N] (contractile)
+  std::string curve;               ///< of the contractile force
 };
 
 /// [[loads.traction]]: dead traction per reference area on a surface [MPa].
@@ -418,6 +463,7 @@ struct CaseSpec {
   std::vector<BathSpec> baths;
   std::vector<ContactSpec> contacts;
   std::vector<RigidBodySpec> rigid_bodies;
+  std::vector<ConnectorSpec> connectors;
   AnalysisSpec analysis;
   ElectrochemistrySpec electrochemistry;
   TimeSpec time;

@@ -216,6 +216,52 @@ void write_rigid_bodies(const CaseSpec& spec, TomlText& t) {
     constexpr std::string_view kRotationKeys[] = {"rx", "ry", "rz"};
     for (int k = 0; k < 3; ++k)
       write_rigid_component(t, kRotationKeys[k], b.rotation_drives[k], "rotation", "moment");
+    for (const RigidFollowerSpec& f : b.followers) {
+      t.header("[[rigid_body.follower]]");
+      t.vector("force", f.force);
+      if (f.point)
+        t.vector("point", *f.point);
+      t.vector("moment", f.moment);
+      t.optional_string("curve", f.curve);
+    }
+  }
+}
+
+/// [[connector]]: the keys of its kind (case_reader_connectors.cpp).
+void write_connectors(const CaseSpec& spec, TomlText& t) {
+  static const char* const kTypes[] = {"spherical", "revolute",   "prismatic", "cylindrical",
+                                       "planar",    "lock",       "spring",    "cable",
+                                       "damper",    "contractile"};
+  for (const ConnectorSpec& c : spec.connectors) {
+    t.header("[[connector]]");
+    t.string("type", kTypes[static_cast<int>(c.kind)]);
+    t.string("name", c.name);
+    t.string("body_a", c.body_a);
+    t.string("body_b", c.body_b);
+    if (c.kind <= ConnectorKind::Lock) {
+      t.vector("origin", c.origin);
+      t.vector("axis", c.axis);
+      if (c.transverse)
+        t.vector("transverse", *c.transverse);
+      write_rigid_component(t, "rotation", c.rotation, "rotation", "moment");
+      write_rigid_component(t, "translation", c.translation, "displacement", "force");
+      if (c.torsion_stiffness > 0.0)
+        t.number("torsion_stiffness", c.torsion_stiffness);
+      continue;
+    }
+    t.vector("point_a", c.point_a);
+    t.vector("point_b", c.point_b);
+    if (c.kind == ConnectorKind::Spring || c.kind == ConnectorKind::Cable) {
+      t.number("stiffness", c.stiffness);
+      if (c.free_length)
+        t.number("free_length", *c.free_length);
+    }
+    if (c.kind == ConnectorKind::Damper)
+      t.number("damping", c.stiffness);
+    if (c.kind == ConnectorKind::Contractile) {
+      t.number("force", c.force);
+      t.optional_string("curve", c.curve);
+    }
   }
 }
 
@@ -370,6 +416,7 @@ std::string case_toml(const CaseSpec& spec) {
   write_boundary(spec, t);
   write_contacts(spec, t);
   write_rigid_bodies(spec, t);
+  write_connectors(spec, t);
   write_analysis(spec, t);
   write_dynamic(spec, t);
   write_electrochemistry(spec, t);

@@ -320,6 +320,11 @@ void read_loads(const Table& root, CaseSpec& spec);
 void read_contacts(const Table& root, CaseSpec& spec);
 /// [[rigid_body]] (case_reader_rigid.cpp); after [[boundary.*]] (conflicts are checked).
 void read_rigid_bodies(const Table& root, CaseSpec& spec);
+/// A driven component of a rigid body or joint: { displacement | force } or, for a rotation,
+/// { rotation | moment }, with an optional curve.
+RigidComponentSpec read_rigid_component(const Table& t, const CaseSpec& spec, bool rotation);
+/// [[connector]] (case_reader_connectors.cpp); after [[rigid_body]].
+void read_connectors(const Table& root, CaseSpec& spec);
 /// [analysis] (case_reader_physics.cpp).
 void read_analysis(const Table& root, CaseSpec& spec);
 /// [electrochemistry] (case_reader_physics.cpp).

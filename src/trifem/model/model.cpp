@@ -212,8 +212,12 @@ std::vector<solver::FieldScale> field_scales(const Model& model) {
        {std::pair{f.u, L}, {f.w, flux}, {f.j_plus, flux}, {f.j_minus, flux}, {f.p, M}, {f.eta, M}})
     if (id.valid())
       s[id.index] = {model.dofs.field(id).name, energy / size, size};
-  // rotating rigid bodies: their center moves like the tissue, their rotation is of order 1 rad
-  for (auto [id, size] : {std::pair{model.rigid_translation, L}, {model.rigid_rotation, 1.0}})
+  // rotating rigid bodies: their center moves like the tissue, their rotation is of order 1 rad;
+  // the multipliers of the connectors: forces and moments
+  for (auto [id, size] : {std::pair{model.rigid_translation, L},
+                          {model.rigid_rotation, 1.0},
+                          {model.joint_forces, M * L * L},
+                          {model.joint_moments, M * L * L * L}})
     if (id.valid())
       s[id.index] = {model.dofs.field(id).name, energy / size, size};
   return s;
@@ -293,11 +297,11 @@ std::unique_ptr<Model> build_model(const io::CaseSpec& spec) {
   }
   auto bcs = boundary_conditions(spec, *model);
   RigidBodyParts rigid = rigid_bodies(spec, *model, bcs);
+  for (auto& t : rigid.loads) // before unused_dofs: connectors use their multipliers
+    terms.push_back(std::move(t));
   bcs.push_back(unused_dofs(*model, terms, bcs));
   dofs::NodalFrames frames = impermeable_surfaces(spec, *model, bcs);
   check_frames_of_rotating_bodies(spec, *model, frames);
-  for (auto& t : rigid.loads)
-    terms.push_back(std::move(t));
   model->case_conditions = bcs;
   for (auto& t : step_terms(spec, *model)) {
     model->loads.push_back(t.get());

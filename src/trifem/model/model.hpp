@@ -10,6 +10,7 @@
 #include "trifem/mesh/mesh.hpp"
 #include "trifem/physics/mixture_term.hpp"
 #include "trifem/physics/nodal_force_term.hpp"
+#include "trifem/physics/rigid_connector_term.hpp"
 #include "trifem/physics/solid_term.hpp"
 
 #include <memory>
@@ -108,6 +109,9 @@ struct Model {
   std::vector<RigidBody> rigid_bodies;
   /// The translation and rotation of the rotating rigid bodies (invalid: none).
   dofs::FieldId rigid_translation, rigid_rotation;
+  /// The multipliers of the rigid connectors' constraints: forces [N] and moments [N mm].
+  dofs::FieldId joint_forces, joint_moments;
+  const physics::RigidConnectorTerm* connectors = nullptr; ///< owned by problem; null: none
   std::vector<ModelStep> steps; ///< empty: one step with the case's conditions only
   std::vector<dofs::DirichletCondition> case_conditions; ///< the conditions of every step
   int active_step = -1;                                  ///< index into steps (-1: none)

@@ -3,6 +3,7 @@
 
 #include "trifem/fe/hex8.hpp"
 #include "trifem/model/conditions.hpp"
+#include "trifem/model/rigid_connectors.hpp"
 #include "trifem/physics/rigid_moment_term.hpp"
 
 #include <set>
@@ -24,6 +25,7 @@ struct Collected {
   std::set<Index> used;        ///< by a body
   std::vector<physics::NodalForce> forces;
   std::vector<physics::RigidMoment> moments;
+  std::vector<physics::RigidFollowerLoad> followers;
   std::vector<dofs::RigidBodyDofs> rotating;
 };
 
@@ -158,6 +160,9 @@ RigidBody rotating_body(const io::CaseSpec& spec, const io::RigidBodySpec& b, in
     if (turn.drive == io::RigidDrive::Force)
       c.moments.push_back({r.rotation, turn.value * Vec3::Unit(k), make_curve(spec, turn.curve)});
   }
+  for (const io::RigidFollowerSpec& f : b.followers)
+    c.followers.push_back({r.translation, r.rotation, f.point.value_or(r.centre) - r.centre,
+                           f.force, f.moment, make_curve(spec, f.curve)});
   c.rotating.push_back(std::move(r));
   return body;
 }
@@ -191,6 +196,10 @@ RigidBodyParts rigid_bodies(const io::CaseSpec& spec, Model& model,
     parts.loads.push_back(std::make_unique<physics::NodalForceTerm>(std::move(c.forces)));
   if (!c.moments.empty())
     parts.loads.push_back(std::make_unique<physics::RigidMomentTerm>(std::move(c.moments)));
+  if (!c.followers.empty())
+    parts.loads.push_back(std::make_unique<physics::RigidFollowerTerm>(std::move(c.followers)));
+  if (auto connectors = rigid_connectors(spec, model, c.rotating, conditions))
+    parts.loads.push_back(std::move(connectors));
   parts.map = dofs::RigidMap(std::move(c.rotating), model.dofs.num_dofs());
   return parts;
 }

@@ -9,7 +9,7 @@ namespace trifem::model {
 
 /// What the rigid bodies add to the problem.
 struct RigidBodyParts {
-  std::vector<std::unique_ptr<physics::Term>> loads; ///< their forces and moments
+  std::vector<std::unique_ptr<physics::Term>> loads; ///< their forces, moments and connectors
   dofs::RigidMap map;                                ///< the rotating bodies
 };
 

@@ -3,6 +3,7 @@
 
 #include "trifem/core/error.hpp"
 
+#include <algorithm>
 #include <array>
 #include <numeric>
 
@@ -35,6 +36,47 @@ std::string body_name(const mesh::Mesh& mesh, const std::vector<Index>& componen
   return "of the mesh";
 }
 
+/// Throws if a rotating rigid body has an unknown that nothing holds: no prescribed value, and
+/// no deformable cell, contact surface or connector on the body.
+void check_rigid_bodies(const io::CaseSpec& spec, const Model& model,
+                        const std::vector<char>& in_contact) {
+  if (model.rigid_bodies.empty() || !model.problem)
+    return;
+  const mesh::Mesh& mesh = model.mesh;
+  std::vector<char> deformable(mesh.num_nodes(), 0);
+  for (Index c = 0; c < mesh.num_cells(); ++c)
+    if (!model.materials[c].rigid())
+      for (Index n : mesh.cell(c))
+        deformable[n] = 1;
+  const Index u_offset = model.dofs.field(model.fields.u).offset;
+  for (std::size_t i = 0; i < model.rigid_bodies.size(); ++i) {
+    const RigidBody& body = model.rigid_bodies[i];
+    if (body.rotating < 0)
+      continue;
+    const io::RigidBodySpec& b = spec.rigid_bodies[i];
+    const dofs::RigidBodyDofs& r = model.problem->rigid_map().bodies()[body.rotating];
+    bool touched = std::any_of(spec.connectors.begin(), spec.connectors.end(), [&](const auto& c) {
+      return c.body_a == b.name || c.body_b == b.name;
+    });
+    for (const auto& follower : r.followers) {
+      const Index n = (follower[0] - u_offset) / 3;
+      touched = touched || deformable[n] || in_contact[n];
+    }
+    if (touched)
+      continue;
+    for (int k = 0; k < 6; ++k) {
+      const Index d = k < 3 ? r.translation[k] : r.rotation[k - 3];
+      const std::string key = fmt::format("{}{}", k < 3 ? "" : "r", "xyz"[k % 3]);
+      TRIFEM_CHECK(model.dofs.is_constrained(d),
+                   "{}: the rigid body '{}' is not supported in {}: no prescribed value, and no "
+                   "deformable cell, contact pair or [[connector]] on it, so a quasi-static "
+                   "analysis cannot determine its motion (singular stiffness). Prescribe it "
+                   "({} = {{ {} = 0.0 }}) or join the body to another with a [[connector]]",
+                   b.key, b.name, key, key, k < 3 ? "displacement" : "rotation");
+    }
+  }
+}
+
 } // namespace
 
 void check_support(const io::CaseSpec& spec, const Model& model) {
@@ -42,10 +84,14 @@ void check_support(const io::CaseSpec& spec, const Model& model) {
   const std::vector<Index> component = node_components(mesh);
   // held[c][k]: translation k of component c is held by something
   std::vector<std::array<bool, 3>> held(mesh.num_nodes(), {false, false, false});
+  std::vector<char> in_contact(mesh.num_nodes(), 0);
   for (const auto& pair : spec.contacts)
     for (const std::string* name : {&pair.master, &pair.slave})
-      for (Index n : mesh::surface_nodes(mesh.surface(*name)))
+      for (Index n : mesh::surface_nodes(mesh.surface(*name))) {
         held[component[n]] = {true, true, true};
+        in_contact[n] = 1;
+      }
+  check_rigid_bodies(spec, model, in_contact);
   for (Index n = 0; n < mesh.num_nodes(); ++n)
     for (int k = 0; k < 3; ++k) {
       const Index d = model.dofs.dof(model.fields.u, n, k);

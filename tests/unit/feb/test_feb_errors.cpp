@@ -337,3 +337,41 @@ TEST(FebGlobals, AnAmbientPressureOfZeroIsAcceptedAndOtherValuesRefused) {
   expect_contains(feb_error(with_p("101325")),
                   {"Globals/Constants/P: ", "an ambient pressure P other than 0"});
 }
+
+TEST(FebRigid, ConnectorsTrifemCannotBuildAreRefusedByName) {
+  // the plate attached to the bottom nodes; a second body "lid" of no elements
+  const auto connector = [](const std::string& body) {
+    std::string text = with_rigid_body("<Rigid>\n" + body + "\n</Rigid>");
+    const std::string plate = R"(<material id="2" name="plate" type="rigid body">)";
+    text.replace(text.find(plate), 0,
+                 R"(<material id="3" name="lid" type="rigid body"><density>1</density></material>
+    )");
+    return text;
+  };
+  expect_contains(
+      feb_error(connector(
+          R"(<rigid_connector type="rigid angular damper"><body_a>plate</body_a><body_b>lid</body_b></rigid_connector>)")),
+      {"rigid_connector[@type='rigid angular damper']/@type: ", "is not supported",
+       "rigid revolute joint"});
+  expect_contains(
+      feb_error(connector(
+          R"(<rigid_connector type="rigid spherical joint"><body_a>plate</body_a><body_b>lid</body_b><joint_origin>0,0,0</joint_origin><prescribed_rotation>1</prescribed_rotation></rigid_connector>)")),
+      {"/prescribed_rotation: ", "spherical joint is not supported"});
+  expect_contains(
+      feb_error(connector(
+          R"(<rigid_connector type="rigid revolute joint"><body_a>plate</body_a><body_b>lid</body_b><joint_origin>0,0,0</joint_origin><force_damping>2</force_damping></rigid_connector>)")),
+      {"/force_damping: ", "no damping"});
+  expect_contains(
+      feb_error(connector(
+          R"(<rigid_connector type="rigid spring"><body_a>plate</body_a><body_b>plate</body_b><k>1</k><insertion_a>0,0,0</insertion_a><insertion_b>0,0,1</insertion_b></rigid_connector>)")),
+      {"/body_b: ", "joins a body to itself"});
+  expect_contains(
+      feb_error(connector(
+          R"(<rigid_connector type="rigid spring"><body_a>plate</body_a><body_b>lid</body_b><k>1</k><insertion_a>0,0,0</insertion_a><insertion_b>0,0,1</insertion_b><stiffness>2</stiffness></rigid_connector>)")),
+      {"/stiffness: ", "unknown parameter 'stiffness' of a rigid spring"});
+  // "lid" has no elements and no nodes: the ground, if held
+  expect_contains(
+      feb_error(connector(
+          R"(<rigid_connector type="rigid spring"><body_a>plate</body_a><body_b>lid</body_b><k>1</k><insertion_a>0,0,0</insertion_a><insertion_b>0,0,1</insertion_b></rigid_connector>)")),
+      {"material[@type='rigid body'][@name='lid']", "as the ground only", "rigid_fixed"});
+}

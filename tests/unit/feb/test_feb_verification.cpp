@@ -464,3 +464,44 @@ TEST(FebRigid, ABodyOfElementsTurnsRigidlyAboutItsCenterOfMassAndTheBaseHoldsIts
   EXPECT_GT(moment.z(), 0.01);
   EXPECT_NEAR(base, -moment.z(), 1e-10 * moment.z());
 }
+
+TEST(FebRigid, AHingeToAGroundBodyTurnsTheBodyAsItsPrescribedRotationDid) {
+  // the same lid turned by a rigid revolute joint about z through its center of mass, to a
+  // "Ground" body of no elements held in all six components; the joint carries the moment
+  std::string text = kRigidLid;
+  const auto replace = [&](const std::string& from, const std::string& to) {
+    text.replace(text.find(from), from.size(), to);
+  };
+  replace(R"(<material id="2" name="bone" type="rigid body"><density>1</density></material>)",
+          R"(<material id="2" name="bone" type="rigid body"><density>1</density></material>
+    <material id="3" name="Ground" type="rigid body"><density>1</density></material>)");
+  const std::size_t from = text.find("<Rigid>"), to = text.find("</Rigid>");
+  text.replace(from, to - from, R"(<Rigid>
+    <rigid_bc type="rigid_fixed"><rb>Ground</rb><Rx_dof>1</Rx_dof><Ry_dof>1</Ry_dof><Rz_dof>1</Rz_dof><Ru_dof>1</Ru_dof><Rv_dof>1</Rv_dof><Rw_dof>1</Rw_dof></rigid_bc>
+    <rigid_connector name="hinge" type="rigid revolute joint">
+      <body_a>Ground</body_a><body_b>bone</body_b><laugon>1</laugon><tolerance>0</tolerance>
+      <gaptol>0.0001</gaptol><angtol>0.0001</angtol><force_penalty>1000</force_penalty>
+      <moment_penalty>1000</moment_penalty><force_damping>0</force_damping><moment_damping>0</moment_damping>
+      <joint_origin>0.5,0.5,1.25</joint_origin><rotation_axis>0,0,1</rotation_axis>
+      <transverse_axis>1,0,0</transverse_axis><minaug>0</minaug><maxaug>10</maxaug>
+      <prescribed_rotation>1</prescribed_rotation><rotation lc="1">0.3</rotation><moment>0</moment>
+      <auto_penalty>0</auto_penalty>
+    </rigid_connector>
+  )");
+  const io::CaseSpec spec = feb::parse_feb(text, "hinge.feb");
+  ASSERT_EQ(spec.connectors.size(), 1u);
+  EXPECT_EQ(spec.connectors[0].body_a, "ground"); // a body of nothing, held: space
+  EXPECT_EQ(spec.connectors[0].rotation.drive, io::RigidDrive::Displacement);
+  FebRun run = test::run_feb_case(spec);
+  ASSERT_TRUE(run.report.success) << run.report.failure;
+  const model::Model& m = *run.model;
+  const FebRun reference = test::run_feb_case(feb::parse_feb(kRigidLid, "rigid_lid.feb"));
+  ASSERT_TRUE(reference.report.success) << reference.report.failure;
+  const Vector &x = m.problem->state(), &x_ref = reference.model->problem->state();
+  for (Index n = 0; n < m.mesh.num_nodes(); ++n)
+    for (int k = 0; k < 3; ++k)
+      EXPECT_NEAR(x[m.dofs.dof(m.fields.u, n, k)], x_ref[m.dofs.dof(m.fields.u, n, k)], 1e-12) << n;
+  const Vec3 moment = model::rigid_body_moment(m, m.rigid_bodies[0]);
+  EXPECT_GT(moment.z(), 0.01);
+  EXPECT_LT((m.connectors->committed_wrenches()[0].moment - moment).norm(), 1e-10 * moment.z());
+}

@@ -1,0 +1,172 @@
+// SPDX-License-Identifier: MIT
+// Contact with a rigid surface: a rigid sphere or cylinder (a body of rigid cells whose bottom
+// face lies on it) pressed into an elastic block on symmetry planes. Hertz, E* = E/(1 − ν²):
+//   sphere (a quarter):          a³ = 3 P R / (4 E*),  p = p0 √(1 − r²/a²),  <r²> = 2a²/5
+//   cylinder (half, plane strain): a² = 4 P' R / (π E*) (P' per length),      <x²> = a²/4
+// with <r²> = ∫ p r² dA / ∫ p dA. The second moment is measured from the slave nodes' contact
+// forces: an integral of the pressure, insensitive to where the discrete contact edge falls,
+// and (unlike the approach δ) to the block's finite size.
+#include "case_runner.hpp"
+#include "trifem/mesh/box.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+using namespace trifem;
+
+namespace {
+
+constexpr Real kR = 20.0;     // sphere radius [mm]
+constexpr Real kDepth = 0.05; // indentation [mm]: a ≈ √(R δ) = 1 mm, a/R = 0.05
+constexpr Real kE = 1.0, kNu = 0.3;
+constexpr Real kBlock = 20.0; // the quarter block's side and depth [mm]: 20 a
+constexpr Real kCap = 2.0;    // the quarter cap's side [mm]
+constexpr Real kWidth = 0.2;  // the thickness of the plane-strain model [mm]
+
+enum class Indenter { Sphere, Cylinder };
+
+/// The cap: a box of `n` x `n` x 1 cells over [0, kCap]² (`n` x 1 x 1 over [0, kCap] x
+/// [0, kWidth] for the cylinder) whose nodes are lifted by the indenter's height above its
+/// lowest point, R − √(R² − r²): its face "cap.zmin" lies on the indenter, which touches the
+/// block's top at the origin (r² = x² + y², or x² for the cylinder).
+mesh::Mesh rigid_cap(Indenter indenter, int n) {
+  const bool sphere = indenter == Indenter::Sphere;
+  mesh::BoxSpec box;
+  box.name = "cap";
+  box.size = Vec3(kCap, sphere ? kCap : kWidth, 0.5);
+  box.divisions = {n, sphere ? n : 1, 1};
+  const mesh::Mesh flat = mesh::make_box(box);
+  mesh::Mesh cap;
+  for (const Vec3& X : flat.nodes()) {
+    const Real r2 = X.x() * X.x() + (sphere ? X.y() * X.y() : 0.0);
+    cap.add_node(X + Vec3(0.0, 0.0, kR - std::sqrt(kR * kR - r2)));
+  }
+  for (const auto& cell : flat.cells())
+    cap.add_cell(cell);
+  for (const auto& [name, surface] : flat.surfaces())
+    cap.add_surface(name, surface);
+  for (const auto& [name, nodes] : flat.node_sets())
+    if (!cap.has_node_set(name)) // (a surface's nodes are a node set already)
+      cap.add_node_set(name, nodes);
+  for (const auto& [name, cells] : flat.cell_blocks())
+    cap.add_cell_block(name, cells);
+  return cap;
+}
+
+/// The case: the block (n cells per edge, graded towards the contact; one cell thick in y,
+/// held in y, for the cylinder) and the cap (`cap_cells` per edge) pushed down by kDepth.
+io::CaseSpec hertz_case(Indenter indenter, int n, int cap_cells) {
+  const bool sphere = indenter == Indenter::Sphere;
+  const Real grading = 28.0; // the outermost cell over the innermost
+  io::CaseSpec spec =
+      io::parse_case(fmt::format(R"(
+[[mesh.box]]
+name = "half"
+origin = [0.0, 0.0, {}]
+size = [{}, {}, {}]
+divisions = [{}, {}, {}]
+grading = [{}, {}, {}]
+material = "soft"
+[materials.soft]
+type = "neo-hookean"
+E = {}
+nu = {}
+[curves.ramp]
+points = [[0.0, 0.0], [1.0, 1.0]]
+[[boundary.fixed]]
+set = "half.xmin"
+components = ["x"]
+[[boundary.fixed]]
+set = "half.ymin"
+components = ["y"]
+[[boundary.fixed]]
+set = "{}"
+components = ["y"]
+[[boundary.fixed]]
+set = "half.zmin"
+[[rigid_body]]
+name = "ball"
+blocks = ["cap"]
+center = [0.0, 0.0, {}]
+x = {{ displacement = 0.0 }}
+y = {{ displacement = 0.0 }}
+z = {{ displacement = {}, curve = "ramp" }}
+rx = {{ rotation = 0.0 }}
+ry = {{ rotation = 0.0 }}
+rz = {{ rotation = 0.0 }}
+[[contact]]
+master = "cap.zmin"
+slave = "half.zmax"
+integration = "slave-nodes"
+[time]
+end_time = 1.0
+dt = 0.25
+)",
+                                 -kBlock, kBlock, sphere ? kBlock : kWidth, kBlock, n,
+                                 sphere ? n : 1, n, grading, sphere ? grading : 1.0, 1.0 / grading,
+                                 kE, kNu, sphere ? "half.ymin" : "half.ymax", kR, -kDepth),
+                     "hertz.toml");
+  io::InlineMeshSpec cap;
+  cap.mesh = rigid_cap(indenter, cap_cells);
+  spec.meshes.push_back(std::move(cap));
+  return spec;
+}
+
+struct HertzMeasure {
+  Real force = 0.0;         ///< P of the whole sphere [N], P' of the cylinder [N/mm]
+  Real second_moment = 0.0; ///< <r²> (<x²>) of the contact pressure [mm²]
+};
+
+HertzMeasure measure(const model::Model& m, Indenter indenter) {
+  const contact::ContactTerm& contact = *m.contacts.at(0);
+  Real force = 0.0, moment = 0.0;
+  for (const contact::SlaveNodeState& s : contact.slave_states(m.problem->state())) {
+    const Real fz = s.multiplier[0] * s.area_vector.z(); // λ a_k: ≥ 0 on the block's top
+    const Real r2 = s.position.x() * s.position.x() +
+                    (indenter == Indenter::Sphere ? s.position.y() * s.position.y() : 0.0);
+    force += fz;
+    moment += fz * r2;
+  }
+  return {indenter == Indenter::Sphere ? 4.0 * std::abs(force) : 2.0 * std::abs(force) / kWidth,
+          moment / force};
+}
+
+/// The contact radius (half-width) of Hertz against the measured one, on two meshes: the
+/// relative errors.
+std::vector<Real> contact_radius_errors(Indenter indenter) {
+  const bool sphere = indenter == Indenter::Sphere;
+  const Real E_star = kE / (1.0 - kNu * kNu);
+  std::vector<Real> errors;
+  for (const auto& [n, cap] : {std::pair{12, 10}, {18, 16}}) {
+    const test::CaseRun run = test::run_case_spec(hertz_case(indenter, n, cap));
+    EXPECT_TRUE(run.report.success) << run.report.failure;
+    if (!run.report.success)
+      return {1.0};
+    const HertzMeasure h = measure(*run.model, indenter);
+    EXPECT_GT(h.force, 0.0);
+    const Real a_hertz = sphere ? std::cbrt(3.0 * h.force * kR / (4.0 * E_star))
+                                : std::sqrt(4.0 * h.force * kR / (std::numbers::pi * E_star));
+    const Real a_fe = sphere ? std::sqrt(2.5 * h.second_moment) : 2.0 * std::sqrt(h.second_moment);
+    errors.push_back(std::abs(a_fe / a_hertz - 1.0));
+    std::cout << "  " << (sphere ? "sphere" : "cylinder") << ", cells " << n << ": P = " << h.force
+              << (sphere ? " N" : " N/mm") << ", a = " << a_fe << " mm, Hertz " << a_hertz
+              << " mm, error " << 100.0 * errors.back() << " %\n";
+  }
+  return errors;
+}
+
+} // namespace
+
+TEST(Hertz, ARigidSpherePressedIntoABlockHasHertzsContactRadius) {
+  const std::vector<Real> errors = contact_radius_errors(Indenter::Sphere);
+  EXPECT_LT(errors.back(), 0.03);
+  EXPECT_LT(errors.back(), errors.front()); // converging under refinement
+}
+
+TEST(Hertz, ARigidCylinderPressedIntoABlockHasHertzsContactHalfWidth) {
+  const std::vector<Real> errors = contact_radius_errors(Indenter::Cylinder);
+  EXPECT_LT(errors.back(), 0.03);
+  EXPECT_LT(errors.back(), errors.front());
+}

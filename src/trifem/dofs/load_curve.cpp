@@ -7,6 +7,33 @@
 #include <cmath>
 
 namespace trifem::dofs {
+namespace {
+
+/// The parabola through (a, b, c) at t.
+Real parabola(Real t, const std::pair<Real, Real>& a, const std::pair<Real, Real>& b,
+              const std::pair<Real, Real>& c) {
+  const auto [ta, fa] = a;
+  const auto [tb, fb] = b;
+  const auto [tc, fc] = c;
+  return fa * (t - tb) * (t - tc) / ((ta - tb) * (ta - tc)) +
+         fb * (t - ta) * (t - tc) / ((tb - ta) * (tb - tc)) +
+         fc * (t - ta) * (t - tb) / ((tc - ta) * (tc - tb));
+}
+
+/// FEBio's SMOOTH between points[i] and points[i + 1] (at least three points).
+Real quadratic_blend(Real t, const std::vector<std::pair<Real, Real>>& p, std::size_t i) {
+  const std::size_t last = p.size() - 1;
+  if (i == 0)
+    return parabola(t, p[0], p[1], p[2]);
+  if (i + 1 == last)
+    return parabola(t, p[last - 2], p[last - 1], p[last]);
+  const Real w = (t - p[i].first) / (p[i + 1].first - p[i].first);
+  const Real left = parabola(t, p[i - 1], p[i], p[i + 1]);
+  const Real right = parabola(t, p[i], p[i + 1], p[i + 2]);
+  return left + w * (right - left);
+}
+
+} // namespace
 
 LoadCurve::LoadCurve(std::vector<std::pair<Real, Real>> points, Interpolation interpolation,
                      const std::string& context)
@@ -43,6 +70,10 @@ Real LoadCurve::operator()(Real t) const {
     return lo->second + s * (hi->second - lo->second);
   case Interpolation::Smooth:
     break;
+  case Interpolation::QuadraticBlend:
+    if (points_.size() == 2)
+      return lo->second + s * (hi->second - lo->second);
+    return quadratic_blend(t, points_, static_cast<std::size_t>(lo - points_.begin()));
   }
   const Real h = s * s * (3.0 - 2.0 * s);
   return lo->second + h * (hi->second - lo->second);

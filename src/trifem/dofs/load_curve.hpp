@@ -15,7 +15,12 @@ enum class Interpolation {
   Linear, ///< piecewise linear
   Step,   ///< value of the last point at or before t
   Smooth, ///< piecewise cubic Hermite with zero slope at the points (C1, no overshoot)
-  Next    ///< value of the first point at or after t (FEBio's STEP)
+  Next,   ///< value of the first point at or after t (FEBio's STEP)
+  /// FEBio's SMOOTH: between points i and i+1 the linear blend of the parabolas through
+  /// (i−1, i, i+1) and (i, i+1, i+2); the one parabola of the first or last three points in
+  /// the first and last intervals; linear through two points (C1, passes through the points,
+  /// exact for a quadratic)
+  QuadraticBlend
 };
 
 /// A piecewise function of time through (t_i, v_i), t strictly increasing; constant outside.

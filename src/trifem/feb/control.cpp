@@ -34,18 +34,20 @@ std::vector<std::pair<Real, Real>> curve_points(const Reader& r, pugi::xml_node 
 }
 
 /// The interpolation of a load curve; FEBio's SMOOTH is a blend of quadratics through
-/// neighbouring points, the same as linear only for two points (else refused), and its STEP
+/// neighbouring points (trifem's "quadratic-blend"; linear through two points), and its STEP
 /// takes the value of the next point: trifem's "next".
 dofs::Interpolation interpolation(const Reader& r, pugi::xml_node node, const std::string& kind,
                                   std::size_t points) {
   const std::string k = lower(kind);
   if (k == "linear" || (k == "smooth" && points == 2))
     return dofs::Interpolation::Linear;
+  if (k == "smooth")
+    return dofs::Interpolation::QuadraticBlend;
   if (k == "step")
     return dofs::Interpolation::Next;
   r.doc.fail(node, fmt::format("interpolation '{}' is not supported: trifem reproduces FEBio's "
-                               "LINEAR, STEP and SMOOTH through two points exactly; write the "
-                               "curve with LINEAR segments",
+                               "LINEAR, STEP and SMOOTH exactly; write the curve with LINEAR "
+                               "segments",
                                kind));
 }
 

@@ -82,6 +82,26 @@ void rigid_drive(Reader& r, pugi::xml_node node, io::RigidDrive drive, bool rota
   component = {drive, r.doc.number(value), r.curve_of(value)};
 }
 
+/// rigid_rotation_vector: the three components vx, vy, vz of the rotation vector prescribed
+/// (each value x curve; 0 if absent).
+void rigid_rotation_vector(Reader& r, pugi::xml_node node) {
+  RigidBodyInput& body = body_of(r, node);
+  for (pugi::xml_node c : elements(node)) {
+    const std::string_view name = c.name();
+    if (name != "rb" && name != "vx" && name != "vy" && name != "vz" && name != "relative")
+      r.doc.fail(c, fmt::format("unknown parameter '{}' of rigid_rotation_vector", name));
+    if (name == "relative" && r.doc.integer(c) != 0)
+      r.doc.fail(c, "a relative rigid rotation is not supported");
+  }
+  for (int k = 0; k < 3; ++k) {
+    const pugi::xml_node v = node.child(fmt::format("v{}", "xyz"[k]).c_str());
+    io::RigidComponentSpec& component = body.rotation_drives[k];
+    if (component.drive != io::RigidDrive::Free)
+      r.doc.fail(node, "a second motion or load on the same component of the body");
+    component = {io::RigidDrive::Displacement, v ? r.doc.number(v) : 0.0, v ? r.curve_of(v) : ""};
+  }
+}
+
 /// The components of the body's nodes that zero-displacement conditions fix at every node.
 std::array<bool, 3> fixed_at_every_node(const Reader& r, const std::string& set) {
   std::array<bool, 3> fixed{};
@@ -189,6 +209,8 @@ void read_rigid(Reader& r, pugi::xml_node section) {
       rigid_fixed(r, c);
     else if (kind == "rigid_bc" && (type == "rigid_displacement" || type == "rigid_rotation"))
       rigid_drive(r, c, io::RigidDrive::Displacement, type == "rigid_rotation");
+    else if (kind == "rigid_bc" && type == "rigid_rotation_vector")
+      rigid_rotation_vector(r, c);
     else if (kind == "rigid_load" && (type == "rigid_force" || type == "rigid_moment"))
       rigid_drive(r, c, io::RigidDrive::Force, type == "rigid_moment");
     else if (kind == "rigid_connector")
@@ -196,8 +218,9 @@ void read_rigid(Reader& r, pugi::xml_node section) {
     else
       r.doc.fail(c, "type",
                  fmt::format("<{} type=\"{}\"> is not supported (supported: rigid_bc of type "
-                             "rigid_fixed, rigid_displacement or rigid_rotation, rigid_load of "
-                             "type rigid_force or rigid_moment, rigid_connector)",
+                             "rigid_fixed, rigid_displacement, rigid_rotation or "
+                             "rigid_rotation_vector, rigid_load of type rigid_force or "
+                             "rigid_moment, rigid_connector)",
                              kind, type));
   }
 }

@@ -295,10 +295,12 @@ MaterialSpec read_material(const Table& t, const CaseSpec& spec) {
 
 CurveSpec read_curve(const Table& t) {
   t.allow({"interpolation", "points"});
-  static const Options<dofs::Interpolation> kinds = {{"linear", dofs::Interpolation::Linear},
-                                                     {"step", dofs::Interpolation::Step},
-                                                     {"smooth", dofs::Interpolation::Smooth},
-                                                     {"next", dofs::Interpolation::Next}};
+  static const Options<dofs::Interpolation> kinds = {
+      {"linear", dofs::Interpolation::Linear},
+      {"step", dofs::Interpolation::Step},
+      {"smooth", dofs::Interpolation::Smooth},
+      {"next", dofs::Interpolation::Next},
+      {"quadratic-blend", dofs::Interpolation::QuadraticBlend}};
   CurveSpec c;
   c.interpolation = t.choice("interpolation", kinds, std::optional(c.interpolation));
   c.points = t.required<std::vector<Point>>("points");
@@ -492,9 +494,7 @@ GmshMeshSpec read_gmsh(const Table& t, const CaseSpec& spec) {
   const auto volumes = t.table("materials");
   if (!volumes)
     t.missing("materials", "a table { <physical volume name> = \"<material>\", ... }");
-  if (volumes->raw().empty())
-    fail(t.find("materials"), t.path("materials"),
-         "expected at least one <physical volume name> = \"<material>\" entry");
+  // (empty: every volume is the cells of a rigid body, which have no material)
   for (const auto& [key, node] : volumes->raw()) {
     const std::string volume(key.str());
     const std::string material = volumes->name(volume);

@@ -33,6 +33,8 @@ std::string_view interpolation_name(dofs::Interpolation i) {
     return "smooth";
   case dofs::Interpolation::Next:
     return "next";
+  case dofs::Interpolation::QuadraticBlend:
+    return "quadratic-blend";
   }
   return "linear";
 }

@@ -118,6 +118,36 @@ TEST(LoadCurve, InterpolatesAndHoldsOutside) {
   EXPECT_EQ(lin.breakpoints(), (std::vector<Real>{0, 1, 3}));
 }
 
+TEST(LoadCurve, TheQuadraticBlendIsFebiosSmoothCurve) {
+  // (0, 0), (1, 1), (2, 0), (3, 1): the parabolas −t² + 2t through the first three points and
+  // (t − 2)² through the last three, blended linearly over [1, 2]
+  const dofs::LoadCurve c({{0.0, 0.0}, {1.0, 1.0}, {2.0, 0.0}, {3.0, 1.0}},
+                          dofs::Interpolation::QuadraticBlend);
+  const auto first = [](Real t) { return -t * t + 2.0 * t; };
+  const auto last = [](Real t) { return (t - 2.0) * (t - 2.0); };
+  for (const Real t : {0.0, 0.3, 0.9, 1.0})
+    EXPECT_NEAR(c(t), first(t), 1e-15) << t;
+  for (const Real t : {2.0, 2.4, 3.0})
+    EXPECT_NEAR(c(t), last(t), 1e-15) << t;
+  for (const Real t : {1.25, 1.5, 1.8}) {
+    const Real w = t - 1.0;
+    EXPECT_NEAR(c(t), (1.0 - w) * first(t) + w * last(t), 1e-15) << t;
+  }
+  EXPECT_DOUBLE_EQ(c(1.5), 0.5);
+  EXPECT_DOUBLE_EQ(c(5.0), 1.0); // constant outside
+  // samples of a quadratic are reproduced, uneven times included
+  const auto q = [](Real t) { return 0.5 * t * t - 1.5 * t + 2.0; };
+  std::vector<std::pair<Real, Real>> points;
+  for (const Real t : {0.0, 0.4, 1.5, 1.7, 3.0})
+    points.emplace_back(t, q(t));
+  const dofs::LoadCurve quadratic(points, dofs::Interpolation::QuadraticBlend);
+  for (Real t = 0.0; t <= 3.0; t += 0.05)
+    EXPECT_NEAR(quadratic(t), q(t), 1e-14) << t;
+  // through two points: linear
+  const dofs::LoadCurve two({{0.0, 1.0}, {2.0, 3.0}}, dofs::Interpolation::QuadraticBlend);
+  EXPECT_DOUBLE_EQ(two(0.5), 1.5);
+}
+
 TEST(LoadCurve, RejectsNonIncreasingTimes) {
   EXPECT_THROW(dofs::LoadCurve({{0, 0}, {0, 1}}, dofs::Interpolation::Linear), InputError);
   EXPECT_THROW(dofs::LoadCurve({}, dofs::Interpolation::Linear), InputError);

@@ -5,8 +5,11 @@
 #include "trifem/analysis/case_file.hpp"
 #include "trifem/analysis/run.hpp"
 #include "trifem/core/error.hpp"
+#include "trifem/feb/feb_reader.hpp"
 #include "trifem/io/case_writer.hpp"
+#include "trifem/linalg/linear_solver.hpp"
 #include "trifem/model/model.hpp"
+#include "trifem/solver/time_loop.hpp"
 
 #include <gtest/gtest.h>
 
@@ -289,3 +292,61 @@ TEST(FebConvertErrors, RefusesWhatTheWriterCannotExpress) {
 }
 
 } // namespace
+
+// A model of rigid bodies only, joined by connectors: the TOML case reads back with the same
+// connectors and runs (its mesh volumes have no material: the cells of rigid bodies).
+TEST(TomlConvertRigid, ConnectorsOfAnAllRigidModelReadBackAsWritten) {
+  const char* feb = R"(<?xml version="1.0"?>
+<febio_spec version="4.0">
+  <Module type="solid"/>
+  <Control><analysis>STATIC</analysis><time_steps>4</time_steps><step_size>0.25</step_size></Control>
+  <Material>
+    <material id="1" name="bone" type="rigid body"><density>1</density></material>
+    <material id="2" name="Ground" type="rigid body"><density>1</density></material>
+  </Material>
+  <Mesh>
+    <Nodes name="all">
+      <node id="1">0,0,0</node><node id="2">1,0,0</node><node id="3">1,1,0</node><node id="4">0,1,0</node>
+      <node id="5">0,0,1</node><node id="6">1,0,1</node><node id="7">1,1,1</node><node id="8">0,1,1</node>
+    </Nodes>
+    <Elements type="hex8" name="Bone"><elem id="1">1,2,3,4,5,6,7,8</elem></Elements>
+  </Mesh>
+  <MeshDomains><SolidDomain name="Bone" mat="bone"/></MeshDomains>
+  <Rigid>
+    <rigid_bc type="rigid_fixed"><rb>Ground</rb><Rx_dof>1</Rx_dof><Ry_dof>1</Ry_dof><Rz_dof>1</Rz_dof><Ru_dof>1</Ru_dof><Rv_dof>1</Rv_dof><Rw_dof>1</Rw_dof></rigid_bc>
+    <rigid_connector name="hinge" type="rigid revolute joint">
+      <body_a>Ground</body_a><body_b>bone</body_b><joint_origin>0,0,0</joint_origin>
+      <rotation_axis>0,0,1</rotation_axis><transverse_axis>1,0,0</transverse_axis>
+      <prescribed_rotation>1</prescribed_rotation><rotation lc="1">0.5</rotation>
+    </rigid_connector>
+  </Rigid>
+  <LoadData>
+    <load_controller id="1" type="loadcurve"><interpolate>LINEAR</interpolate>
+      <points><pt>0,0</pt><pt>1,1</pt></points></load_controller>
+  </LoadData>
+</febio_spec>
+)";
+  const io::CaseSpec spec = feb::parse_feb(feb, "hinge.feb");
+  const fs::path dir = fresh_dir("connectors");
+  io::write_case(spec, dir / "case.toml");
+  const io::CaseSpec back = analysis::read_case_file(dir / "case.toml");
+  ASSERT_EQ(back.connectors.size(), 1u);
+  const io::ConnectorSpec& c = back.connectors[0];
+  EXPECT_EQ(c.kind, io::ConnectorKind::Revolute);
+  EXPECT_EQ(c.body_a, "ground");
+  EXPECT_EQ(c.body_b, "bone");
+  EXPECT_EQ(c.axis, Vec3::UnitZ());
+  EXPECT_EQ(c.rotation.drive, io::RigidDrive::Displacement);
+  EXPECT_EQ(c.rotation.value, 0.5);
+  EXPECT_EQ(c.rotation.curve, spec.connectors[0].rotation.curve);
+  auto model = model::build_model(back);
+  solver::NewtonSolver newton(analysis::newton_settings(back.solver),
+                              linalg::make_linear_solver(back.solver.linear_solver));
+  solver::StepController controller(analysis::step_settings(back));
+  ASSERT_TRUE(
+      solver::run_time_loop(*model->problem, newton, controller, [](const auto&) {}).success);
+  const Vector& x = model->problem->state();
+  const auto& body = model->problem->rigid_map().bodies().at(0);
+  EXPECT_NEAR(x[body.rotation[2]], 0.5, 1e-12);
+  fs::remove_all(dir);
+}

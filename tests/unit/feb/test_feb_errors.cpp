@@ -152,14 +152,14 @@ TEST(FebErrors, SteadyStateBiphasicAndStepCurves) {
   text.replace(text.find("\"solid\""), 7, "\"biphasic\"");
   expect_contains(feb_error(text), {"bad.feb:4: febio_spec/Control/analysis: ",
                                     "a static analysis of a mixture is not supported"});
-  // FEBio's SMOOTH through more than two points is not trifem's smooth curve
+  // FEBio's splines are not mapped (its SMOOTH is: FebCurves.SmoothIsFebiosQuadraticBlend)
   text = solid_model_text(kMaterial, kHex, kFixed);
   text.replace(
       text.find("</febio_spec>"), 13,
-      R"(<LoadData><load_controller id="1" type="loadcurve"><interpolate>SMOOTH</interpolate>
+      R"(<LoadData><load_controller id="1" type="loadcurve"><interpolate>CSPLINE</interpolate>
 <points><pt>0,0</pt><pt>1,1</pt><pt>2,0</pt></points></load_controller></LoadData></febio_spec>)");
   expect_contains(feb_error(text),
-                  {"bad.feb:20: ", "/interpolate: interpolation 'SMOOTH' is not supported"});
+                  {"bad.feb:20: ", "/interpolate: interpolation 'CSPLINE' is not supported"});
 }
 
 TEST(FebErrors, MissingFile) {
@@ -374,4 +374,36 @@ TEST(FebRigid, ConnectorsTrifemCannotBuildAreRefusedByName) {
       feb_error(connector(
           R"(<rigid_connector type="rigid spring"><body_a>plate</body_a><body_b>lid</body_b><k>1</k><insertion_a>0,0,0</insertion_a><insertion_b>0,0,1</insertion_b></rigid_connector>)")),
       {"material[@type='rigid body'][@name='lid']", "as the ground only", "rigid_fixed"});
+}
+
+TEST(FebCurves, SmoothIsFebiosQuadraticBlend) {
+  std::string text = solid_model_text(kMaterial, kHex, kFixed);
+  text.replace(
+      text.find("</febio_spec>"), 13,
+      R"(<LoadData><load_controller id="1" name="wave" type="loadcurve"><interpolate>SMOOTH</interpolate>
+<points><pt>0,0</pt><pt>1,1</pt><pt>2,0</pt><pt>3,1</pt></points></load_controller></LoadData></febio_spec>)");
+  const io::CaseSpec spec = feb::parse_feb(text, "smooth.feb");
+  const io::CurveSpec& wave = spec.curves.at("wave");
+  EXPECT_EQ(wave.interpolation, dofs::Interpolation::QuadraticBlend);
+  EXPECT_DOUBLE_EQ(dofs::LoadCurve(wave.points, wave.interpolation)(1.5), 0.5); // FEBio's value
+}
+
+TEST(FebRigid, ARotationVectorPrescribesTheThreeRotations) {
+  const io::CaseSpec spec = feb::parse_feb(with_rigid_body(R"(<Rigid>
+  <rigid_bc type="rigid_rotation_vector"><rb>plate</rb><vx>0.5</vx><vz>-0.25</vz></rigid_bc>
+</Rigid>)"),
+                                           "good.feb");
+  ASSERT_EQ(spec.rigid_bodies.size(), 1u);
+  const io::RigidBodySpec& b = spec.rigid_bodies[0];
+  EXPECT_TRUE(b.rotates);
+  for (int k = 0; k < 3; ++k)
+    EXPECT_EQ(b.rotation_drives[k].drive, io::RigidDrive::Displacement) << k;
+  EXPECT_EQ(b.rotation_drives[0].value, 0.5);
+  EXPECT_EQ(b.rotation_drives[1].value, 0.0); // absent: held
+  EXPECT_EQ(b.rotation_drives[2].value, -0.25);
+  expect_contains(feb_error(with_rigid_body(R"(<Rigid>
+  <rigid_bc type="rigid_rotation_vector"><rb>plate</rb><vx>0.5</vx></rigid_bc>
+  <rigid_bc type="rigid_rotation"><rb>plate</rb><dof>Ru</dof><value>1</value></rigid_bc>
+</Rigid>)")),
+                  {"rigid_rotation", "a second motion or load on the same component"});
 }

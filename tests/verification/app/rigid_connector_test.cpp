@@ -12,6 +12,8 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
 #include <numbers>
 #include <string>
 
@@ -461,4 +463,51 @@ torsion_stiffness = {:.17g}
   // the hinge holds the turned force: −R F₀ on the femur
   const Vec3 turned = rotation::matrix(theta) * F;
   EXPECT_LT((m.connectors->committed_wrenches()[0].force + turned).norm(), 1e-10 * F.norm());
+}
+
+TEST(Connectors, TheKneeExampleBalancesItsLoadAndMomentAtEveryStep) {
+  // examples/knee_flexion through the load and a tenth of the flexion: at every step the tibia
+  // holds the load on the femur, and about the flexion axis its moment balances the knee's
+  const std::filesystem::path file =
+      std::filesystem::path(TRIFEM_EXAMPLES_DIR) / "knee_flexion" / "knee_flexion.toml";
+  std::ifstream in(file);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::size_t hold = text.find("[[step]]                    # held");
+  ASSERT_NE(hold, std::string::npos);
+  text.erase(hold, text.find("\n\n", hold) - hold); // the load and the flexion only
+  const std::size_t times = text.find("times = [");
+  ASSERT_NE(times, std::string::npos);
+  text.erase(times, text.find('\n', times) - times); // (outputs past the end)
+  const std::size_t flex_end = text.find("end_time = 1.5");
+  ASSERT_NE(flex_end, std::string::npos);
+  text.replace(flex_end, 14, "end_time = 0.6"); // a tenth of the flexion: 0.03 rad
+  constexpr Real kLoad = 0.6;                   // [N] (per mm depth)
+  const Vec3 axis_point(8.0, 10.0, 0.5);
+  int steps = 0;
+  const test::CaseRun run = test::run_case_steps(text, file, [&](const model::Model& m, Real time) {
+    const Vector& x = m.problem->state();
+    const Vector& R = m.problem->full_residual();
+    // about the femur's current center, where its load and x reaction act
+    const Vec3 centre = axis_point + model::rigid_body_displacement(m, m.rigid_bodies.at(0));
+    Vec3 force = Vec3::Zero(), moment = Vec3::Zero();
+    for (Index n : m.mesh.node_set("tibial.bone")) {
+      Vec3 r, p = m.mesh.node(n);
+      for (int k = 0; k < 3; ++k) {
+        r[k] = R[m.dofs.dof(m.fields.u, n, k)];
+        p[k] += x[m.dofs.dof(m.fields.u, n, k)];
+      }
+      force += r;
+      moment += (p - centre).cross(r);
+    }
+    const Real load = kLoad * std::min(time / 0.1, 1.0);
+    EXPECT_NEAR(force.y(), load, 1e-8 * kLoad) << time; // the tibia pushed down
+    // the knee's moment on the femur about its axis balances the tibia's
+    const Real knee = m.connectors->committed_wrenches()[0].moment.z();
+    EXPECT_NEAR(moment.z(), -knee, 1e-8 * kLoad * 10.0) << time; // lever: R = 10 mm
+    ++steps;
+  });
+  ASSERT_TRUE(run.report.success) << run.report.failure;
+  EXPECT_GE(steps, 20);
+  EXPECT_NEAR(model::rigid_body_rotation(*run.model, run.model->rigid_bodies.at(0)).z(), 0.03,
+              1e-12);
 }

@@ -138,10 +138,11 @@ bulk_terms(const io::CaseSpec& spec, const std::vector<CellMaterial>& materials,
 }
 
 /// DOFs that no term touches (nodes outside every cell, ion DOFs of biphasic regions, ...)
-/// are fixed at zero: they would make the Jacobian singular. Tied DOFs count as one unknown
-/// (used if one of them is); the nodes of rotating rigid bodies follow their body and the
-/// bodies' unknowns are reached through them: neither is fixed. Nor are DOFs `conditions`
-/// constrain already.
+/// are fixed at zero: they would make the Jacobian singular. So are the fluxes that only a
+/// contact pair touches: those of a solid or rigid body facing a mixture, impermeable. Tied DOFs
+/// count as one unknown (used if one of them is); the nodes of rotating rigid bodies follow their
+/// body and the bodies' unknowns are reached through them: neither is fixed. Nor are DOFs
+/// `conditions` constrain already.
 dofs::DirichletCondition unused_dofs(const Model& model,
                                      const std::vector<std::unique_ptr<physics::Term>>& terms,
                                      const std::vector<dofs::DirichletCondition>& conditions) {
@@ -151,8 +152,9 @@ dofs::DirichletCondition unused_dofs(const Model& model,
   for (const auto& t : terms)
     for (Index e = 0; e < t->num_elements(); ++e) {
       t->element_dofs(e, dofs);
-      for (Index d : dofs)
-        used[map.leader(d)] = 1;
+      for (Index d : dofs) // (contact alone does not use a flux: a solid or rigid side's is 0)
+        if (!t->joins_bodies() || map.field(map.field_of(d)).role != FieldRole::flux)
+          used[map.leader(d)] = 1;
     }
   for (const auto& c : conditions)
     for (Index d : c.dofs)

@@ -170,3 +170,104 @@ TEST(Hertz, ARigidCylinderPressedIntoABlockHasHertzsContactHalfWidth) {
   EXPECT_LT(errors.back(), 0.03);
   EXPECT_LT(errors.back(), errors.front());
 }
+
+namespace {
+
+/// A triphasic block (a quarter, on symmetry planes) on a frictionless base, its top pushed
+/// down 5 % in 1 s then held, and `top` appended (how the top is pushed).
+std::string pressed_block(const std::string& top) {
+  return R"(
+[[mesh.box]]
+name = "block"
+size = [1.0, 1.0, 1.0]
+divisions = [3, 3, 3]
+material = "tissue"
+[materials.tissue]
+type = "triphasic"
+phi_s0 = 0.25
+permeability = 1.07e-3
+fixed_charge = 2.0e-4
+d_plus = 5.0e-4
+d_minus = 8.0e-4
+[materials.tissue.solid]
+type = "neo-hookean"
+E = 0.3
+nu = 0.0
+[analysis]
+initial_state = "donnan-prestressed"
+[curves.ramp]
+points = [[0.0, 0.0], [1.0, 1.0]]
+[[boundary.fixed]]
+set = "block.zmin"
+components = ["z"]
+[[boundary.fixed]]
+set = "block.xmin"
+components = ["x"]
+[[boundary.fixed]]
+set = "block.ymin"
+components = ["y"]
+[time]
+end_time = 2.0
+dt = 0.25
+)" + top;
+}
+
+/// The force on the block's base [N] after every step.
+std::vector<Real> base_forces(const std::string& text, const std::string& file) {
+  std::vector<Real> forces;
+  const test::CaseRun run =
+      test::run_case_text(text, file, [&](const test::CaseRun& r, const auto&) {
+        const model::Model& m = *r.model;
+        Real f = 0.0;
+        for (Index n : m.mesh.node_set("block.zmin"))
+          f += m.problem->full_residual()[m.dofs.dof(m.fields.u, n, 2)];
+        forces.push_back(f);
+      });
+  EXPECT_TRUE(run.report.success) << run.report.failure;
+  return forces;
+}
+
+} // namespace
+
+TEST(RigidContact, ATriphasicBlockPressedByARigidPlatenIsItsTopPrescribedAndImpermeable) {
+  // a platen of rigid cells over the whole top, in frictionless contact: the top follows it in
+  // z, slides freely and lets no fluid or ions through, as a top with a prescribed z
+  // displacement and an impermeable face
+  const std::vector<Real> platen = base_forces(pressed_block(R"(
+[[mesh.box]]
+name = "plate"
+origin = [-0.2, -0.2, 1.0]
+size = [1.4, 1.4, 0.2]
+divisions = [2, 2, 1]
+[[rigid_body]]
+name = "platen"
+blocks = ["plate"]
+x = { displacement = 0.0 }
+y = { displacement = 0.0 }
+z = { displacement = -0.05, curve = "ramp" }
+rx = { rotation = 0.0 }
+ry = { rotation = 0.0 }
+rz = { rotation = 0.0 }
+[[contact]]
+master = "plate.zmin"
+slave = "block.zmax"
+integration = "slave-nodes"
+)"),
+                                               "platen.toml");
+  const std::vector<Real> prescribed = base_forces(pressed_block(R"(
+[[boundary.prescribed]]
+set = "block.zmax"
+component = "z"
+value = -0.05
+curve = "ramp"
+[[boundary.impermeable]]
+set = "block.zmax"
+normal = "z"
+)"),
+                                                   "prescribed.toml");
+  ASSERT_EQ(platen.size(), prescribed.size());
+  ASSERT_GT(std::abs(prescribed.back()), 1e-3);                       // a real load
+  const Real scale = std::abs(prescribed[prescribed.size() / 2 - 1]); // the end of the ramp
+  for (std::size_t i = 0; i < platen.size(); ++i)
+    EXPECT_NEAR(platen[i], prescribed[i], 1e-8 * scale) << "step " << i + 1;
+}

@@ -5,6 +5,7 @@
 #include "trifem/core/interrupt.hpp"
 #include "trifem/core/log.hpp"
 #include "trifem/core/timer.hpp"
+#include "trifem/model/conditions.hpp"
 #include "trifem/parallel/communicator.hpp"
 
 #include <algorithm>
@@ -133,9 +134,9 @@ std::vector<StepTarget> explicit_step_targets(const io::CaseSpec& spec, Real sta
       targets.push_back({origin + static_cast<Real>(k) * interval, true});
   for (const Real t : spec.output.times)
     targets.push_back({t, true});
-  for (const auto& [name, curve] : spec.curves)
-    for (const auto& point : curve.points)
-      targets.push_back({point.first, false});
+  for (const auto& [name, curve] : spec.curves) // a repeating curve's in every period
+    for (const Real time : model::make_curve(spec, name).breakpoints(start, end))
+      targets.push_back({time, false});
   const Real eps = 1e-12 * end;
   std::erase_if(targets,
                 [&](const StepTarget& t) { return t.time <= start + eps || t.time >= end - eps; });

@@ -55,6 +55,11 @@ std::vector<std::string> model_columns(const model::Model& model) {
       for (const physics::ReportedMeasure& m : c.reported)
         cols.push_back(fmt::format("{}.{} [{}]", c.name, m.name, m.unit));
     }
+  for (const model::RigidWall& w : model.walls) {
+    for (const char* k : {"Fx", "Fy", "Fz"})
+      cols.push_back(fmt::format("{}.{} [N]", w.name, k));
+    cols.push_back(fmt::format("{}.nodes", w.name));
+  }
   if (model.mixture) {
     cols.push_back("water_outflow [mm^3/s]");
     cols.push_back("water_volume [mm^3]");
@@ -213,6 +218,10 @@ std::vector<double> OutputWriter::history_row(Real time, int step, Real dt, int 
   }
   if (model_.connectors)
     append_connector_values(*model_.connectors, x, row);
+  for (const model::RigidWall& w : model_.walls) { // force on the body, nodes in contact
+    const Vec3 f = w.term->force(x);
+    row.insert(row.end(), {f.x(), f.y(), f.z(), static_cast<double>(w.term->num_active())});
+  }
   if (balance_) {
     const Balance b = balance_->measure();
     row.push_back(b.outflow[0]);

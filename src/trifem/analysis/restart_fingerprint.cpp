@@ -254,6 +254,8 @@ std::uint64_t boundary_conditions_hash(const io::CaseSpec& spec) {
       h.real(t);
       h.real(v);
     }
+    if (curve.extension != dofs::Extension::Constant) // constant: older restart files match
+      h.kind(curve.extension);
   }
   return h.value();
 }
@@ -296,6 +298,27 @@ void hash_connectors(const io::CaseSpec& spec, PartHasher& h) {
   }
 }
 
+/// The constraints (nothing without any: the hash of a case without them is unchanged).
+void hash_constraints(const io::CaseSpec& spec, PartHasher& h) {
+  if (spec.constraints.empty())
+    return;
+  h.integer(static_cast<std::int64_t>(spec.constraints.size()));
+  for (const io::ConstraintSpec& c : spec.constraints) {
+    h.text(c.name);
+    h.kind(c.kind);
+    h.text(c.surface);
+    for (const io::LinearConstraintEntry& e : c.entries) {
+      h.integer(e.node);
+      h.integer(e.component);
+      h.real(e.coefficient);
+    }
+    h.real(c.value);
+    h.text(c.curve);
+    h.vec3(c.point);
+    h.vec3(c.normal);
+  }
+}
+
 std::uint64_t rigid_bodies_hash(const io::CaseSpec& spec) {
   PartHasher h;
   h.integer(static_cast<std::int64_t>(spec.rigid_bodies.size()));
@@ -329,6 +352,7 @@ std::uint64_t rigid_bodies_hash(const io::CaseSpec& spec) {
     }
   }
   hash_connectors(spec, h);
+  hash_constraints(spec, h);
   return h.value();
 }
 

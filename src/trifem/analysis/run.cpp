@@ -12,6 +12,7 @@
 #include "trifem/linalg/auto_solver.hpp"
 #include "trifem/linalg/linear_solver.hpp"
 #include "trifem/mesh/mesh.hpp"
+#include "trifem/model/conditions.hpp"
 #include "trifem/model/model.hpp"
 #include "trifem/model/steps.hpp"
 #include "trifem/parallel/communicator.hpp"
@@ -322,10 +323,10 @@ solver::StepSettings settings_over(const io::CaseSpec& spec, const io::TimeSpec&
     for (Real time = spec.output.interval; time < t.end_time; time += spec.output.interval)
       if (inside(time))
         s.must_points.push_back(time);
-  for (const auto& [name, curve] : spec.curves)
-    for (const auto& p : curve.points)
-      if (inside(p.first))
-        s.must_points.push_back(p.first);
+  for (const auto& [name, curve] : spec.curves) // a repeating curve's in every period
+    for (Real time : model::make_curve(spec, name).breakpoints(start, t.end_time))
+      if (inside(time))
+        s.must_points.push_back(time);
   return s;
 }
 

@@ -158,13 +158,16 @@ void read_boundary(Reader& r, pugi::xml_node section, std::vector<io::FixedSpec>
       fix(r, bc, fixed, step);
     else if (type == "prescribe" && r.version == Version::V3)
       prescribed_displacement(r, bc, prescribed);
+    else if (type == "linear constraint")
+      read_linear_constraint_bc(r, bc, step);
     else
       r.doc.fail(bc, "type",
                  fmt::format("boundary condition type '{}' is not supported (supported: {})", type,
                              r.version == Version::V4
                                  ? "zero displacement, prescribed displacement, zero fluid "
-                                   "pressure, prescribed fluid pressure, prescribed concentration"
-                                 : "fix, prescribe"));
+                                   "pressure, prescribed fluid pressure, prescribed "
+                                   "concentration, linear constraint"
+                                 : "fix, prescribe, linear constraint"));
   }
 }
 

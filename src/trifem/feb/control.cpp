@@ -51,6 +51,24 @@ dofs::Interpolation interpolation(const Reader& r, pugi::xml_node node, const st
                                kind));
 }
 
+/// The extension of a load curve: CONSTANT, REPEAT and REPEAT OFFSET as FEBio's; EXTRAPOLATE
+/// as CONSTANT, marked in `extent` (checked to cover the run once the steps are known).
+dofs::Extension extension(const Reader& r, pugi::xml_node node, CurveExtent& extent) {
+  const std::string mode = lower(r.doc.text(node));
+  if (mode == "constant")
+    return dofs::Extension::Constant;
+  if (mode == "repeat")
+    return dofs::Extension::Repeat;
+  if (mode == "repeat offset")
+    return dofs::Extension::RepeatOffset;
+  if (mode != "extrapolate")
+    r.doc.fail(node, fmt::format("extend '{}' is not supported (expected CONSTANT, REPEAT, "
+                                 "REPEAT OFFSET, or EXTRAPOLATE inside the points)",
+                                 r.doc.text(node)));
+  extent.extrapolate = true;
+  return dofs::Extension::Constant;
+}
+
 void read_curve(Reader& r, pugi::xml_node lc) {
   const std::string id = r.doc.attribute(lc, "id");
   const std::string type = lc.attribute("type").value();
@@ -72,13 +90,7 @@ void read_curve(Reader& r, pugi::xml_node lc) {
     if (key == "interpolate") {
       curve.interpolation = interpolation(r, c, r.doc.text(c), curve.points.size());
     } else if (key == "extend") {
-      const std::string mode = lower(r.doc.text(c));
-      if (mode == "extrapolate")
-        extent.extrapolate = true;
-      else if (mode != "constant")
-        r.doc.fail(c, fmt::format("extend '{}' is not supported (expected CONSTANT or "
-                                  "EXTRAPOLATE inside the points)",
-                                  r.doc.text(c)));
+      curve.extension = extension(r, c, extent);
     } else if (key != "points" && key != "point")
       r.doc.fail(c, fmt::format("unknown parameter '{}' of a load curve", key));
   }

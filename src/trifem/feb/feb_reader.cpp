@@ -77,12 +77,13 @@ void check_sections(const Reader& r, pugi::xml_node root) {
   for (pugi::xml_node s : detail::elements(root)) {
     const std::string_view name = s.name();
     static constexpr std::string_view known[] = {
-        "Module",  "Globals", "Control", "Material", "Mesh",     "MeshDomains", "Boundary",
-        "Initial", "Rigid",   "Contact", "Loads",    "LoadData", "Output",      "Step"};
+        "Module",      "Globals",     "Control",  "Material", "Mesh",
+        "MeshDomains", "Boundary",    "Initial",  "Rigid",    "Contact",
+        "Loads",       "Constraints", "LoadData", "Output",   "Step"};
     if (std::find(std::begin(known), std::end(known), name) == std::end(known))
       r.doc.fail(s, fmt::format("the section <{}> is not supported (trifem reads Module, Globals, "
                                 "Control, Material, Mesh, MeshDomains, Boundary, Initial, "
-                                "Rigid, Contact, Loads, LoadData, Output and Step)",
+                                "Rigid, Contact, Loads, Constraints, LoadData, Output and Step)",
                                 name));
   }
 }
@@ -141,6 +142,8 @@ void read_sections(Reader& r) {
   detail::map_baths(r);
   for (const pugi::xml_node c : root.children("Contact"))
     detail::read_contact(r, c, root.child("Mesh"));
+  for (const pugi::xml_node c : root.children("Constraints"))
+    detail::read_constraints(r, c);
   if (const pugi::xml_node o = root.child("Output"))
     detail::read_output(r, o);
   detail::add_impermeable_faces(r);

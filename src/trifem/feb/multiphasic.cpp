@@ -69,7 +69,7 @@ Real value_at(const Reader& r, const EffectiveCondition& c, Real t) {
   if (c.curve.empty())
     return c.value;
   const io::CurveSpec& curve = r.spec.curves.at(c.curve);
-  return c.value * dofs::LoadCurve(curve.points, curve.interpolation)(t);
+  return c.value * dofs::LoadCurve(curve.points, curve.interpolation, c.curve, curve.extension)(t);
 }
 
 /// The value a condition holds on (0, end]: its curve must be constant there (a bath that
@@ -81,7 +81,8 @@ Real constant_value(const Reader& r, const EffectiveCondition& c) {
   const io::CurveSpec& curve = r.spec.curves.at(c.curve);
   std::vector<Real> times{end,
                           curve.interpolation == dofs::Interpolation::Next ? end * 1e-12 : 0.0};
-  for (const auto& [t, v] : curve.points)
+  const dofs::LoadCurve lc(curve.points, curve.interpolation, c.curve, curve.extension);
+  for (const Real t : lc.breakpoints(0.0, end)) // a repeating curve's in every period
     if (t > 0.0 && t < end)
       times.push_back(t);
   const Real v = value_at(r, c, end);

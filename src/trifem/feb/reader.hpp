@@ -173,6 +173,12 @@ void map_rigid_bodies(Reader& r);
 /// <rigid_connector> of <Rigid>: joints, springs, dampers and contractile forces
 /// (connectors.cpp).
 void read_rigid_connector(Reader& r, pugi::xml_node node);
+/// <Constraints>: rigid walls, symmetry planes, fixed normal displacements and linear constraint
+/// sets as [[constraint]]s (constraints.cpp).
+void read_constraints(Reader& r, pugi::xml_node section);
+/// bc type "linear constraint" of a Boundary section: one linear [[constraint]] (constraints.cpp;
+/// refused inside a step).
+void read_linear_constraint_bc(Reader& r, pugi::xml_node bc, bool step);
 /// The name of a [[rigid_body]] for FEBio's body `name` (letters, digits and _ only).
 std::string rigid_body_name(std::string name);
 /// Contact: each <contact> of a supported type as a contact pair of its <SurfacePair> (in

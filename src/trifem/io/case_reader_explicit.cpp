@@ -117,6 +117,7 @@ void check_analysis_sections(const Table& root, const CaseSpec& spec) {
   reject_tables(root, "contact", "contact needs the implicit solver");
   reject_tables(root, "rigid_body", "use boundary.fixed for a clamped part");
   reject_tables(root, "connector", "connectors join rigid bodies, which need the implicit solver");
+  reject_tables(root, "constraint", "constraints need the implicit solver (Lagrange multipliers)");
   if (const auto solver = root.table("solver"))
     fail(solver->where(), solver->path(),
          fmt::format("applies to quasi-static analyses only (the Newton solver); {} take their "

@@ -100,6 +100,16 @@ void check_steps_and_cutbacks(const Table* root, const CaseSpec& spec) {
   }
 }
 
+/// The must points a load curve adds to a run over [0, end] (at most): its points, in every
+/// period the run meets if the curve repeats.
+Real curve_must_points(const CurveSpec& c, Real end) {
+  const auto n = static_cast<Real>(c.points.size());
+  if (c.extension == dofs::Extension::Constant || c.points.size() < 2)
+    return n;
+  const Real period = c.points.back().first - c.points.front().first;
+  return (n - 1.0) * (std::ceil(std::max(end, 0.0) / period) + 1.0) + 1.0;
+}
+
 /// Refuses more than kMaxOutputTimes output times or must points (every one is a step).
 void check_output_count(const Table* root, const CaseSpec& spec) {
   const auto node_of = [&](std::string_view key) {
@@ -115,11 +125,12 @@ void check_output_count(const Table* root, const CaseSpec& spec) {
                      periodic, kMaxOutputTimes));
   Real must = periodic + static_cast<Real>(spec.output.times.size());
   for (const auto& [name, curve] : spec.curves)
-    must += static_cast<Real>(curve.points.size());
+    must += curve_must_points(curve, end);
   if (must > kMaxOutputTimes)
     fail(nullptr, "output",
          fmt::format("{:.3g} times the steps must land on (output.interval, output.times and the "
-                     "points of the load curves), more than the {:.0e} allowed",
+                     "points of the load curves, in every period of a repeating one), more than "
+                     "the {:.0e} allowed",
                      must, kMaxOutputTimes));
 }
 

@@ -294,17 +294,22 @@ MaterialSpec read_material(const Table& t, const CaseSpec& spec) {
 }
 
 CurveSpec read_curve(const Table& t) {
-  t.allow({"interpolation", "points"});
+  t.allow({"interpolation", "points", "extend"});
   static const Options<dofs::Interpolation> kinds = {
       {"linear", dofs::Interpolation::Linear},
       {"step", dofs::Interpolation::Step},
       {"smooth", dofs::Interpolation::Smooth},
       {"next", dofs::Interpolation::Next},
       {"quadratic-blend", dofs::Interpolation::QuadraticBlend}};
+  static const Options<dofs::Extension> extensions = {
+      {"constant", dofs::Extension::Constant},
+      {"repeat", dofs::Extension::Repeat},
+      {"repeat-offset", dofs::Extension::RepeatOffset}};
   CurveSpec c;
   c.interpolation = t.choice("interpolation", kinds, std::optional(c.interpolation));
   c.points = t.required<std::vector<Point>>("points");
-  const dofs::LoadCurve check(c.points, c.interpolation, t.path("points"));
+  c.extension = t.choice("extend", extensions, std::optional(c.extension));
+  const dofs::LoadCurve check(c.points, c.interpolation, t.path("points"), c.extension);
   return c;
 }
 
@@ -680,8 +685,8 @@ void read_output(const Table& root, CaseSpec& spec) {
 void read_sections(const toml::table& document, CaseSpec& spec) {
   const Table root(document, "", &spec.warnings);
   root.allow({"title", "mesh", "materials", "curves", "boundary", "loads", "contact", "rigid_body",
-              "connector", "analysis", "electrochemistry", "time", "step", "solver", "explicit",
-              "dynamic", "output"});
+              "connector", "constraint", "analysis", "electrochemistry", "time", "step", "solver",
+              "explicit", "dynamic", "output"});
   spec.title = root.get<std::string>("title").value_or("");
   read_analysis_type(root, spec); // the other sections depend on it
   check_analysis_sections(root, spec);
@@ -693,6 +698,7 @@ void read_sections(const toml::table& document, CaseSpec& spec) {
   read_contacts(root, spec);
   read_rigid_bodies(root, spec);
   read_connectors(root, spec);
+  read_constraints(root, spec);
   read_analysis(root, spec);
   read_electrochemistry(root, spec);
   read_solver(root, spec);

@@ -105,6 +105,9 @@ void check_explicit_step(const Table& t, const CaseSpec& spec,
   if (!spec.rigid_bodies.empty())
     explicit_step_error(t, "the case has [[rigid_body]] tables (use boundary.fixed in the "
                            "step for a clamped part)");
+  if (!spec.constraints.empty())
+    explicit_step_error(t, "the case has [[constraint]] tables (constraints are imposed with "
+                           "Lagrange multipliers, which need the implicit solver)");
   if (!spec.impermeable_surfaces.empty() || !spec.baths.empty())
     explicit_step_error(t, "the case has impermeable surfaces or baths (no fluid or ion fields "
                            "in dynamic-explicit steps)");

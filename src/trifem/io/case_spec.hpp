@@ -87,6 +87,7 @@ struct MaterialSpec {
 struct CurveSpec {
   dofs::Interpolation interpolation = dofs::Interpolation::Linear;
   std::vector<std::pair<Real, Real>> points;
+  dofs::Extension extension = dofs::Extension::Constant; ///< key `extend`
 };
 
 /// Vector component selector: 0 = x, 1 = y, 2 = z.
@@ -253,6 +254,38 @@ struct ConnectorSpec {
   std::optional<Real> free_length; ///< [mm]; none: the reference distance
   Real force = 0.0;                ///< [N] (contractile)
   std::string curve;               ///< of the contractile force
+};
+
+/// The kind of a [[constraint]].
+enum class ConstraintKind {
+  Linear,             ///< sum_i c_i u_{n_i, k_i} = value * curve(t) (one equation)
+  SymmetryPlane,      ///< the nodes of a flat surface stay in its plane: n.u_a = 0
+  NormalDisplacement, ///< each node of a surface moves tangentially: N_a.u_a = 0 (reference
+                      ///< nodal normal N_a, area-weighted)
+  RigidWall,          ///< the nodes of a surface stay on one side of a moving plane (contact)
+};
+
+/// One coefficient of a linear constraint: `coefficient` times component `component` of the
+/// displacement of mesh node `node` (0-based, the point id of the VTU output).
+struct LinearConstraintEntry {
+  Index node = -1;
+  Component component = 0;
+  Real coefficient = 0.0;
+};
+
+/// [[constraint]]: constraints imposed exactly with Lagrange multipliers (equations) or by a
+/// primal-dual active set (the rigid wall).
+struct ConstraintSpec {
+  std::string key; ///< "constraint[1]" (for messages)
+  std::string name;
+  ConstraintKind kind = ConstraintKind::SymmetryPlane;
+  std::string surface;                        ///< symmetry plane, normal displacement, wall
+  std::vector<LinearConstraintEntry> entries; ///< linear
+  Real value = 0.0;          ///< linear: right-hand side [mm]; wall: offset of the plane along its
+                             ///< normal [mm] (the plane moves by value * curve(t))
+  std::string curve;         ///< of `value`; empty: constant 1
+  Vec3 point = Vec3::Zero(); ///< wall: a point of the plane at t = 0 [mm]
+  Vec3 normal = Vec3::UnitZ(); ///< wall: unit normal pointing to the side the surface keeps to
 };
 
 /// [[loads.traction]]: dead traction per reference area on a surface [MPa].
@@ -464,6 +497,7 @@ struct CaseSpec {
   std::vector<ContactSpec> contacts;
   std::vector<RigidBodySpec> rigid_bodies;
   std::vector<ConnectorSpec> connectors;
+  std::vector<ConstraintSpec> constraints;
   AnalysisSpec analysis;
   ElectrochemistrySpec electrochemistry;
   TimeSpec time;

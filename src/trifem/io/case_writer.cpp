@@ -39,6 +39,19 @@ std::string_view interpolation_name(dofs::Interpolation i) {
   return "linear";
 }
 
+/// The `extend` value of a curve (as the reader names it).
+std::string_view extension_name(dofs::Extension e) {
+  switch (e) {
+  case dofs::Extension::Constant:
+    return "constant";
+  case dofs::Extension::Repeat:
+    return "repeat";
+  case dofs::Extension::RepeatOffset:
+    return "repeat-offset";
+  }
+  return "constant";
+}
+
 constexpr std::string_view kAxes[] = {"x", "y", "z"};
 
 void write_meshes(const CaseSpec& spec, TomlText& t) {
@@ -76,6 +89,8 @@ void write_curves(const CaseSpec& spec, TomlText& t) {
       points += fmt::format("{}[{}, {}]", i ? ", " : "", TomlText::number(c.points[i].first),
                             TomlText::number(c.points[i].second));
     t.raw("points", points + "]");
+    if (c.extension != dofs::Extension::Constant)
+      t.string("extend", extension_name(c.extension));
   }
 }
 
@@ -267,6 +282,52 @@ void write_connectors(const CaseSpec& spec, TomlText& t) {
   }
 }
 
+/// The `type` of a [[constraint]] of kind `kind` (case_reader_constraints.cpp).
+std::string_view constraint_type(ConstraintKind kind) {
+  switch (kind) {
+  case ConstraintKind::Linear:
+    return "linear";
+  case ConstraintKind::SymmetryPlane:
+    return "symmetry-plane";
+  case ConstraintKind::NormalDisplacement:
+    return "normal-displacement";
+  case ConstraintKind::RigidWall:
+    return "rigid-wall";
+  }
+  return "linear";
+}
+
+/// `terms` of a linear constraint: one inline table per line.
+std::string constraint_terms(const ConstraintSpec& c) {
+  std::string terms = "[\n";
+  for (const LinearConstraintEntry& e : c.entries)
+    terms += fmt::format("  {{ node = {}, component = \"{}\", coefficient = {} }},\n", e.node,
+                         kAxes[e.component], TomlText::number(e.coefficient));
+  return terms + "]";
+}
+
+/// [[constraint]]: the keys of its kind (case_reader_constraints.cpp).
+void write_constraints(const CaseSpec& spec, TomlText& t) {
+  for (const ConstraintSpec& c : spec.constraints) {
+    t.header("[[constraint]]");
+    t.string("type", constraint_type(c.kind));
+    t.string("name", c.name);
+    if (c.kind == ConstraintKind::Linear) {
+      t.raw("terms", constraint_terms(c));
+      t.number("value", c.value);
+      t.optional_string("curve", c.curve);
+      continue;
+    }
+    t.string("surface", c.surface);
+    if (c.kind == ConstraintKind::RigidWall) {
+      t.vector("point", c.point);
+      t.vector("normal", c.normal);
+      t.number("offset", c.value);
+      t.optional_string("curve", c.curve);
+    }
+  }
+}
+
 /// [analysis]: the type of an implicit dynamic analysis and the options of a mixture model, when
 /// they differ from the defaults (dynamic-explicit analyses: check_supported refuses them).
 void write_analysis(const CaseSpec& spec, TomlText& t) {
@@ -419,6 +480,7 @@ std::string case_toml(const CaseSpec& spec) {
   write_contacts(spec, t);
   write_rigid_bodies(spec, t);
   write_connectors(spec, t);
+  write_constraints(spec, t);
   write_analysis(spec, t);
   write_dynamic(spec, t);
   write_electrochemistry(spec, t);

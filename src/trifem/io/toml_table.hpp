@@ -325,6 +325,8 @@ void read_rigid_bodies(const Table& root, CaseSpec& spec);
 RigidComponentSpec read_rigid_component(const Table& t, const CaseSpec& spec, bool rotation);
 /// [[connector]] (case_reader_connectors.cpp); after [[rigid_body]].
 void read_connectors(const Table& root, CaseSpec& spec);
+/// [[constraint]] (case_reader_constraints.cpp); after [curves.<name>] (a constraint's curve).
+void read_constraints(const Table& root, CaseSpec& spec);
 /// [analysis] (case_reader_physics.cpp).
 void read_analysis(const Table& root, CaseSpec& spec);
 /// [electrochemistry] (case_reader_physics.cpp).

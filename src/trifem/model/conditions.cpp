@@ -66,7 +66,7 @@ dofs::LoadCurve make_curve(const io::CaseSpec& spec, const std::string& name) {
   if (name.empty())
     return dofs::LoadCurve::constant(1.0);
   const io::CurveSpec& c = spec.curves.at(name); // existence checked by the reader
-  return dofs::LoadCurve(c.points, c.interpolation, "curves." + name);
+  return dofs::LoadCurve(c.points, c.interpolation, "curves." + name, c.extension);
 }
 
 ConditionSet conditions_of(const io::CaseSpec& spec, const std::vector<io::FixedSpec>& fixed,

@@ -8,6 +8,7 @@
 #include "trifem/model/averages.hpp"
 #include "trifem/model/cell_axes.hpp"
 #include "trifem/model/conditions.hpp"
+#include "trifem/model/constraints.hpp"
 #include "trifem/model/contact_pairs.hpp"
 #include "trifem/model/rigid_bodies.hpp"
 #include "trifem/model/steps.hpp"
@@ -219,9 +220,12 @@ std::vector<solver::FieldScale> field_scales(const Model& model) {
   for (auto [id, size] : {std::pair{model.rigid_translation, L},
                           {model.rigid_rotation, 1.0},
                           {model.joint_forces, M * L * L},
-                          {model.joint_moments, M * L * L * L}})
+                          {model.joint_moments, M * L * L * L},
+                          {model.constraint_forces, M * L * L}})
     if (id.valid())
       s[id.index] = {model.dofs.field(id).name, energy / size, size};
+  for (const RigidWall& w : model.walls) // nodal contact forces
+    s[w.field.index] = {model.dofs.field(w.field).name, energy / (M * L * L), M * L * L};
   return s;
 }
 
@@ -298,6 +302,8 @@ std::unique_ptr<Model> build_model(const io::CaseSpec& spec) {
     terms.push_back(std::move(t));
   }
   auto bcs = boundary_conditions(spec, *model);
+  for (auto& t : constraint_terms(spec, *model, bcs)) // before the rigid bodies: may fix DOFs
+    terms.push_back(std::move(t));
   RigidBodyParts rigid = rigid_bodies(spec, *model, bcs);
   for (auto& t : rigid.loads) // before unused_dofs: connectors use their multipliers
     terms.push_back(std::move(t));

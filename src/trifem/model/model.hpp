@@ -4,6 +4,7 @@
 
 #include "trifem/assembly/fe_problem.hpp"
 #include "trifem/contact/contact_term.hpp"
+#include "trifem/contact/rigid_wall_term.hpp"
 #include "trifem/io/case_spec.hpp"
 #include "trifem/io/probe_quantities.hpp"
 #include "trifem/material/mixture.hpp"
@@ -68,6 +69,13 @@ struct RigidBody {
   int rotating = -1; ///< a rotating body: its index among the problem's RigidMap bodies
 };
 
+/// A [[constraint]] of type rigid-wall.
+struct RigidWall {
+  std::string name;
+  const contact::RigidWallTerm* term = nullptr; ///< owned by the problem
+  dofs::FieldId field;                          ///< its nodal contact forces
+};
+
 /// The conditions of one [[step]] (acting in addition to the case's own) and how the conditions
 /// it releases are unloaded. Its loads are terms of the problem active during the step only.
 struct ModelStep {
@@ -112,6 +120,9 @@ struct Model {
   /// The multipliers of the rigid connectors' constraints: forces [N] and moments [N mm].
   dofs::FieldId joint_forces, joint_moments;
   const physics::RigidConnectorTerm* connectors = nullptr; ///< owned by problem; null: none
+  /// The multipliers of the constraints' equations ([[constraint]]): forces [N].
+  dofs::FieldId constraint_forces;
+  std::vector<RigidWall> walls;
   std::vector<ModelStep> steps; ///< empty: one step with the case's conditions only
   std::vector<dofs::DirichletCondition> case_conditions; ///< the conditions of every step
   int active_step = -1;                                  ///< index into steps (-1: none)

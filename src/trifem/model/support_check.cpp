@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <numeric>
 
 namespace trifem::model {
@@ -91,6 +92,16 @@ void check_support(const io::CaseSpec& spec, const Model& model) {
         held[component[n]] = {true, true, true};
         in_contact[n] = 1;
       }
+  for (const io::ConstraintSpec& c : spec.constraints) { // held along some direction
+    if (c.kind == io::ConstraintKind::Linear)
+      for (const io::LinearConstraintEntry& e : c.entries)
+        held[component[e.node]][e.component] = true;
+    else
+      for (Index n : mesh::surface_nodes(mesh.surface(c.surface)))
+        for (int k = 0; k < 3; ++k)
+          held[component[n]][k] = held[component[n]][k] || std::abs(c.normal[k]) > 0.0 ||
+                                  c.kind != io::ConstraintKind::RigidWall;
+  }
   check_rigid_bodies(spec, model, in_contact);
   for (Index n = 0; n < mesh.num_nodes(); ++n)
     for (int k = 0; k < 3; ++k) {

@@ -148,6 +148,110 @@ TEST(LoadCurve, TheQuadraticBlendIsFebiosSmoothCurve) {
   EXPECT_DOUBLE_EQ(two(0.5), 1.5);
 }
 
+// Repeating curves: the values are written out by shifting the time by whole periods by hand.
+// FEBio's convention at the period ends: after the points t maps into (t_0, t_n], before them
+// into [t_0, t_n).
+
+/// Linear through (1, 0), (2, 2), (4, 1): period 3, v_n - v_0 = 1.
+const std::vector<std::pair<Real, Real>> kCycle = {{1, 0}, {2, 2}, {4, 1}};
+
+TEST(LoadCurve, RepeatShiftsTimeByWholePeriods) {
+  const dofs::LoadCurve c(kCycle, dofs::Interpolation::Linear, "cycle", dofs::Extension::Repeat);
+  EXPECT_DOUBLE_EQ(c(1.5), 1.0); // inside: unchanged
+  EXPECT_DOUBLE_EQ(c(3.0), 1.5);
+  EXPECT_DOUBLE_EQ(c(4.0), 1.0);
+  EXPECT_DOUBLE_EQ(c(5.5), 1.75);  // 2.5 = 5.5 - 3: 2 - 0.5 / 2
+  EXPECT_DOUBLE_EQ(c(7.0), 1.0);   // 4 = 7 - 3: the end of a period takes v_n
+  EXPECT_DOUBLE_EQ(c(7.25), 0.5);  // 1.25 = 7.25 - 6: 2 x 0.25
+  EXPECT_DOUBLE_EQ(c(101.0), 2.0); // 2 = 101 - 33 x 3
+  EXPECT_DOUBLE_EQ(c(0.0), 1.5);   // before: 3 = 0 + 3
+  EXPECT_DOUBLE_EQ(c(-2.0), 0.0);  // 1 = -2 + 3: the start of a period takes v_0
+  EXPECT_DOUBLE_EQ(c(-2.5), 1.25); // 3.5 = -2.5 + 6: 2 - 1.5 / 2
+  // a curve of one point has no period: constant
+  const dofs::LoadCurve one({{1.0, 3.0}}, dofs::Interpolation::Linear, "one",
+                            dofs::Extension::Repeat);
+  EXPECT_DOUBLE_EQ(one(-5.0), 3.0);
+  EXPECT_DOUBLE_EQ(one(50.0), 3.0);
+}
+
+TEST(LoadCurve, RepeatOffsetAddsTheRiseOfEachPeriod) {
+  const dofs::LoadCurve c(kCycle, dofs::Interpolation::Linear, "cycle",
+                          dofs::Extension::RepeatOffset);
+  EXPECT_DOUBLE_EQ(c(3.0), 1.5);
+  EXPECT_DOUBLE_EQ(c(5.5), 2.75);       // 1.75 + 1 x 1
+  EXPECT_DOUBLE_EQ(c(7.0), 2.0);        // 1 + 1
+  EXPECT_DOUBLE_EQ(c(7.25), 2.5);       // 0.5 + 2
+  EXPECT_DOUBLE_EQ(c(101.0), 35.0);     // 2 + 33
+  EXPECT_DOUBLE_EQ(c(0.0), 0.5);        // 1.5 - 1
+  EXPECT_DOUBLE_EQ(c(-2.0), -1.0);      // 0 - 1
+  EXPECT_DOUBLE_EQ(c(-2.5), -0.75);     // 1.25 - 2
+  for (const Real t : {4.0, 7.0, -2.0}) // continuous across the period ends
+    EXPECT_NEAR(c(t - 1e-9), c(t + 1e-9), 1e-8) << t;
+}
+
+TEST(LoadCurve, RepeatsEveryInterpolation) {
+  // step (right-continuous) through (0, 1), (1, 3), (2, 5), period 2
+  const dofs::LoadCurve step({{0, 1}, {1, 3}, {2, 5}}, dofs::Interpolation::Step, "step",
+                             dofs::Extension::Repeat);
+  EXPECT_DOUBLE_EQ(step(2.5), 1.0);        // 0.5
+  EXPECT_DOUBLE_EQ(step(3.0), 3.0);        // 1
+  EXPECT_DOUBLE_EQ(step(4.0), 5.0);        // 2: the end of the period
+  EXPECT_DOUBLE_EQ(step(4.0 + 1e-9), 1.0); // just after it: 0+
+  EXPECT_DOUBLE_EQ(step(-0.5), 3.0);       // 1.5
+  EXPECT_DOUBLE_EQ(step(-2.0), 1.0);       // 0
+  // FEBio's STEP through (0, 0), (1, 2), (3, 5), period 3, rise 5
+  const dofs::LoadCurve next({{0, 0}, {1, 2}, {3, 5}}, dofs::Interpolation::Next, "next",
+                             dofs::Extension::RepeatOffset);
+  EXPECT_DOUBLE_EQ(next(3.5), 7.0);         // 0.5: 2, + 5
+  EXPECT_DOUBLE_EQ(next(4.0), 7.0);         // 1: 2, + 5
+  EXPECT_DOUBLE_EQ(next(4.0 + 1e-9), 10.0); // 1+: 5, + 5
+  EXPECT_DOUBLE_EQ(next(6.0), 10.0);        // 3: 5, + 5
+  EXPECT_DOUBLE_EQ(next(6.0 + 1e-9), 12.0); // 0+: 2, + 10
+  EXPECT_DOUBLE_EQ(next(-1.0), 0.0);        // 2: 5, - 5
+  // smooth from (0, 0) to (1, 1): s^2 (3 - 2s), period 1, rise 1
+  const dofs::LoadCurve smooth({{0, 0}, {1, 1}}, dofs::Interpolation::Smooth, "smooth",
+                               dofs::Extension::RepeatOffset);
+  EXPECT_DOUBLE_EQ(smooth(1.25), 1.15625);   // 0.25: 0.0625 x 2.5, + 1
+  EXPECT_DOUBLE_EQ(smooth(2.5), 2.5);        // 0.5: 0.5, + 2
+  EXPECT_DOUBLE_EQ(smooth(-0.75), -0.84375); // 0.25: 0.15625, - 1
+  // FEBio's SMOOTH through (0, 0), (1, 1), (2, 0), (3, 1): -t^2 + 2t on [0, 1], (t - 2)^2 on
+  // [2, 3], 0.5 at 1.5 (TheQuadraticBlendIsFebiosSmoothCurve), period 3
+  const dofs::LoadCurve blend({{0, 0}, {1, 1}, {2, 0}, {3, 1}}, dofs::Interpolation::QuadraticBlend,
+                              "blend", dofs::Extension::Repeat);
+  EXPECT_NEAR(blend(3.3), 0.51, 1e-14);  // 0.3: -0.09 + 0.6
+  EXPECT_NEAR(blend(4.5), 0.5, 1e-14);   // 1.5
+  EXPECT_NEAR(blend(-0.6), 0.16, 1e-14); // 2.4: 0.4^2
+  EXPECT_NEAR(blend(-1.0), 0.0, 1e-14);  // 2
+}
+
+TEST(LoadCurve, BreakpointsOfARepeatingCurveCoverTheWindow) {
+  const dofs::LoadCurve constant(kCycle, dofs::Interpolation::Linear);
+  EXPECT_EQ(constant.breakpoints(1.5, 30.0), (std::vector<Real>{2, 4}));
+  for (const auto extension : {dofs::Extension::Repeat, dofs::Extension::RepeatOffset}) {
+    const dofs::LoadCurve c(kCycle, dofs::Interpolation::Linear, "cycle", extension);
+    EXPECT_EQ(c.breakpoints(), (std::vector<Real>{1, 2, 4})); // one period
+    EXPECT_EQ(c.breakpoints(0.0, 11.0), (std::vector<Real>{1, 2, 4, 5, 7, 8, 10, 11}));
+    EXPECT_EQ(c.breakpoints(-2.5, 1.5), (std::vector<Real>{-2, -1, 1}));
+    EXPECT_EQ(c.breakpoints(4.5, 4.9), std::vector<Real>{});
+  }
+  // a window of more than 1e8 periods is refused rather than listed
+  const dofs::LoadCurve fast({{0, 0}, {1e-3, 1}}, dofs::Interpolation::Linear, "fast",
+                             dofs::Extension::Repeat);
+  EXPECT_THROW(fast.breakpoints(0.0, 1e6), InputError);
+}
+
+TEST(LoadCurve, ARepeatingCurveTakesThePointValuesAtItsBreakpoints) {
+  // times that binary fractions do not hold: the shifted breakpoints must still hit the points
+  // (a step curve jumps there); FEBio's STEP: 1 on (0, 0.1], 2 on (0.1, 0.3]
+  const dofs::LoadCurve c({{0.0, 0.0}, {0.1, 1.0}, {0.3, 2.0}}, dofs::Interpolation::Next, "c",
+                          dofs::Extension::Repeat);
+  const std::vector<Real> b = c.breakpoints(0.0, 300.0);
+  ASSERT_GE(b.size(), 2000u);
+  EXPECT_EQ(c(b[0]), 0.0);
+  for (std::size_t j = 1; j < b.size(); ++j)
+    ASSERT_EQ(c(b[j]), j % 2 ? 1.0 : 2.0) << "t = " << b[j]; // t_1 + kT, else t_n + kT
+}
+
 TEST(LoadCurve, RejectsNonIncreasingTimes) {
   EXPECT_THROW(dofs::LoadCurve({{0, 0}, {0, 1}}, dofs::Interpolation::Linear), InputError);
   EXPECT_THROW(dofs::LoadCurve({}, dofs::Interpolation::Linear), InputError);

@@ -8,6 +8,7 @@
 
 #include <fstream>
 #include <sstream>
+#include <tuple>
 
 using namespace trifem;
 
@@ -386,6 +387,38 @@ TEST(FebCurves, SmoothIsFebiosQuadraticBlend) {
   const io::CurveSpec& wave = spec.curves.at("wave");
   EXPECT_EQ(wave.interpolation, dofs::Interpolation::QuadraticBlend);
   EXPECT_DOUBLE_EQ(dofs::LoadCurve(wave.points, wave.interpolation)(1.5), 0.5); // FEBio's value
+}
+
+/// The base file with one LINEAR curve "gait" through (0, 0), (0.5, 1), (1, 0.5) and the given
+/// <extend> (period 1, v_n - v_0 = 0.5).
+std::string with_extended_curve(const std::string& extend) {
+  std::string text = solid_model_text(kMaterial, kHex, kFixed);
+  text.replace(text.find("</febio_spec>"), 13,
+               R"(<LoadData><load_controller id="1" name="gait" type="loadcurve"><extend>)" +
+                   extend + R"(</extend>
+<points><pt>0,0</pt><pt>0.5,1</pt><pt>1,0.5</pt></points></load_controller></LoadData></febio_spec>)");
+  return text;
+}
+
+TEST(FebCurves, RepeatAndRepeatOffsetAreMapped) {
+  // FEBio at t = 1.25: REPEAT 0.25 -> 0.5; REPEAT OFFSET 0.5 + 1 x (0.5 - 0)
+  for (const auto& [extend, extension, value] :
+       {std::tuple{"REPEAT", dofs::Extension::Repeat, 0.5},
+        std::tuple{"REPEAT OFFSET", dofs::Extension::RepeatOffset, 1.0},
+        std::tuple{"repeat offset", dofs::Extension::RepeatOffset, 1.0},
+        std::tuple{"CONSTANT", dofs::Extension::Constant, 0.5}}) {
+    const io::CaseSpec spec = feb::parse_feb(with_extended_curve(extend), "repeat.feb");
+    const io::CurveSpec& gait = spec.curves.at("gait");
+    EXPECT_EQ(gait.extension, extension) << extend;
+    EXPECT_EQ(gait.interpolation, dofs::Interpolation::Linear) << extend;
+    EXPECT_EQ(gait.points, (std::vector<std::pair<Real, Real>>{{0, 0}, {0.5, 1}, {1, 0.5}}));
+    EXPECT_DOUBLE_EQ(dofs::LoadCurve(gait.points, gait.interpolation, "gait", gait.extension)(1.25),
+                     value)
+        << extend;
+  }
+  expect_contains(feb_error(with_extended_curve("MIRROR")),
+                  {"bad.feb:20: ", "/extend: extend 'MIRROR' is not supported (expected CONSTANT, "
+                                   "REPEAT, REPEAT OFFSET, or EXTRAPOLATE inside the points)"});
 }
 
 TEST(FebRigid, ARotationVectorPrescribesTheThreeRotations) {

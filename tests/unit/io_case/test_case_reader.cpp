@@ -3,6 +3,7 @@
 #include "bad_input.hpp"
 #include "trifem/core/error.hpp"
 #include "trifem/io/case_reader.hpp"
+#include "trifem/io/case_writer.hpp"
 
 #include <gtest/gtest.h>
 
@@ -15,6 +16,7 @@
 namespace fs = std::filesystem;
 using trifem::InputError;
 using trifem::Real;
+using trifem::dofs::Extension;
 using trifem::dofs::Interpolation;
 using trifem::io::CaseSpec;
 using trifem::io::FieldKind;
@@ -192,6 +194,31 @@ TEST(CaseReader, IntegersAcceptedWhereNumbersExpected) {
       parse_case(replaced("end_time = 1.0\ndt = 0.1", "end_time = 2\ndt = 1"), kMemoryFile);
   EXPECT_DOUBLE_EQ(c.time.end_time, 2.0);
   EXPECT_DOUBLE_EQ(c.time.dt, 1.0);
+}
+
+TEST(CaseReader, CurvesRepeatAndTheWriterKeepsIt) {
+  EXPECT_EQ(parse_case(kBase, kMemoryFile).curves.at("ramp").extension,
+            Extension::Constant); // default
+  const std::string text =
+      replaced("[[0, 0], [1, 1]]", "[[0, 0], [1, 1]]\nextend = \"repeat-offset\"") +
+      "[curves.cycle]\ninterpolation = \"next\"\npoints = [[0, 0], [0.5, 1], [1, 0]]\n"
+      "extend = \"repeat\"\n[curves.hold]\npoints = [[0, 1]]\nextend = \"constant\"\n";
+  const CaseSpec c = parse_case(text, kMemoryFile);
+  EXPECT_EQ(c.curves.at("ramp").extension, Extension::RepeatOffset);
+  EXPECT_EQ(c.curves.at("cycle").extension, Extension::Repeat);
+  EXPECT_EQ(c.curves.at("cycle").interpolation, Interpolation::Next);
+  EXPECT_EQ(c.curves.at("hold").extension, Extension::Constant);
+
+  const std::string written = trifem::io::case_toml(c);
+  EXPECT_NE(written.find("extend = \"repeat-offset\""), std::string::npos) << written;
+  EXPECT_EQ(written.find("extend = \"constant\""), std::string::npos) << written; // default
+  const CaseSpec again = parse_case(written, kMemoryFile);
+  ASSERT_EQ(again.curves.size(), c.curves.size());
+  for (const auto& [name, curve] : c.curves) {
+    EXPECT_EQ(again.curves.at(name).extension, curve.extension) << name;
+    EXPECT_EQ(again.curves.at(name).interpolation, curve.interpolation) << name;
+    EXPECT_EQ(again.curves.at(name).points, curve.points) << name;
+  }
 }
 
 TEST(CaseReader, WindowsLineEndingsAndByteOrderMarkAreAccepted) {
@@ -492,6 +519,11 @@ const std::vector<BadCase> kBadCases = {
     {"curve_point_not_a_pair",
      replaced("[[0, 0], [1, 1]]", "[[0, 0], [1, 1, 2]]"),
      {"curves.ramp.points[2]: expected a [t, value] pair of numbers, got an array of 3"}},
+    {"unknown_curve_extension",
+     replaced("[[0, 0], [1, 1]]", "[[0, 0], [1, 1]]\nextend = \"periodic\""),
+     {"curves.ramp.extend = 'periodic': unknown value (expected one of: constant, repeat, "
+      "repeat-offset)",
+      "(line 14)"}},
     {"syntax_error",
      replaced("dt = 0.1", "dt = = 0.1"),
      {"line 17, column", "TOML syntax error", "dt = = 0.1"}},
@@ -946,6 +978,9 @@ const std::vector<BadCase> kLimitCases = {
      replaced("dt = 0.1", "dt = 1e-300\ndt_max = 1.0\ngrowth = 1.0000001"),
      {"time.end_time = 1: with time.dt = 1e-300 s, time.dt_max = 1 s the run needs at least",
       "steps, more than the 1e+08 allowed"}},
+    {"repeating_curve_with_too_many_periods",
+     replaced("[[0, 0], [1, 1]]", "[[0, 0], [1e-7, 1]]\nextend = \"repeat\""),
+     {"times the steps must land on", "in every period of a repeating one", "1e+06 allowed"}},
     {"too_many_cutbacks",
      replaced("dt = 0.1", "dt = 0.1\ncutback = 0.999999"),
      {"time.cutback = 0.999999: a failed step would be cut back 1.38e+07 times",

@@ -1,0 +1,327 @@
+// SPDX-License-Identifier: MIT
+// [[constraint]]: each kind against the same problem solved another way or a closed form.
+//   * symmetry planes: a cube turned about an oblique axis (its planes held by multipliers)
+//     deforms as the axis-aligned cube (its planes fixed components), turned;
+//   * linear constraints: the top of a cube tied to its fixed bottom with an offset is the top
+//     prescribed, and the multipliers are the reactions;
+//   * rigid wall: a wall pressing a block is the top prescribed (frictionless), the wall's force
+//     the reaction; a wall that withdraws releases the block;
+//   * normal displacement: a thick sphere whose outer surface may only slide, under internal
+//     pressure, converges to Lamé's solution with u(B) = 0.
+#include "case_runner.hpp"
+#include "generated_meshes.hpp"
+
+#include <gtest/gtest.h>
+
+#include <numbers>
+#include <string>
+
+using namespace trifem;
+
+namespace {
+
+/// A 2x2x2 neo-Hookean unit cube; `rest` is appended.
+std::string cube_case(const std::string& rest, Real end_time = 1.0, Real dt = 0.5) {
+  return fmt::format(R"(
+[time]
+end_time = {}
+dt = {}
+)",
+                     end_time, dt) +
+         R"(
+[[mesh.box]]
+name = "box"
+size = [1.0, 1.0, 1.0]
+divisions = [2, 2, 2]
+material = "soft"
+[materials.soft]
+type = "neo-hookean"
+E = 1.0
+nu = 0.3
+[curves.ramp]
+points = [[0.0, 0.0], [1.0, 1.0]]
+[solver]
+residual_tolerance = 1e-12
+increment_tolerance = 1e-12
+)" + rest;
+}
+
+Vec3 displacement(const model::Model& m, Index node) {
+  const Vector& x = m.problem->state();
+  return {x[m.dofs.dof(m.fields.u, node, 0)], x[m.dofs.dof(m.fields.u, node, 1)],
+          x[m.dofs.dof(m.fields.u, node, 2)]};
+}
+
+Real max_displacement(const model::Model& m) {
+  Real u = 0.0;
+  for (Index n = 0; n < m.mesh.num_nodes(); ++n)
+    u = std::max(u, displacement(m, n).norm());
+  return u;
+}
+
+/// The mesh node at X (exactly, as the box generator places it).
+Index node_at(const mesh::Mesh& mesh, const Vec3& X) {
+  for (Index n = 0; n < mesh.num_nodes(); ++n)
+    if ((mesh.node(n) - X).norm() < 1e-12)
+      return n;
+  throw std::runtime_error("no node at the point");
+}
+
+/// Sum over the nodes of `set` of the internal force's component k: the force the conditions
+/// there apply [N].
+Real reaction(const model::Model& m, const std::string& set, int k) {
+  Real f = 0.0;
+  for (Index n : m.mesh.node_set(set))
+    f += m.problem->full_residual()[m.dofs.dof(m.fields.u, n, k)];
+  return f;
+}
+
+const char* kSymmetricCube = R"(
+[[constraint]]
+type = "symmetry-plane"
+surface = "box.xmin"
+[[constraint]]
+type = "symmetry-plane"
+surface = "box.ymin"
+[[constraint]]
+type = "symmetry-plane"
+surface = "box.zmin"
+[[loads.pressure]]
+surface = "box.xmax"
+value = 0.2
+curve = "ramp"
+[[loads.pressure]]
+surface = "box.ymax"
+value = -0.1
+curve = "ramp"
+)";
+
+} // namespace
+
+TEST(Constraints, ObliqueSymmetryPlanesGiveTheTurnedSolutionOfAxisAlignedOnes) {
+  const test::CaseRun aligned = test::run_case_text(cube_case(kSymmetricCube), "aligned.toml");
+  ASSERT_TRUE(aligned.report.success) << aligned.report.failure;
+  EXPECT_FALSE(aligned.model->constraint_forces.valid()); // axis normals: fixed components
+
+  const Mat3 R = Eigen::AngleAxisd(0.7, Vec3(1.0, 2.0, 3.0).normalized()).toRotationMatrix();
+  io::CaseSpec spec = io::parse_case(cube_case(kSymmetricCube), "turned.toml");
+  const mesh::Mesh box = mesh::make_box({"box", Vec3::Zero(), Vec3::Ones(), {2, 2, 2}});
+  spec.boxes.clear();
+  spec.meshes.push_back(
+      {test::transform_nodes(box, [&](const Vec3& X) { return Vec3(R * X); }), {{"box", "soft"}}});
+  const test::CaseRun turned = test::run_case_spec(std::move(spec));
+  ASSERT_TRUE(turned.report.success) << turned.report.failure;
+  ASSERT_TRUE(turned.model->constraint_forces.valid()); // oblique normals: multipliers
+
+  const Real scale = max_displacement(*aligned.model);
+  ASSERT_GT(scale, 0.05); // a real deformation
+  for (Index n = 0; n < box.num_nodes(); ++n)
+    EXPECT_LT((displacement(*turned.model, n) - R * displacement(*aligned.model, n)).norm(),
+              1e-9 * scale)
+        << "node " << n;
+}
+
+TEST(Constraints, ALinearConstraintToTheFixedBottomIsTheTopPrescribedAndItsForceTheReaction) {
+  const mesh::Mesh box = mesh::make_box({"box", Vec3::Zero(), Vec3::Ones(), {2, 2, 2}});
+  std::string tied = R"(
+[[boundary.fixed]]
+set = "box.zmin"
+)";
+  std::vector<Index> top;
+  for (Index a : box.node_set("box.zmax")) {
+    const Index b = node_at(box, Vec3(box.node(a).x(), box.node(a).y(), 0.0));
+    top.push_back(a);
+    tied += fmt::format("[[constraint]]\ntype = \"linear\"\nvalue = 0.2\ncurve = \"ramp\"\n"
+                        "terms = [{{ node = {}, component = \"z\", coefficient = 1.0 }}, "
+                        "{{ node = {}, component = \"z\", coefficient = -1.0 }}]\n",
+                        a, b);
+  }
+  const test::CaseRun linear = test::run_case_text(cube_case(tied), "tied.toml");
+  ASSERT_TRUE(linear.report.success) << linear.report.failure;
+
+  const test::CaseRun prescribed = test::run_case_text(cube_case(R"(
+[[boundary.fixed]]
+set = "box.zmin"
+[[boundary.prescribed]]
+set = "box.zmax"
+component = "z"
+value = 0.2
+curve = "ramp"
+)"),
+                                                       "prescribed.toml");
+  ASSERT_TRUE(prescribed.report.success) << prescribed.report.failure;
+  const model::Model& m = *linear.model;
+  const model::Model& p = *prescribed.model;
+  const Real scale = max_displacement(p);
+  for (Index n = 0; n < box.num_nodes(); ++n)
+    EXPECT_LT((displacement(m, n) - displacement(p, n)).norm(), 1e-9 * scale) << "node " << n;
+  // the multiplier of the equation of top node a is minus the internal force there
+  const Real force = std::abs(reaction(p, "box.zmax", 2));
+  ASSERT_GT(force, 0.05);
+  for (std::size_t i = 0; i < top.size(); ++i) {
+    const Real lambda = m.problem->state()[m.dofs.dof(m.constraint_forces, Index(i), 0)];
+    const Real r = p.problem->full_residual()[p.dofs.dof(p.fields.u, top[i], 2)];
+    EXPECT_NEAR(lambda, -r, 1e-9 * force) << "top node " << top[i];
+  }
+}
+
+namespace {
+
+/// The cube on its symmetry planes, its top pressed down by `top`.
+std::string pressed_cube(const std::string& top, Real end_time = 1.0, Real dt = 0.5) {
+  return cube_case(R"(
+[[boundary.fixed]]
+set = "box.zmin"
+components = ["z"]
+[[boundary.fixed]]
+set = "box.xmin"
+components = ["x"]
+[[boundary.fixed]]
+set = "box.ymin"
+components = ["y"]
+)" + top,
+                   end_time, dt);
+}
+
+const char* kWall = R"(
+[[constraint]]
+type = "rigid-wall"
+name = "wall"
+surface = "box.zmax"
+point = [0.0, 0.0, 1.0]
+normal = [0.0, 0.0, -1.0]
+offset = 0.15
+curve = "ramp"
+)";
+
+} // namespace
+
+TEST(Constraints, ARigidWallPressingABlockIsTheTopPrescribedAndItsForceTheReaction) {
+  const test::CaseRun walled = test::run_case_text(pressed_cube(kWall), "wall.toml");
+  ASSERT_TRUE(walled.report.success) << walled.report.failure;
+  const test::CaseRun prescribed = test::run_case_text(pressed_cube(R"(
+[[boundary.prescribed]]
+set = "box.zmax"
+component = "z"
+value = -0.15
+curve = "ramp"
+)"),
+                                                       "prescribed.toml");
+  ASSERT_TRUE(prescribed.report.success) << prescribed.report.failure;
+  const model::Model& m = *walled.model;
+  const model::Model& p = *prescribed.model;
+  const Real scale = max_displacement(p);
+  for (Index n = 0; n < m.mesh.num_nodes(); ++n)
+    EXPECT_LT((displacement(m, n) - displacement(p, n)).norm(), 1e-9 * scale) << "node " << n;
+  ASSERT_EQ(m.walls.size(), 1u);
+  const contact::RigidWallTerm& wall = *m.walls[0].term;
+  EXPECT_EQ(wall.num_active(), 9);
+  const Real force = reaction(p, "box.zmax", 2);
+  ASSERT_LT(force, -0.05); // the top is pushed down
+  const Vec3 f = wall.force(m.problem->state());
+  EXPECT_NEAR(f.z(), force, 1e-9 * std::abs(force));
+  EXPECT_NEAR(f.x(), 0.0, 1e-15 * std::abs(force)); // frictionless on a horizontal wall
+}
+
+TEST(Constraints, ARigidWallThatWithdrawsReleasesTheBlock) {
+  const test::CaseRun run = test::run_case_text(pressed_cube(R"(
+[[constraint]]
+type = "rigid-wall"
+name = "wall"
+surface = "box.zmax"
+point = [0.0, 0.0, 1.0]
+normal = [0.0, 0.0, -1.0]
+offset = 0.15
+curve = "press"
+[curves.press]
+points = [[0.0, 0.0], [1.0, 1.0], [2.0, -1.0]]
+)",
+                                                             2.0, 0.25),
+                                                "withdraw.toml");
+  ASSERT_TRUE(run.report.success) << run.report.failure;
+  const model::Model& m = *run.model;
+  const contact::RigidWallTerm& wall = *m.walls[0].term;
+  EXPECT_EQ(wall.num_active(), 0);
+  EXPECT_EQ(wall.force(m.problem->state()).norm(), 0.0); // inactive rows hold λ = 0 exactly
+  EXPECT_LT(max_displacement(m), 1e-12);                 // back to the reference
+}
+
+namespace {
+
+/// Radial displacement u(A) of the thick sphere A ≤ r ≤ B under internal pressure p whose
+/// outer surface is held radially (u(B) = 0), linear elasticity (Lamé): u = a r + b / r²,
+/// σ_rr(A) = −p.
+Real lame_inner_displacement(Real A, Real B, Real p, Real E, Real nu) {
+  const Real mu = E / (2.0 * (1.0 + nu)), lambda = E * nu / ((1.0 + nu) * (1.0 - 2.0 * nu));
+  const Real b = p / ((3.0 * lambda + 2.0 * mu) / (B * B * B) + 4.0 * mu / (A * A * A));
+  return b * (1.0 / (A * A) - A / (B * B * B));
+}
+
+/// Mean relative error of the radial displacement of the inner surface against Lamé.
+Real sphere_error(int divisions) {
+  constexpr Real A = 1.0, B = 2.0, p = 1e-5, E = 1.0, nu = 0.3;
+  io::CaseSpec spec = io::parse_case(R"(
+[[mesh.box]]
+name = "placeholder"
+size = [1.0, 1.0, 1.0]
+divisions = [1, 1, 1]
+material = "soft"
+[materials.soft]
+type = "neo-hookean"
+E = 1.0
+nu = 0.3
+[[boundary.fixed]]
+set = "shell.x0"
+components = ["x"]
+[[boundary.fixed]]
+set = "shell.y0"
+components = ["y"]
+[[boundary.fixed]]
+set = "shell.z0"
+components = ["z"]
+[[constraint]]
+type = "normal-displacement"
+surface = "shell.outer"
+[[loads.pressure]]
+surface = "shell.inner"
+value = 1e-5
+[time]
+end_time = 1.0
+dt = 1.0
+[solver]
+residual_tolerance = 1e-12
+increment_tolerance = 1e-12
+)",
+                                     "sphere.toml");
+  spec.boxes.clear();
+  test::ShellOctantSpec shell;
+  shell.inner = A;
+  shell.outer = B;
+  shell.divisions = divisions;
+  shell.layers = 2 * divisions;
+  spec.meshes.push_back({test::make_shell_octant(shell), {{"shell", "soft"}}});
+  const test::CaseRun run = test::run_case_spec(std::move(spec));
+  EXPECT_TRUE(run.report.success) << run.report.failure;
+  const model::Model& m = *run.model;
+  const Real exact = lame_inner_displacement(A, B, p, E, nu);
+  Real error = 0.0;
+  const auto inner = mesh::surface_nodes(m.mesh.surface("shell.inner"));
+  for (Index n : inner) {
+    const Vec3 X = m.mesh.node(n);
+    error += std::abs(displacement(m, n).dot(X.normalized()) - exact) / exact;
+  }
+  // the outer surface slides: no node moves along its normal
+  for (Index n : mesh::surface_nodes(m.mesh.surface("shell.outer")))
+    EXPECT_LT(std::abs(displacement(m, n).dot(m.mesh.node(n).normalized())), 0.05 * exact);
+  return error / static_cast<Real>(inner.size());
+}
+
+} // namespace
+
+TEST(Constraints, ASphereWhoseOuterSurfaceSlidesConvergesToLamesSolution) {
+  const Real coarse = sphere_error(2), fine = sphere_error(4);
+  std::printf("inner radial displacement against Lame: %.3e (2 cells), %.3e (4 cells)\n", coarse,
+              fine);
+  EXPECT_LT(fine, 0.02);
+  EXPECT_LT(fine, 0.4 * coarse); // second order: about a quarter
+}

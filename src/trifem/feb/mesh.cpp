@@ -30,14 +30,38 @@ Real corner_volume(const mesh::Mesh& mesh, const mesh::Hex8& h) {
          d.dot((x(3) - x(0)).cross(x(4) - x(0)));
 }
 
+/// A quad4 part: a surface of the same name whose facets bound no cell (node order: the normal),
+/// which a <ShellDomain> of a rigid body may carry (read_domains).
+void read_shell_part(Reader& r, pugi::xml_node part, const std::string& name) {
+  mesh::Surface surface;
+  for (pugi::xml_node e : elements(part)) {
+    if (std::string_view(e.name()) != "elem")
+      r.doc.fail(e, "expected <elem> elements");
+    const std::vector<long> ids = r.doc.ids(e);
+    if (ids.size() != 4)
+      r.doc.fail(e, fmt::format("a quad4 has 4 nodes, got {}", ids.size()));
+    const std::vector<Index> nodes = r.nodes_of(e, ids);
+    mesh::Facet f;
+    std::copy(nodes.begin(), nodes.end(), f.nodes.begin());
+    surface.facets.push_back(f);
+  }
+  if (surface.facets.empty())
+    r.doc.fail(part, "the part has no elements");
+  with_mesh_errors(r, part, [&] { r.mesh.mesh.add_surface(name, std::move(surface)); });
+  r.shell_parts[name] = part;
+}
+
 void read_elements(Reader& r, pugi::xml_node part) {
   const std::string type = r.doc.attribute(part, "type");
-  if (type != "hex8")
-    r.doc.fail(part,
-               fmt::format("element type '{}' is not supported (trifem has hex8 only)", type));
+  if (type != "hex8" && type != "quad4")
+    r.doc.fail(part, fmt::format("element type '{}' is not supported (trifem has hex8 solids, "
+                                 "and quad4 shells as rigid bodies)",
+                                 type));
   const std::string name = r.doc.attribute(part, "name");
-  if (r.parts.contains(name))
+  if (r.parts.contains(name) || r.shell_parts.contains(name))
     r.doc.fail(part, "name", fmt::format("a second <Elements> part named '{}'", name));
+  if (type == "quad4")
+    return read_shell_part(r, part, name);
   r.parts[name] = part;
   std::vector<Index> cells;
   for (pugi::xml_node e : elements(part)) {
@@ -89,6 +113,19 @@ void read_node_set(Reader& r, pugi::xml_node set) {
   with_mesh_errors(r, set, [&] { r.mesh.mesh.add_node_set(name, nodes); });
 }
 
+/// Whether every node of `quads` belongs to a quad4 (shell) part.
+bool on_shells(const Reader& r, const std::vector<std::array<Index, 4>>& quads) {
+  if (r.shell_parts.empty())
+    return false;
+  std::vector<char> shell(r.mesh.mesh.num_nodes(), 0);
+  for (const auto& [name, part] : r.shell_parts)
+    for (Index n : r.mesh.mesh.node_set(name))
+      shell[n] = 1;
+  return std::all_of(quads.begin(), quads.end(), [&](const auto& q) {
+    return std::all_of(q.begin(), q.end(), [&](Index n) { return shell[n] != 0; });
+  });
+}
+
 void read_surface(Reader& r, pugi::xml_node surface) {
   const std::string name = r.doc.attribute(surface, "name");
   std::vector<std::array<Index, 4>> quads;
@@ -108,6 +145,12 @@ void read_surface(Reader& r, pugi::xml_node surface) {
   if (quads.empty())
     r.doc.fail(surface, "the surface has no facets");
   mesh::Surface s;
+  if (on_shells(r, quads)) { // a surface of a rigid shell: its quads as given
+    for (const auto& q : quads)
+      s.facets.push_back({.nodes = q, .cell = -1, .local_face = -1});
+    with_mesh_errors(r, surface, [&] { r.mesh.mesh.add_surface(name, std::move(s)); });
+    return;
+  }
   try {
     s.facets = r.mesh.mesh.find_facets(quads);
   } catch (const InputError&) {
@@ -143,13 +186,32 @@ void read_element_set(Reader& r, pugi::xml_node set) {
   with_mesh_errors(r, set, [&] { r.mesh.mesh.add_cell_block(name, cells); });
 }
 
+/// A <ShellDomain>: the quad4 part of a rigid body, which then moves the part's nodes (a surface
+/// mesh without a volume, e.g. a bone surface); the shell's thickness does not matter.
+void read_rigid_shell_domain(Reader& r, pugi::xml_node d) {
+  const std::string name = r.doc.attribute(d, "name");
+  const std::string mat = r.doc.attribute(d, "mat");
+  if (!r.shell_parts.contains(name))
+    r.doc.fail(d, "name", fmt::format("no quad4 <Elements> part is named '{}'", name));
+  const auto body = r.rigid_bodies.find(mat);
+  if (body == r.rigid_bodies.end())
+    r.doc.fail(d, "mat",
+               fmt::format("shells are supported as rigid bodies only ('{}' is not a rigid body "
+                           "material)",
+                           mat));
+  if (body->second.shell || !body->second.blocks.empty())
+    r.doc.fail(d, "a rigid body made of several parts is not supported: give it one part");
+  body->second.set = name; // the surface's node set
+  body->second.shell = true;
+  body->second.attachment = d;
+}
+
 void read_domains(Reader& r, pugi::xml_node domains) {
   for (pugi::xml_node d : elements(domains)) {
-    if (std::string_view(d.name()) != "SolidDomain" &&
-        r.rigid_bodies.contains(d.attribute("mat").value()))
-      r.doc.fail(d, fmt::format("a rigid body made of a <{}> (a surface without a volume mesh) "
-                                "is not supported yet: give the body solid elements",
-                                d.name()));
+    if (std::string_view(d.name()) == "ShellDomain") {
+      read_rigid_shell_domain(r, d);
+      continue;
+    }
     if (std::string_view(d.name()) != "SolidDomain")
       r.doc.fail(
           d, fmt::format("<{}> is not supported (trifem has solid hex8 domains only)", d.name()));
@@ -176,7 +238,7 @@ void read_mesh(Reader& r, pugi::xml_node mesh, pugi::xml_node domains) {
     r.doc.fail(mesh, "the mesh has no <Nodes>");
   for (pugi::xml_node n : mesh.children("Elements"))
     read_elements(r, n);
-  if (r.parts.empty())
+  if (r.parts.empty() && r.shell_parts.empty())
     r.doc.fail(mesh, "the mesh has no <Elements>");
   for (pugi::xml_node n : elements(mesh)) {
     const std::string_view kind = n.name();
@@ -203,6 +265,13 @@ void read_mesh(Reader& r, pugi::xml_node mesh, pugi::xml_node domains) {
     if (!r.mesh.materials.contains(name) && !rigid(name))
       r.doc.fail(part,
                  fmt::format("the part '{}' has no material (no <SolidDomain> names it)", name));
+  for (const auto& [name, part] : r.shell_parts)
+    if (std::none_of(r.rigid_bodies.begin(), r.rigid_bodies.end(), [&](const auto& body) {
+          return body.second.shell && body.second.set == name;
+        }))
+      r.doc.fail(part, fmt::format("the quad4 part '{}' is no rigid body's (no <ShellDomain> of a "
+                                   "rigid body material names it)",
+                                   name));
   r.drained.assign(r.mesh.mesh.num_nodes(), 0);
 }
 

@@ -53,8 +53,9 @@ struct EffectiveCondition {
 struct RigidBodyInput {
   pugi::xml_node material;
   pugi::xml_node attachment;
-  std::string set;                              ///< the attached node set
-  std::vector<std::string> blocks;              ///< the parts (solid domains) of the body
+  std::string set;                 ///< the attached node set
+  std::vector<std::string> blocks; ///< the parts (solid domains) of the body
+  bool shell = false; ///< made of a shell part (a surface mesh): `set` is its nodes; it rotates
   std::array<bool, 6> fixed{};                  ///< rigid_fixed: x, y, z, then the rotations
   std::array<io::RigidComponentSpec, 3> drives; ///< rigid_displacement, rigid_force
   std::array<io::RigidComponentSpec, 3> rotation_drives; ///< rigid_rotation, rigid_moment
@@ -76,7 +77,9 @@ struct Reader {
   std::map<long, Index> cell_index;                  ///< FEBio element id -> mesh cell
   std::map<std::string, std::string> material_by_id; ///< FEBio material id -> name
   std::map<std::string, pugi::xml_node> parts;       ///< Elements name -> its element
-  std::map<std::string, std::string> curve_by_id;    ///< load controller id -> curve name
+  /// quad4 Elements (shells), kept as surfaces of the same name: only a rigid body may use one
+  std::map<std::string, pugi::xml_node> shell_parts;
+  std::map<std::string, std::string> curve_by_id; ///< load controller id -> curve name
   std::vector<CurveExtent> curve_extents;
   std::vector<EffectiveCondition> effective;          ///< top-level fluid pressure, concentrations
   std::vector<EffectiveCondition> initial;            ///< <Initial> fluid pressure, concentrations

@@ -121,7 +121,7 @@ std::array<bool, 3> fixed_at_every_node(const Reader& r, const std::string& set)
 
 /// A body of elements, or one whose rotation is not held, has six unknowns.
 bool rotates(const RigidBodyInput& body) {
-  if (!body.blocks.empty() || body.connected)
+  if (!body.blocks.empty() || body.shell || body.connected)
     return true;
   for (int k = 0; k < 3; ++k)
     if (!body.fixed[3 + k] || body.rotation_drives[k].drive != io::RigidDrive::Free)
@@ -196,9 +196,23 @@ void attach_rigid(Reader& r, pugi::xml_node bc, bool step) {
   if (step)
     r.doc.fail(bc, "a rigid attachment inside a <step> is not supported");
   RigidBodyInput& body = body_of(r, bc);
-  if (!body.set.empty())
-    r.doc.fail(bc, "the body is attached a second time: give all its nodes in one node set");
-  body.set = r.node_set(bc);
+  if (body.shell)
+    r.doc.fail(bc, "nodes attached to a rigid body made of a shell part are not supported");
+  const std::string set = r.node_set(bc);
+  if (!body.set.empty()) { // attached again: the union of the node sets
+    std::vector<Index> nodes = r.mesh.mesh.node_set(body.set);
+    const std::vector<Index>& more = r.mesh.mesh.node_set(set);
+    nodes.insert(nodes.end(), more.begin(), more.end());
+    std::sort(nodes.begin(), nodes.end());
+    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+    std::string name = body.set + "_and_" + set;
+    while (r.mesh.mesh.has_node_set(name))
+      name += "_";
+    r.mesh.mesh.add_node_set(name, std::move(nodes));
+    body.set = name;
+    return;
+  }
+  body.set = set;
   body.attachment = bc;
 }
 
@@ -224,6 +238,101 @@ void read_rigid(Reader& r, pugi::xml_node section) {
                              kind, type));
   }
 }
+
+namespace {
+
+/// Per mesh node: the displacement components a [[rigid_body]] of the file carries.
+std::vector<std::array<bool, 3>> carried_components(const Reader& r) {
+  const mesh::Mesh& mesh = r.mesh.mesh;
+  std::vector<std::array<bool, 3>> carried(mesh.num_nodes(), {false, false, false});
+  for (const io::RigidBodySpec& b : r.spec.rigid_bodies) {
+    std::vector<Index> nodes;
+    if (!b.set.empty())
+      nodes = mesh.node_set(b.set);
+    for (const std::string& block : b.blocks)
+      for (Index c : mesh.cell_block(block))
+        nodes.insert(nodes.end(), mesh.cell(c).begin(), mesh.cell(c).end());
+    for (Index n : nodes)
+      for (int k = 0; k < 3; ++k)
+        carried[n][k] =
+            carried[n][k] || b.rotates ||
+            std::find(b.components.begin(), b.components.end(), k) != b.components.end();
+  }
+  return carried;
+}
+
+/// The nodes of `set` whose component k no rigid body carries, as a node set (its name; "" if
+/// there are none), and how many were left out.
+std::string uncarried_set(Reader& r, const std::string& set, int k,
+                          const std::vector<std::array<bool, 3>>& carried, Index& left_out) {
+  std::vector<Index> kept;
+  for (Index n : r.mesh.mesh.node_set(set))
+    if (carried[n][k])
+      ++left_out;
+    else
+      kept.push_back(n);
+  if (kept.size() == r.mesh.mesh.node_set(set).size())
+    return set;
+  if (kept.empty())
+    return "";
+  std::string name = fmt::format("{}_not_rigid_{}", set, "xyz"[k]);
+  while (r.mesh.mesh.has_node_set(name))
+    name += "_";
+  r.mesh.mesh.add_node_set(name, std::move(kept));
+  return name;
+}
+
+/// Whether a displacement condition on `set` and components `components` touches a carried
+/// node.
+bool touches_carried(const Reader& r, const std::string& set,
+                     const std::vector<io::Component>& components,
+                     const std::vector<std::array<bool, 3>>& carried) {
+  for (Index n : r.mesh.mesh.node_set(set))
+    for (io::Component k : components)
+      if (carried[n][k])
+        return true;
+  return false;
+}
+
+/// FEBio ignores the fixed and prescribed displacements of the nodes a rigid body carries (its
+/// rigid solver numbers their components as the body's, "make sure that the nodes are NOT
+/// constrained"): those components leave the conditions, with a warning. (A case file written
+/// by hand gets an error instead: the two conditions contradict each other.)
+void release_carried_nodes(Reader& r, pugi::xml_node where) {
+  const std::vector<std::array<bool, 3>> carried = carried_components(r);
+  Index left_out = 0;
+  std::vector<io::FixedSpec> fixed;
+  for (io::FixedSpec& f : r.spec.fixed) {
+    const bool displacement =
+        std::find(f.fields.begin(), f.fields.end(), io::FieldKind::Displacement) != f.fields.end();
+    if (!displacement || !touches_carried(r, f.set, f.components, carried)) {
+      fixed.push_back(std::move(f));
+      continue;
+    }
+    io::FixedSpec others = f; // the flux fields stay as they are
+    std::erase(others.fields, io::FieldKind::Displacement);
+    if (!others.fields.empty())
+      fixed.push_back(others);
+    for (io::Component k : f.components)
+      if (std::string set = uncarried_set(r, f.set, k, carried, left_out); !set.empty())
+        fixed.push_back({f.key, set, {k}, {io::FieldKind::Displacement}});
+  }
+  r.spec.fixed = std::move(fixed);
+  std::vector<io::PrescribedSpec> prescribed;
+  for (io::PrescribedSpec& p : r.spec.prescribed) {
+    if (p.field == io::FieldKind::Displacement)
+      p.set = uncarried_set(r, p.set, p.component, carried, left_out);
+    if (!p.set.empty())
+      prescribed.push_back(std::move(p));
+  }
+  r.spec.prescribed = std::move(prescribed);
+  if (left_out > 0)
+    r.warn(where, fmt::format("{} fixed or prescribed displacement component(s) of nodes that a "
+                              "rigid body carries are ignored, as FEBio does (the body moves them)",
+                              left_out));
+}
+
+} // namespace
 
 void map_rigid_bodies(Reader& r) {
   std::set<std::string> grounds; // bodies of nothing that connectors hold to: space
@@ -261,6 +370,8 @@ void map_rigid_bodies(Reader& r) {
     if (!spec.components.empty())
       r.spec.rigid_bodies.push_back(spec);
   }
+  if (!r.spec.rigid_bodies.empty())
+    release_carried_nodes(r, r.rigid_bodies.begin()->second.material);
   for (io::ConnectorSpec& c : r.connectors) {
     c.body_a = grounds.contains(c.body_a) ? "ground" : rigid_body_name(c.body_a);
     c.body_b = grounds.contains(c.body_b) ? "ground" : rigid_body_name(c.body_b);

@@ -649,7 +649,8 @@ bool same_orientation(const std::array<Index, 4>& a, const std::array<Index, 4>&
 
 /// The outward-oriented facet of each pending quad: of the hexes that have the quad as a face,
 /// the one whose face has the quad's node order (an interior face names its side by its
-/// orientation), else the first (lowest index). Only the quads are hashed, so this stays cheap
+/// orientation), else the first (lowest index); a quad that is no hex's face stays as given
+/// (cell −1: a surface mesh, see add_surfaces). Only the quads are hashed, so this stays cheap
 /// for large meshes.
 std::vector<Facet> orient_quads(const LineReader& in, const GmshData& d) {
   std::unordered_map<QuadKey, std::size_t, QuadKeyHash> slot_of;
@@ -677,9 +678,10 @@ std::vector<Facet> orient_quads(const LineReader& in, const GmshData& d) {
   for (std::size_t i = 0; i < d.quads.size(); ++i) {
     const PendingQuad& q = d.quads[i];
     const std::array<Facet, 2>& sides = found[slot[i]];
-    TRIFEM_CHECK(sides[0].cell >= 0,
-                 "{}: quad4 element {} of physical surface '{}' is not a face of any hex8 element",
-                 in.at(q.line), q.element, group_name(d, {2, q.physical}));
+    if (sides[0].cell < 0) {
+      facets.push_back({.nodes = q.nodes, .cell = -1, .local_face = -1});
+      continue;
+    }
     const bool second = sides[1].cell >= 0 && !same_orientation(q.nodes, sides[0].nodes) &&
                         same_orientation(q.nodes, sides[1].nodes);
     facets.push_back(sides[second ? 1 : 0]);
@@ -687,8 +689,33 @@ std::vector<Facet> orient_quads(const LineReader& in, const GmshData& d) {
   return facets;
 }
 
+/// A physical surface is made of hex faces, or it is a surface mesh whose quads bound no cell
+/// (e.g. a bone surface carried by a rigid body), oriented by their node order: not a mix,
+/// which is most likely a quad misplaced on a face.
+void check_surface_kinds(const LineReader& in, const GmshData& d,
+                         const std::vector<Facet>& facets) {
+  std::map<int, std::array<std::size_t, 2>> first; // physical -> first free, first bound quad
+  for (std::size_t i = 0; i < facets.size(); ++i) {
+    auto [it, added] = first.try_emplace(d.quads[i].physical,
+                                         std::array<std::size_t, 2>{facets.size(), facets.size()});
+    std::size_t& slot = it->second[facets[i].cell < 0 ? 0 : 1];
+    slot = std::min(slot, i);
+  }
+  for (const auto& [physical, quads] : first) {
+    if (quads[0] == facets.size() || quads[1] == facets.size())
+      continue;
+    const PendingQuad& q = d.quads[quads[0]];
+    throw InputError(fmt::format(
+        "{}: quad4 element {} of physical surface '{}' is not a face of any hex8 element, while "
+        "its other quads are (a surface mesh that bounds no cell, such as a rigid bone surface, "
+        "must be a physical surface of its own)",
+        in.at(q.line), q.element, group_name(d, {2, physical})));
+  }
+}
+
 void add_surfaces(const LineReader& in, GmshData& d) {
   const std::vector<Facet> facets = orient_quads(in, d);
+  check_surface_kinds(in, d, facets);
   std::map<int, Surface> surfaces;
   for (std::size_t i = 0; i < facets.size(); ++i)
     surfaces[d.quads[i].physical].facets.push_back(facets[i]);

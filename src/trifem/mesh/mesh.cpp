@@ -162,7 +162,8 @@ void Mesh::append(const Mesh& other) {
   for (const auto& [name, surface] : other.surfaces_) {
     Surface shifted = surface;
     for (Facet& f : shifted.facets) {
-      f.cell += cell_offset;
+      if (f.bounds_cell())
+        f.cell += cell_offset;
       for (Index& n : f.nodes)
         n += node_offset;
     }

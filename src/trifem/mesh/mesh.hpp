@@ -17,11 +17,14 @@ namespace trifem::mesh {
 using Hex8 = std::array<Index, 8>;
 
 /// A quad4 boundary facet. `nodes` are ordered so that the right-hand rule gives the normal
-/// pointing out of `cell`; `local_face` indexes kHexFaces.
+/// pointing out of `cell`; `local_face` indexes kHexFaces. A facet of a surface mesh that bounds
+/// no cell (a rigid bone surface) has cell −1 and its normal from its node order.
 struct Facet {
   std::array<Index, 4> nodes{};
   Index cell = -1;
   int local_face = -1;
+
+  bool bounds_cell() const { return cell >= 0; }
 };
 
 /// A named surface: a list of oriented facets.

@@ -203,8 +203,14 @@ Mesh refine_uniformly(const Mesh& mesh) {
   Refiner r(mesh);
   r.split_cells();
   Mesh& fine = r.fine();
-  for (const auto& [name, surface] : mesh.surfaces())
+  for (const auto& [name, surface] : mesh.surfaces()) {
+    TRIFEM_CHECK(std::all_of(surface.facets.begin(), surface.facets.end(),
+                             [](const Facet& f) { return f.bounds_cell(); }),
+                 "the surface '{}' is a surface mesh that bounds no cell: refining the mesh "
+                 "splits cells and their faces only (refine the surface mesh itself instead)",
+                 name);
     fine.add_surface(name, refine_surface(fine, surface)); // also its node set
+  }
   for (const auto& [name, set] : mesh.node_sets())
     if (!mesh.has_surface(name))
       fine.add_node_set(name, refine_node_set(r, mesh.num_nodes(), fine.num_nodes(), set));

@@ -135,6 +135,10 @@ TEST_P(TomlConvert, ConvertedExampleGivesTheSameHistory) {
       fs::path(TRIFEM_SOURCE_DIR) / "examples" / example.name / (example.name + ".toml");
   io::CaseSpec spec = analysis::read_case_file(source);
   end_at(spec, example.end_time);
+  // Newton to round-off: at the examples' own tolerances a residual that lands on the tolerance
+  // may take one iteration more in one run than in the other (round-off of vectorized sums
+  // follows the alignment of the heap), and the histories then differ by the tolerance
+  spec.solver.residual_tolerance = spec.solver.increment_tolerance = 1e-12;
   io::write_case(spec, dir / "case.toml");
   expect_same_history(example.name, run(spec, dir / "original"),
                       run(analysis::read_case_file(dir / "case.toml"), dir / "converted"));

@@ -76,7 +76,8 @@ TEST(FebErrors, Tet4Mesh) {
       R"(    <Elements type="tet4" name="P"><elem id="1">1,2,3,5</elem></Elements>)";
   expect_contains(feb_error(solid_model_text(kMaterial, tet, kFixed)),
                   {"bad.feb:13: febio_spec/Mesh/Elements[@type='tet4'][@name='P']: ",
-                   "element type 'tet4' is not supported (trifem has hex8 only)"});
+                   "element type 'tet4' is not supported (trifem has hex8 solids, and quad4 shells "
+                   "as rigid bodies)"});
 }
 
 TEST(FebErrors, UnknownMaterialType) {

@@ -465,6 +465,138 @@ TEST(FebRigid, ABodyOfElementsTurnsRigidlyAboutItsCenterOfMassAndTheBaseHoldsIts
   EXPECT_NEAR(base, -moment.z(), 1e-10 * moment.z());
 }
 
+namespace {
+
+/// A neo-Hookean hex on a frictionless base, pressed 0.1 mm through sliding contact by a rigid
+/// plate made only of a quad4 shell (its own nodes on the hex's top, facing down).
+const char* kShellPlate = R"(<?xml version="1.0"?>
+<febio_spec version="4.0">
+  <Module type="solid"/>
+  <Control><analysis>STATIC</analysis><time_steps>2</time_steps><step_size>0.5</step_size></Control>
+  <Material>
+    <material id="1" name="tissue" type="neo-Hookean"><E>1</E><v>0.3</v></material>
+    <material id="2" name="plate" type="rigid body"><density>1</density><center_of_mass>0.5,0.5,1</center_of_mass></material>
+  </Material>
+  <Mesh>
+    <Nodes name="all">
+      <node id="1">0,0,0</node><node id="2">1,0,0</node><node id="3">1,1,0</node><node id="4">0,1,0</node>
+      <node id="5">0,0,1</node><node id="6">1,0,1</node><node id="7">1,1,1</node><node id="8">0,1,1</node>
+      <node id="9">-0.5,-0.5,1</node><node id="10">1.5,-0.5,1</node><node id="11">1.5,1.5,1</node><node id="12">-0.5,1.5,1</node>
+    </Nodes>
+    <Elements type="hex8" name="Soft"><elem id="1">1,2,3,4,5,6,7,8</elem></Elements>
+    <Elements type="quad4" name="Plate"><elem id="2">9,12,11,10</elem></Elements>
+    <NodeSet name="bottom">1, 2, 3, 4</NodeSet>
+    <NodeSet name="corner">1</NodeSet>
+    <NodeSet name="edge">2</NodeSet>
+    <Surface name="top"><quad4 id="1">5,6,7,8</quad4></Surface>
+    <Surface name="plate_face"><quad4 id="1">9,12,11,10</quad4></Surface>
+    <SurfacePair name="press"><primary>top</primary><secondary>plate_face</secondary></SurfacePair>
+  </Mesh>
+  <MeshDomains><SolidDomain name="Soft" mat="tissue"/><ShellDomain name="Plate" mat="plate"><shell_thickness>0.01</shell_thickness></ShellDomain></MeshDomains>
+  <Boundary>
+    <bc name="base" node_set="bottom" type="zero displacement"><x_dof>0</x_dof><y_dof>0</y_dof><z_dof>1</z_dof></bc>
+    <bc name="corner" node_set="corner" type="zero displacement"><x_dof>1</x_dof><y_dof>1</y_dof><z_dof>0</z_dof></bc>
+    <bc name="edge" node_set="edge" type="zero displacement"><x_dof>0</x_dof><y_dof>1</y_dof><z_dof>0</z_dof></bc>
+  </Boundary>
+  <Rigid>
+    <rigid_bc type="rigid_fixed"><rb>plate</rb><Rx_dof>1</Rx_dof><Ry_dof>1</Ry_dof><Ru_dof>1</Ru_dof><Rv_dof>1</Rv_dof><Rw_dof>1</Rw_dof></rigid_bc>
+    <rigid_bc type="rigid_displacement"><rb>plate</rb><dof>z</dof><value lc="1">-0.1</value><relative>0</relative></rigid_bc>
+  </Rigid>
+  <Contact>
+    <contact type="sliding-elastic" name="press" surface_pair="press"><laugon>0</laugon><fric_coeff>0</fric_coeff></contact>
+  </Contact>
+  <LoadData>
+    <load_controller id="1" type="loadcurve"><interpolate>LINEAR</interpolate>
+      <points><pt>0,0</pt><pt>1,1</pt></points></load_controller>
+  </LoadData>
+</febio_spec>
+)";
+
+} // namespace
+
+TEST(FebRigid, ARigidPlateMadeOfAShellPressesTheTopOfAHexByItsDisplacement) {
+  FebRun run = test::run_feb_case(feb::parse_feb(kShellPlate, "shell_plate.feb"));
+  ASSERT_TRUE(run.report.success) << run.report.failure;
+  const model::Model& m = *run.model;
+  ASSERT_EQ(m.rigid_bodies.size(), 1u);
+  EXPECT_GE(m.rigid_bodies[0].rotating, 0); // a shell body rotates (its rotations held here)
+  EXPECT_FALSE(m.mesh.surface("Plate").facets[0].bounds_cell());
+  const Vector& x = m.problem->state();
+  for (Index n = 4; n < 8; ++n) // the hex's top follows the plate
+    EXPECT_NEAR(x[m.dofs.dof(m.fields.u, n, 2)], -0.1, 1e-12) << "node " << n;
+  for (Index n = 8; n < 12; ++n) // the plate translated rigidly
+    EXPECT_NEAR(x[m.dofs.dof(m.fields.u, n, 2)], -0.1, 1e-15) << "node " << n;
+}
+
+// FEBio ignores the fixed and prescribed displacements of the nodes a rigid body carries: the
+// lid with every node's z also "fixed" turns as it did.
+TEST(FebRigid, ConditionsOnTheNodesOfARigidBodyAreIgnoredAsFebioDoes) {
+  std::string text = kRigidLid;
+  const std::string set = R"(<NodeSet name="bottom">1, 2, 3, 4</NodeSet>)";
+  const std::string bc = R"(<bc name="fix" node_set="bottom")";
+  ASSERT_NE(text.find(set), std::string::npos);
+  ASSERT_NE(text.find(bc), std::string::npos);
+  text.replace(text.find(set), set.size(),
+               set + R"(<NodeSet name="every">1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12</NodeSet>)");
+  text.replace(
+      text.find(bc), bc.size(),
+      R"(<bc name="every_z" node_set="every" type="zero displacement"><x_dof>0</x_dof><y_dof>0</y_dof><z_dof>1</z_dof></bc>)" +
+          bc);
+  FebRun plain = test::run_feb_case(feb::parse_feb(kRigidLid, "rigid_lid.feb"));
+  FebRun fixed = test::run_feb_case(feb::parse_feb(text, "rigid_lid_fixed.feb"));
+  ASSERT_TRUE(plain.report.success) << plain.report.failure;
+  ASSERT_TRUE(fixed.report.success) << fixed.report.failure;
+  const Vector& a = plain.model->problem->state();
+  const Vector& b = fixed.model->problem->state();
+  ASSERT_EQ(a.size(), b.size());
+  EXPECT_GT(a.lpNorm<Eigen::Infinity>(), 0.1); // the lid turned
+  EXPECT_LT((a - b).lpNorm<Eigen::Infinity>(), 1e-14);
+}
+
+// A body attached by two node sets (bc type "rigid" twice) carries the union of them.
+TEST(FebRigid, ABodyAttachedByTwoNodeSetsCarriesBoth) {
+  const char* text = R"(<?xml version="1.0"?>
+<febio_spec version="4.0">
+  <Module type="solid"/>
+  <Control><analysis>STATIC</analysis><time_steps>2</time_steps><step_size>0.5</step_size></Control>
+  <Material>
+    <material id="1" name="tissue" type="neo-Hookean"><E>1</E><v>0.3</v></material>
+    <material id="2" name="plate" type="rigid body"><density>1</density></material>
+  </Material>
+  <Mesh>
+    <Nodes name="all">
+      <node id="1">0,0,0</node><node id="2">1,0,0</node><node id="3">1,1,0</node><node id="4">0,1,0</node>
+      <node id="5">0,0,1</node><node id="6">1,0,1</node><node id="7">1,1,1</node><node id="8">0,1,1</node>
+    </Nodes>
+    <Elements type="hex8" name="Soft"><elem id="1">1,2,3,4,5,6,7,8</elem></Elements>
+    <NodeSet name="bottom">1, 2, 3, 4</NodeSet>
+    <NodeSet name="front">5, 6</NodeSet>
+    <NodeSet name="back">7, 8</NodeSet>
+  </Mesh>
+  <MeshDomains><SolidDomain name="Soft" mat="tissue"/></MeshDomains>
+  <Boundary>
+    <bc name="fix" node_set="bottom" type="zero displacement"><x_dof>1</x_dof><y_dof>1</y_dof><z_dof>1</z_dof></bc>
+    <bc name="a" node_set="front" type="rigid"><rb>plate</rb></bc>
+    <bc name="b" node_set="back" type="rigid"><rb>plate</rb></bc>
+  </Boundary>
+  <Rigid>
+    <rigid_bc type="rigid_fixed"><rb>plate</rb><Rx_dof>1</Rx_dof><Ry_dof>1</Ry_dof><Ru_dof>1</Ru_dof><Rv_dof>1</Rv_dof><Rw_dof>1</Rw_dof></rigid_bc>
+    <rigid_bc type="rigid_displacement"><rb>plate</rb><dof>z</dof><value lc="1">0.2</value><relative>0</relative></rigid_bc>
+  </Rigid>
+  <LoadData>
+    <load_controller id="1" type="loadcurve"><interpolate>LINEAR</interpolate>
+      <points><pt>0,0</pt><pt>1,1</pt></points></load_controller>
+  </LoadData>
+</febio_spec>
+)";
+  FebRun run = test::run_feb_case(feb::parse_feb(text, "two_sets.feb"));
+  ASSERT_TRUE(run.report.success) << run.report.failure;
+  const model::Model& m = *run.model;
+  const Vector& x = m.problem->state();
+  for (Index n = 4; n < 8; ++n)
+    EXPECT_NEAR(x[m.dofs.dof(m.fields.u, n, 2)], 0.2, 1e-14) << "node " << n;
+}
+
 TEST(FebRigid, AHingeToAGroundBodyTurnsTheBodyAsItsPrescribedRotationDid) {
   // the same lid turned by a rigid revolute joint about z through its center of mass, to a
   // "Ground" body of no elements held in all six components; the joint carries the moment

@@ -196,9 +196,9 @@ TEST(GmshReaderErrors, UndefinedNodeTag) {
   expect_file_error("undefined_node.msh", 27, "node tag 99, which is not defined");
 }
 
-TEST(GmshReaderErrors, QuadThatIsNoHexFace) {
-  expect_file_error("quad_not_face.msh", 23,
-                    "element 2 of physical surface 'diagonal' is not a face");
+TEST(GmshReaderErrors, QuadThatIsNoHexFaceAmongFaces) {
+  expect_file_error("quad_not_face.msh", 24,
+                    "element 3 of physical surface 'diagonal' is not a face");
 }
 
 TEST(GmshReaderErrors, InvertedHex) {
@@ -255,3 +255,19 @@ TEST(GmshReaderErrors, DuplicateTagAcrossTheDenseAndHashedRanges) {
 }
 
 } // namespace
+
+// A physical surface none of whose quads is a hex face is a surface mesh (e.g. a rigid bone
+// surface): its facets keep their node order (the normal) and bound no cell.
+TEST(GmshReader, ASurfaceMeshThatBoundsNoCellKeepsItsQuads) {
+  const Mesh mesh = read_gmsh(data("free_surface.msh"));
+  EXPECT_EQ(mesh.num_nodes(), 12);
+  EXPECT_EQ(mesh.num_cells(), 1);
+  const trifem::mesh::Surface& plate = mesh.surface("plate");
+  ASSERT_EQ(plate.facets.size(), 1u);
+  const Facet& f = plate.facets[0];
+  EXPECT_FALSE(f.bounds_cell());
+  EXPECT_EQ(f.nodes, (std::array<Index, 4>{8, 11, 10, 9}));
+  // the normal of the node order 9, 12, 11, 10 points down, towards the block
+  EXPECT_LT(facet_normal(mesh, f).z(), 0.0);
+  EXPECT_EQ(mesh.node_set("plate").size(), 4u);
+}

@@ -30,20 +30,28 @@ Real corner_volume(const mesh::Mesh& mesh, const mesh::Hex8& h) {
          d.dot((x(3) - x(0)).cross(x(4) - x(0)));
 }
 
-/// A quad4 part: a surface of the same name whose facets bound no cell (node order: the normal),
-/// which a <ShellDomain> of a rigid body may carry (read_domains).
-void read_shell_part(Reader& r, pugi::xml_node part, const std::string& name) {
+/// The facet of a quad4 or tri3 (a quad whose last node repeats the third) that bounds no cell.
+mesh::Facet free_facet(const Reader& r, pugi::xml_node e, std::string_view type) {
+  const std::vector<long> ids = r.doc.ids(e);
+  const std::size_t count = type == "tri3" ? 3 : 4;
+  if (ids.size() != count)
+    r.doc.fail(e, fmt::format("a {} has {} nodes, got {}", type, count, ids.size()));
+  const std::vector<Index> nodes = r.nodes_of(e, ids);
+  mesh::Facet f;
+  for (std::size_t a = 0; a < 4; ++a)
+    f.nodes[a] = nodes[std::min(a, count - 1)];
+  return f;
+}
+
+/// A quad4 or tri3 part: a surface of the same name whose facets bound no cell (node order: the
+/// normal), which a <ShellDomain> of a rigid body may carry (read_domains).
+void read_shell_part(Reader& r, pugi::xml_node part, const std::string& name,
+                     std::string_view type) {
   mesh::Surface surface;
   for (pugi::xml_node e : elements(part)) {
     if (std::string_view(e.name()) != "elem")
       r.doc.fail(e, "expected <elem> elements");
-    const std::vector<long> ids = r.doc.ids(e);
-    if (ids.size() != 4)
-      r.doc.fail(e, fmt::format("a quad4 has 4 nodes, got {}", ids.size()));
-    const std::vector<Index> nodes = r.nodes_of(e, ids);
-    mesh::Facet f;
-    std::copy(nodes.begin(), nodes.end(), f.nodes.begin());
-    surface.facets.push_back(f);
+    surface.facets.push_back(free_facet(r, e, type));
   }
   if (surface.facets.empty())
     r.doc.fail(part, "the part has no elements");
@@ -53,15 +61,15 @@ void read_shell_part(Reader& r, pugi::xml_node part, const std::string& name) {
 
 void read_elements(Reader& r, pugi::xml_node part) {
   const std::string type = r.doc.attribute(part, "type");
-  if (type != "hex8" && type != "quad4")
+  if (type != "hex8" && type != "quad4" && type != "tri3")
     r.doc.fail(part, fmt::format("element type '{}' is not supported (trifem has hex8 solids, "
-                                 "and quad4 shells as rigid bodies)",
+                                 "and quad4 and tri3 shells as rigid bodies)",
                                  type));
   const std::string name = r.doc.attribute(part, "name");
   if (r.parts.contains(name) || r.shell_parts.contains(name))
     r.doc.fail(part, "name", fmt::format("a second <Elements> part named '{}'", name));
-  if (type == "quad4")
-    return read_shell_part(r, part, name);
+  if (type == "quad4" || type == "tri3")
+    return read_shell_part(r, part, name, type);
   r.parts[name] = part;
   std::vector<Index> cells;
   for (pugi::xml_node e : elements(part)) {
@@ -131,20 +139,21 @@ void read_surface(Reader& r, pugi::xml_node surface) {
   std::vector<std::array<Index, 4>> quads;
   std::vector<pugi::xml_node> elements;
   for (pugi::xml_node f : detail::elements(surface)) {
-    if (std::string_view(f.name()) != "quad4")
+    const std::string_view type = f.name();
+    if (type != "quad4" && type != "tri3")
       r.doc.fail(f, fmt::format("surface facet type '{}' is not supported (trifem has quad4 faces "
-                                "of hex8 cells only)",
-                                f.name()));
-    const std::vector<long> ids = r.doc.ids(f);
-    if (ids.size() != 4)
-      r.doc.fail(f, fmt::format("a quad4 has 4 nodes, got {}", ids.size()));
-    const std::vector<Index> n = r.nodes_of(f, ids);
-    quads.push_back({n[0], n[1], n[2], n[3]});
+                                "of hex8 cells, and quad4 and tri3 facets of rigid shells)",
+                                type));
+    quads.push_back(free_facet(r, f, type).nodes);
     elements.push_back(f);
   }
   if (quads.empty())
     r.doc.fail(surface, "the surface has no facets");
   mesh::Surface s;
+  const bool triangles =
+      std::any_of(quads.begin(), quads.end(), [](const auto& q) { return q[3] == q[2]; });
+  if (triangles && !on_shells(r, quads))
+    r.doc.fail(surface, "tri3 facets are supported on rigid shells only (trifem has hex8 cells)");
   if (on_shells(r, quads)) { // a surface of a rigid shell: its quads as given
     for (const auto& q : quads)
       s.facets.push_back({.nodes = q, .cell = -1, .local_face = -1});

@@ -77,7 +77,8 @@ struct Reader {
   std::map<long, Index> cell_index;                  ///< FEBio element id -> mesh cell
   std::map<std::string, std::string> material_by_id; ///< FEBio material id -> name
   std::map<std::string, pugi::xml_node> parts;       ///< Elements name -> its element
-  /// quad4 Elements (shells), kept as surfaces of the same name: only a rigid body may use one
+  /// quad4 and tri3 Elements (shells), kept as surfaces of the same name: only a rigid body may
+  /// use one
   std::map<std::string, pugi::xml_node> shell_parts;
   std::map<std::string, std::string> curve_by_id; ///< load controller id -> curve name
   std::vector<CurveExtent> curve_extents;

@@ -4,6 +4,7 @@
 
 namespace trifem::mesh {
 
+inline constexpr int kGmshTri3 = 2;
 inline constexpr int kGmshQuad4 = 3;
 inline constexpr int kGmshHex8 = 5;
 inline constexpr int kGmshPoint = 15;

@@ -377,6 +377,21 @@ void read_quad(LineReader& in, GmshData& d, const ElementHeader& e) {
   }
 }
 
+/// A triangle of a physical surface: a quad whose last node repeats the third. It bounds no
+/// hex, so its surface is a surface mesh (add_surfaces).
+void read_triangle(LineReader& in, GmshData& d, const ElementHeader& e) {
+  if (e.physicals.empty())
+    return;
+  PendingQuad quad{.nodes = {}, .element = e.tag, .line = in.line(), .physical = 0};
+  read_element_nodes(in, d, e, std::span<Index>(quad.nodes.data(), 3));
+  quad.nodes[3] = quad.nodes[2];
+  for (int p : e.physicals) {
+    quad.physical = p;
+    d.quads.push_back(quad);
+    note_use(d, {2, p}, in.line());
+  }
+}
+
 /// A point or curve element: its nodes join the node sets of its physical groups.
 void read_low_dim_element(LineReader& in, GmshData& d, const ElementHeader& e, int dim) {
   if (e.physicals.empty())
@@ -406,8 +421,11 @@ void read_element(LineReader& in, GmshData& d, const ElementHeader& e) {
     return read_hex(in, d, e);
   if (e.type == kGmshQuad4)
     return read_quad(in, d, e);
+  if (e.type == kGmshTri3)
+    return read_triangle(in, d, e);
   throw InputError(fmt::format("{}: element {} has unsupported element type {} ({}); trifem reads "
-                               "hex8 (type 5) volumes and quad4 (type 3) surfaces only",
+                               "hex8 (type 5) volumes, quad4 (type 3) surfaces and triangle3 "
+                               "(type 2) surface meshes only",
                                in.location(), e.tag, e.type, type ? type->name : "unknown"));
 }
 
@@ -652,7 +670,7 @@ bool same_orientation(const std::array<Index, 4>& a, const std::array<Index, 4>&
 /// orientation), else the first (lowest index); a quad that is no hex's face stays as given
 /// (cell −1: a surface mesh, see add_surfaces). Only the quads are hashed, so this stays cheap
 /// for large meshes.
-std::vector<Facet> orient_quads(const LineReader& in, const GmshData& d) {
+std::vector<Facet> orient_quads(const GmshData& d) {
   std::unordered_map<QuadKey, std::size_t, QuadKeyHash> slot_of;
   std::vector<std::size_t> slot(d.quads.size());
   for (std::size_t i = 0; i < d.quads.size(); ++i)
@@ -706,7 +724,7 @@ void check_surface_kinds(const LineReader& in, const GmshData& d,
       continue;
     const PendingQuad& q = d.quads[quads[0]];
     throw InputError(fmt::format(
-        "{}: quad4 element {} of physical surface '{}' is not a face of any hex8 element, while "
+        "{}: element {} of physical surface '{}' is not a face of any hex8 element, while "
         "its other quads are (a surface mesh that bounds no cell, such as a rigid bone surface, "
         "must be a physical surface of its own)",
         in.at(q.line), q.element, group_name(d, {2, physical})));
@@ -714,7 +732,7 @@ void check_surface_kinds(const LineReader& in, const GmshData& d,
 }
 
 void add_surfaces(const LineReader& in, GmshData& d) {
-  const std::vector<Facet> facets = orient_quads(in, d);
+  const std::vector<Facet> facets = orient_quads(d);
   check_surface_kinds(in, d, facets);
   std::map<int, Surface> surfaces;
   for (std::size_t i = 0; i < facets.size(); ++i)

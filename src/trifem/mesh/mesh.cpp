@@ -245,6 +245,18 @@ std::vector<Index> surface_nodes(const Surface& surface) {
   return nodes;
 }
 
+Vec3 facet_area_vector(const Mesh& mesh, const Facet& facet) {
+  const auto& n = facet.nodes;
+  return 0.5 * (mesh.node(n[2]) - mesh.node(n[0])).cross(mesh.node(n[3]) - mesh.node(n[1]));
+}
+
+Real mean_facet_size(const Mesh& mesh, const Surface& surface) {
+  Real sum = 0.0;
+  for (const Facet& f : surface.facets)
+    sum += std::sqrt(facet_area_vector(mesh, f).norm());
+  return sum / static_cast<Real>(surface.facets.size());
+}
+
 EdgeRange edge_length_range(const Mesh& mesh) {
   // hex8 edges in the VTK/Gmsh node order: bottom face, top face, verticals
   constexpr std::array<std::array<int, 2>, 12> kEdges = {{{0, 1},

@@ -122,6 +122,13 @@ private:
 /// Sorted, unique node indices of a surface.
 std::vector<Index> surface_nodes(const Surface& surface);
 
+/// The area vector of a facet in the reference configuration, ½ (x2 − x0) × (x3 − x1) (exact for
+/// a flat quad; for a triangle, a quad whose last node repeats the third, its area vector).
+Vec3 facet_area_vector(const Mesh& mesh, const Facet& facet);
+
+/// The mean facet size √(area) of a surface in the reference configuration [length].
+Real mean_facet_size(const Mesh& mesh, const Surface& surface);
+
 /// Shortest and longest cell edge of a mesh [length].
 struct EdgeRange {
   Real min = 0.0;

@@ -22,21 +22,15 @@ constexpr Real kAxis = 1e-10;
 /// A direction repeats those held at a node when its part outside their span is shorter.
 constexpr Real kRepeated = 1e-6;
 
-/// Area vector of a facet in the reference configuration (a triangle repeats its last node).
-Vec3 facet_area_vector(const mesh::Mesh& mesh, const mesh::Facet& f) {
-  return 0.5 * (mesh.node(f.nodes[2]) - mesh.node(f.nodes[0]))
-                   .cross(mesh.node(f.nodes[3]) - mesh.node(f.nodes[1]));
-}
-
 /// The unit outward normal of a flat surface; InputError if a facet deviates from it.
 Vec3 plane_normal(const mesh::Mesh& mesh, const mesh::Surface& surface) {
   Vec3 sum = Vec3::Zero();
   for (const mesh::Facet& f : surface.facets)
-    sum += facet_area_vector(mesh, f);
+    sum += mesh::facet_area_vector(mesh, f);
   TRIFEM_CHECK(sum.norm() > 0.0, "the surface has no area");
   const Vec3 n = sum.normalized();
   for (const mesh::Facet& f : surface.facets) {
-    const Vec3 nf = facet_area_vector(mesh, f).normalized();
+    const Vec3 nf = mesh::facet_area_vector(mesh, f).normalized();
     TRIFEM_CHECK(nf.cross(n).norm() <= kFlatness && nf.dot(n) > 0.0,
                  "a symmetry plane must be flat: the facet of nodes {}, {}, {}, {} has the normal "
                  "({:.6g}, {:.6g}, {:.6g}), the surface's mean normal is ({:.6g}, {:.6g}, {:.6g}) "
@@ -51,7 +45,7 @@ Vec3 plane_normal(const mesh::Mesh& mesh, const mesh::Surface& surface) {
 std::map<Index, Vec3> nodal_normals(const mesh::Mesh& mesh, const mesh::Surface& surface) {
   std::map<Index, Vec3> normals;
   for (const mesh::Facet& f : surface.facets) {
-    const Vec3 a = facet_area_vector(mesh, f);
+    const Vec3 a = mesh::facet_area_vector(mesh, f);
     std::set<Index> nodes(f.nodes.begin(), f.nodes.end());
     for (Index n : nodes) {
       auto [it, added] = normals.try_emplace(n, Vec3::Zero());
@@ -190,14 +184,6 @@ void linear_equation(const io::CaseSpec& spec, const io::ConstraintSpec& c, cons
   out.equations.push_back(std::move(e));
 }
 
-/// The mean facet size √(area) of a surface [length].
-Real wall_facet_size(const mesh::Mesh& mesh, const mesh::Surface& surface) {
-  Real sum = 0.0;
-  for (const mesh::Facet& f : surface.facets)
-    sum += std::sqrt(facet_area_vector(mesh, f).norm());
-  return sum / static_cast<Real>(surface.facets.size());
-}
-
 /// The nodes of a wall's surface that can move along its normal (not all of the components
 /// the normal has are fixed).
 std::vector<Index> wall_nodes(const Model& model, const mesh::Surface& surface, const Vec3& n,
@@ -225,7 +211,7 @@ std::unique_ptr<physics::Term> rigid_wall(const io::CaseSpec& spec, const io::Co
   if (static_cast<Index>(nodes.size()) < all)
     log::info("  {}: {} of the {} nodes of '{}' are fixed along the wall's normal and left out",
               c.key, all - static_cast<Index>(nodes.size()), all, c.surface);
-  const Real h = wall_facet_size(model.mesh, surface);
+  const Real h = mesh::mean_facet_size(model.mesh, surface);
   contact::RigidWallSettings s;
   s.point = c.point;
   s.normal = c.normal.normalized();

@@ -11,17 +11,6 @@
 namespace trifem::model {
 namespace {
 
-/// Mean facet size sqrt(area) of a surface in the reference configuration.
-Real mean_facet_size(const mesh::Mesh& mesh, const mesh::Surface& surface) {
-  Real sum = 0.0;
-  for (const mesh::Facet& f : surface.facets) {
-    const Vec3 d1 = mesh.node(f.nodes[2]) - mesh.node(f.nodes[0]);
-    const Vec3 d2 = mesh.node(f.nodes[3]) - mesh.node(f.nodes[1]);
-    sum += std::sqrt(0.5 * d1.cross(d2).norm());
-  }
-  return sum / static_cast<Real>(surface.facets.size());
-}
-
 /// Frictionless solid contact, or the mixture law (pressure and potential continuity).
 std::shared_ptr<const contact::ContactLaw> law(const Model& model) {
   if (!model.fields.w.valid())
@@ -45,8 +34,7 @@ Vec3 mean_normal(const mesh::Mesh& mesh, const mesh::Surface& surface) {
   Vec3 sum = Vec3::Zero();
   Real area = 0.0;
   for (const mesh::Facet& f : surface.facets) {
-    const Vec3 a = 0.5 * (mesh.node(f.nodes[2]) - mesh.node(f.nodes[0]))
-                             .cross(mesh.node(f.nodes[3]) - mesh.node(f.nodes[1]));
+    const Vec3 a = mesh::facet_area_vector(mesh, f);
     sum += a;
     area += a.norm();
   }
@@ -154,8 +142,8 @@ std::vector<std::unique_ptr<physics::Term>> contact_terms(const io::CaseSpec& sp
     contact::ContactSettings settings;
     settings.integration =
         c.both_surfaces ? contact::Integration::BothSurfaces : contact::Integration::SlaveNodes;
-    const Real h_master = mean_facet_size(model.mesh, master);
-    const Real h_slave = mean_facet_size(model.mesh, slave);
+    const Real h_master = mesh::mean_facet_size(model.mesh, master);
+    const Real h_slave = mesh::mean_facet_size(model.mesh, slave);
     if (h_slave > kCoarseSlave * h_master && conforming(model.mesh, master, slave))
       log::warn("warning: {}: the slave surface is coarser than the master surface (mean facet "
                 "size {:.4g} mm against {:.4g} mm): master nodes between the slave nodes are not "

@@ -74,10 +74,11 @@ TEST(FebErrors, TheValidBaseFileReads) {
 TEST(FebErrors, Tet4Mesh) {
   const std::string tet =
       R"(    <Elements type="tet4" name="P"><elem id="1">1,2,3,5</elem></Elements>)";
-  expect_contains(feb_error(solid_model_text(kMaterial, tet, kFixed)),
-                  {"bad.feb:13: febio_spec/Mesh/Elements[@type='tet4'][@name='P']: ",
-                   "element type 'tet4' is not supported (trifem has hex8 solids, and quad4 shells "
-                   "as rigid bodies)"});
+  expect_contains(
+      feb_error(solid_model_text(kMaterial, tet, kFixed)),
+      {"bad.feb:13: febio_spec/Mesh/Elements[@type='tet4'][@name='P']: ",
+       "element type 'tet4' is not supported (trifem has hex8 solids, and quad4 and tri3 "
+       "shells as rigid bodies)"});
 }
 
 TEST(FebErrors, UnknownMaterialType) {

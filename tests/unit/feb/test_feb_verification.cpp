@@ -514,8 +514,23 @@ const char* kShellPlate = R"(<?xml version="1.0"?>
 
 } // namespace
 
-TEST(FebRigid, ARigidPlateMadeOfAShellPressesTheTopOfAHexByItsDisplacement) {
-  FebRun run = test::run_feb_case(feb::parse_feb(kShellPlate, "shell_plate.feb"));
+class FebRigidShell : public testing::TestWithParam<bool> {};
+
+TEST_P(FebRigidShell, ARigidPlateMadeOfAShellPressesTheTopOfAHexByItsDisplacement) {
+  std::string text = kShellPlate;
+  if (GetParam()) { // the plate as two triangles
+    for (
+        const auto& [quad, triangles] :
+        {std::pair<std::string, std::string>{
+             R"(<Elements type="quad4" name="Plate"><elem id="2">9,12,11,10</elem></Elements>)",
+             R"(<Elements type="tri3" name="Plate"><elem id="2">9,12,11</elem><elem id="3">9,11,10</elem></Elements>)"},
+         {R"(<Surface name="plate_face"><quad4 id="1">9,12,11,10</quad4></Surface>)",
+          R"(<Surface name="plate_face"><tri3 id="1">9,12,11</tri3><tri3 id="2">9,11,10</tri3></Surface>)"}}) {
+      ASSERT_NE(text.find(quad), std::string::npos) << quad;
+      text.replace(text.find(quad), quad.size(), triangles);
+    }
+  }
+  FebRun run = test::run_feb_case(feb::parse_feb(text, "shell_plate.feb"));
   ASSERT_TRUE(run.report.success) << run.report.failure;
   const model::Model& m = *run.model;
   ASSERT_EQ(m.rigid_bodies.size(), 1u);
@@ -527,6 +542,9 @@ TEST(FebRigid, ARigidPlateMadeOfAShellPressesTheTopOfAHexByItsDisplacement) {
   for (Index n = 8; n < 12; ++n) // the plate translated rigidly
     EXPECT_NEAR(x[m.dofs.dof(m.fields.u, n, 2)], -0.1, 1e-15) << "node " << n;
 }
+
+INSTANTIATE_TEST_SUITE_P(Facets, FebRigidShell, testing::Values(false, true),
+                         [](const auto& info) { return info.param ? "Triangles" : "Quads"; });
 
 // FEBio ignores the fixed and prescribed displacements of the nodes a rigid body carries: the
 // lid with every node's z also "fixed" turns as it did.

@@ -209,8 +209,9 @@ TEST(GmshReaderErrors, TetrahedronIsUnsupported) {
   expect_file_error("tetra.msh", 18, "unsupported element type 4 (tetra4)");
 }
 
-TEST(GmshReaderErrors, TriangleIsUnsupported) {
-  expect_file_error("triangle.msh", 17, "unsupported element type 2 (triangle3)");
+TEST(GmshReaderErrors, TriangleAmongHexFaces) {
+  expect_file_error("triangle_among_faces.msh", 24,
+                    "element 3 of physical surface 'diagonal' is not a face");
 }
 
 // A count of 2e9 nodes declared for 12 and a tag of 1e9 used to size a table of 1e9 entries
@@ -269,5 +270,16 @@ TEST(GmshReader, ASurfaceMeshThatBoundsNoCellKeepsItsQuads) {
   EXPECT_EQ(f.nodes, (std::array<Index, 4>{8, 11, 10, 9}));
   // the normal of the node order 9, 12, 11, 10 points down, towards the block
   EXPECT_LT(facet_normal(mesh, f).z(), 0.0);
+  EXPECT_EQ(mesh.node_set("plate").size(), 4u);
+}
+
+// Triangles of a surface mesh are quads whose last node repeats the third.
+TEST(GmshReader, ATriangulatedSurfaceMeshKeepsItsTriangles) {
+  const Mesh mesh = read_gmsh(data("free_triangles.msh"));
+  const trifem::mesh::Surface& plate = mesh.surface("plate");
+  ASSERT_EQ(plate.facets.size(), 2u);
+  EXPECT_EQ(plate.facets[0].nodes, (std::array<Index, 4>{8, 11, 10, 10}));
+  EXPECT_EQ(plate.facets[1].nodes, (std::array<Index, 4>{8, 10, 9, 9}));
+  EXPECT_FALSE(plate.facets[1].bounds_cell());
   EXPECT_EQ(mesh.node_set("plate").size(), 4u);
 }

@@ -69,6 +69,16 @@ Index node_at(const mesh::Mesh& mesh, const Vec3& X) {
   throw std::runtime_error("no node at the point");
 }
 
+/// Expects the displacements of the nodes of `expected` (the first ones of `got`) to agree to
+/// 1e-9 of the largest.
+void expect_same_displacements(const model::Model& got, const model::Model& expected) {
+  const Real scale = max_displacement(expected);
+  ASSERT_GT(scale, 0.05); // a real deformation
+  for (Index n = 0; n < expected.mesh.num_nodes(); ++n)
+    EXPECT_LT((displacement(got, n) - displacement(expected, n)).norm(), 1e-9 * scale)
+        << "node " << n;
+}
+
 /// Sum over the nodes of `set` of the internal force's component k: the force the conditions
 /// there apply [N].
 Real reaction(const model::Model& m, const std::string& set, int k) {
@@ -154,9 +164,7 @@ curve = "ramp"
   ASSERT_TRUE(prescribed.report.success) << prescribed.report.failure;
   const model::Model& m = *linear.model;
   const model::Model& p = *prescribed.model;
-  const Real scale = max_displacement(p);
-  for (Index n = 0; n < box.num_nodes(); ++n)
-    EXPECT_LT((displacement(m, n) - displacement(p, n)).norm(), 1e-9 * scale) << "node " << n;
+  expect_same_displacements(m, p);
   // the multiplier of the equation of top node a is minus the internal force there
   const Real force = std::abs(reaction(p, "box.zmax", 2));
   ASSERT_GT(force, 0.05);
@@ -185,6 +193,15 @@ components = ["y"]
                    end_time, dt);
 }
 
+/// The top pressed by 0.15 mm as a prescribed displacement (frictionless: x, y free).
+const char* kTopPrescribed = R"(
+[[boundary.prescribed]]
+set = "box.zmax"
+component = "z"
+value = -0.15
+curve = "ramp"
+)";
+
 const char* kWall = R"(
 [[constraint]]
 type = "rigid-wall"
@@ -201,20 +218,11 @@ curve = "ramp"
 TEST(Constraints, ARigidWallPressingABlockIsTheTopPrescribedAndItsForceTheReaction) {
   const test::CaseRun walled = test::run_case_text(pressed_cube(kWall), "wall.toml");
   ASSERT_TRUE(walled.report.success) << walled.report.failure;
-  const test::CaseRun prescribed = test::run_case_text(pressed_cube(R"(
-[[boundary.prescribed]]
-set = "box.zmax"
-component = "z"
-value = -0.15
-curve = "ramp"
-)"),
-                                                       "prescribed.toml");
+  const test::CaseRun prescribed = test::run_case_text(pressed_cube(kTopPrescribed), "top.toml");
   ASSERT_TRUE(prescribed.report.success) << prescribed.report.failure;
   const model::Model& m = *walled.model;
   const model::Model& p = *prescribed.model;
-  const Real scale = max_displacement(p);
-  for (Index n = 0; n < m.mesh.num_nodes(); ++n)
-    EXPECT_LT((displacement(m, n) - displacement(p, n)).norm(), 1e-9 * scale) << "node " << n;
+  expect_same_displacements(m, p);
   ASSERT_EQ(m.walls.size(), 1u);
   const contact::RigidWallTerm& wall = *m.walls[0].term;
   EXPECT_EQ(wall.num_active(), 9);
@@ -332,8 +340,9 @@ namespace {
 
 /// The 2x2x2 cube and, above its top, a 3x3 plate of quads (0.5 mm) that bounds no cell,
 /// facing down, touching the top (gap 0), offset by a quarter facet: the contact is not
-/// conforming.
-mesh::Mesh cube_and_plate() {
+/// conforming. `triangles`: each quad split into two triangles (quads whose last node repeats
+/// the third).
+mesh::Mesh cube_and_plate(bool triangles = false) {
   mesh::Mesh m = mesh::make_box({"box", Vec3::Zero(), Vec3::Ones(), {2, 2, 2}});
   const Index first = m.num_nodes();
   for (int j = 0; j <= 3; ++j)
@@ -343,7 +352,12 @@ mesh::Mesh cube_and_plate() {
   for (int j = 0; j < 3; ++j)
     for (int i = 0; i < 3; ++i) {
       const Index a = first + 4 * j + i;
-      plate.facets.push_back({.nodes = {a, a + 4, a + 5, a + 1}, .cell = -1, .local_face = -1});
+      if (!triangles) {
+        plate.facets.push_back({.nodes = {a, a + 4, a + 5, a + 1}, .cell = -1, .local_face = -1});
+        continue;
+      }
+      plate.facets.push_back({.nodes = {a, a + 4, a + 5, a + 5}, .cell = -1, .local_face = -1});
+      plate.facets.push_back({.nodes = {a, a + 5, a + 1, a + 1}, .cell = -1, .local_face = -1});
     }
   m.add_surface("plate", plate);
   return m;
@@ -351,7 +365,9 @@ mesh::Mesh cube_and_plate() {
 
 } // namespace
 
-TEST(RigidSurface, APlateMadeOnlyOfASurfaceMeshPressesABlockAsAPrescribedTop) {
+class RigidSurface : public testing::TestWithParam<bool> {};
+
+TEST_P(RigidSurface, APlateMadeOnlyOfASurfaceMeshPressesABlockAsAPrescribedTop) {
   io::CaseSpec spec = io::parse_case(pressed_cube(R"(
 [[rigid_body]]
 name = "plate"
@@ -368,23 +384,14 @@ slave = "box.zmax"
 )"),
                                      "plate.toml");
   spec.boxes.clear();
-  spec.meshes.push_back({cube_and_plate(), {{"box", "soft"}}});
+  spec.meshes.push_back({cube_and_plate(GetParam()), {{"box", "soft"}}});
   const test::CaseRun plate = test::run_case_spec(std::move(spec));
   ASSERT_TRUE(plate.report.success) << plate.report.failure;
-  const test::CaseRun prescribed = test::run_case_text(pressed_cube(R"(
-[[boundary.prescribed]]
-set = "box.zmax"
-component = "z"
-value = -0.15
-curve = "ramp"
-)"),
-                                                       "prescribed.toml");
+  const test::CaseRun prescribed = test::run_case_text(pressed_cube(kTopPrescribed), "top.toml");
   ASSERT_TRUE(prescribed.report.success) << prescribed.report.failure;
   const model::Model& m = *plate.model;
   const model::Model& p = *prescribed.model;
-  const Real scale = max_displacement(p);
-  for (Index n = 0; n < p.mesh.num_nodes(); ++n) // the cube's nodes come first
-    EXPECT_LT((displacement(m, n) - displacement(p, n)).norm(), 1e-9 * scale) << "node " << n;
+  expect_same_displacements(m, p); // the cube's nodes come first
   // the plate moved rigidly by its prescribed translation
   for (Index n : m.mesh.node_set("plate"))
     EXPECT_LT((displacement(m, n) - Vec3(0.0, 0.0, -0.15)).norm(), 1e-14);
@@ -395,3 +402,6 @@ curve = "ramp"
   const Vec3 f = m.contacts.at(0)->slave_force(m.problem->state());
   EXPECT_NEAR(f.z(), force, 1e-9 * std::abs(force));
 }
+
+INSTANTIATE_TEST_SUITE_P(Facets, RigidSurface, testing::Values(false, true),
+                         [](const auto& info) { return info.param ? "Triangles" : "Quads"; });

@@ -27,6 +27,10 @@ constexpr Real kWidth = 0.2;  // the thickness of the plane-strain model [mm]
 
 enum class Indenter { Sphere, Cylinder };
 
+/// How the rigid indenter is meshed: a body of cells whose bottom face is the contact surface,
+/// or only that surface, triangulated (a surface mesh that bounds no cell: a bone surface).
+enum class IndenterMesh { Cells, Triangles };
+
 /// The cap: a box of `n` x `n` x 1 cells over [0, kCap]² (`n` x 1 x 1 over [0, kCap] x
 /// [0, kWidth] for the cylinder) whose nodes are lifted by the indenter's height above its
 /// lowest point, R − √(R² − r²): its face "cap.zmin" lies on the indenter, which touches the
@@ -55,13 +59,32 @@ mesh::Mesh rigid_cap(Indenter indenter, int n) {
   return cap;
 }
 
+/// The bottom face of rigid_cap only, each facet split into two triangles (quads whose last
+/// node repeats the third), as the surface "cap.zmin" of a mesh without cells (its nodes keep
+/// their positions; the others are unused).
+mesh::Mesh triangulated_cap(Indenter indenter, int n) {
+  const mesh::Mesh solid = rigid_cap(indenter, n);
+  mesh::Mesh cap;
+  for (const Vec3& X : solid.nodes())
+    cap.add_node(X);
+  mesh::Surface bottom;
+  for (const mesh::Facet& f : solid.surface("cap.zmin").facets) {
+    const auto& a = f.nodes;
+    bottom.facets.push_back({.nodes = {a[0], a[1], a[2], a[2]}, .cell = -1, .local_face = -1});
+    bottom.facets.push_back({.nodes = {a[0], a[2], a[3], a[3]}, .cell = -1, .local_face = -1});
+  }
+  cap.add_surface("cap.zmin", bottom);
+  return cap;
+}
+
 /// The case: the block (n cells per edge, graded towards the contact; one cell thick in y,
 /// held in y, for the cylinder) and the cap (`cap_cells` per edge) pushed down by kDepth.
-io::CaseSpec hertz_case(Indenter indenter, int n, int cap_cells) {
+io::CaseSpec hertz_case(Indenter indenter, int n, int cap_cells,
+                        IndenterMesh cap_mesh = IndenterMesh::Cells) {
   const bool sphere = indenter == Indenter::Sphere;
   const Real grading = 28.0; // the outermost cell over the innermost
-  io::CaseSpec spec =
-      io::parse_case(fmt::format(R"(
+  io::CaseSpec spec = io::parse_case(
+      fmt::format(R"(
 [[mesh.box]]
 name = "half"
 origin = [0.0, 0.0, {}]
@@ -88,7 +111,7 @@ components = ["y"]
 set = "half.zmin"
 [[rigid_body]]
 name = "ball"
-blocks = ["cap"]
+{}
 center = [0.0, 0.0, {}]
 x = {{ displacement = 0.0 }}
 y = {{ displacement = 0.0 }}
@@ -104,12 +127,15 @@ integration = "slave-nodes"
 end_time = 1.0
 dt = 0.25
 )",
-                                 -kBlock, kBlock, sphere ? kBlock : kWidth, kBlock, n,
-                                 sphere ? n : 1, n, grading, sphere ? grading : 1.0, 1.0 / grading,
-                                 kE, kNu, sphere ? "half.ymin" : "half.ymax", kR, -kDepth),
-                     "hertz.toml");
+                  -kBlock, kBlock, sphere ? kBlock : kWidth, kBlock, n, sphere ? n : 1, n, grading,
+                  sphere ? grading : 1.0, 1.0 / grading, kE, kNu,
+                  sphere ? "half.ymin" : "half.ymax",
+                  cap_mesh == IndenterMesh::Cells ? R"(blocks = ["cap"])" : R"(set = "cap.zmin")",
+                  kR, -kDepth),
+      "hertz.toml");
   io::InlineMeshSpec cap;
-  cap.mesh = rigid_cap(indenter, cap_cells);
+  cap.mesh = cap_mesh == IndenterMesh::Cells ? rigid_cap(indenter, cap_cells)
+                                             : triangulated_cap(indenter, cap_cells);
   spec.meshes.push_back(std::move(cap));
   return spec;
 }
@@ -163,6 +189,20 @@ TEST(Hertz, ARigidSpherePressedIntoABlockHasHertzsContactRadius) {
   const std::vector<Real> errors = contact_radius_errors(Indenter::Sphere);
   EXPECT_LT(errors.back(), 0.03);
   EXPECT_LT(errors.back(), errors.front()); // converging under refinement
+}
+
+// The sphere given only by its triangulated surface (the rigid body of a bone surface from a
+// segmentation): Hertz again on the finer mesh.
+TEST(Hertz, ARigidSphereGivenByATriangulatedSurfaceHasHertzsContactRadius) {
+  const test::CaseRun run =
+      test::run_case_spec(hertz_case(Indenter::Sphere, 18, 16, IndenterMesh::Triangles));
+  ASSERT_TRUE(run.report.success) << run.report.failure;
+  const HertzMeasure h = measure(*run.model, Indenter::Sphere);
+  const Real a_hertz = std::cbrt(3.0 * h.force * kR / (4.0 * kE / (1.0 - kNu * kNu)));
+  const Real a_fe = std::sqrt(2.5 * h.second_moment);
+  std::cout << "  triangulated sphere: P = " << h.force << " N, a = " << a_fe << " mm, Hertz "
+            << a_hertz << " mm, error " << 100.0 * std::abs(a_fe / a_hertz - 1.0) << " %\n";
+  EXPECT_LT(std::abs(a_fe / a_hertz - 1.0), 0.03);
 }
 
 TEST(Hertz, ARigidCylinderPressedIntoABlockHasHertzsContactHalfWidth) {

@@ -162,6 +162,50 @@ linear_solver = "sparselu"
   check_restart(file, [](const auto& files) { return files[(files.size() - 1) / 2]; });
 }
 
+TEST_F(CliRestart, ContinuedWhileARigidWallPressesAndWithdraws) {
+  // the wall's contact set (its committed history) and the multipliers of a linear constraint
+  // (the state) are carried through the restart, in contact and after the release
+  const fs::path file = write_file("wall.toml", R"(
+[[mesh.box]]
+name = "cube"
+size = [1.0, 1.0, 1.0]
+divisions = [2, 2, 2]
+material = "soft"
+[materials.soft]
+type = "neo-hookean"
+E = 1.0
+nu = 0.3
+[curves.press]
+points = [[0.0, 0.0], [1.0, 1.0], [2.0, -1.0]]
+[[boundary.fixed]]
+set = "cube.zmin"
+components = ["z"]
+[[boundary.fixed]]
+set = "cube.xmin"
+components = ["x"]
+[[constraint]]
+type = "symmetry-plane"
+surface = "cube.ymin"
+[[constraint]]
+type = "linear"
+terms = [{ node = 0, component = "x", coefficient = 1.0 }, { node = 2, component = "x", coefficient = -1.0 }]
+[[constraint]]
+type = "rigid-wall"
+name = "wall"
+surface = "cube.zmax"
+point = [0.0, 0.0, 1.0]
+normal = [0.1, 0.0, -1.0]
+offset = 0.15
+curve = "press"
+[time]
+end_time = 2.0
+dt = 0.25
+[solver]
+linear_solver = "sparselu"
+)");
+  check_restart(file, [](const auto& files) { return files[(files.size() - 1) / 2]; });
+}
+
 void CliRestart::check_restart(
     const fs::path& file, const std::function<fs::path(const std::vector<fs::path>&)>& pick) const {
   const fs::path whole = output() / "whole", resumed = output() / "resumed";

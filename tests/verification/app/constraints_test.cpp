@@ -12,6 +12,7 @@
 //     through contact is the top prescribed.
 #include "case_runner.hpp"
 #include "generated_meshes.hpp"
+#include "tissue_materials.hpp"
 
 #include <gtest/gtest.h>
 
@@ -22,8 +23,10 @@ using namespace trifem;
 
 namespace {
 
-/// A 2x2x2 neo-Hookean unit cube; `rest` is appended.
-std::string cube_case(const std::string& rest, Real end_time = 1.0, Real dt = 0.5) {
+/// A 2x2x2 unit cube of `material` (a [materials.tissue] table, default neo-Hookean); `rest` is
+/// appended.
+std::string cube_case(const std::string& rest, Real end_time = 1.0, Real dt = 0.5,
+                      const std::string& material = test::kSolid) {
   return fmt::format(R"(
 [time]
 end_time = {}
@@ -35,17 +38,14 @@ dt = {}
 name = "box"
 size = [1.0, 1.0, 1.0]
 divisions = [2, 2, 2]
-material = "soft"
-[materials.soft]
-type = "neo-hookean"
-E = 1.0
-nu = 0.3
+material = "tissue"
 [curves.ramp]
 points = [[0.0, 0.0], [1.0, 1.0]]
 [solver]
 residual_tolerance = 1e-12
 increment_tolerance = 1e-12
-)" + rest;
+)" + material +
+         rest;
 }
 
 Vec3 displacement(const model::Model& m, Index node) {
@@ -110,17 +110,21 @@ curve = "ramp"
 
 } // namespace
 
-TEST(Constraints, ObliqueSymmetryPlanesGiveTheTurnedSolutionOfAxisAlignedOnes) {
-  const test::CaseRun aligned = test::run_case_text(cube_case(kSymmetricCube), "aligned.toml");
+/// The tissue of the symmetry-plane test: solid, biphasic or triphasic.
+class SymmetryPlanes : public testing::TestWithParam<const char*> {};
+
+TEST_P(SymmetryPlanes, ObliqueOnesGiveTheTurnedSolutionOfAxisAlignedOnes) {
+  const std::string text = cube_case(kSymmetricCube, 1.0, 0.5, GetParam());
+  const test::CaseRun aligned = test::run_case_text(text, "aligned.toml");
   ASSERT_TRUE(aligned.report.success) << aligned.report.failure;
   EXPECT_FALSE(aligned.model->constraint_forces.valid()); // axis normals: fixed components
 
   const Mat3 R = Eigen::AngleAxisd(0.7, Vec3(1.0, 2.0, 3.0).normalized()).toRotationMatrix();
-  io::CaseSpec spec = io::parse_case(cube_case(kSymmetricCube), "turned.toml");
+  io::CaseSpec spec = io::parse_case(text, "turned.toml");
   const mesh::Mesh box = mesh::make_box({"box", Vec3::Zero(), Vec3::Ones(), {2, 2, 2}});
   spec.boxes.clear();
-  spec.meshes.push_back(
-      {test::transform_nodes(box, [&](const Vec3& X) { return Vec3(R * X); }), {{"box", "soft"}}});
+  spec.meshes.push_back({test::transform_nodes(box, [&](const Vec3& X) { return Vec3(R * X); }),
+                         {{"box", "tissue"}}});
   const test::CaseRun turned = test::run_case_spec(std::move(spec));
   ASSERT_TRUE(turned.report.success) << turned.report.failure;
   ASSERT_TRUE(turned.model->constraint_forces.valid()); // oblique normals: multipliers
@@ -132,6 +136,15 @@ TEST(Constraints, ObliqueSymmetryPlanesGiveTheTurnedSolutionOfAxisAlignedOnes) {
               1e-9 * scale)
         << "node " << n;
 }
+
+std::string tissue_name(const testing::TestParamInfo<const char*>& info) {
+  const char* names[] = {"Solid", "Biphasic", "Triphasic"};
+  return names[info.index];
+}
+
+INSTANTIATE_TEST_SUITE_P(Tissues, SymmetryPlanes,
+                         testing::Values(test::kSolid, test::kBiphasic, test::kTriphasic),
+                         tissue_name);
 
 TEST(Constraints, ALinearConstraintToTheFixedBottomIsTheTopPrescribedAndItsForceTheReaction) {
   const mesh::Mesh box = mesh::make_box({"box", Vec3::Zero(), Vec3::Ones(), {2, 2, 2}});
@@ -384,7 +397,7 @@ slave = "box.zmax"
 )"),
                                      "plate.toml");
   spec.boxes.clear();
-  spec.meshes.push_back({cube_and_plate(GetParam()), {{"box", "soft"}}});
+  spec.meshes.push_back({cube_and_plate(GetParam()), {{"box", "tissue"}}});
   const test::CaseRun plate = test::run_case_spec(std::move(spec));
   ASSERT_TRUE(plate.report.success) << plate.report.failure;
   const test::CaseRun prescribed = test::run_case_text(pressed_cube(kTopPrescribed), "top.toml");
@@ -405,3 +418,93 @@ slave = "box.zmax"
 
 INSTANTIATE_TEST_SUITE_P(Facets, RigidSurface, testing::Values(false, true),
                          [](const auto& info) { return info.param ? "Triangles" : "Quads"; });
+
+namespace {
+
+/// The message of the InputError that building the model of `text` throws ("" if none).
+std::string model_error(const std::string& text) {
+  try {
+    model::build_model(io::parse_case(text, "bad.toml"));
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+} // namespace
+
+TEST(Constraints, BadConstraintsAreInputErrorsNamingTheConstraint) {
+  const std::vector<std::pair<std::string, std::vector<std::string>>> cases = {
+      {R"(
+[[constraint]]
+type = "symmetry-plane"
+surface = "nowhere"
+)",
+       {"constraint[1]", "surface = 'nowhere'", "no such surface"}},
+      {R"(
+[[boundary.fixed]]
+set = "box.zmin"
+[[constraint]]
+type = "linear"
+terms = [{ node = 0, component = "z", coefficient = 1.0 }]
+)",
+       {"constraint[1]", "every displacement component it names is fixed"}},
+      {R"(
+[[boundary.fixed]]
+set = "box.zmin"
+[[constraint]]
+type = "linear"
+terms = [{ node = 27, component = "z", coefficient = 1.0 }]
+)",
+       {"constraint[1]", "terms[1].node = 27", "nodes 0 to 26"}},
+      {R"(
+[[boundary.fixed]]
+set = "box.zmin"
+[[rigid_body]]
+name = "lid"
+set = "box.zmax"
+[[constraint]]
+type = "symmetry-plane"
+surface = "box.xmax"
+)",
+       {"constraint[1]", "belongs to a rigid body"}},
+  };
+  for (const auto& [rest, phrases] : cases) {
+    const std::string message = model_error(cube_case(rest));
+    ASSERT_FALSE(message.empty()) << rest;
+    for (const std::string& phrase : phrases)
+      EXPECT_NE(message.find(phrase), std::string::npos) << message;
+  }
+}
+
+TEST(Constraints, ACurvedSymmetryPlaneIsAnInputErrorNamingAFacet) {
+  io::CaseSpec spec = io::parse_case(R"(
+[[mesh.box]]
+name = "placeholder"
+size = [1.0, 1.0, 1.0]
+divisions = [1, 1, 1]
+material = "soft"
+[materials.soft]
+type = "neo-hookean"
+E = 1.0
+nu = 0.3
+[[constraint]]
+type = "symmetry-plane"
+surface = "shell.outer"
+[time]
+end_time = 1.0
+dt = 1.0
+)",
+                                     "curved.toml");
+  spec.boxes.clear();
+  spec.meshes.push_back({test::make_shell_octant({}), {{"shell", "soft"}}});
+  try {
+    model::build_model(spec);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    for (const char* phrase : {"constraint[1]", "a symmetry plane must be flat",
+                               "the facet of nodes", "normal-displacement"})
+      EXPECT_NE(message.find(phrase), std::string::npos) << message;
+  }
+}

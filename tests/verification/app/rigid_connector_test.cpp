@@ -6,6 +6,7 @@
 // the bone through a full turn. The tissue is carried rigidly (stress free, its initial state
 // unchanged) whether it is a solid, biphasic or triphasic.
 #include "case_runner.hpp"
+#include "tissue_materials.hpp"
 #include "trifem/analysis/cell_values.hpp"
 #include "trifem/model/rigid_bodies.hpp"
 #include "trifem/tensor/rotation.hpp"
@@ -18,6 +19,9 @@
 #include <string>
 
 using namespace trifem;
+using test::kBiphasic;
+using test::kSolid;
+using test::kTriphasic;
 
 namespace {
 
@@ -27,40 +31,6 @@ const Vec3 kOrigin(-0.4, 0.3, 1.5); // the joint's origin [mm]
 std::string vec(const Vec3& v) {
   return fmt::format("[{:.17g}, {:.17g}, {:.17g}]", v.x(), v.y(), v.z());
 }
-
-constexpr const char* kSolid = R"(
-[materials.tissue]
-type = "neo-hookean"
-E = 1.0
-nu = 0.3
-)";
-
-constexpr const char* kBiphasic = R"(
-[materials.tissue]
-type = "biphasic"
-phi_s0 = 0.25
-permeability = 1.07e-3
-[materials.tissue.solid]
-type = "neo-hookean"
-E = 0.3
-nu = 0.2
-)";
-
-constexpr const char* kTriphasic = R"(
-[materials.tissue]
-type = "triphasic"
-phi_s0 = 0.25
-permeability = 1.07e-3
-fixed_charge = 2.0e-4
-d_plus = 5.0e-4
-d_minus = 8.0e-4
-[materials.tissue.solid]
-type = "neo-hookean"
-E = 0.3
-nu = 0.2
-[analysis]
-initial_state = "donnan-prestressed"
-)";
 
 /// A 2x2x2 cube of `material` hanging from a bone of cells above it (the body "femur", which
 /// also carries the cube's top face), with `rest` appended (the femur's drives, the connectors).

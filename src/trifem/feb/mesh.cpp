@@ -281,6 +281,9 @@ void read_mesh(Reader& r, pugi::xml_node mesh, pugi::xml_node domains) {
       r.doc.fail(part, fmt::format("the quad4 part '{}' is no rigid body's (no <ShellDomain> of a "
                                    "rigid body material names it)",
                                    name));
+  for (const auto& [name, cells] : r.mesh.mesh.cell_blocks()) // for @elem_set: references
+    if (!r.mesh.mesh.has_node_set(name))
+      r.mesh.mesh.add_node_set(name, block_nodes(r.mesh.mesh, name));
   r.drained.assign(r.mesh.mesh.num_nodes(), 0);
 }
 

@@ -56,6 +56,15 @@ int Electrochemistry::charge(const Document& doc, pugi::xml_node node,
   return it->second;
 }
 
+std::vector<Index> block_nodes(const mesh::Mesh& mesh, const std::string& block) {
+  std::vector<Index> nodes;
+  for (Index c : mesh.cell_block(block))
+    nodes.insert(nodes.end(), mesh.cell(c).begin(), mesh.cell(c).end());
+  std::sort(nodes.begin(), nodes.end());
+  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+  return nodes;
+}
+
 std::string Reader::node_set(pugi::xml_node node, const char* attribute) const {
   std::string name = doc.attribute(node, attribute);
   constexpr std::string_view kSurface = "@surface:";
@@ -67,13 +76,32 @@ std::string Reader::node_set(pugi::xml_node node, const char* attribute) const {
                            names_of(mesh.mesh.surfaces())));
     return name; // the mesh registers a surface's nodes as a node set of the same name
   }
+  constexpr std::string_view kElementSet = "@elem_set:";
+  if (name.starts_with(kElementSet)) {
+    name.erase(0, kElementSet.size());
+    if (!mesh.mesh.has_cell_block(name))
+      doc.fail(node, attribute,
+               fmt::format("element set '{}' is not defined (defined: {})", name,
+                           names_of(mesh.mesh.cell_blocks())));
+    if (!mesh.mesh.has_node_set(name) || mesh.mesh.node_set(name) != block_nodes(mesh.mesh, name))
+      doc.fail(node, attribute,
+               fmt::format("a node set named '{}' that is not the nodes of the element set of "
+                           "that name hides them: rename one of the two",
+                           name));
+    return name; // read_mesh registers an element set's nodes as a node set of the same name
+  }
   if (name.starts_with("@"))
     doc.fail(node, attribute,
-             fmt::format("'{}': only node sets and @surface: references are supported", name));
-  if (!mesh.mesh.has_node_set(name))
+             fmt::format("'{}': only node sets, @surface: and @elem_set: references are supported",
+                         name));
+  if (!mesh.mesh.has_node_set(name)) {
+    std::map<std::string, int> defined; // the file's node sets, not those of its element sets
+    for (const auto& [set, nodes] : mesh.mesh.node_sets())
+      if (!mesh.mesh.has_cell_block(set))
+        defined.emplace(set, 0);
     doc.fail(node, attribute,
-             fmt::format("node set '{}' is not defined (defined: {})", name,
-                         names_of(mesh.mesh.node_sets())));
+             fmt::format("node set '{}' is not defined (defined: {})", name, names_of(defined)));
+  }
   return name;
 }
 

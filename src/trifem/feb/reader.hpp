@@ -174,6 +174,9 @@ void read_rigid(Reader& r, pugi::xml_node section);
 /// The rigid bodies as [[rigid_body]]s (translating if attached by nodes with their rotations
 /// fixed and joined by no connector, else rotating), then the connectors as [[connector]]s.
 void map_rigid_bodies(Reader& r);
+
+/// The sorted nodes of the cells of cell block `block`.
+std::vector<Index> block_nodes(const mesh::Mesh& mesh, const std::string& block);
 /// <rigid_connector> of <Rigid>: joints, springs, dampers and contractile forces
 /// (connectors.cpp).
 void read_rigid_connector(Reader& r, pugi::xml_node node);

@@ -615,6 +615,28 @@ TEST(FebRigid, ABodyAttachedByTwoNodeSetsCarriesBoth) {
     EXPECT_NEAR(x[m.dofs.dof(m.fields.u, n, 2)], 0.2, 1e-14) << "node " << n;
 }
 
+// A boundary condition on "@elem_set:<part>" acts on the nodes of the part's elements.
+TEST(FebRigid, AnElementSetReferenceNamesTheNodesOfItsElements) {
+  std::string text = kShellPlate;
+  const std::string base = R"(<bc name="base" node_set="bottom")";
+  ASSERT_NE(text.find(base), std::string::npos);
+  text.replace(text.find(base), base.size(), R"(<bc name="base" node_set="@elem_set:Soft")");
+  const io::CaseSpec spec = feb::parse_feb(text, "elem_set.feb");
+  const mesh::Mesh& mesh = spec.meshes.at(0).mesh;
+  ASSERT_TRUE(std::any_of(spec.fixed.begin(), spec.fixed.end(),
+                          [](const io::FixedSpec& f) { return f.set == "Soft"; }));
+  EXPECT_EQ(mesh.node_set("Soft"), (std::vector<Index>{0, 1, 2, 3, 4, 5, 6, 7}));
+  std::string missing = text;
+  missing.replace(missing.find("@elem_set:Soft"), 14, "@elem_set:Hard");
+  try {
+    feb::parse_feb(missing, "elem_set.feb");
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("element set 'Hard' is not defined"), std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(FebRigid, AHingeToAGroundBodyTurnsTheBodyAsItsPrescribedRotationDid) {
   // the same lid turned by a rigid revolute joint about z through its center of mass, to a
   // "Ground" body of no elements held in all six components; the joint carries the moment

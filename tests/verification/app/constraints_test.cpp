@@ -280,9 +280,8 @@ Real lame_inner_displacement(Real A, Real B, Real p, Real E, Real nu) {
   return b * (1.0 / (A * A) - A / (B * B * B));
 }
 
-/// Mean relative error of the radial displacement of the inner surface against Lamé.
-Real sphere_error(int divisions) {
-  constexpr Real A = 1.0, B = 2.0, p = 1e-5, E = 1.0, nu = 0.3;
+/// A case on the neo-Hookean sphere octant `shell` (material "soft"); `rest` is appended.
+io::CaseSpec shell_case(const std::string& rest, const test::ShellOctantSpec& shell) {
   io::CaseSpec spec = io::parse_case(R"(
 [[mesh.box]]
 name = "placeholder"
@@ -293,6 +292,22 @@ material = "soft"
 type = "neo-hookean"
 E = 1.0
 nu = 0.3
+)" + rest,
+                                     "shell.toml");
+  spec.boxes.clear(); // the box only satisfies the reader: the shell replaces it
+  spec.meshes.push_back({test::make_shell_octant(shell), {{"shell", "soft"}}});
+  return spec;
+}
+
+/// Mean relative error of the radial displacement of the inner surface against Lamé.
+Real sphere_error(int divisions) {
+  constexpr Real A = 1.0, B = 2.0, p = 1e-5, E = 1.0, nu = 0.3;
+  test::ShellOctantSpec shell;
+  shell.inner = A;
+  shell.outer = B;
+  shell.divisions = divisions;
+  shell.layers = 2 * divisions;
+  io::CaseSpec spec = shell_case(R"(
 [[boundary.fixed]]
 set = "shell.x0"
 components = ["x"]
@@ -315,14 +330,7 @@ dt = 1.0
 residual_tolerance = 1e-12
 increment_tolerance = 1e-12
 )",
-                                     "sphere.toml");
-  spec.boxes.clear();
-  test::ShellOctantSpec shell;
-  shell.inner = A;
-  shell.outer = B;
-  shell.divisions = divisions;
-  shell.layers = 2 * divisions;
-  spec.meshes.push_back({test::make_shell_octant(shell), {{"shell", "soft"}}});
+                                 shell);
   const test::CaseRun run = test::run_case_spec(std::move(spec));
   EXPECT_TRUE(run.report.success) << run.report.failure;
   const model::Model& m = *run.model;
@@ -478,16 +486,7 @@ surface = "box.xmax"
 }
 
 TEST(Constraints, ACurvedSymmetryPlaneIsAnInputErrorNamingAFacet) {
-  io::CaseSpec spec = io::parse_case(R"(
-[[mesh.box]]
-name = "placeholder"
-size = [1.0, 1.0, 1.0]
-divisions = [1, 1, 1]
-material = "soft"
-[materials.soft]
-type = "neo-hookean"
-E = 1.0
-nu = 0.3
+  io::CaseSpec spec = shell_case(R"(
 [[constraint]]
 type = "symmetry-plane"
 surface = "shell.outer"
@@ -495,9 +494,7 @@ surface = "shell.outer"
 end_time = 1.0
 dt = 1.0
 )",
-                                     "curved.toml");
-  spec.boxes.clear();
-  spec.meshes.push_back({test::make_shell_octant({}), {{"shell", "soft"}}});
+                                 {});
   try {
     model::build_model(spec);
     ADD_FAILURE() << "no error";

@@ -2,8 +2,8 @@
 // End-to-end tests of implicit dynamic analyses ([analysis] type = "dynamic"): the suddenly
 // loaded cantilever of examples/explicit_cantilever against its dynamic-explicit answer, a
 // quasi-static step followed by a dynamic one on the same mesh (restarted inside the dynamic
-// step, and followed by a quasi-static one again), and a biphasic layer whose inertia is
-// negligible against its quasi-static creep.
+// step, and followed by a quasi-static one again), a biphasic layer whose inertia is
+// negligible against its quasi-static creep, and a swinging rigid body restarted mid-swing.
 #include "cli_harness.hpp"
 #include "edited_text.hpp"
 
@@ -214,6 +214,76 @@ TEST_F(CliDynamic, ARunRestartedInsideTheDynamicStepContinuesTheUninterruptedOne
   ASSERT_EQ(a.names, b.names);
   ASSERT_GT(b.columns[0].size(), 50u) << "the continued run takes the last 100 steps";
   EXPECT_NEAR(b["time [s]"].front(), 1.0001, 1e-12);
+  const std::map<std::string, double> scale = unit_scales(a);
+  const std::size_t offset = a.columns[0].size() - b.columns[0].size();
+  for (std::size_t c = 0; c < a.names.size(); ++c)
+    for (std::size_t i = 1; i < b.columns[c].size(); ++i) // row 0: the restart state itself
+      ASSERT_LE(std::abs(b.columns[c][i] - a.columns[c][offset + i]),
+                1e-12 * scale.at(unit_of(a.names[c])))
+          << a.names[c] << " at t = " << b.columns[0][i];
+}
+
+TEST_F(CliDynamic, ASwingingRigidBodyRestartedMidSwingContinuesTheUninterruptedRun) {
+  // a bone (rigid cells) hinged off its center with a torsion spring, carrying a tissue cube,
+  // set swinging by its starting angular velocity: the restart file holds the motion of the
+  // bone's nodes and the residual history of its six unknowns
+  const fs::path file = write_file("swing.toml", R"(
+[[mesh.box]]
+name = "cube"
+size = [1.0, 1.0, 1.0]
+divisions = [1, 1, 2]
+material = "tissue"
+[[mesh.box]]
+name = "bone"
+origin = [0.0, 0.0, 1.0]
+size = [1.0, 1.0, 0.3]
+divisions = [1, 1, 1]
+[materials.tissue]
+type = "neo-hookean"
+E = 1.0
+nu = 0.3
+density = 1e-9
+[analysis]
+type = "dynamic"
+[dynamic]
+rho_inf = 0.8
+[time]
+end_time = 0.2
+dt = 0.005
+[solver]
+residual_tolerance = 1e-12
+increment_tolerance = 1e-13
+[[rigid_body]]
+name = "femur"
+set = "cube.zmax"
+blocks = ["bone"]
+density = 2e-9
+velocity = [0.0, 0.0, -10.0]
+angular_velocity = [20.0, 0.0, 0.0]
+[[connector]]
+type = "revolute"
+name = "hinge"
+body_a = "ground"
+body_b = "femur"
+origin = [0.5, 1.0, 1.15]
+axis = [1.0, 0.0, 0.0]
+torsion_stiffness = 2e-6
+)");
+  const fs::path whole = output() / "whole", resumed = output() / "resumed";
+  Result r = trifem({"-q", "run", file.string(), "-o", whole.string(), "--write-restart"});
+  ASSERT_EQ(r.exit_code, kSuccess) << r;
+  const std::vector<fs::path> files = restart_files(whole);
+  ASSERT_EQ(files.size(), 40u);       // one per step
+  const fs::path restart = files[19]; // 0.1 s
+  r = trifem({"-q", "run", file.string(), "-o", resumed.string(), "--restart", restart.string()});
+  ASSERT_EQ(r.exit_code, kSuccess) << r;
+  const History a = read_history(whole / "history.csv");
+  const History b = read_history(resumed / "history.csv");
+  ASSERT_EQ(a.names, b.names);
+  ASSERT_EQ(b.columns[0].size(), 21u) << "the continued run takes the last 20 steps";
+  EXPECT_NEAR(b["time [s]"].front(), 0.1, 1e-12);
+  const auto& angle = a["femur.rx [rad]"];
+  EXPECT_GT(*std::max_element(angle.begin(), angle.end()), 0.1) << "the bone swings";
   const std::map<std::string, double> scale = unit_scales(a);
   const std::size_t offset = a.columns[0].size() - b.columns[0].size();
   for (std::size_t c = 0; c < a.names.size(); ++c)

@@ -334,3 +334,41 @@ TEST_F(CliExplicit, NonFiniteValueStopsTheRunKeepingTheResults) {
   EXPECT_EQ(json_number(summary, "steps"), 0.0) << summary;
   EXPECT_TRUE(contains(summary, "non-finite displacement in cell 3")) << summary;
 }
+
+TEST_F(CliExplicit, AFreeBarFallsWithTheAccelerationOfItsBodyForce) {
+  // the bar of explicit_box.toml without support or traction, under gravity along -z: every
+  // node falls as b t² / 2 (central differences integrate a constant acceleration exactly)
+  const fs::path file = write_file("falling_bar.toml", R"(
+[analysis]
+type = "dynamic-explicit"
+[[mesh.box]]
+name = "bar"
+size = [4.0, 1.0, 1.0]
+divisions = [4, 1, 1]
+material = "rubber"
+[materials.rubber]
+type = "neo-hookean"
+E = 0.8
+density = 1.1e-9
+[[loads.body_force]]
+force = [0.0, 0.0, -9810.0]
+[explicit]
+penalty = 4000.0
+[time]
+end_time = 1e-3
+[output]
+interval = 2.5e-4
+[[output.probe]]
+name = "tip"
+point = [4.0, 0.5, 1.0]
+)");
+  const Result r = trifem({"-q", "run", file.string(), "-o", output().string()});
+  ASSERT_EQ(r.exit_code, kSuccess) << r;
+  const History h = read_history(output() / "history.csv");
+  const auto& time = h["time [s]"];
+  const auto& tip = h["tip.uz [mm]"];
+  ASSERT_GE(time.size(), 4u);
+  for (std::size_t i = 0; i < time.size(); ++i)
+    EXPECT_NEAR(tip[i], -0.5 * 9810.0 * time[i] * time[i], 1e-9 * 0.004905) << time[i];
+  EXPECT_NEAR(time.back(), 1e-3, 1e-15);
+}

@@ -2,8 +2,8 @@
 // Finite-difference check of the tangent of an implicit dynamic step (generalized-α): the
 // Jacobian of (1 − α_f) g(x) + α_f g_n + M a_{n+1-α_m}(x) over the free equations, in motion
 // (after a step that left a velocity, an acceleration and a residual history), on a graded
-// mesh with a dead nodal load, and on a biphasic layer (the mixture's mass on the solid) under
-// a traction, built as a case is.
+// mesh with a dead nodal load, on a biphasic layer (the mixture's mass on the solid) under a
+// traction, built as a case is, and on a cube hanging from a swinging rigid body.
 #include "trifem/assembly/fe_problem.hpp"
 #include "trifem/io/case_reader.hpp"
 #include "trifem/linalg/linear_solver.hpp"
@@ -173,7 +173,67 @@ end_time = 1.0
 dt = 1e-3
 )";
 
+/// A solid cube hanging from a heavy bone (a rigid body of cells) that swings about a hinge
+/// with a torsion spring, started with an angular velocity: the inertia of the bone's nodes is
+/// condensed onto its six unknowns, projected at both ends of the step.
+constexpr const char* kSwingingBone = R"(
+[analysis]
+type = "dynamic"
+
+[dynamic]
+rho_inf = 0.6
+
+[[mesh.box]]
+name = "cube"
+size = [1.0, 1.0, 1.0]
+divisions = [1, 1, 2]
+material = "tissue"
+[[mesh.box]]
+name = "bone"
+origin = [0.0, 0.0, 1.0]
+size = [1.0, 1.0, 0.3]
+divisions = [1, 1, 1]
+
+[materials.tissue]
+type = "neo-hookean"
+E = 1.0
+nu = 0.3
+density = 1e-6
+
+[[rigid_body]]
+name = "femur"
+set = "cube.zmax"
+blocks = ["bone"]
+density = 2e-6
+velocity = [0.0, 0.0, -15.0]
+angular_velocity = [30.0, 0.0, 0.0]
+
+[[connector]]
+type = "revolute"
+name = "hinge"
+body_a = "ground"
+body_b = "femur"
+origin = [0.5, 1.0, 1.15]
+axis = [1.0, 0.0, 0.0]
+torsion_stiffness = 0.05
+
+[time]
+end_time = 1.0
+dt = 1e-3
+)";
+
 } // namespace
+
+TEST(DynamicTangent, SwingingRigidBodyStepMatchesFiniteDifferences) {
+  const std::unique_ptr<model::Model> model =
+      model::build_model(io::parse_case(kSwingingBone, "swing.toml"));
+  assembly::FeProblem& p = *model->problem;
+  ASSERT_NE(p.inertia(), nullptr);
+  ASSERT_FALSE(p.rigid_map().empty());
+  ASSERT_GT(model->initial_velocity.norm(), 0.0);
+  p.set_dynamic(true, true, model->initial_velocity);
+  expect_the_finite_difference_tangent(p, 1e-3, 2e-3, 1e-7, 1e-4);
+}
 
 TEST(DynamicTangent, BiphasicStepMatchesFiniteDifferences) {
   const std::unique_ptr<model::Model> model =

@@ -15,7 +15,9 @@
 #include "trifem/parallel/communicator.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <set>
 
 namespace trifem::analysis {
 namespace {
@@ -100,6 +102,36 @@ io::UnstructuredGrid volume_grid(const model::Model& model) {
   return grid;
 }
 
+/// The facets of the mesh's surfaces that bound no cell, each once, as VTK quads or triangles
+/// (a quad whose last node repeats the third) on the points of the nodes they use (`nodes`: the
+/// mesh node of each point).
+io::UnstructuredGrid free_surface_grid(const model::Model& model, std::vector<Index>& nodes) {
+  io::UnstructuredGrid grid;
+  std::set<std::array<Index, 4>> seen;
+  std::vector<Index> point_of(model.mesh.num_nodes(), -1);
+  std::vector<Index> corners;
+  for (const auto& [name, surface] : model.mesh.surfaces())
+    for (const mesh::Facet& f : surface.facets) {
+      std::array<Index, 4> key = f.nodes;
+      std::sort(key.begin(), key.end());
+      if (f.bounds_cell() || !seen.insert(key).second)
+        continue;
+      const bool triangle = f.nodes[3] == f.nodes[2];
+      corners.clear();
+      for (int a = 0; a < (triangle ? 3 : 4); ++a) {
+        Index& point = point_of[f.nodes[a]];
+        if (point < 0) {
+          point = static_cast<Index>(grid.points.size());
+          grid.points.push_back(model.mesh.node(f.nodes[a]));
+          nodes.push_back(f.nodes[a]);
+        }
+        corners.push_back(point);
+      }
+      grid.add_cell(triangle ? io::vtk_cell::kTriangle : io::vtk_cell::kQuad, corners);
+    }
+  return grid;
+}
+
 /// On several processes: the cells whose VTU piece process `rank` writes (a cell goes with the
 /// owner of its first node that has one; rank 0 if none has).
 std::vector<Index> cells_of_process(const model::Model& model, int rank) {
@@ -143,9 +175,26 @@ OutputWriter::OutputWriter(const model::Model& model, const io::OutputSpec& spec
   history_ = std::make_unique<io::CsvWriter>(history_file(), history_columns());
   if (!model.contacts.empty())
     contact_ = std::make_unique<ContactOutput>(model, directory_, true);
+  free_surfaces_ = free_surface_grid(model, free_surface_nodes_);
+  if (free_surfaces_.cell_count() > 0 && spec_.vtu)
+    surfaces_pvd_ = std::make_unique<io::PvdWriter>(directory_ / "surfaces.pvd");
 }
 
 OutputWriter::~OutputWriter() = default;
+
+void OutputWriter::write_free_surfaces(Real time, int number) {
+  const Vector& x = model_.problem->state();
+  io::DataArray u{"displacement [mm]", 3, {}};
+  for (Index n : free_surface_nodes_)
+    for (int k = 0; k < 3; ++k)
+      u.values.push_back(x[model_.dofs.dof(model_.fields.u, n, k)]);
+  io::UnstructuredGrid grid = free_surfaces_;
+  grid.point_data.push_back(std::move(u));
+  const auto file = directory_ / fmt::format("surfaces_{:04d}.vtu", number);
+  if (const auto bad = io::write_vtu(file, grid); bad > 0)
+    log::warn("  {} non-finite values written to {}", bad, file.string());
+  surfaces_pvd_->add(time, file);
+}
 
 std::vector<std::string> OutputWriter::history_columns() const {
   std::vector<std::string> cols = {"time [s]", "step", "dt [s]", "iterations"};
@@ -274,6 +323,8 @@ void OutputWriter::write_state(Real time) {
   last_state_time_ = time;
   if (spec_.vtu && (writes_files_ || piece_cells_))
     write_vtu(time, number);
+  if (surfaces_pvd_) // (rank 0 only: the surface meshes are small)
+    write_free_surfaces(time, number);
   if (contact_ && (writes_files_ || spec_.vtu)) // others: their pieces of the VTU states only
     contact_->write(time, number, spec_.vtu);
 }

@@ -63,6 +63,10 @@ public:
   bool is_output_time(Real time);
 
   std::filesystem::path pvd_file() const { return directory_ / "results.pvd"; }
+  /// surfaces.pvd, the surface meshes' states, if the mesh has any (empty otherwise).
+  std::filesystem::path surfaces_pvd_file() const {
+    return surfaces_pvd_ ? directory_ / "surfaces.pvd" : std::filesystem::path();
+  }
   /// The history file rows go to now (history.csv unless use_history chose another).
   std::filesystem::path history_file() const { return directory_ / history_name_; }
   int vtu_count() const { return vtu_count_; }
@@ -74,6 +78,8 @@ private:
   /// The VTU state numbered `number` (on several processes: this process's piece, and on
   /// rank 0 the .pvtu file).
   void write_vtu(Real time, int number);
+  /// surfaces_NNNN.vtu: the surface meshes with their nodes' displacement.
+  void write_free_surfaces(Real time, int number);
   void write_state(Real time);
   std::vector<std::string> history_columns() const;
   std::vector<double> history_row(Real time, int step, Real dt, int iterations) const;
@@ -82,6 +88,11 @@ private:
   io::OutputSpec spec_;
   std::filesystem::path directory_;
   std::unique_ptr<io::PvdWriter> pvd_;
+  /// The surface meshes (facets that bound no cell: rigid bodies given by their surface) and
+  /// their surfaces.pvd; empty grid and null without any.
+  io::UnstructuredGrid free_surfaces_;
+  std::vector<Index> free_surface_nodes_; ///< the mesh node of each point of free_surfaces_
+  std::unique_ptr<io::PvdWriter> surfaces_pvd_;
   std::unique_ptr<io::CsvWriter> history_;      ///< the run's history.csv
   std::unique_ptr<io::CsvWriter> step_history_; ///< another history file of the current step
   std::string history_name_ = "history.csv";

@@ -245,6 +245,16 @@ std::uint64_t boundary_conditions_hash(const io::CaseSpec& spec) {
     h.real(b.pressure);
     h.text(b.curve);
   }
+  if (!spec.body_forces.empty()) { // (none: the hash is unchanged)
+    h.integer(static_cast<std::int64_t>(spec.body_forces.size()));
+    for (const io::BodyForceSpec& b : spec.body_forces) {
+      h.vec3(b.force);
+      h.integer(static_cast<std::int64_t>(b.blocks.size()));
+      for (const std::string& block : b.blocks)
+        h.text(block);
+      h.text(b.curve);
+    }
+  }
   h.integer(static_cast<std::int64_t>(spec.curves.size()));
   for (const auto& [name, curve] : spec.curves) {
     h.text(name);
@@ -344,6 +354,13 @@ std::uint64_t rigid_bodies_hash(const io::CaseSpec& spec) {
       h.real(d.value);
       h.text(d.curve);
     }
+    if (b.density) // (none: the hash is unchanged)
+      h.real(*b.density);
+    if (b.euler_angles) // (none: the hash is unchanged)
+      for (const io::RigidComponentSpec& a : *b.euler_angles) {
+        h.real(a.value);
+        h.text(a.curve);
+      }
     for (const io::RigidFollowerSpec& f : b.followers) { // (none: the hash is unchanged)
       h.vec3(f.force);
       h.vec3(f.point.value_or(Vec3::Constant(-1e300)));

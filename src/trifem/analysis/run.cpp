@@ -391,7 +391,8 @@ solver::RunReport run_steps(const io::CaseSpec& spec, model::Model& model,
                                             observer(whole);
                                           }));
   };
-  Vector velocity = resume ? resume->velocity : Vector(); // of the last dynamic step's end
+  // of the last dynamic step's end (or the rigid bodies' initial velocity)
+  Vector velocity = resume ? resume->velocity : model.initial_velocity;
   const auto explicit_step = [&](std::optional<std::size_t> k) {
     TRIFEM_VERIFY(run_explicit, "a dynamic-explicit step without its integrator");
     accumulate(run, run_explicit(k, before + run.steps, velocity));
@@ -402,7 +403,7 @@ solver::RunReport run_steps(const io::CaseSpec& spec, model::Model& model,
       return run;
     }
     if (spec.analysis.type == io::AnalysisType::Dynamic)
-      model.problem->set_dynamic(true, !resume);
+      model.problem->set_dynamic(true, !resume, velocity);
     run_over(step_settings(spec));
     return run;
   }
@@ -690,6 +691,8 @@ int run_model(const io::CaseSpec& spec, const std::filesystem::path& output_dir,
             newton.times().factorization, newton.times().solve, output.seconds());
   log::info("results: {} ({} VTU files), {}, {}", output.pvd_file().string(), output.vtu_count(),
             output.history_file().string(), (output_dir / "summary.json").string());
+  if (const auto surfaces = output.surfaces_pvd_file(); !surfaces.empty())
+    log::info("surface meshes (rigid bodies given by their surface): {}", surfaces.string());
   return finish_run(spec, output_dir, summary_json, run);
 }
 

@@ -54,7 +54,8 @@ const char* signal_name(int sig) {
 
 bool is_result_file_name(const std::string& name) {
   static const std::regex pattern(
-      R"((results\.pvd|history\.csv|history_step\d+\.csv|summary\.json|run\.log|)"
+      R"((results\.pvd|surfaces\.pvd|surfaces_\d{4,}\.vtu|history\.csv|history_step\d+\.csv|)"
+      R"(summary\.json|run\.log|)"
       R"(volume_\d{4,}\.vtu|volume_\d{4,}\.pvtu|volume_\d{4,}_\d+\.vtu|contact\d+\.pvd|contact\d+_\d{4,}\.vtu|)"
       R"(contact\d+_surface_\d{4,}\.csv|restart_\d{4,}\.bin)(\.tmp)?)");
   return std::regex_match(name, pattern);

@@ -32,6 +32,7 @@ struct Scratch {
   physics::LocalVector r;
   physics::LocalMatrix K;
   dofs::CondensedElement condensed; ///< r and K on the rigid bodies' unknowns
+  dofs::CondensedElement at_start;  ///< r condensed at the step's start (old projection)
   std::vector<Index> rows;          ///< equation of each local DOF (-1: constrained)
   std::vector<Index> order;         ///< the local DOFs with an equation, by ascending equation
 };
@@ -104,13 +105,24 @@ void scatter_jacobian(const dofs::DofMap& map, std::span<const Index> dofs,
 /// Adds the element residual and tangent to the system. The residual of DOFs that follow a
 /// rigid body stays at them (the force on the node) and its condensation goes to the body's
 /// unknowns, with the condensed tangent.
+/// A share `old_share` = σ of the condensation is taken at the step's start:
+/// (1 − σ) Λ(x)ᵀ r + σ Λ(x_old)ᵀ r, with the Jacobian (1 − σ)(Λ(x)ᵀ K Λ(x) + G) + σ Λ(x_old)ᵀ K
+/// Λ(x).
 void scatter(const dofs::DofMap& map, const dofs::RigidMap* rigid, const physics::EvalState& state,
-             std::span<const Index> dofs, Scratch& s, AssembledSystem& out, bool with_jacobian) {
+             std::span<const Index> dofs, Scratch& s, AssembledSystem& out, bool with_jacobian,
+             Real old_share) {
   const Index n = static_cast<Index>(dofs.size());
   for (Index i = 0; i < n; ++i)
     out.residual[dofs[i]] += s.r[i];
   if (rigid && rigid->condense(dofs, state.x, s.r, with_jacobian ? &s.K : nullptr, s.condensed)) {
-    const auto& condensed = s.condensed;
+    auto& condensed = s.condensed;
+    if (old_share != 0.0) {
+      rigid->condense(dofs, state.x_old, s.r, nullptr, s.at_start);
+      condensed.residual = (1.0 - old_share) * condensed.residual + old_share * s.at_start.residual;
+      if (with_jacobian)
+        condensed.jacobian = (1.0 - old_share) * condensed.jacobian +
+                             old_share * s.at_start.lambda.transpose() * s.K * condensed.lambda;
+    }
     for (Index i = condensed.first_body_dof; i < static_cast<Index>(condensed.dofs.size()); ++i)
       out.residual[condensed.dofs[i]] += condensed.residual[i];
     if (with_jacobian)
@@ -250,6 +262,7 @@ bool Assembler::assemble_term(std::size_t t, const physics::EvalState& state, As
   const physics::Term& term = *terms_[t];
   const Stencils& stencils = stencils_[t];
   const Real weight = weights_.empty() ? 1.0 : weights_[t];
+  const Real old_share = old_projection_.empty() ? 0.0 : old_projection_[t];
   bool admissible = true;
   for (const auto& colour : colours_[t]) {
     const Index count = static_cast<Index>(colour.size());
@@ -270,7 +283,7 @@ bool Assembler::assemble_term(std::size_t t, const physics::EvalState& state, As
         }
         if (frames_ && !frames_->empty())
           rotate(*frames_, stencils.of(e), s, with_jacobian);
-        scatter(map_, rigid_, state, stencils.of(e), s, out, with_jacobian);
+        scatter(map_, rigid_, state, stencils.of(e), s, out, with_jacobian, old_share);
       }
     }
   }
@@ -294,6 +307,11 @@ bool Assembler::assemble(const physics::EvalState& state, AssembledSystem& out,
 void Assembler::set_weights(std::vector<Real> weights) {
   TRIFEM_VERIFY(weights.empty() || weights.size() == terms_.size(), "one weight per term");
   weights_ = std::move(weights);
+}
+
+void Assembler::set_old_projection(std::vector<Real> shares) {
+  TRIFEM_VERIFY(shares.empty() || shares.size() == terms_.size(), "one share per term");
+  old_projection_ = std::move(shares);
 }
 
 } // namespace trifem::assembly

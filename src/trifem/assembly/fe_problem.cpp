@@ -208,18 +208,21 @@ void FeProblem::apply_weights() {
     assembler_->set_weights({});
     return;
   }
-  const Real others = dynamic_ ? 1.0 - inertia_->method().alpha_f : 1.0;
-  std::vector<Real> weights;
-  for (const auto& t : terms_)
+  const Real alpha_f = inertia_->method().alpha_f;
+  const Real others = dynamic_ ? 1.0 - alpha_f : 1.0;
+  std::vector<Real> weights, old_projection;
+  for (const auto& t : terms_) {
     weights.push_back(t.get() == inertia_ ? (dynamic_ ? 1.0 : 0.0) : others);
+    // the inertia of rigid bodies' nodes is projected at both ends of the step, as the other
+    // terms' residual is weighted: (1 − α_f) Λ(x_{n+1})ᵀ + α_f Λ(x_n)ᵀ
+    old_projection.push_back(t.get() == inertia_ && dynamic_ && !rigid_.empty() ? alpha_f : 0.0);
+  }
   assembler_->set_weights(std::move(weights));
+  assembler_->set_old_projection(std::move(old_projection));
 }
 
 void FeProblem::set_dynamic(bool dynamic, bool start, const Vector& velocity) {
   TRIFEM_VERIFY(!dynamic || inertia_ != nullptr, "a dynamic step needs the inertia term");
-  TRIFEM_CHECK(!dynamic || rigid_.empty(),
-               "dynamic steps do not take rotating rigid bodies yet (a rigid body made of "
-               "tied nodes does)");
   if (dynamic && !dynamic_ && start)
     start_motion(velocity);
   if (dynamic && !dynamic_) // the support forces of the state the step starts from
@@ -377,6 +380,7 @@ void FeProblem::commit_step() {
     for (std::size_t i = 0; i < inertia_->dofs().size(); ++i)
       a[inertia_->dofs()[i]] = inertia_->acceleration()[static_cast<Index>(i)];
     Vector inertial = inertia_->mass_times(a);
+    rigid_.add_condensed(x_global_, inertial, inertial);
     frames_.to_local(inertial);
     committed_residual_ = g + inertial;
   }

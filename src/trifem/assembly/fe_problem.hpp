@@ -55,6 +55,10 @@ public:
   /// Scales the residual and Jacobian of every term by its weight (one per term, in the order
   /// of the constructor's terms; empty: all 1). A term of weight 0 is not evaluated.
   void set_weights(std::vector<Real> weights);
+  /// Per term (same order; empty: all 0), the share σ of its condensation onto the rigid
+  /// bodies taken at the step's start: (1 − σ) Λ(x)ᵀ r + σ Λ(x_old)ᵀ r. A dynamic step projects
+  /// the inertia of the bodies' nodes so, as it weights their forces (docs/theory/dynamics.md).
+  void set_old_projection(std::vector<Real> shares);
 
 private:
   bool assemble_term(std::size_t t, const physics::EvalState& state, AssembledSystem& out,
@@ -63,7 +67,8 @@ private:
 
   const dofs::DofMap& map_;
   std::vector<const physics::Term*> terms_;
-  std::vector<Real> weights_; ///< per term (empty: all 1)
+  std::vector<Real> weights_;        ///< per term (empty: all 1)
+  std::vector<Real> old_projection_; ///< per term (empty: all 0)
   const dofs::NodalFrames* frames_;
   const dofs::RigidMap* rigid_;     ///< nullptr: no rigid bodies
   std::vector<int> equation_owner_; ///< empty: this process assembles every element

@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: MIT
-// Prescribed DOF values: value(t) = magnitude * curve(t) on a list of DOFs.
+// Prescribed DOF values: value(t) = magnitude * curve(t) (or a given law) on a list of DOFs.
 #pragma once
 
 #include "trifem/dofs/dof_map.hpp"
 #include "trifem/dofs/load_curve.hpp"
 
+#include <functional>
 #include <vector>
 
 namespace trifem::dofs {
@@ -17,8 +18,11 @@ struct DirichletCondition {
   /// Per DOF (empty: none): added to the value, e.g. the state at the start of a step for a
   /// condition relative to it.
   std::vector<Real> offsets = {};
+  /// A value history other than magnitude × curve (e.g. a component of the rotation vector of
+  /// prescribed Euler angles); empty: magnitude × curve.
+  std::function<Real(Real)> law = {};
 
-  Real value(Real t) const { return magnitude * curve(t); }
+  Real value(Real t) const { return law ? law(t) : magnitude * curve(t); }
 };
 
 /// Marks the DOFs of every condition as constrained in `map` (before finalize()).

@@ -76,6 +76,38 @@ void RigidMap::apply(Vector& x) const {
   }
 }
 
+void RigidMap::spread(const Vector& x, Vector& v) const {
+  for (const RigidBodyDofs& body : bodies_) {
+    const Vec3 theta = values(x, body.rotation);
+    const Mat3 R = rotation::matrix(theta);
+    const Vec3 turn = rotation::tangent(theta) * values(v, body.rotation); // T δΘ
+    const Vec3 shift = values(v, body.translation);
+    for (std::size_t f = 0; f < body.followers.size(); ++f) {
+      const Vec3 u = shift + turn.cross(R * body.arms[f]);
+      for (int k = 0; k < 3; ++k)
+        v[body.followers[f][k]] = u[k];
+    }
+  }
+}
+
+void RigidMap::add_condensed(const Vector& x, const Vector& f, Vector& out) const {
+  for (const RigidBodyDofs& body : bodies_) {
+    const Vec3 theta = values(x, body.rotation);
+    const Mat3 R = rotation::matrix(theta);
+    Vec3 force = Vec3::Zero(), moment = Vec3::Zero();
+    for (std::size_t a = 0; a < body.followers.size(); ++a) {
+      const Vec3 fa = values(f, body.followers[a]);
+      force += fa;
+      moment += (R * body.arms[a]).cross(fa);
+    }
+    const Vec3 generalized = rotation::tangent(theta).transpose() * moment;
+    for (int k = 0; k < 3; ++k) {
+      out[body.translation[k]] += force[k];
+      out[body.rotation[k]] += generalized[k];
+    }
+  }
+}
+
 void RigidMap::expand(std::span<const Index> dofs, std::vector<Index>& out) const {
   out.clear();
   for (Index d : dofs)

@@ -51,6 +51,13 @@ public:
 
   /// Sets the follower DOFs of `x` (every DOF) from the bodies' unknowns in `x`.
   void apply(Vector& x) const;
+  /// Sets the follower DOFs of `v` (every DOF) to Λ times the bodies' DOFs of `v`: the
+  /// variation (or velocity, acceleration) of the nodes for a variation of the bodies' unknowns
+  /// at the state `x`, δu_a = δu_c − [s_a]× T(Θ) δΘ.
+  void spread(const Vector& x, Vector& v) const;
+  /// Adds Λᵀ f, the follower DOFs' values of `f` condensed at the state `x`, to the bodies'
+  /// DOFs of `out` (force Σ f_a and Tᵀ Σ s_a × f_a): generalized forces of nodal forces.
+  void add_condensed(const Vector& x, const Vector& f, Vector& out) const;
   /// Replaces a rotation vector Θ longer than π by the equivalent Θ (1 − 2π/θ), shorter than π,
   /// in each body whose three rotation DOFs are free in `map`: T(Θ) is singular at θ = 2π, so
   /// a body that keeps turning needs this between steps. True if any changed (the followers

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Boundary and Loads sections: fixed and prescribed displacements, zero fluid pressure
-// (drained nodes), pressure and traction loads.
+// (drained nodes), pressure and traction loads, body forces.
 #include "trifem/feb/reader.hpp"
 
 #include <algorithm>
@@ -306,6 +306,85 @@ io::PrescribedSpec fluid_flux(Reader& r, pugi::xml_node load, bool step) {
   return p;
 }
 
+/// A component of a body load given by a math expression or a map (type attribute).
+void reject_expression(const Reader& r, pugi::xml_node value) {
+  if (value.attribute("type"))
+    r.doc.fail(value, "type",
+               "a body force that varies in space (math or map) is not supported: give a "
+               "constant value (with a load controller lc for its time history)");
+}
+
+/// <body_load type="const"> (children x, y, z, each a value with its own lc) or type="body
+/// force" (<force> x,y,z with an lc): FEBio's body force b per unit mass enters its residual as
+/// the external force −ρ b (FEElasticSolidDomain::BodyForce), so b = (0, 0, 9.81) is gravity
+/// along −z: trifem's force is −b. One [[loads.body_force]] per curve of a non-zero component,
+/// on the cells of the attribute elem_set (every cell without one). Top level only.
+void body_load(Reader& r, pugi::xml_node load, bool step) {
+  const std::string type = load.attribute("type").value();
+  if (type != "const" && type != "body force")
+    r.doc.fail(load, "type",
+               fmt::format("body_load of type '{}' is not supported (supported: const, body force)",
+                           type));
+  if (load.attribute("lc"))
+    r.doc.fail(load, "lc",
+               "a load controller on <body_load> itself is not supported: give it on its "
+               "components (x, y, z or force)");
+  if (step)
+    r.doc.fail(load, "a body load inside a <step> is not supported (give it in the top-level "
+                     "<Loads>: trifem's body forces act in every step; a load controller changes "
+                     "it in time)");
+  std::vector<std::string> blocks;
+  if (const pugi::xml_attribute set = load.attribute("elem_set")) {
+    const std::string name = set.value();
+    if (!r.mesh.mesh.has_cell_block(name)) {
+      std::string defined;
+      for (const auto& entry : r.mesh.mesh.cell_blocks())
+        defined += (defined.empty() ? "" : ", ") + entry.first;
+      r.doc.fail(load, "elem_set",
+                 fmt::format("element set '{}' is not defined (defined: {})", name,
+                             defined.empty() ? "none" : defined));
+    }
+    blocks.push_back(name);
+  }
+  std::vector<std::pair<std::string, Vec3>> by_curve; // in the order of the components
+  const auto add = [&](const std::string& curve, int k, Real b) {
+    if (r.always_zero(b, curve))
+      return;
+    auto it = std::find_if(by_curve.begin(), by_curve.end(),
+                           [&](const auto& entry) { return entry.first == curve; });
+    if (it == by_curve.end())
+      it = by_curve.insert(by_curve.end(), {curve, Vec3::Zero()});
+    it->second[k] = -b;
+  };
+  if (type == "const") {
+    for (pugi::xml_node c : elements(load)) {
+      const std::string_view name = c.name();
+      const int k = name == "x" ? 0 : name == "y" ? 1 : name == "z" ? 2 : -1;
+      if (k < 0)
+        r.doc.fail(c, fmt::format("unknown parameter '{}' of a const body load (expected one of: "
+                                  "x, y, z)",
+                                  name));
+      reject_expression(r, c);
+      add(r.curve_of(c), k, r.doc.number(c));
+    }
+  } else {
+    for (pugi::xml_node c : elements(load))
+      if (std::string_view(c.name()) != "force")
+        r.doc.fail(c, fmt::format("unknown parameter '{}' of a body force load (expected: force)",
+                                  c.name()));
+    const pugi::xml_node force = r.doc.child(load, "force");
+    reject_expression(r, force);
+    const Vec3 b = r.doc.vector(force);
+    const std::string curve = r.curve_of(force);
+    for (int k = 0; k < 3; ++k)
+      add(curve, k, b[k]);
+  }
+  if (by_curve.empty())
+    r.warn(load, "a body load that is zero at every time is ignored");
+  for (const auto& [curve, force] : by_curve)
+    r.spec.body_forces.push_back({key_of(r, load), force, blocks, curve});
+}
+
 } // namespace
 
 void read_loads(Reader& r, pugi::xml_node section, std::vector<io::PressureSpec>& pressures,
@@ -323,9 +402,12 @@ void read_loads(Reader& r, pugi::xml_node section, std::vector<io::PressureSpec>
         pressures.push_back(*p);
     } else if (surface_load && type == "fluidflux") {
       prescribed.push_back(fluid_flux(r, load, step));
+    } else if (std::string_view(load.name()) == "body_load") {
+      body_load(r, load, step);
     } else {
       r.doc.fail(load, "only <surface_load> of type pressure, traction, normal_traction and "
-                       "fluidflux are supported in <Loads>");
+                       "fluidflux are supported in <Loads>, and <body_load> of type const and "
+                       "body force");
     }
   }
 }

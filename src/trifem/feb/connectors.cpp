@@ -75,7 +75,24 @@ void refuse_if_set(const Reader& r, const Parameters& p, std::string_view name,
     r.doc.fail(n, fmt::format("{} is not supported: {}", name, why));
 }
 
-void read_joint(const Reader& r, pugi::xml_node node, const Parameters& p, io::ConnectorSpec& c) {
+/// A spherical joint's prescribed rotation (prescribed_rotation, rotation_x, _y, _z: the
+/// rotation vector of body b relative to body a, R_b R_aᵀ = exp[a]×) or its moments (moment_x,
+/// _y, _z: FEBio applies M to body a and −M to body b), for map_rigid_bodies.
+void read_spherical_rotation(Reader& r, pugi::xml_node node, const Parameters& p,
+                             const io::ConnectorSpec& c) {
+  Reader::JointRotation j{node, c.body_a, c.body_b, {}};
+  bool any = false;
+  for (int k = 0; k < 3; ++k) {
+    const pugi::xml_node motion = p[fmt::format("rotation_{}", "xyz"[k])];
+    const pugi::xml_node load = p[fmt::format("moment_{}", "xyz"[k])];
+    j.drives[k] = joint_drive(r, p["prescribed_rotation"], motion, load);
+    any = any || j.drives[k].drive != io::RigidDrive::Free;
+  }
+  if (any)
+    r.joint_rotations.push_back(std::move(j));
+}
+
+void read_joint(Reader& r, pugi::xml_node node, const Parameters& p, io::ConnectorSpec& c) {
   refuse_if_set(r, p, "force_damping", "trifem's joints have no damping");
   refuse_if_set(r, p, "moment_damping", "trifem's joints have no damping");
   c.origin = r.doc.vector(p["joint"] ? p["joint"] : r.doc.child(node, "joint_origin"));
@@ -93,10 +110,8 @@ void read_joint(const Reader& r, pugi::xml_node node, const Parameters& p, io::C
     c.rotation = joint_drive(r, p["prescribed_rotation"], p["rotation"], p["moment"]);
   if (c.kind == K::Prismatic || c.kind == K::Cylindrical)
     c.translation = joint_drive(r, p["prescribed_translation"], p["translation"], p["force"]);
-  if (c.kind == K::Spherical && switched_on(r, p["prescribed_rotation"]))
-    r.doc.fail(p["prescribed_rotation"],
-               "a prescribed rotation of a spherical joint is not supported (prescribe the "
-               "rotation of the body with rigid_rotation, or use a revolute joint)");
+  if (c.kind == K::Spherical)
+    read_spherical_rotation(r, node, p, c);
   for (const char* key : {"prescribed_translation_1", "prescribed_translation_2"})
     if (switched_on(r, p[key]))
       r.doc.fail(p[key], "prescribed translations of a planar joint are not supported");

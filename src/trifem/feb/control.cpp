@@ -322,7 +322,7 @@ void read_steps(Reader& r, pugi::xml_node root) {
 }
 
 void map_densities(Reader& r) {
-  if (!r.spec.has_dynamic_step())
+  if (!r.spec.has_dynamic_step() && r.spec.body_forces.empty())
     return;
   for (auto& [name, m] : r.spec.materials)
     if (const auto it = r.densities.find(name); it != r.densities.end())

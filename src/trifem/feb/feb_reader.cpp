@@ -138,6 +138,7 @@ void read_sections(Reader& r) {
     detail::read_initial(r, i);
   detail::read_steps(r, root);
   detail::map_densities(r);
+  detail::drop_static_rigid_velocities(r);
   check_curve_extents(r);
   detail::map_baths(r);
   for (const pugi::xml_node c : root.children("Contact"))

@@ -60,6 +60,15 @@ struct RigidBodyInput {
   std::array<io::RigidComponentSpec, 3> drives; ///< rigid_displacement, rigid_force
   std::array<io::RigidComponentSpec, 3> rotation_drives; ///< rigid_rotation, rigid_moment
   bool connected = false;                                ///< a rigid_connector names it: it rotates
+  /// Per component (x, y, z, then the rotations): the order of the rigid condition that last
+  /// fixed or drove it (0: none). As in FEBio, a later condition replaces an earlier one.
+  std::array<int, 6> order{};
+  /// rigid_euler_angles: Ex, Ey, Ez in radians with their curves
+  std::optional<std::array<io::RigidComponentSpec, 3>> euler_angles;
+  pugi::xml_node euler_node;
+  Vec3 velocity = Vec3::Zero();         ///< rigid_ic initial_rigid_velocity
+  Vec3 angular_velocity = Vec3::Zero(); ///< rigid_ic initial_rigid_angular_velocity
+  pugi::xml_node initial;               ///< the last rigid_ic (for messages)
 };
 
 /// Everything the section readers share while a file is read.
@@ -87,6 +96,16 @@ struct Reader {
   std::map<std::string, RigidBodyInput> rigid_bodies; ///< by material name
   /// The rigid connectors, their bodies named by material name until map_rigid_bodies
   std::vector<io::ConnectorSpec> connectors;
+  /// The prescribed rotation or the moments of a spherical joint: the rotation vector of body b
+  /// relative to body a (or the moment on b), which map_rigid_bodies gives to the body that
+  /// moves when the other is the ground.
+  struct JointRotation {
+    pugi::xml_node where;
+    std::string body_a, body_b;                   ///< material names
+    std::array<io::RigidComponentSpec, 3> drives; ///< on body b
+  };
+  std::vector<JointRotation> joint_rotations;
+  int rigid_conditions = 0;               ///< rigid_bc and rigid_load elements read so far
   std::vector<std::string> flux_surfaces; ///< surfaces with a prescribed normal fluid flux
   /// prescribed fluid pressures other than 0 of a biphasic model: baths at that pressure
   std::vector<const EffectiveCondition*> pressure_baths;
@@ -144,7 +163,8 @@ void read_load_data(Reader& r, pugi::xml_node section);
 void read_boundary(Reader& r, pugi::xml_node section, std::vector<io::FixedSpec>& fixed,
                    std::vector<io::PrescribedSpec>& prescribed, bool step);
 /// The surface loads of a Loads section: follower pressures and dead tractions, mixture normal
-/// tractions (as pressures) and normal fluid fluxes (as prescribed fluxes, top level only).
+/// tractions (as pressures) and normal fluid fluxes (as prescribed fluxes, top level only); its
+/// body loads (top level only) go to r.spec.body_forces.
 void read_loads(Reader& r, pugi::xml_node section, std::vector<io::PressureSpec>& pressures,
                 std::vector<io::TractionSpec>& tractions,
                 std::vector<io::PrescribedSpec>& prescribed, bool step);
@@ -154,7 +174,8 @@ enum class FebAnalysis { Static, SteadyState, Transient, Dynamic };
 /// given) is set to the analysis (a dynamic one also sets r.spec.dynamics).
 io::TimeSpec read_control(Reader& r, pugi::xml_node control, Real start,
                           FebAnalysis* analysis = nullptr);
-/// The densities of the materials when some step is dynamic (after read_steps).
+/// The densities of the materials when some step is dynamic or a body load acts (after
+/// read_steps).
 void map_densities(Reader& r);
 /// Control or Step: the time of the run and its steps with their conditions.
 void read_steps(Reader& r, pugi::xml_node root);
@@ -174,6 +195,9 @@ void read_rigid(Reader& r, pugi::xml_node section);
 /// The rigid bodies as [[rigid_body]]s (translating if attached by nodes with their rotations
 /// fixed and joined by no connector, else rotating), then the connectors as [[connector]]s.
 void map_rigid_bodies(Reader& r);
+/// In a static analysis the rigid bodies' initial velocities (rigid_ic) are dropped, with a
+/// warning: they act in dynamic analyses only. Call once the steps are read.
+void drop_static_rigid_velocities(Reader& r);
 
 /// The sorted nodes of the cells of cell block `block`.
 std::vector<Index> block_nodes(const mesh::Mesh& mesh, const std::string& block);

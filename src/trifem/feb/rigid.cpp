@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cctype>
 #include <fmt/format.h>
+#include <numbers>
 #include <set>
 
 namespace trifem::feb::detail {
@@ -41,6 +42,31 @@ int rotation(const Reader& r, pugi::xml_node dof) {
   r.doc.fail(dof, fmt::format("dof '{}' is not a rotation (Ru, Rv, Rw)", d));
 }
 
+constexpr std::string_view kComponentNames[] = {"x", "y", "z", "Ru", "Rv", "Rw"};
+
+/// The drive of component k (0-2 translations, 3-5 rotations) of a body.
+io::RigidComponentSpec& drive_of(RigidBodyInput& body, int k) {
+  return k < 3 ? body.drives[k] : body.rotation_drives[k - 3];
+}
+
+/// A rigid condition fixing (`drive` null) or driving component k of `body`, in the file's
+/// order: as in FEBio, it replaces a fixed or driven state an earlier condition gave (with a
+/// warning); two drives of one component are an error.
+void set_component(Reader& r, pugi::xml_node node, RigidBodyInput& body, int k,
+                   const io::RigidComponentSpec* drive) {
+  io::RigidComponentSpec& current = drive_of(body, k);
+  if (drive && current.drive != io::RigidDrive::Free)
+    r.doc.fail(node, "a second motion or load on the same component of the body");
+  if (body.fixed[k] != (drive == nullptr) &&
+      (body.fixed[k] || current.drive != io::RigidDrive::Free))
+    r.warn(node, fmt::format("component {} of the body was {} by an earlier rigid condition; "
+                             "this one replaces it (as in FEBio)",
+                             kComponentNames[k], body.fixed[k] ? "fixed" : "driven"));
+  body.fixed[k] = drive == nullptr;
+  current = drive ? *drive : io::RigidComponentSpec{};
+  body.order[k] = r.rigid_conditions;
+}
+
 /// rigid_fixed: Rx_dof ... Rw_dof flags.
 void rigid_fixed(Reader& r, pugi::xml_node bc) {
   RigidBodyInput& body = body_of(r, bc);
@@ -52,7 +78,8 @@ void rigid_fixed(Reader& r, pugi::xml_node bc) {
     const auto k = std::find(std::begin(names), std::end(names), c.name()) - std::begin(names);
     if (k == 6)
       r.doc.fail(c, fmt::format("unknown parameter '{}' of rigid_fixed", c.name()));
-    body.fixed[k] = body.fixed[k] || r.doc.integer(c) != 0;
+    if (r.doc.integer(c) != 0 && !body.fixed[k])
+      set_component(r, bc, body, static_cast<int>(k), nullptr);
   }
 }
 
@@ -76,10 +103,8 @@ void rigid_drive(Reader& r, pugi::xml_node node, io::RigidDrive drive, bool rota
       r.doc.fail(c,
                  fmt::format("unknown parameter '{}' of {}", name, node.attribute("type").value()));
   }
-  io::RigidComponentSpec& component = rotating ? body.rotation_drives[k] : body.drives[k];
-  if (component.drive != io::RigidDrive::Free)
-    r.doc.fail(node, "a second motion or load on the same component of the body");
-  component = {drive, r.doc.number(value), r.curve_of(value)};
+  const io::RigidComponentSpec given{drive, r.doc.number(value), r.curve_of(value)};
+  set_component(r, node, body, rotating ? 3 + k : k, &given);
 }
 
 /// rigid_rotation_vector: the three components vx, vy, vz of the rotation vector prescribed
@@ -95,10 +120,147 @@ void rigid_rotation_vector(Reader& r, pugi::xml_node node) {
   }
   for (int k = 0; k < 3; ++k) {
     const pugi::xml_node v = node.child(fmt::format("v{}", "xyz"[k]).c_str());
-    io::RigidComponentSpec& component = body.rotation_drives[k];
-    if (component.drive != io::RigidDrive::Free)
-      r.doc.fail(node, "a second motion or load on the same component of the body");
-    component = {io::RigidDrive::Displacement, v ? r.doc.number(v) : 0.0, v ? r.curve_of(v) : ""};
+    const io::RigidComponentSpec given{io::RigidDrive::Displacement, v ? r.doc.number(v) : 0.0,
+                                       v ? r.curve_of(v) : ""};
+    set_component(r, node, body, 3 + k, &given);
+  }
+}
+
+/// rigid_euler_angles: the rotation R_z(Ez) R_y(Ey) R_x(Ex) prescribed by three angles in
+/// degrees, each with its curve (FEBio's quatd::SetEuler; its only convention).
+void rigid_euler_angles(Reader& r, pugi::xml_node node) {
+  RigidBodyInput& body = body_of(r, node);
+  for (pugi::xml_node c : elements(node)) {
+    const std::string_view name = c.name();
+    if (name == "convention" && r.doc.text(c) != "ZXY" && r.doc.text(c) != "0")
+      r.doc.fail(c, fmt::format("convention '{}' is not supported (FEBio's only one: ZXY, the "
+                                "rotation R_z R_y R_x)",
+                                r.doc.text(c)));
+    if (name != "rb" && name != "Ex" && name != "Ey" && name != "Ez" && name != "convention")
+      r.doc.fail(c, fmt::format("unknown parameter '{}' of rigid_euler_angles", name));
+  }
+  if (body.euler_angles)
+    r.doc.fail(node, "a second rigid_euler_angles on the same body");
+  std::array<io::RigidComponentSpec, 3> angles;
+  for (int k = 0; k < 3; ++k) {
+    const pugi::xml_node e = node.child(fmt::format("E{}", "xyz"[k]).c_str());
+    angles[k] = {io::RigidDrive::Displacement, e ? r.doc.number(e) * std::numbers::pi / 180.0 : 0.0,
+                 e ? r.curve_of(e) : ""};
+  }
+  body.euler_angles = angles;
+  body.euler_node = node;
+}
+
+/// initial_rigid_velocity and initial_rigid_angular_velocity (rigid_ic): the body's velocity at
+/// the start of a dynamic analysis.
+void rigid_initial_velocity(Reader& r, pugi::xml_node node, bool angular) {
+  RigidBodyInput& body = body_of(r, node);
+  for (pugi::xml_node c : elements(node))
+    if (std::string_view name = c.name(); name != "rb" && name != "value")
+      r.doc.fail(c,
+                 fmt::format("unknown parameter '{}' of {}", name, node.attribute("type").value()));
+  (angular ? body.angular_velocity : body.velocity) = r.doc.vector(r.doc.child(node, "value"));
+  body.initial = node;
+}
+
+/// A node set of the nodes of sets `a` and `b` (its name, "<a>_and_<b>").
+std::string union_set(Reader& r, const std::string& a, const std::string& b) {
+  std::vector<Index> nodes = r.mesh.mesh.node_set(a);
+  const std::vector<Index>& more = r.mesh.mesh.node_set(b);
+  nodes.insert(nodes.end(), more.begin(), more.end());
+  std::sort(nodes.begin(), nodes.end());
+  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+  std::string name = a + "_and_" + b;
+  while (r.mesh.mesh.has_node_set(name))
+    name += "_";
+  r.mesh.mesh.add_node_set(name, std::move(nodes));
+  return name;
+}
+
+/// The nodes of a body's elements, ascending.
+std::vector<Index> element_nodes(const Reader& r, const RigidBodyInput& body) {
+  std::vector<Index> nodes;
+  for (const std::string& block : body.blocks)
+    for (Index c : r.mesh.mesh.cell_block(block))
+      nodes.insert(nodes.end(), r.mesh.mesh.cell(c).begin(), r.mesh.mesh.cell(c).end());
+  std::sort(nodes.begin(), nodes.end());
+  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+  return nodes;
+}
+
+/// Moves body `from` into body `into` (FEBio's merge of rigid bodies whose elements share
+/// nodes): elements, attached nodes, conditions and connectors.
+void merge_body(Reader& r, const std::string& into, const std::string& from) {
+  RigidBodyInput& a = r.rigid_bodies.at(into);
+  const RigidBodyInput& b = r.rigid_bodies.at(from);
+  const auto density = [&](const RigidBodyInput& body) {
+    const pugi::xml_node d = body.material.child("density");
+    return d ? r.doc.number(d) : 1.0;
+  };
+  if (density(a) != density(b))
+    r.doc.fail(b.material, fmt::format("the elements of rigid bodies '{}' and '{}' share nodes, so "
+                                       "they move as one body (as in FEBio), but their densities "
+                                       "differ ({} and {}): give them the same density",
+                                       into, from, density(a), density(b)));
+  a.blocks.insert(a.blocks.end(), b.blocks.begin(), b.blocks.end());
+  if (!b.set.empty())
+    a.set = a.set.empty() ? b.set : union_set(r, a.set, b.set);
+  for (int k = 0; k < 6; ++k) // the later condition of the two (FEBio's order)
+    if (b.order[k] > a.order[k]) {
+      if (a.order[k] > 0 && !(a.fixed[k] && b.fixed[k])) // (both fixing it: the same)
+        r.warn(b.material,
+               fmt::format("component {} of the merged body '{}' is {} by a rigid "
+                           "condition of '{}' that replaces an earlier one of '{}' "
+                           "(as in FEBio)",
+                           kComponentNames[k], into, b.fixed[k] ? "fixed" : "driven", from, into));
+      a.fixed[k] = b.fixed[k];
+      drive_of(a, k) = k < 3 ? b.drives[k] : b.rotation_drives[k - 3];
+      a.order[k] = b.order[k];
+    }
+  a.connected = a.connected || b.connected;
+  if (a.velocity == Vec3::Zero() && a.angular_velocity == Vec3::Zero()) {
+    a.velocity = b.velocity;
+    a.angular_velocity = b.angular_velocity;
+    a.initial = b.initial;
+  }
+  for (io::ConnectorSpec& c : r.connectors)
+    for (std::string* name : {&c.body_a, &c.body_b})
+      if (*name == from)
+        *name = into;
+  for (Reader::JointRotation& j : r.joint_rotations)
+    for (std::string* name : {&j.body_a, &j.body_b})
+      if (*name == from)
+        *name = into;
+  r.warn(b.material, fmt::format("the elements of rigid body '{}' share nodes with those of '{}': "
+                                 "they move as one body, '{}' (as in FEBio)",
+                                 from, into, into));
+  r.rigid_bodies.erase(from);
+}
+
+/// Merges the rigid bodies whose elements share nodes, into the one of the lowest material id,
+/// until none do.
+void merge_touching_bodies(Reader& r) {
+  const auto id = [&](const std::string& name) {
+    return r.rigid_bodies.at(name).material.attribute("id").as_llong();
+  };
+  for (bool merged = true; merged;) {
+    merged = false;
+    std::map<Index, std::string> owner; // node -> body
+    for (const auto& [name, body] : r.rigid_bodies) {
+      for (Index n : element_nodes(r, body)) {
+        const auto [it, fresh] = owner.emplace(n, name);
+        if (fresh || it->second == name)
+          continue;
+        const bool keep_other = id(it->second) <= id(name);
+        const std::string into = keep_other ? it->second : name;
+        const std::string from = keep_other ? name : it->second;
+        merge_body(r, into, from);
+        merged = true;
+        break;
+      }
+      if (merged)
+        break;
+    }
   }
 }
 
@@ -121,7 +283,8 @@ std::array<bool, 3> fixed_at_every_node(const Reader& r, const std::string& set)
 
 /// A body of elements, or one whose rotation is not held, has six unknowns.
 bool rotates(const RigidBodyInput& body) {
-  if (!body.blocks.empty() || body.shell || body.connected)
+  if (!body.blocks.empty() || body.shell || body.connected ||
+      body.angular_velocity != Vec3::Zero() || body.euler_angles)
     return true;
   for (int k = 0; k < 3; ++k)
     if (!body.fixed[3 + k] || body.rotation_drives[k].drive != io::RigidDrive::Free)
@@ -147,14 +310,27 @@ io::RigidBodySpec rotating_body(const Reader& r, const std::string& name,
   spec.set = body.set;
   spec.blocks = body.blocks;
   spec.rotates = true;
+  spec.velocity = body.velocity;
+  spec.angular_velocity = body.angular_velocity;
   if (const pugi::xml_node c = body.material.child("center_of_mass"))
     spec.center = r.doc.vector(c);
+  if (!spec.blocks.empty()) { // the mass of its elements (FEBio's default density 1)
+    const pugi::xml_node d = body.material.child("density");
+    spec.density = d ? r.doc.number(d) : 1.0;
+    if (!(*spec.density > 0.0))
+      r.doc.fail(d, "a rigid body's density must be positive");
+  }
   for (int k = 0; k < 3; ++k) {
     spec.drives[k] =
         component(r, body, body.fixed[k], body.drives[k], fmt::format("translation {}", "xyz"[k]));
     spec.rotation_drives[k] = component(r, body, body.fixed[3 + k], body.rotation_drives[k],
                                         fmt::format("rotation R{}", "uvw"[k]));
+    if (body.euler_angles && spec.rotation_drives[k].drive != io::RigidDrive::Free)
+      r.doc.fail(body.euler_node, fmt::format("the rotation R{} of the body is also fixed or "
+                                              "driven by another rigid condition",
+                                              "uvw"[k]));
   }
+  spec.euler_angles = body.euler_angles;
   return spec;
 }
 
@@ -200,16 +376,7 @@ void attach_rigid(Reader& r, pugi::xml_node bc, bool step) {
     r.doc.fail(bc, "nodes attached to a rigid body made of a shell part are not supported");
   const std::string set = r.node_set(bc);
   if (!body.set.empty()) { // attached again: the union of the node sets
-    std::vector<Index> nodes = r.mesh.mesh.node_set(body.set);
-    const std::vector<Index>& more = r.mesh.mesh.node_set(set);
-    nodes.insert(nodes.end(), more.begin(), more.end());
-    std::sort(nodes.begin(), nodes.end());
-    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
-    std::string name = body.set + "_and_" + set;
-    while (r.mesh.mesh.has_node_set(name))
-      name += "_";
-    r.mesh.mesh.add_node_set(name, std::move(nodes));
-    body.set = name;
+    body.set = union_set(r, body.set, set);
     return;
   }
   body.set = set;
@@ -219,22 +386,30 @@ void attach_rigid(Reader& r, pugi::xml_node bc, bool step) {
 void read_rigid(Reader& r, pugi::xml_node section) {
   for (pugi::xml_node c : elements(section)) {
     const std::string kind = c.name(), type = r.doc.attribute(c, "type");
+    ++r.rigid_conditions;
     if (kind == "rigid_bc" && type == "rigid_fixed")
       rigid_fixed(r, c);
     else if (kind == "rigid_bc" && (type == "rigid_displacement" || type == "rigid_rotation"))
       rigid_drive(r, c, io::RigidDrive::Displacement, type == "rigid_rotation");
     else if (kind == "rigid_bc" && type == "rigid_rotation_vector")
       rigid_rotation_vector(r, c);
+    else if (kind == "rigid_bc" && type == "rigid_euler_angles")
+      rigid_euler_angles(r, c);
     else if (kind == "rigid_load" && (type == "rigid_force" || type == "rigid_moment"))
       rigid_drive(r, c, io::RigidDrive::Force, type == "rigid_moment");
     else if (kind == "rigid_connector")
       read_rigid_connector(r, c);
+    else if (kind == "rigid_ic" &&
+             (type == "initial_rigid_velocity" || type == "initial_rigid_angular_velocity"))
+      rigid_initial_velocity(r, c, type == "initial_rigid_angular_velocity");
     else
       r.doc.fail(c, "type",
                  fmt::format("<{} type=\"{}\"> is not supported (supported: rigid_bc of type "
-                             "rigid_fixed, rigid_displacement, rigid_rotation or "
-                             "rigid_rotation_vector, rigid_load of type rigid_force or "
-                             "rigid_moment, rigid_connector)",
+                             "rigid_fixed, rigid_displacement, rigid_rotation, "
+                             "rigid_rotation_vector or rigid_euler_angles, rigid_load of type "
+                             "rigid_force or "
+                             "rigid_moment, rigid_ic of type initial_rigid_velocity or "
+                             "initial_rigid_angular_velocity, rigid_connector)",
                              kind, type));
   }
 }
@@ -334,7 +509,41 @@ void release_carried_nodes(Reader& r, pugi::xml_node where) {
 
 } // namespace
 
+namespace {
+
+/// A spherical joint's prescribed rotation or moment between the ground and a body: the
+/// body's rotation drives (b: the rotation vector a, the moment; a: R_a = exp[−a]×, and the
+/// reaction of the moment).
+void drive_by_joint(Reader& r, const Reader::JointRotation& j,
+                    const std::set<std::string>& grounds) {
+  const bool a_moves = !grounds.contains(j.body_a), b_moves = !grounds.contains(j.body_b);
+  if (a_moves && b_moves)
+    r.doc.fail(j.where, "a prescribed rotation or a moment of a spherical joint between two "
+                        "moving bodies is not supported (one of them must be the ground: a "
+                        "body of no elements with all six degrees of freedom fixed)");
+  const std::string name = rigid_body_name(b_moves ? j.body_b : j.body_a);
+  const auto body = std::find_if(r.spec.rigid_bodies.begin(), r.spec.rigid_bodies.end(),
+                                 [&](const io::RigidBodySpec& b) { return b.name == name; });
+  if (body == r.spec.rigid_bodies.end() || !body->rotates)
+    r.doc.fail(j.where, "the joint's moving body does not rotate");
+  for (int k = 0; k < 3; ++k) {
+    if (j.drives[k].drive == io::RigidDrive::Free)
+      continue;
+    io::RigidComponentSpec& drive = body->rotation_drives[k];
+    if (drive.drive != io::RigidDrive::Free)
+      r.doc.fail(j.where, fmt::format("the rotation {} of body '{}' is driven twice (by the "
+                                      "joint and by a rigid condition)",
+                                      "xyz"[k], name));
+    drive = j.drives[k];
+    if (!b_moves)
+      drive.value = -drive.value;
+  }
+}
+
+} // namespace
+
 void map_rigid_bodies(Reader& r) {
+  merge_touching_bodies(r);
   std::set<std::string> grounds; // bodies of nothing that connectors hold to: space
   for (const auto& [name, body] : r.rigid_bodies) {
     if (body.set.empty() && body.blocks.empty() && body.connected) {
@@ -355,6 +564,7 @@ void map_rigid_bodies(Reader& r) {
     spec.key = fmt::format("rigid body '{}'", name);
     spec.name = rigid_body_name(name);
     spec.set = body.set;
+    spec.velocity = body.velocity;
     spec.components.clear();
     const std::array<bool, 3> held = fixed_at_every_node(r, body.set);
     for (int k = 0; k < 3; ++k) {
@@ -370,6 +580,8 @@ void map_rigid_bodies(Reader& r) {
     if (!spec.components.empty())
       r.spec.rigid_bodies.push_back(spec);
   }
+  for (const Reader::JointRotation& j : r.joint_rotations)
+    drive_by_joint(r, j, grounds);
   if (!r.spec.rigid_bodies.empty())
     release_carried_nodes(r, r.rigid_bodies.begin()->second.material);
   for (io::ConnectorSpec& c : r.connectors) {
@@ -377,6 +589,17 @@ void map_rigid_bodies(Reader& r) {
     c.body_b = grounds.contains(c.body_b) ? "ground" : rigid_body_name(c.body_b);
     r.spec.connectors.push_back(std::move(c));
   }
+}
+
+void drop_static_rigid_velocities(Reader& r) {
+  if (r.spec.has_dynamic_step()) // a velocity has no effect in a static analysis (FEBio's too)
+    return;
+  for (const auto& [name, body] : r.rigid_bodies)
+    if (body.velocity != Vec3::Zero() || body.angular_velocity != Vec3::Zero())
+      r.warn(body.initial, "the initial velocity of a rigid body is ignored: the analysis is "
+                           "static");
+  for (io::RigidBodySpec& b : r.spec.rigid_bodies)
+    b.velocity = b.angular_velocity = Vec3::Zero();
 }
 
 } // namespace trifem::feb::detail

@@ -19,11 +19,22 @@ void check_densities(const Table& root, const CaseSpec& spec) {
            "tissue, e.g. 1e-9 for water-like tissue)");
 }
 
+/// A rigid body's starting velocity belongs to a dynamic analysis.
+void check_rigid_velocities(const Table& root) {
+  for (const Table& b : root.tables("rigid_body"))
+    for (const char* key : {"velocity", "angular_velocity"})
+      if (b.find(key))
+        fail(b.find(key), b.path(key),
+             "only applies to dynamic analyses (the velocity at the start of the first "
+             "dynamic step; set [analysis] type = \"dynamic\")");
+}
+
 } // namespace
 
 void read_dynamic(const Table& root, CaseSpec& spec) {
   const auto t = root.table("dynamic");
   if (!spec.has_dynamic_step()) {
+    check_rigid_velocities(root);
     if (t)
       fail(t->where(), t->path(),
            "only applies to dynamic analyses (set [analysis] type = \"dynamic\", or analysis = "

@@ -224,13 +224,42 @@ void read_boundary(const Table& root, CaseSpec& spec) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// [[loads.pressure]], [[loads.traction]]
+// [[loads.pressure]], [[loads.traction]], [[loads.body_force]]
+
+namespace {
+
+/// [[loads.body_force]] `t` (case level only; the model checks the blocks and their materials).
+BodyForceSpec read_body_force(const Table& t, const CaseSpec& spec) {
+  t.allow({"force", "blocks", "curve"});
+  BodyForceSpec b;
+  b.key = t.path();
+  b.force = t.vec3("force", {.unit = "mm/s^2"}, std::nullopt);
+  b.blocks = t.get<std::vector<std::string>>("blocks").value_or(std::vector<std::string>{});
+  if (const toml::node* n = t.find("blocks"); n && b.blocks.empty())
+    fail(n, t.path("blocks"), "no cell block given (leave the key out to load every cell)");
+  for (std::size_t i = 0; i < b.blocks.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      if (b.blocks[j] == b.blocks[i])
+        fail(&(*t.find("blocks")->as_array())[i],
+             fmt::format("{} = '{}'", element_path(t.path("blocks"), i), b.blocks[i]),
+             fmt::format("the block is named twice (also {})", element_path(t.path("blocks"), j)));
+  b.curve = read_curve_reference(t, spec);
+  return b;
+}
+
+} // namespace
 
 void read_loads(const Table& root, CaseSpec& spec) {
   const auto loads = root.table("loads");
   if (!loads)
     return;
-  loads->allow({"pressure", "traction"});
+  loads->allow({"pressure", "traction", "body_force"});
+  if (const toml::node* n = loads->find("body_force"); n && !root.path().empty())
+    fail(n, loads->path("body_force"),
+         "a body force acts in every step: give it in the case's [[loads.body_force]] (with a "
+         "curve to change it in time)");
+  for (const Table& t : loads->tables("body_force"))
+    spec.body_forces.push_back(read_body_force(t, spec));
   for (const Table& t : loads->tables("pressure")) {
     t.allow({"surface", "value", "curve"});
     spec.pressures.push_back(

@@ -2,6 +2,7 @@
 // Case reader, part 4: [[rigid_body]] (a node set moving with one rigid translation, or
 // translating and rotating).
 #include "trifem/io/toml_table.hpp"
+#include "trifem/material/schema.hpp"
 
 #include <algorithm>
 
@@ -65,7 +66,11 @@ void read_rotation(const Table& t, const CaseSpec& spec, RigidBodySpec& b) {
     driven = driven || t.find(key) != nullptr;
   static const Options<bool> rotations = {{"fixed", false}, {"free", true}};
   b.rotates =
-      t.choice("rotation", rotations, std::optional(driven || !b.blocks.empty()), "rotation");
+      t.choice("rotation", rotations,
+               std::optional(driven || !b.blocks.empty() || t.find("euler_angles")), "rotation");
+  if (!b.rotates && t.find("euler_angles"))
+    fail(t.find("rotation"), fmt::format("{} = 'fixed'", t.path("rotation")),
+         "the body does not rotate, so euler_angles cannot be given (set rotation = \"free\")");
   if (!b.rotates && !b.blocks.empty())
     fail(t.find("rotation"), fmt::format("{} = 'fixed'", t.path("rotation")),
          "a body made of cells (blocks) rotates; hold its rotation with rx, ry, rz = { rotation "
@@ -86,6 +91,21 @@ void read_rotation(const Table& t, const CaseSpec& spec, RigidBodySpec& b) {
   for (int k = 0; k < 3; ++k)
     if (const auto c = t.table(kComponents[k]))
       b.rotation_drives[k] = read_component(*c, spec, kRotation);
+  if (const auto e = t.table("euler_angles")) {
+    if (driven)
+      fail(e->where(), e->path(),
+           "the rotation is given either by rx, ry, rz or by euler_angles, not both");
+    e->allow({"x", "y", "z"});
+    std::array<RigidComponentSpec, 3> angles;
+    for (int k = 0; k < 3; ++k)
+      if (const auto c = e->table(kAxis[k])) {
+        c->allow({"rotation", "curve"});
+        angles[k] = read_component(*c, spec, kRotation);
+      } else {
+        angles[k] = {RigidDrive::Displacement, 0.0, ""};
+      }
+    b.euler_angles = angles;
+  }
 }
 
 /// [[rigid_body.follower]]: force (at point) and moment turning with a rotating body.
@@ -105,6 +125,25 @@ void read_followers(const Table& t, const CaseSpec& spec, RigidBodySpec& b) {
     load.curve = read_curve_reference(f, spec);
     b.followers.push_back(load);
   }
+}
+
+/// density (of the body's cells), velocity and angular_velocity (at the start of the dynamic
+/// analysis: read_dynamic rejects them in a quasi-static one).
+void read_motion(const Table& t, RigidBodySpec& b) {
+  if (t.find("density")) {
+    if (b.blocks.empty())
+      fail(t.find("density"), t.path("density"),
+           "only a body made of cells (blocks) has a density of its own (the mass of a node set "
+           "or a surface is that of the tissue cells at its nodes)");
+    b.density = t.number("density", {.range = Range::positive(),
+                                     .unit = "t/mm^3",
+                                     .plausible = &material::plausible::density()});
+  }
+  b.velocity = t.vec3("velocity", {.unit = "mm/s"}, Vec3::Zero());
+  b.angular_velocity = t.vec3("angular_velocity", {.unit = "rad/s"}, Vec3::Zero());
+  if (!b.rotates && t.find("angular_velocity"))
+    fail(t.find("angular_velocity"), t.path("angular_velocity"),
+         "only a rotating body (rotation = \"free\") has an angular velocity");
 }
 
 /// Rejects a rigid body on a node set that a boundary condition already constrains.
@@ -132,7 +171,7 @@ RigidComponentSpec read_rigid_component(const Table& t, const CaseSpec& spec, bo
 void read_rigid_bodies(const Table& root, CaseSpec& spec) {
   for (const Table& t : root.tables("rigid_body")) {
     t.allow({"name", "set", "blocks", "components", "x", "y", "z", "rotation", "center", "rx", "ry",
-             "rz", "follower"});
+             "rz", "euler_angles", "follower", "density", "velocity", "angular_velocity"});
     RigidBodySpec b;
     b.key = t.path();
     b.name = read_identifier(t, "name", false);
@@ -158,6 +197,7 @@ void read_rigid_bodies(const Table& root, CaseSpec& spec) {
     }
     read_rotation(t, spec, b);
     read_followers(t, spec, b);
+    read_motion(t, b);
     check_unconstrained(t, b, spec);
     spec.rigid_bodies.push_back(std::move(b));
   }

@@ -215,10 +215,20 @@ struct RigidBodySpec {
   bool rotates = false;
   std::optional<Vec3> center; ///< of a rotating body [mm]; none: the centroid of its nodes
   std::array<RigidComponentSpec, 3> rotation_drives; ///< rx, ry, rz of a rotating body
+  /// Prescribed Euler angles of a rotating body instead (x, y, z: rotation = angle [rad] with
+  /// its curve): R = R_z R_y R_x, about the fixed axes, x first (FEBio's rigid_euler_angles).
+  std::optional<std::array<RigidComponentSpec, 3>> euler_angles;
   /// Cell blocks that move with the body (rigid cells: no material, no unknowns of their own);
   /// a body with blocks rotates. Their nodes, and those of `set` (may then be empty), follow it.
   std::vector<std::string> blocks;
   std::vector<RigidFollowerSpec> followers; ///< of a rotating body
+  /// Mass per reference volume of the body's cells [t/mm³] (none: massless cells; the tissue
+  /// cells at its nodes still carry their mass).
+  std::optional<Real> density;
+  /// Velocity of the center [mm/s] and angular velocity [rad/s] at the start of the first
+  /// dynamic step, if it starts the analysis.
+  Vec3 velocity = Vec3::Zero();
+  Vec3 angular_velocity = Vec3::Zero();
 };
 
 /// The kind of a [[connector]].
@@ -293,6 +303,16 @@ struct TractionSpec {
   std::string surface;
   Vec3 value = Vec3::Zero();
   std::string curve;
+};
+
+/// [[loads.body_force]]: a dead body force per unit mass (gravity) on the solid and rigid cells
+/// of cell blocks: f = ρ force curve(t) per reference volume, ρ the density of the cell's
+/// material (of its rigid body).
+struct BodyForceSpec {
+  std::string key;           ///< "loads.body_force[1]" (for messages)
+  Vec3 force = Vec3::Zero(); ///< per unit mass [mm/s² = N/t], e.g. (0, 0, −9810) for gravity
+  std::vector<std::string> blocks; ///< cell blocks; empty: every cell
+  std::string curve;               ///< empty: constant 1
 };
 
 /// Initial state of mixture models ([analysis] initial_state).
@@ -493,6 +513,7 @@ struct CaseSpec {
   std::vector<ImpermeableSurfaceSpec> impermeable_surfaces;
   std::vector<PressureSpec> pressures;
   std::vector<TractionSpec> tractions;
+  std::vector<BodyForceSpec> body_forces;
   std::vector<BathSpec> baths;
   std::vector<ContactSpec> contacts;
   std::vector<RigidBodySpec> rigid_bodies;

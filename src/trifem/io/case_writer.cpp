@@ -179,6 +179,17 @@ void write_boundary(const CaseSpec& spec, TomlText& t) {
     t.optional_string("curve", b.curve);
   }
   write_conditions({}, {}, spec.pressures, spec.tractions, "boundary", "loads", t);
+  for (const BodyForceSpec& b : spec.body_forces) {
+    t.header("[[loads.body_force]]");
+    t.vector("force", b.force);
+    if (!b.blocks.empty()) {
+      std::string blocks;
+      for (const std::string& block : b.blocks)
+        blocks += (blocks.empty() ? "" : ", ") + TomlText::quoted(block);
+      t.raw("blocks", "[" + blocks + "]");
+    }
+    t.optional_string("curve", b.curve);
+  }
 }
 
 void write_contacts(const CaseSpec& spec, TomlText& t) {
@@ -225,14 +236,31 @@ void write_rigid_bodies(const CaseSpec& spec, TomlText& t) {
     }
     for (Component k : b.components)
       write_rigid_component(t, kAxes[k], b.drives[k], "displacement", "force");
+    if (b.velocity != Vec3::Zero())
+      t.vector("velocity", b.velocity);
     if (!b.rotates)
       continue;
     t.string("rotation", "free");
     if (b.center)
       t.vector("center", *b.center);
+    if (b.density)
+      t.number("density", *b.density);
+    if (b.angular_velocity != Vec3::Zero())
+      t.vector("angular_velocity", b.angular_velocity);
     constexpr std::string_view kRotationKeys[] = {"rx", "ry", "rz"};
     for (int k = 0; k < 3; ++k)
       write_rigid_component(t, kRotationKeys[k], b.rotation_drives[k], "rotation", "moment");
+    if (b.euler_angles) {
+      std::vector<std::pair<std::string, std::string>> angles;
+      for (int k = 0; k < 3; ++k) {
+        const RigidComponentSpec& a = (*b.euler_angles)[k];
+        angles.emplace_back(std::string(kAxes[k]),
+                            "{ rotation = " + TomlText::number(a.value) +
+                                (a.curve.empty() ? "" : ", curve = " + TomlText::quoted(a.curve)) +
+                                " }");
+      }
+      t.inline_table("euler_angles", angles);
+    }
     for (const RigidFollowerSpec& f : b.followers) {
       t.header("[[rigid_body.follower]]");
       t.vector("force", f.force);

@@ -26,12 +26,13 @@ struct DataArray {
 
 /// VTK cell type codes used by trifem.
 namespace vtk_cell {
+inline constexpr std::uint8_t kTriangle = 5;
 inline constexpr std::uint8_t kQuad = 9;
 inline constexpr std::uint8_t kHexahedron = 12;
 } // namespace vtk_cell
 
 /// An unstructured grid in VTK conventions (cell types: 12 = VTK_HEXAHEDRON, 9 = VTK_QUAD,
-/// 3 = line, 1 = vertex).
+/// 5 = VTK_TRIANGLE, 3 = line, 1 = vertex).
 struct UnstructuredGrid {
   std::vector<Vec3> points;
   std::vector<Index> connectivity; ///< concatenated cell node lists

@@ -5,8 +5,10 @@
 #include "trifem/dofs/nodal_frames.hpp"
 #include "trifem/fe/point_location.hpp"
 #include "trifem/physics/bath_term.hpp"
+#include "trifem/physics/body_force_term.hpp"
 #include "trifem/physics/surface_load_term.hpp"
 
+#include <algorithm>
 #include <unordered_map>
 
 namespace trifem::model {
@@ -160,9 +162,59 @@ surface_load_terms(const io::CaseSpec& spec, const std::vector<io::PressureSpec>
   return terms;
 }
 
+namespace {
+
+/// The term of [[loads.body_force]] `b`: the cells of its blocks (of the mesh without blocks)
+/// with a mass. InputError naming its key if a block does not exist, a cell is a mixture or a
+/// solid without a density, or no cell has a mass (rigid cells without a density are skipped).
+std::unique_ptr<physics::Term> body_force_term(const io::CaseSpec& spec, const io::BodyForceSpec& b,
+                                               const Model& model) {
+  std::vector<Index> chosen;
+  for (std::size_t i = 0; i < b.blocks.size(); ++i) {
+    const auto& cells = with_context(fmt::format("{}.blocks[{}]", b.key, i + 1),
+                                     [&] { return model.mesh.cell_block(b.blocks[i]); });
+    chosen.insert(chosen.end(), cells.begin(), cells.end());
+  }
+  if (b.blocks.empty())
+    for (Index c = 0; c < model.mesh.num_cells(); ++c)
+      chosen.push_back(c);
+  std::sort(chosen.begin(), chosen.end());
+  chosen.erase(std::unique(chosen.begin(), chosen.end()), chosen.end());
+  std::vector<Index> cells;
+  std::vector<Real> densities;
+  for (Index c : chosen) {
+    const CellMaterial& m = model.materials[c];
+    TRIFEM_CHECK(!m.mixture,
+                 "{}: cell {} has the mixture material '{}': body forces act on solid and rigid "
+                 "cells only (in a mixture the force also drives the fluid through Darcy's law, "
+                 "which trifem does not model){}",
+                 b.key, c, m.name,
+                 b.blocks.empty() ? "; name the solid blocks it acts on in 'blocks'" : "");
+    TRIFEM_CHECK(m.rigid() || m.density > 0.0,
+                 "{}: the material '{}' of cell {} has no density: give `density` (t/mm^3) in "
+                 "[materials.{}] (the body force is a force per unit mass)",
+                 b.key, m.name, c, m.name);
+    if (m.density > 0.0) { // rigid cells without a density are massless
+      cells.push_back(c);
+      densities.push_back(m.density);
+    }
+  }
+  TRIFEM_CHECK(!cells.empty(),
+               "{}: the body force acts on no mass (its cells are those of rigid bodies without a "
+               "density: give `density` in their [[rigid_body]])",
+               b.key);
+  return std::make_unique<physics::BodyForceTerm>(model.mesh, model.dofs, model.fields.u,
+                                                  std::move(cells), densities, b.force,
+                                                  make_curve(spec, b.curve));
+}
+
+} // namespace
+
 std::vector<std::unique_ptr<physics::Term>> load_terms(const io::CaseSpec& spec,
                                                        const Model& model) {
   auto terms = surface_load_terms(spec, spec.pressures, spec.tractions, "", model);
+  for (const io::BodyForceSpec& b : spec.body_forces)
+    terms.push_back(body_force_term(spec, b, model));
   for (std::size_t i = 0; i < spec.baths.size(); ++i) {
     const auto& b = spec.baths[i];
     const auto& surface = with_context(fmt::format("boundary.bath[{}].surface", i + 1),

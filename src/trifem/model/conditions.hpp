@@ -52,7 +52,7 @@ surface_load_terms(const io::CaseSpec& spec, const std::vector<io::PressureSpec>
                    const std::vector<io::TractionSpec>& tractions, const std::string& prefix,
                    const Model& model);
 
-/// Pressure, traction and bath terms of the case.
+/// Pressure, traction, body force and bath terms of the case.
 std::vector<std::unique_ptr<physics::Term>> load_terms(const io::CaseSpec& spec,
                                                        const Model& model);
 

@@ -70,6 +70,7 @@ std::vector<CellMaterial> cell_materials(const io::CaseSpec& spec, const mesh::M
                      "rigid body have none)",
                      b.key, c, block, per_cell[c].name);
         per_cell[c].name = b.name;
+        per_cell[c].density = b.density.value_or(0.0); // none: massless
         rigid[c] = 1;
       }
   for (Index c = 0; c < mesh.num_cells(); ++c)
@@ -168,20 +169,29 @@ dofs::DirichletCondition unused_dofs(const Model& model,
   return c;
 }
 
-/// The inertia of every cell, for the dynamic steps of the case.
+/// The inertia of every cell with mass (the reader requires a density of every material; the
+/// cells of a rigid body without one are massless), for the dynamic steps of the case. The
+/// unknowns of rotating rigid bodies have no mass of their own: the inertia of the nodes they
+/// carry reaches them by condensation.
 std::unique_ptr<physics::InertiaTerm> inertia_term(const io::CaseSpec& spec, const Model& model) {
-  std::vector<Index> cells(model.mesh.num_cells());
-  std::vector<Real> densities(cells.size());
-  for (Index c = 0; c < model.mesh.num_cells(); ++c) {
-    cells[c] = c;
-    densities[c] = model.materials[c].density; // > 0: the reader requires it
+  std::vector<Index> cells;
+  std::vector<Real> densities;
+  for (Index c = 0; c < model.mesh.num_cells(); ++c)
+    if (model.materials[c].density > 0.0) {
+      cells.push_back(c);
+      densities.push_back(model.materials[c].density);
+    }
+  std::vector<Index> massless;
+  for (const dofs::RigidBodyDofs& b : model.problem->rigid_map().bodies()) {
+    massless.insert(massless.end(), b.translation.begin(), b.translation.end());
+    massless.insert(massless.end(), b.rotation.begin(), b.rotation.end());
   }
   const physics::MassMatrix mass = spec.dynamics.mass == io::MassMatrixSpec::Lumped
                                        ? physics::MassMatrix::Lumped
                                        : physics::MassMatrix::Consistent;
   return std::make_unique<physics::InertiaTerm>(
       model.mesh, model.dofs, model.fields.u, std::move(cells), std::move(densities), mass,
-      physics::GeneralizedAlpha::from_spectral_radius(spec.dynamics.rho_inf));
+      physics::GeneralizedAlpha::from_spectral_radius(spec.dynamics.rho_inf), std::move(massless));
 }
 
 void set_scales(const std::vector<CellMaterial>& materials, Model& model) {
@@ -322,8 +332,10 @@ std::unique_ptr<Model> build_model(const io::CaseSpec& spec) {
                                                          std::move(terms), field_scales(*model),
                                                          std::move(frames), std::move(rigid.map));
   model->problem->set_node_positions(model->fields.u, model->mesh.nodes());
-  if (spec.has_dynamic_step())
+  if (spec.has_dynamic_step()) {
     model->problem->add_inertia(inertia_term(spec, *model));
+    model->initial_velocity = initial_rigid_velocity(spec, *model);
+  }
   if (model->mixture) {
     Vector x = model->problem->state();
     const auto kind = spec.analysis.initial_state == io::InitialStateKind::DonnanPrestressed

@@ -123,6 +123,9 @@ struct Model {
   /// The multipliers of the constraints' equations ([[constraint]]): forces [N].
   dofs::FieldId constraint_forces;
   std::vector<RigidWall> walls;
+  /// The velocity of every DOF (global components) at the start of an analysis that starts
+  /// with a dynamic step: that of the rigid bodies given one (empty: at rest).
+  Vector initial_velocity;
   std::vector<ModelStep> steps; ///< empty: one step with the case's conditions only
   std::vector<dofs::DirichletCondition> case_conditions; ///< the conditions of every step
   int active_step = -1;                                  ///< index into steps (-1: none)

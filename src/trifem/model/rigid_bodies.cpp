@@ -5,6 +5,7 @@
 #include "trifem/model/conditions.hpp"
 #include "trifem/model/rigid_connectors.hpp"
 #include "trifem/physics/rigid_moment_term.hpp"
+#include "trifem/tensor/rotation.hpp"
 
 #include <set>
 
@@ -115,15 +116,38 @@ std::vector<Index> body_nodes(const io::RigidBodySpec& b, const Model& model) {
   return {nodes.begin(), nodes.end()};
 }
 
+/// The rotation vector Θ(t) = log(R_z(γ) R_y(β) R_x(α)) of prescribed Euler angles (each angle
+/// × its curve) as the values of the rotation DOFs `rotation`.
+void prescribe_euler_angles(const io::CaseSpec& spec,
+                            const std::array<io::RigidComponentSpec, 3>& angles,
+                            const std::array<Index, 3>& rotation,
+                            std::vector<dofs::DirichletCondition>& conditions) {
+  std::array<dofs::LoadCurve, 3> curves{dofs::LoadCurve::constant(1.0),
+                                        dofs::LoadCurve::constant(1.0),
+                                        dofs::LoadCurve::constant(1.0)};
+  Vec3 amplitude;
+  for (int k = 0; k < 3; ++k) {
+    curves[k] = make_curve(spec, angles[k].curve);
+    amplitude[k] = angles[k].value;
+  }
+  const auto theta = [curves, amplitude](Real t) {
+    Mat3 R = Mat3::Identity();
+    for (int k = 0; k < 3; ++k) // x first: R = R_z R_y R_x
+      R = rotation::matrix(amplitude[k] * curves[k](t) * Vec3::Unit(k)) * R;
+    return rotation::vector(R);
+  };
+  for (int k = 0; k < 3; ++k) {
+    dofs::DirichletCondition c{{rotation[k]}, 0.0};
+    c.law = [theta, k](Real t) { return theta(t)[k]; };
+    conditions.push_back(std::move(c));
+  }
+}
+
 /// A rotating body (index `index` among them): its nodes follow its unknowns, whose driven
 /// components are prescribed or loaded.
 RigidBody rotating_body(const io::CaseSpec& spec, const io::RigidBodySpec& b, int index,
                         Model& model, const std::vector<Index>& nodes, Collected& c,
                         std::vector<dofs::DirichletCondition>& conditions) {
-  TRIFEM_CHECK(!spec.has_dynamic_step(),
-               "{}: rotating rigid bodies are not supported in dynamic analyses yet (a body that "
-               "only translates is)",
-               b.key);
   RigidBody body;
   body.name = b.name;
   body.tied = {true, true, true};
@@ -160,6 +184,8 @@ RigidBody rotating_body(const io::CaseSpec& spec, const io::RigidBodySpec& b, in
     if (turn.drive == io::RigidDrive::Force)
       c.moments.push_back({r.rotation, turn.value * Vec3::Unit(k), make_curve(spec, turn.curve)});
   }
+  if (b.euler_angles)
+    prescribe_euler_angles(spec, *b.euler_angles, r.rotation, conditions);
   for (const io::RigidFollowerSpec& f : b.followers)
     c.followers.push_back({r.translation, r.rotation, f.point.value_or(r.centre) - r.centre,
                            f.force, f.moment, make_curve(spec, f.curve)});
@@ -223,6 +249,36 @@ void check_frames_of_rotating_bodies(const io::CaseSpec& spec, const Model& mode
                      spec.rigid_bodies[i].key, node);
     }
   }
+}
+
+Vector initial_rigid_velocity(const io::CaseSpec& spec, const Model& model) {
+  Vector v;
+  for (std::size_t i = 0; i < spec.rigid_bodies.size(); ++i) {
+    const io::RigidBodySpec& b = spec.rigid_bodies[i];
+    if (b.velocity == Vec3::Zero() && b.angular_velocity == Vec3::Zero())
+      continue;
+    if (v.size() == 0)
+      v = Vector::Zero(model.dofs.num_dofs());
+    const RigidBody& body = model.rigid_bodies[i];
+    if (body.rotating < 0) {
+      for (int k = 0; k < 3; ++k)
+        if (body.tied[k])
+          for (Index d : body.dofs[k])
+            v[d] = b.velocity[k];
+      continue;
+    }
+    const dofs::RigidBodyDofs& r = model.problem->rigid_map().bodies()[body.rotating];
+    for (int k = 0; k < 3; ++k) { // at the start Θ = 0: Θ' = ω
+      v[r.translation[k]] = b.velocity[k];
+      v[r.rotation[k]] = b.angular_velocity[k];
+    }
+    for (std::size_t a = 0; a < r.followers.size(); ++a) {
+      const Vec3 va = b.velocity + b.angular_velocity.cross(r.arms[a]);
+      for (int k = 0; k < 3; ++k)
+        v[r.followers[a][k]] = va[k];
+    }
+  }
+  return v;
 }
 
 Vec3 rigid_body_force(const Model& model, const RigidBody& b, Real time) {

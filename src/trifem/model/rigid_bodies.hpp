@@ -22,6 +22,11 @@ struct RigidBodyParts {
 RigidBodyParts rigid_bodies(const io::CaseSpec& spec, Model& model,
                             std::vector<dofs::DirichletCondition>& conditions);
 
+/// The velocity of every DOF at the start of the analysis: of the nodes (and unknowns) of the
+/// rigid bodies with a velocity or angular velocity, v_a = v + ω × S_a. Empty if none has one.
+/// Call once the problem exists.
+Vector initial_rigid_velocity(const io::CaseSpec& spec, const Model& model);
+
 /// Throws InputError if a node carried by a rotating body has a flux DOF in a rotated nodal
 /// frame (an impermeable surface): the frame is fixed in space and would not turn with it.
 void check_frames_of_rotating_bodies(const io::CaseSpec& spec, const Model& model,

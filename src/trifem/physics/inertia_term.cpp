@@ -42,8 +42,10 @@ std::optional<Eigen::Matrix<Real, 8, 8>> cell_mass(const fe::HexCoords& X, Real 
 
 InertiaTerm::InertiaTerm(const mesh::Mesh& mesh, const dofs::DofMap& dofs,
                          dofs::FieldId displacement, std::vector<Index> cells,
-                         std::vector<Real> densities, MassMatrix mass, GeneralizedAlpha method)
-    : mesh_(mesh), map_(dofs), u_(displacement), cells_(std::move(cells)), method_(method) {
+                         std::vector<Real> densities, MassMatrix mass, GeneralizedAlpha method,
+                         std::vector<Index> massless)
+    : mesh_(mesh), map_(dofs), u_(displacement), cells_(std::move(cells)), method_(method),
+      dofs_(std::move(massless)) {
   TRIFEM_VERIFY(cells_.size() == densities.size(), "one density per cell expected");
   mass_.reserve(cells_.size());
   for (std::size_t i = 0; i < cells_.size(); ++i) {

@@ -46,11 +46,13 @@ enum class MassMatrix {
 /// from the state by the Newmark relation, so the unknowns stay the displacements.
 class InertiaTerm final : public Term {
 public:
-  /// `densities[i]` > 0 is the mass per reference volume of `cells[i]` [t/mm³]. Throws
-  /// InputError naming the cell if a cell is inverted or degenerate.
+  /// `densities[i]` > 0 is the mass per reference volume of `cells[i]` [t/mm³]. `massless`:
+  /// further DOFs whose motion and residual history the method keeps although no cell gives
+  /// them mass (the unknowns of rigid bodies, which the inertia of their nodes reaches by
+  /// condensation). Throws InputError naming the cell if a cell is inverted or degenerate.
   InertiaTerm(const mesh::Mesh& mesh, const dofs::DofMap& dofs, dofs::FieldId displacement,
               std::vector<Index> cells, std::vector<Real> densities, MassMatrix mass,
-              GeneralizedAlpha method);
+              GeneralizedAlpha method, std::vector<Index> massless = {});
 
   std::string name() const override { return "inertia"; }
   Index num_elements() const override { return static_cast<Index>(cells_.size()); }
@@ -64,7 +66,7 @@ public:
   void restore_history(const std::vector<double>& values) override;
 
   const GeneralizedAlpha& method() const { return method_; }
-  /// The displacement DOFs of the cells' nodes, ascending.
+  /// The displacement DOFs of the cells' nodes and the massless DOFs, ascending.
   const std::vector<Index>& dofs() const { return dofs_; }
   /// Velocity, acceleration and residual g of step n at dofs() (global components).
   const Vector& velocity() const { return v_; }

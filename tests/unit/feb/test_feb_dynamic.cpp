@@ -118,3 +118,53 @@ TEST(FebDynamic, OtherNewmarkParametersAreRefused) {
       kSolid));
   EXPECT_NE(rhoi.find("rhoi = -1 is not supported"), std::string::npos) << rhoi;
 }
+
+namespace {
+
+/// The one-hex model of `control` as a rigid body of density 3 with `rigid` as its <Rigid>.
+std::string rigid_cube_text(const std::string& control, const std::string& rigid) {
+  std::string text = model_text(
+      "solid", control,
+      R"(    <material id="1" name="m" type="rigid body"><density>3</density></material>)");
+  text.replace(text.find("</febio_spec>"), 13, rigid + "\n</febio_spec>");
+  return text;
+}
+
+constexpr const char* kInitialVelocity = R"(<Rigid>
+  <rigid_ic type="initial_rigid_velocity"><rb>m</rb><value>1,0,0</value></rigid_ic>
+  <rigid_ic type="initial_rigid_angular_velocity"><rb>m</rb><value>0,0,2</value></rigid_ic>
+</Rigid>)";
+
+} // namespace
+
+TEST(FebDynamic, ARigidBodyTakesItsDensityAndInitialVelocity) {
+  const io::CaseSpec spec =
+      feb::parse_feb(rigid_cube_text("<analysis>DYNAMIC</analysis>", kInitialVelocity), "spin.feb");
+  ASSERT_EQ(spec.rigid_bodies.size(), 1u);
+  const io::RigidBodySpec& b = spec.rigid_bodies[0];
+  EXPECT_TRUE(b.rotates);
+  ASSERT_TRUE(b.density.has_value());
+  EXPECT_EQ(*b.density, 3.0);
+  EXPECT_EQ(b.velocity, Vec3(1, 0, 0));
+  EXPECT_EQ(b.angular_velocity, Vec3(0, 0, 2));
+  // the nodes start with v + ω × (X − X_c): node 7 at (1, 1, 1), X_c the cube's center
+  const auto model = model::build_model(spec);
+  ASSERT_EQ(model->initial_velocity.size(), model->dofs.num_dofs());
+  const Vec3 v(model->initial_velocity[model->dofs.dof(model->fields.u, 6, 0)],
+               model->initial_velocity[model->dofs.dof(model->fields.u, 6, 1)],
+               model->initial_velocity[model->dofs.dof(model->fields.u, 6, 2)]);
+  EXPECT_LT((v - Vec3(0, 1, 0)).norm(), 1e-15);
+}
+
+TEST(FebDynamic, AStaticAnalysisIgnoresTheInitialVelocityOfARigidBody) {
+  const io::CaseSpec spec =
+      feb::parse_feb(rigid_cube_text("<analysis>STATIC</analysis>", kInitialVelocity), "still.feb");
+  ASSERT_EQ(spec.rigid_bodies.size(), 1u);
+  EXPECT_EQ(spec.rigid_bodies[0].velocity, Vec3::Zero());
+  EXPECT_EQ(spec.rigid_bodies[0].angular_velocity, Vec3::Zero());
+  const std::string unknown = error_of(rigid_cube_text("<analysis>DYNAMIC</analysis>", R"(<Rigid>
+  <rigid_ic type="initial_rigid_velocity"><rb>m</rb><value>1,0,0</value><speed>2</speed></rigid_ic>
+</Rigid>)"));
+  EXPECT_NE(unknown.find("unknown parameter 'speed' of initial_rigid_velocity"), std::string::npos)
+      << unknown;
+}

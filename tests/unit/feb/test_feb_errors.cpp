@@ -3,10 +3,12 @@
 #include "feb_errors.hpp"
 #include "trifem/core/error.hpp"
 #include "trifem/feb/feb_reader.hpp"
+#include "trifem/model/model.hpp"
 
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <numbers>
 #include <sstream>
 #include <tuple>
 
@@ -316,9 +318,9 @@ TEST(FebRigid, AnAttachedBodyWhoseRotationIsNotHeldRotates) {
 TEST(FebRigid, RefusesUnknownConditionsAndBodies) {
   expect_contains(
       feb_error(with_rigid_body(R"(<Rigid>
-  <rigid_bc type="rigid_euler_angles"><rb>plate</rb></rigid_bc>
+  <rigid_bc type="rigid_follower_force"><rb>plate</rb></rigid_bc>
 </Rigid>)")),
-      {"febio_spec/Rigid/rigid_bc[@type='rigid_euler_angles']/@type: ", "is not supported"});
+      {"febio_spec/Rigid/rigid_bc[@type='rigid_follower_force']/@type: ", "is not supported"});
   expect_contains(feb_error(with_rigid_body(R"(<Rigid>
   <rigid_bc type="rigid_rotation"><rb>plate</rb><dof>x</dof><value>1</value></rigid_bc>
 </Rigid>)")),
@@ -341,6 +343,55 @@ TEST(FebGlobals, AnAmbientPressureOfZeroIsAcceptedAndOtherValuesRefused) {
                   {"Globals/Constants/P: ", "an ambient pressure P other than 0"});
 }
 
+TEST(FebRigid, ASphericalJointToTheGroundDrivesTheBodysRotation) {
+  // the plate joined to "lid", a ground (no elements, all six fixed)
+  const auto joint = [](const std::string& bodies, const std::string& drive) {
+    std::string text = with_rigid_body(R"(<Rigid>
+  <rigid_bc type="rigid_fixed"><rb>lid</rb><Rx_dof>1</Rx_dof><Ry_dof>1</Ry_dof><Rz_dof>1</Rz_dof><Ru_dof>1</Ru_dof><Rv_dof>1</Rv_dof><Rw_dof>1</Rw_dof></rigid_bc>
+  <rigid_connector type="rigid spherical joint">)" +
+                                       bodies + "<joint_origin>0,0,0</joint_origin>" + drive +
+                                       "</rigid_connector>\n</Rigid>");
+    const std::string plate = R"(<material id="2" name="plate" type="rigid body">)";
+    text.replace(text.find(plate), 0,
+                 R"(<material id="3" name="lid" type="rigid body"><density>1</density></material>
+    )");
+    return feb::parse_feb(text, "joint.feb");
+  };
+  const auto plate = [](const io::CaseSpec& spec) {
+    for (const io::RigidBodySpec& b : spec.rigid_bodies)
+      if (b.name == "plate")
+        return b;
+    ADD_FAILURE() << "no plate";
+    return io::RigidBodySpec{};
+  };
+  // the rotation of b relative to a: the plate's rotation vector (z absent: held at 0)
+  const io::RigidBodySpec turned =
+      plate(joint("<body_a>lid</body_a><body_b>plate</body_b>",
+                  "<prescribed_rotation>1</prescribed_rotation><rotation_x>0.5</rotation_x>"
+                  "<rotation_y>-0.25</rotation_y>"));
+  for (int k = 0; k < 3; ++k)
+    EXPECT_EQ(turned.rotation_drives[k].drive, io::RigidDrive::Displacement) << k;
+  EXPECT_EQ(turned.rotation_drives[0].value, 0.5);
+  EXPECT_EQ(turned.rotation_drives[1].value, -0.25);
+  EXPECT_EQ(turned.rotation_drives[2].value, 0.0);
+  // the plate as body a: R_a = exp(−a)
+  EXPECT_EQ(plate(joint("<body_a>plate</body_a><body_b>lid</body_b>",
+                        "<prescribed_rotation>1</prescribed_rotation><rotation_x>0.5</rotation_x>"))
+                .rotation_drives[0]
+                .value,
+            -0.5);
+  // moments: FEBio applies M to body a and −M to body b
+  const io::RigidBodySpec loaded =
+      plate(joint("<body_a>lid</body_a><body_b>plate</body_b>", "<moment_z>2</moment_z>"));
+  EXPECT_EQ(loaded.rotation_drives[0].drive, io::RigidDrive::Free);
+  EXPECT_EQ(loaded.rotation_drives[2].drive, io::RigidDrive::Force);
+  EXPECT_EQ(loaded.rotation_drives[2].value, -2.0);
+  EXPECT_EQ(plate(joint("<body_a>plate</body_a><body_b>lid</body_b>", "<moment_z>2</moment_z>"))
+                .rotation_drives[2]
+                .value,
+            2.0);
+}
+
 TEST(FebRigid, ConnectorsTrifemCannotBuildAreRefusedByName) {
   // the plate attached to the bottom nodes; a second body "lid" of no elements
   const auto connector = [](const std::string& body) {
@@ -356,10 +407,6 @@ TEST(FebRigid, ConnectorsTrifemCannotBuildAreRefusedByName) {
           R"(<rigid_connector type="rigid angular damper"><body_a>plate</body_a><body_b>lid</body_b></rigid_connector>)")),
       {"rigid_connector[@type='rigid angular damper']/@type: ", "is not supported",
        "rigid revolute joint"});
-  expect_contains(
-      feb_error(connector(
-          R"(<rigid_connector type="rigid spherical joint"><body_a>plate</body_a><body_b>lid</body_b><joint_origin>0,0,0</joint_origin><prescribed_rotation>1</prescribed_rotation></rigid_connector>)")),
-      {"/prescribed_rotation: ", "spherical joint is not supported"});
   expect_contains(
       feb_error(connector(
           R"(<rigid_connector type="rigid revolute joint"><body_a>plate</body_a><body_b>lid</body_b><joint_origin>0,0,0</joint_origin><force_damping>2</force_damping></rigid_connector>)")),
@@ -441,4 +488,87 @@ TEST(FebRigid, ARotationVectorPrescribesTheThreeRotations) {
   <rigid_bc type="rigid_rotation"><rb>plate</rb><dof>Ru</dof><value>1</value></rigid_bc>
 </Rigid>)")),
                   {"rigid_rotation", "a second motion or load on the same component"});
+}
+
+namespace {
+
+/// Two rigid bodies "a" (id 2) and "b" (id 3) of one hex each, stacked so that they share four
+/// nodes, with `rigid` as the <Rigid> section and b's density `density`.
+std::string touching_bodies(const std::string& rigid, const std::string& density = "1") {
+  return R"(<?xml version="1.0"?>
+<febio_spec version="4.0">
+  <Module type="solid"/>
+  <Control><analysis>STATIC</analysis><time_steps>2</time_steps><step_size>0.5</step_size></Control>
+  <Material>
+    <material id="2" name="a" type="rigid body"><density>1</density></material>
+    <material id="3" name="b" type="rigid body"><density>)" +
+         density + R"(</density></material>
+  </Material>
+  <Mesh>
+    <Nodes name="all">
+      <node id="1">0,0,0</node><node id="2">1,0,0</node><node id="3">1,1,0</node><node id="4">0,1,0</node>
+      <node id="5">0,0,1</node><node id="6">1,0,1</node><node id="7">1,1,1</node><node id="8">0,1,1</node>
+      <node id="9">0,0,2</node><node id="10">1,0,2</node><node id="11">1,1,2</node><node id="12">0,1,2</node>
+    </Nodes>
+    <Elements type="hex8" name="PB"><elem id="2">5,6,7,8,9,10,11,12</elem></Elements>
+    <Elements type="hex8" name="PA"><elem id="1">1,2,3,4,5,6,7,8</elem></Elements>
+  </Mesh>
+  <MeshDomains><SolidDomain name="PB" mat="b"/><SolidDomain name="PA" mat="a"/></MeshDomains>
+)" + rigid +
+         R"(
+</febio_spec>
+)";
+}
+
+} // namespace
+
+TEST(FebRigid, BodiesWhoseElementsShareNodesMoveAsOneAndLaterConditionsWin) {
+  // as FEBio: one body, named after the lower material id; a condition replaces an earlier one
+  // on the same component, within a body and across the merged ones
+  const io::CaseSpec spec = feb::parse_feb(touching_bodies(R"(<Rigid>
+  <rigid_bc type="rigid_displacement"><rb>a</rb><dof>x</dof><value>0.5</value></rigid_bc>
+  <rigid_bc type="rigid_fixed"><rb>b</rb><Rx_dof>1</Rx_dof><Ry_dof>1</Ry_dof><Rz_dof>1</Rz_dof><Ru_dof>1</Ru_dof><Rv_dof>1</Rv_dof></rigid_bc>
+  <rigid_bc type="rigid_rotation"><rb>b</rb><dof>Rw</dof><value>0.25</value></rigid_bc>
+  <rigid_bc type="rigid_displacement"><rb>b</rb><dof>y</dof><value>-1</value></rigid_bc>
+</Rigid>)"),
+                                           "merged.feb");
+  ASSERT_EQ(spec.rigid_bodies.size(), 1u);
+  const io::RigidBodySpec& body = spec.rigid_bodies[0];
+  EXPECT_EQ(body.name, "a");
+  EXPECT_EQ(body.blocks.size(), 2u);
+  EXPECT_EQ(body.drives[0].drive, io::RigidDrive::Displacement);
+  EXPECT_EQ(body.drives[0].value, 0.0);  // b's later rigid_fixed
+  EXPECT_EQ(body.drives[1].value, -1.0); // b's later drive replaces its fixed y
+  EXPECT_EQ(body.rotation_drives[2].drive, io::RigidDrive::Displacement);
+  EXPECT_EQ(body.rotation_drives[2].value, 0.25);
+  const auto model = model::build_model(spec);
+  EXPECT_EQ(model->rigid_bodies.size(), 1u);
+  expect_contains(
+      feb_error(touching_bodies("", "2")),
+      {"bad.feb:7: ", "share nodes, so they move as one body", "their densities differ (1 and 2)"});
+}
+
+TEST(FebRigid, EulerAnglesInDegreesPrescribeTheRotation) {
+  const io::CaseSpec spec = feb::parse_feb(with_rigid_body(R"(<Rigid>
+  <rigid_bc type="rigid_euler_angles"><rb>plate</rb><Ex>60</Ex><Ez>-90</Ez></rigid_bc>
+</Rigid>)"),
+                                           "euler.feb");
+  ASSERT_EQ(spec.rigid_bodies.size(), 1u);
+  const io::RigidBodySpec& b = spec.rigid_bodies[0];
+  EXPECT_TRUE(b.rotates);
+  ASSERT_TRUE(b.euler_angles.has_value());
+  EXPECT_DOUBLE_EQ((*b.euler_angles)[0].value, std::numbers::pi / 3);
+  EXPECT_EQ((*b.euler_angles)[1].value, 0.0);
+  EXPECT_DOUBLE_EQ((*b.euler_angles)[2].value, -std::numbers::pi / 2);
+  for (int k = 0; k < 3; ++k)
+    EXPECT_EQ(b.rotation_drives[k].drive, io::RigidDrive::Free) << k;
+  expect_contains(feb_error(with_rigid_body(R"(<Rigid>
+  <rigid_bc type="rigid_euler_angles"><rb>plate</rb><Ex>60</Ex></rigid_bc>
+  <rigid_bc type="rigid_rotation"><rb>plate</rb><dof>Ru</dof><value>1</value></rigid_bc>
+</Rigid>)")),
+                  {"rigid_euler_angles", "also fixed or driven by another rigid condition"});
+  expect_contains(feb_error(with_rigid_body(R"(<Rigid>
+  <rigid_bc type="rigid_euler_angles"><rb>plate</rb><Ex>60</Ex><convention>XYZ</convention></rigid_bc>
+</Rigid>)")),
+                  {"/convention: ", "convention 'XYZ' is not supported"});
 }

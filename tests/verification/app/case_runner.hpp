@@ -43,13 +43,13 @@ inline CaseRun run_case_spec(io::CaseSpec spec, const CaseObserver& observer = {
   return run;
 }
 
-/// Parses `text` and runs it through its analysis steps as `trifem run` does (each [[step]]
-/// with its conditions; analysis::run_steps), calling `observer` with the model and the time
-/// after every step.
-inline CaseRun run_case_steps(std::string_view text, const std::filesystem::path& file,
+/// Runs `spec` through its analysis steps as `trifem run` does (each [[step]] with its
+/// conditions; analysis::run_steps), calling `observer` with the model and the time after every
+/// step.
+inline CaseRun run_case_steps(io::CaseSpec spec,
                               const std::function<void(const model::Model&, Real)>& observer = {}) {
   CaseRun run;
-  run.spec = io::parse_case(text, file);
+  run.spec = std::move(spec);
   run.model = model::build_model(run.spec);
   solver::NewtonSolver newton(analysis::newton_settings(run.spec.solver),
                               linalg::make_linear_solver(run.spec.solver.linear_solver));
@@ -63,6 +63,12 @@ inline CaseRun run_case_steps(std::string_view text, const std::filesystem::path
       },
       [](const solver::StepController&) {});
   return run;
+}
+
+/// Parses `text` and runs it through its analysis steps (run_case_steps of its spec).
+inline CaseRun run_case_steps(std::string_view text, const std::filesystem::path& file,
+                              const std::function<void(const model::Model&, Real)>& observer = {}) {
+  return run_case_steps(io::parse_case(text, file), observer);
 }
 
 /// Parses `text` (relative paths resolved against `file`) and runs it (run_case_spec).

@@ -13,9 +13,13 @@
 #include "case_runner.hpp"
 #include "generated_meshes.hpp"
 #include "tissue_materials.hpp"
+#include "trifem/analysis/output_writer.hpp"
+#include "trifem/parallel/communicator.hpp"
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
 #include <numbers>
 #include <string>
 
@@ -422,6 +426,29 @@ slave = "box.zmax"
   ASSERT_LT(force, -0.05);
   const Vec3 f = m.contacts.at(0)->slave_force(m.problem->state());
   EXPECT_NEAR(f.z(), force, 1e-9 * std::abs(force));
+  // the plate is drawn (by rank 0): surfaces.pvd lists surfaces_0000.vtu, its 16 nodes and 9
+  // quads (18 triangles)
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / fmt::format("trifem_rigid_surface_{}", GetParam());
+  if (parallel::is_root())
+    std::filesystem::remove_all(dir);
+  { // (every process writes its part of the volume)
+    analysis::OutputWriter writer(m, plate.spec.output, dir, 1.0);
+    writer.write(1.0, 4, 0.25, 1, true);
+    if (!parallel::is_root())
+      return;
+    EXPECT_EQ(writer.surfaces_pvd_file(), dir / "surfaces.pvd");
+  }
+  const auto text = [](const std::filesystem::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  };
+  EXPECT_NE(text(dir / "surfaces.pvd").find("surfaces_0000.vtu"), std::string::npos);
+  const std::string vtu = text(dir / "surfaces_0000.vtu");
+  EXPECT_NE(vtu.find(fmt::format(R"(NumberOfPoints="16" NumberOfCells="{}")", GetParam() ? 18 : 9)),
+            std::string::npos);
+  EXPECT_NE(vtu.find(R"(Name="displacement [mm]")"), std::string::npos);
+  std::filesystem::remove_all(dir);
 }
 
 INSTANTIATE_TEST_SUITE_P(Facets, RigidSurface, testing::Values(false, true),

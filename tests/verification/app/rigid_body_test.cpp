@@ -217,6 +217,52 @@ center = [{:.17g}, {:.17g}, {:.17g}]
   EXPECT_LT(model::rigid_body_moment(m, lid).norm(), 1e-12);
 }
 
+TEST(RigidBody, EulerAnglesTurnTheCubeByTheProductOfTheirRotations) {
+  // 50°, -70° and 120° about x, y and z, each ramped by its own curve: at the end the cube has
+  // turned rigidly by R_z R_y R_x about the body's center (a total angle above π/2 about an
+  // axis no angle names); halfway the angles are those of the curves
+  const Vec3 angles(50.0, -70.0, 120.0), center(0.5, 0.5, 1.0);
+  const std::string body =
+      fmt::format(R"(
+[curves.early]
+points = [[0.0, 0.0], [0.5, 1.0], [1.0, 1.0]]
+[[rigid_body]]
+name = "lid"
+set = "cube.zmax"
+center = [0.5, 0.5, 1.0]
+x = {{ displacement = 0.0 }}
+y = {{ displacement = 0.0 }}
+z = {{ displacement = 0.0 }}
+euler_angles = {{ x = {{ rotation = {:.17g}, curve = "early" }}, y = {{ rotation = {:.17g}, curve = "ramp" }}, z = {{ rotation = {:.17g}, curve = "ramp" }} }}
+)",
+                  angles.x() * std::numbers::pi / 180, angles.y() * std::numbers::pi / 180,
+                  angles.z() * std::numbers::pi / 180);
+  const auto rotation_at = [&](Real t) {
+    const Real ramp = t, early = std::min(1.0, 2.0 * t);
+    const Vec3 a = angles * std::numbers::pi / 180;
+    return rotation::matrix(a.z() * ramp * Vec3::UnitZ()) *
+           rotation::matrix(a.y() * ramp * Vec3::UnitY()) *
+           rotation::matrix(a.x() * early * Vec3::UnitX());
+  };
+  Real worst = 0.0;
+  const test::CaseRun run = test::run_case_text(
+      free_cube_case(body), "euler.toml", [&](const test::CaseRun& r, const solver::StepInfo& s) {
+        const model::Model& m = *r.model;
+        const Mat3 R = rotation_at(s.time);
+        const Vector& x = m.problem->state();
+        for (Index n = 0; n < m.mesh.num_nodes(); ++n) {
+          const Vec3 X = m.mesh.node(n);
+          const Vec3 u(x[m.dofs.dof(m.fields.u, n, 0)], x[m.dofs.dof(m.fields.u, n, 1)],
+                       x[m.dofs.dof(m.fields.u, n, 2)]);
+          worst = std::max(worst, (X + u - (center + R * (X - center))).norm());
+        }
+      });
+  ASSERT_TRUE(run.report.success) << run.report.failure;
+  EXPECT_EQ(run.report.steps, 4);
+  EXPECT_LT(worst, 1e-12); // cube size 1
+  EXPECT_GT(rotation::vector(rotation_at(1.0)).norm(), std::numbers::pi / 2);
+}
+
 TEST(RigidBody, AMomentOnARotatingBodyTwistsTheCubeAndTheBaseBalancesIt) {
   constexpr Real kMoment = 0.02; // [N mm] on a cube of modulus 1 and size 1: a few degrees
   const test::CaseRun run = test::run_case_text(cube_case(R"(

@@ -1,0 +1,222 @@
+// SPDX-License-Identifier: MIT
+// [[loads.body_force]]: its keys, the TOML writer's round trip, the restart fingerprint, and the
+// errors of bad input, by the reader (keys, with their line) and by the model (cell blocks and
+// their materials, naming the key).
+#include "bad_input.hpp"
+#include "trifem/analysis/restart_fingerprint.hpp"
+#include "trifem/core/error.hpp"
+#include "trifem/io/case_reader.hpp"
+#include "trifem/io/case_writer.hpp"
+#include "trifem/model/model.hpp"
+
+#include <gtest/gtest.h>
+
+using trifem::InputError;
+using trifem::Vec3;
+using trifem::io::CaseSpec;
+using trifem::io::parse_case;
+
+using namespace trifem::test;
+
+namespace {
+
+/// A block of solid with a density, a bone of rigid cells and a ramp; `rest` appended.
+std::string body_case(const std::string& rest, const std::string& density = "density = 1e-9\n") {
+  return R"(
+[[mesh.box]]
+name = "block"
+size = [1, 1, 1]
+divisions = [2, 2, 2]
+material = "soft"
+
+[[mesh.box]]
+name = "bone"
+origin = [0, 0, 1]
+size = [1, 1, 0.5]
+divisions = [1, 1, 1]
+
+[materials.soft]
+type = "neo-hookean"
+E = 1.0
+)" + density +
+         R"(
+[curves.ramp]
+points = [[0, 0], [1, 1]]
+
+[time]
+end_time = 1.0
+dt = 0.1
+
+[[boundary.fixed]]
+set = "block.zmin"
+
+[[rigid_body]]
+name = "femur"
+blocks = ["bone"]
+set = "block.zmax"
+)" + rest;
+}
+
+const std::string kGravity = R"(
+[[loads.body_force]]
+force = [0, 0, -9810]
+blocks = ["block"]
+curve = "ramp"
+)";
+
+/// The message of the InputError that building the model of `text` throws ("" if none).
+std::string model_error_of(const std::string& text) {
+  const CaseSpec spec = parse_case(text, kMemoryFile);
+  try {
+    trifem::model::build_model(spec);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+void expect_contains(const std::string& message, const std::vector<std::string>& fragments) {
+  ASSERT_FALSE(message.empty()) << "no error";
+  for (const auto& f : fragments)
+    EXPECT_NE(message.find(f), std::string::npos) << "'" << f << "' not in: " << message;
+}
+
+} // namespace
+
+TEST(CaseReaderBodyForce, ReadsForceBlocksAndCurve) {
+  const CaseSpec c = parse_case(body_case(kGravity + R"(
+[[loads.body_force]]
+force = [1.5, 0, 0]
+)"),
+                                kMemoryFile);
+  ASSERT_EQ(c.body_forces.size(), 2u);
+  EXPECT_EQ(c.body_forces[0].key, "loads.body_force[1]");
+  EXPECT_EQ(c.body_forces[0].force, Vec3(0, 0, -9810));
+  EXPECT_EQ(c.body_forces[0].blocks, std::vector<std::string>{"block"});
+  EXPECT_EQ(c.body_forces[0].curve, "ramp");
+  EXPECT_EQ(c.body_forces[1].key, "loads.body_force[2]");
+  EXPECT_TRUE(c.body_forces[1].blocks.empty()); // every cell
+  EXPECT_TRUE(c.body_forces[1].curve.empty());
+}
+
+TEST(CaseReaderBodyForce, TheWriterRoundTripsIt) {
+  const CaseSpec c = parse_case(body_case(R"(
+[[loads.body_force]]
+force = [0.1, -0.2, -9810.5]
+blocks = ["block", "bone"]
+curve = "ramp"
+[[loads.body_force]]
+force = [3, 0, 0]
+)"),
+                                kMemoryFile);
+  const CaseSpec back = parse_case(trifem::io::case_toml(c), kMemoryFile);
+  ASSERT_EQ(back.body_forces.size(), 2u);
+  for (std::size_t i = 0; i < 2; ++i) {
+    EXPECT_EQ(back.body_forces[i].key, c.body_forces[i].key);
+    EXPECT_EQ(back.body_forces[i].force, c.body_forces[i].force);
+    EXPECT_EQ(back.body_forces[i].blocks, c.body_forces[i].blocks);
+    EXPECT_EQ(back.body_forces[i].curve, c.body_forces[i].curve);
+  }
+}
+
+TEST(CaseReaderBodyForce, ARestartOfACaseWithAnotherBodyForceIsRefused) {
+  const auto fingerprint = [](const std::string& text) {
+    const CaseSpec spec = parse_case(text, kMemoryFile);
+    const auto model = trifem::model::build_model(spec);
+    return trifem::analysis::case_fingerprint(
+        spec, *model)[static_cast<std::size_t>(trifem::analysis::CasePart::BoundaryConditions)];
+  };
+  const auto without = fingerprint(body_case(""));
+  const auto with = fingerprint(body_case(kGravity));
+  EXPECT_NE(without, with);
+  EXPECT_NE(with, fingerprint(body_case(replaced_in(kGravity, "-9810", "-9811"))));
+  EXPECT_NE(with,
+            fingerprint(body_case(replaced_in(kGravity, "\"block\"", "\"block\", \"bone\""))));
+  EXPECT_EQ(with, fingerprint(body_case(kGravity)));
+}
+
+const std::vector<BadCase> kBadBodyForces = {
+    {"missing_force",
+     body_case("[[loads.body_force]]\nblocks = [\"block\"]\n"),
+     {"loads.body_force[1].force: missing required key (expected an array of 3 numbers)"}},
+    {"unknown_key",
+     body_case("[[loads.body_force]]\nforce = [0, 0, -1]\nvalue = 2\n"),
+     {"loads.body_force[1].value: unknown key (expected one of: force, blocks, curve)"}},
+    {"force_not_a_vector",
+     body_case("[[loads.body_force]]\nforce = -9810\n"),
+     {"loads.body_force[1].force"}},
+    {"undefined_curve",
+     body_case("[[loads.body_force]]\nforce = [0, 0, -1]\ncurve = \"rampe\"\n"),
+     {"loads.body_force[1].curve = 'rampe': undefined curve", "did you mean 'ramp'?"}},
+    {"no_blocks",
+     body_case("[[loads.body_force]]\nforce = [0, 0, -1]\nblocks = []\n"),
+     {"loads.body_force[1].blocks: no cell block given"}},
+    {"a_block_twice",
+     body_case("[[loads.body_force]]\nforce = [0, 0, -1]\nblocks = [\"block\", \"block\"]\n"),
+     {"loads.body_force[1].blocks[2] = 'block': the block is named twice"}},
+    {"in_a_step",
+     replaced_in(body_case(R"(
+[[step]]
+end_time = 1.0
+dt = 0.1
+[[step.loads.body_force]]
+force = [0, 0, -1]
+)"),
+                 "[time]\nend_time = 1.0\ndt = 0.1\n", ""),
+     {"step[1].loads.body_force: a body force acts in every step", "[[loads.body_force]]"}},
+};
+
+class BadBodyForce : public ::testing::TestWithParam<BadCase> {};
+
+TEST_P(BadBodyForce, FailsNamingTheKey) {
+  expect_fails_naming(GetParam());
+}
+
+INSTANTIATE_TEST_SUITE_P(CaseReaderBodyForce, BadBodyForce, ::testing::ValuesIn(kBadBodyForces),
+                         [](const auto& info) { return info.param.name; });
+
+TEST(CaseReaderBodyForce, AnUndefinedBlockIsAModelErrorNamingTheKey) {
+  expect_contains(
+      model_error_of(body_case(replaced_in(kGravity, "\"block\"", "\"block\", \"blok\""))),
+      {"loads.body_force[1].blocks[2]", "undefined cell block 'blok'", "block"});
+}
+
+TEST(CaseReaderBodyForce, AMixtureUnderABodyForceIsAModelErrorNamingTheKey) {
+  const std::string mixture = replaced_in(body_case(R"(
+[[loads.body_force]]
+force = [0, 0, -9810]
+)",
+                                                    ""),
+                                          "type = \"neo-hookean\"\nE = 1.0\n",
+                                          R"(type = "biphasic"
+phi_s0 = 0.2
+permeability = 1e-3
+density = 1e-9
+[materials.soft.solid]
+type = "neo-hookean"
+E = 1.0
+)");
+  expect_contains(model_error_of(mixture),
+                  {"loads.body_force[1]: cell 0 has the mixture material 'soft'",
+                   "body forces act on solid and rigid cells only (in a mixture the force also "
+                   "drives the fluid through Darcy's law, which trifem does not model)",
+                   "'blocks'"});
+}
+
+TEST(CaseReaderBodyForce, ASolidWithoutDensityIsAModelErrorNamingTheMaterial) {
+  expect_contains(model_error_of(body_case(kGravity, "")),
+                  {"loads.body_force[1]: the material 'soft' of cell 0 has no density",
+                   "give `density` (t/mm^3) in [materials.soft]"});
+}
+
+TEST(CaseReaderBodyForce, NoMassIsAModelError) {
+  // the bone's cells have no density: massless, skipped; nothing else is loaded
+  expect_contains(model_error_of(body_case(replaced_in(kGravity, "\"block\"", "\"bone\""))),
+                  {"loads.body_force[1]: the body force acts on no mass",
+                   "give `density` in their [[rigid_body]]"});
+  // with a density the bone carries the load
+  EXPECT_EQ(model_error_of(replaced_in(body_case(replaced_in(kGravity, "\"block\"", "\"bone\"")),
+                                       "set = \"block.zmax\"\n",
+                                       "set = \"block.zmax\"\ndensity = 2e-9\n")),
+            "");
+}

@@ -3,6 +3,7 @@
 
 #include "trifem/core/error.hpp"
 #include "trifem/fe/hex8.hpp"
+#include "trifem/physics/cell_mass.hpp"
 
 #include <cmath>
 
@@ -17,17 +18,12 @@ BodyForceTerm::BodyForceTerm(const mesh::Mesh& mesh, const dofs::DofMap& dofs,
   nodal_mass_.reserve(cells_.size());
   for (std::size_t i = 0; i < cells_.size(); ++i) {
     TRIFEM_VERIFY(densities[i] > 0.0 && std::isfinite(densities[i]), "density must be positive");
-    const fe::HexCoords X = fe::cell_coordinates(mesh, cells_[i]);
-    Eigen::Matrix<Real, 8, 1> m = Eigen::Matrix<Real, 8, 1>::Zero();
-    for (const fe::HexQuadraturePoint& q : fe::hex_gauss_2x2x2()) {
-      const Real detJ = (fe::hex8_shape_grad(q.xi).transpose() * X).determinant();
-      TRIFEM_CHECK(detJ > 0.0,
-                   "cell {} is inverted or degenerate (det(dX/dxi) <= 0 at a Gauss point); "
-                   "check its node order",
-                   cells_[i]);
-      m += (densities[i] * detJ * q.weight) * fe::hex8_shape(q.xi);
-    }
-    nodal_mass_.push_back(m);
+    const auto m = consistent_cell_mass(fe::cell_coordinates(mesh, cells_[i]), densities[i]);
+    TRIFEM_CHECK(m.has_value(),
+                 "cell {} is inverted or degenerate (det(dX/dxi) <= 0 at a Gauss point); "
+                 "check its node order",
+                 cells_[i]);
+    nodal_mass_.push_back(m->rowwise().sum()); // ∫ ρ N_a dV (Σ_b N_b = 1)
   }
 }
 

@@ -2,6 +2,7 @@
 #include "trifem/physics/inertia_term.hpp"
 
 #include "trifem/core/error.hpp"
+#include "trifem/physics/cell_mass.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -20,20 +21,13 @@ GeneralizedAlpha GeneralizedAlpha::from_spectral_radius(Real rho_inf) {
 
 namespace {
 
-/// m_ab = ∫ ρ N_a N_b dV over the cell with nodes X (2x2x2 Gauss: exact for a parallelepiped).
+/// The mass matrix of `kind` of the cell with nodes X (none if inverted or degenerate).
 std::optional<Eigen::Matrix<Real, 8, 8>> cell_mass(const fe::HexCoords& X, Real density,
                                                    MassMatrix kind) {
-  Eigen::Matrix<Real, 8, 8> m = Eigen::Matrix<Real, 8, 8>::Zero();
-  for (const fe::HexQuadraturePoint& q : fe::hex_gauss_2x2x2()) {
-    const fe::HexShape N = fe::hex8_shape(q.xi);
-    const Real detJ = (fe::hex8_shape_grad(q.xi).transpose() * X).determinant();
-    if (!(detJ > 0.0))
-      return std::nullopt;
-    m.noalias() += (density * detJ * q.weight) * (N * N.transpose());
-  }
-  if (kind == MassMatrix::Lumped) {
-    const Eigen::Matrix<Real, 8, 1> rows = m.rowwise().sum(); // evaluated before m changes
-    m = rows.asDiagonal();
+  std::optional<Eigen::Matrix<Real, 8, 8>> m = consistent_cell_mass(X, density);
+  if (m && kind == MassMatrix::Lumped) {
+    const Eigen::Matrix<Real, 8, 1> rows = m->rowwise().sum(); // evaluated before m changes
+    *m = rows.asDiagonal();
   }
   return m;
 }

@@ -116,6 +116,47 @@ TEST(CaseReaderDynamic, TheWriterKeepsTheDynamicKeys) {
   }
 }
 
+/// kDynamic with a bone of rigid cells above the block, its top's nodes carried, and `keys` in
+/// its [[rigid_body]].
+std::string with_bone(const std::string& keys) {
+  return kDynamic + R"(
+[[mesh.box]]
+name = "bone"
+origin = [0, 0, 1]
+size = [1, 1, 0.2]
+divisions = [1, 1, 1]
+
+[[rigid_body]]
+name = "femur"
+set = "block.zmax"
+blocks = ["bone"]
+)" + keys;
+}
+
+TEST(CaseReaderDynamic, ARigidBodysDensityVelocitiesAndEulerAnglesAreReadAndWritten) {
+  const io::CaseSpec c = io::parse_case(with_bone(R"(density = 2e-9
+velocity = [1.0, 0.0, -2.0]
+angular_velocity = [0.0, 3.0, 0.0]
+euler_angles = { x = { rotation = 0.25 }, z = { rotation = -0.5, curve = "ramp" } }
+[curves.ramp]
+points = [[0, 0], [1, 1]]
+)"),
+                                        kMemoryFile);
+  for (const io::CaseSpec& spec : {c, io::parse_case(io::case_toml(c), kMemoryFile)}) {
+    ASSERT_EQ(spec.rigid_bodies.size(), 1u);
+    const io::RigidBodySpec& b = spec.rigid_bodies[0];
+    ASSERT_TRUE(b.density.has_value());
+    EXPECT_EQ(*b.density, 2e-9);
+    EXPECT_EQ(b.velocity, Vec3(1.0, 0.0, -2.0));
+    EXPECT_EQ(b.angular_velocity, Vec3(0.0, 3.0, 0.0));
+    ASSERT_TRUE(b.euler_angles.has_value());
+    EXPECT_EQ((*b.euler_angles)[0].value, 0.25);
+    EXPECT_EQ((*b.euler_angles)[1].value, 0.0); // absent: 0
+    EXPECT_EQ((*b.euler_angles)[2].value, -0.5);
+    EXPECT_EQ((*b.euler_angles)[2].curve, "ramp");
+  }
+}
+
 class CaseReaderDynamicErrors : public ::testing::TestWithParam<BadCase> {};
 
 TEST_P(CaseReaderDynamicErrors, NameTheFileAndTheKey) {
@@ -142,7 +183,21 @@ INSTANTIATE_TEST_SUITE_P(
                 {"dynamic.rho_infinity"}},
         BadCase{"dynamic_table_of_a_quasi_static_case",
                 replaced_in(kDynamic, "type = \"dynamic\"", "type = \"quasi-static\""),
-                {"dynamic", "only applies to dynamic analyses"}}),
+                {"dynamic", "only applies to dynamic analyses"}},
+        BadCase{"rigid_velocity_of_a_quasi_static_case",
+                replaced_in(replaced_in(with_bone("velocity = [1.0, 0.0, 0.0]\n"),
+                                        "type = \"dynamic\"", "type = \"quasi-static\""),
+                            "[dynamic]\nrho_inf = 0.8\nmass = \"lumped\"\n", ""),
+                {"rigid_body[1].velocity", "only applies to dynamic analyses"}},
+        BadCase{"density_of_a_body_without_cells",
+                replaced_in(with_bone("density = 1e-9\n"), "blocks = [\"bone\"]\n", ""),
+                {"rigid_body[1].density", "only a body made of cells"}},
+        BadCase{"euler_angles_and_rz",
+                with_bone("rz = { rotation = 0.1 }\neuler_angles = { x = { rotation = 0.2 } }\n"),
+                {"rigid_body[1].euler_angles", "either by rx, ry, rz or by euler_angles"}},
+        BadCase{"a_moment_in_euler_angles",
+                with_bone("euler_angles = { x = { moment = 0.2 } }\n"),
+                {"rigid_body[1].euler_angles.x.moment"}}),
     [](const auto& info) { return info.param.name; });
 
 } // namespace

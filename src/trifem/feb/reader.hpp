@@ -10,6 +10,7 @@
 #include <map>
 #include <set>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace trifem::feb::detail {
@@ -60,6 +61,12 @@ struct RigidBodyInput {
   std::array<io::RigidComponentSpec, 3> drives; ///< rigid_displacement, rigid_force
   std::array<io::RigidComponentSpec, 3> rotation_drives; ///< rigid_rotation, rigid_moment
   bool connected = false;                                ///< a rigid_connector names it: it rotates
+  static constexpr std::string_view kComponentNames[6] = {"x", "y", "z", "Ru", "Rv", "Rw"};
+  /// The drive of component k (0-2 translations, 3-5 rotations).
+  io::RigidComponentSpec& drive(int k) { return k < 3 ? drives[k] : rotation_drives[k - 3]; }
+  const io::RigidComponentSpec& drive(int k) const {
+    return k < 3 ? drives[k] : rotation_drives[k - 3];
+  }
   /// Per component (x, y, z, then the rotations): the order of the rigid condition that last
   /// fixed or drove it (0: none). As in FEBio, a later condition replaces an earlier one.
   std::array<int, 6> order{};
@@ -195,6 +202,12 @@ void read_rigid(Reader& r, pugi::xml_node section);
 /// The rigid bodies as [[rigid_body]]s (translating if attached by nodes with their rotations
 /// fixed and joined by no connector, else rotating), then the connectors as [[connector]]s.
 void map_rigid_bodies(Reader& r);
+/// A node set of the nodes of sets `a` and `b` (its name, "<a>_and_<b>").
+std::string union_node_sets(Reader& r, const std::string& a, const std::string& b);
+/// Merges the rigid bodies whose elements share nodes into the one of the lowest material id
+/// (elements, attached nodes, conditions in FEBio's order, connectors), with a warning each,
+/// until none do (rigid_merge.cpp).
+void merge_touching_bodies(Reader& r);
 /// In a static analysis the rigid bodies' initial velocities (rigid_ic) are dropped, with a
 /// warning: they act in dynamic analyses only. Call once the steps are read.
 void drop_static_rigid_velocities(Reader& r);

@@ -42,26 +42,20 @@ int rotation(const Reader& r, pugi::xml_node dof) {
   r.doc.fail(dof, fmt::format("dof '{}' is not a rotation (Ru, Rv, Rw)", d));
 }
 
-constexpr std::string_view kComponentNames[] = {"x", "y", "z", "Ru", "Rv", "Rw"};
-
-/// The drive of component k (0-2 translations, 3-5 rotations) of a body.
-io::RigidComponentSpec& drive_of(RigidBodyInput& body, int k) {
-  return k < 3 ? body.drives[k] : body.rotation_drives[k - 3];
-}
-
 /// A rigid condition fixing (`drive` null) or driving component k of `body`, in the file's
 /// order: as in FEBio, it replaces a fixed or driven state an earlier condition gave (with a
 /// warning); two drives of one component are an error.
 void set_component(Reader& r, pugi::xml_node node, RigidBodyInput& body, int k,
                    const io::RigidComponentSpec* drive) {
-  io::RigidComponentSpec& current = drive_of(body, k);
+  io::RigidComponentSpec& current = body.drive(k);
   if (drive && current.drive != io::RigidDrive::Free)
     r.doc.fail(node, "a second motion or load on the same component of the body");
   if (body.fixed[k] != (drive == nullptr) &&
       (body.fixed[k] || current.drive != io::RigidDrive::Free))
-    r.warn(node, fmt::format("component {} of the body was {} by an earlier rigid condition; "
-                             "this one replaces it (as in FEBio)",
-                             kComponentNames[k], body.fixed[k] ? "fixed" : "driven"));
+    r.warn(node,
+           fmt::format("component {} of the body was {} by an earlier rigid condition; "
+                       "this one replaces it (as in FEBio)",
+                       RigidBodyInput::kComponentNames[k], body.fixed[k] ? "fixed" : "driven"));
   body.fixed[k] = drive == nullptr;
   current = drive ? *drive : io::RigidComponentSpec{};
   body.order[k] = r.rigid_conditions;
@@ -161,107 +155,6 @@ void rigid_initial_velocity(Reader& r, pugi::xml_node node, bool angular) {
                  fmt::format("unknown parameter '{}' of {}", name, node.attribute("type").value()));
   (angular ? body.angular_velocity : body.velocity) = r.doc.vector(r.doc.child(node, "value"));
   body.initial = node;
-}
-
-/// A node set of the nodes of sets `a` and `b` (its name, "<a>_and_<b>").
-std::string union_set(Reader& r, const std::string& a, const std::string& b) {
-  std::vector<Index> nodes = r.mesh.mesh.node_set(a);
-  const std::vector<Index>& more = r.mesh.mesh.node_set(b);
-  nodes.insert(nodes.end(), more.begin(), more.end());
-  std::sort(nodes.begin(), nodes.end());
-  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
-  std::string name = a + "_and_" + b;
-  while (r.mesh.mesh.has_node_set(name))
-    name += "_";
-  r.mesh.mesh.add_node_set(name, std::move(nodes));
-  return name;
-}
-
-/// The nodes of a body's elements, ascending.
-std::vector<Index> element_nodes(const Reader& r, const RigidBodyInput& body) {
-  std::vector<Index> nodes;
-  for (const std::string& block : body.blocks)
-    for (Index c : r.mesh.mesh.cell_block(block))
-      nodes.insert(nodes.end(), r.mesh.mesh.cell(c).begin(), r.mesh.mesh.cell(c).end());
-  std::sort(nodes.begin(), nodes.end());
-  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
-  return nodes;
-}
-
-/// Moves body `from` into body `into` (FEBio's merge of rigid bodies whose elements share
-/// nodes): elements, attached nodes, conditions and connectors.
-void merge_body(Reader& r, const std::string& into, const std::string& from) {
-  RigidBodyInput& a = r.rigid_bodies.at(into);
-  const RigidBodyInput& b = r.rigid_bodies.at(from);
-  const auto density = [&](const RigidBodyInput& body) {
-    const pugi::xml_node d = body.material.child("density");
-    return d ? r.doc.number(d) : 1.0;
-  };
-  if (density(a) != density(b))
-    r.doc.fail(b.material, fmt::format("the elements of rigid bodies '{}' and '{}' share nodes, so "
-                                       "they move as one body (as in FEBio), but their densities "
-                                       "differ ({} and {}): give them the same density",
-                                       into, from, density(a), density(b)));
-  a.blocks.insert(a.blocks.end(), b.blocks.begin(), b.blocks.end());
-  if (!b.set.empty())
-    a.set = a.set.empty() ? b.set : union_set(r, a.set, b.set);
-  for (int k = 0; k < 6; ++k) // the later condition of the two (FEBio's order)
-    if (b.order[k] > a.order[k]) {
-      if (a.order[k] > 0 && !(a.fixed[k] && b.fixed[k])) // (both fixing it: the same)
-        r.warn(b.material,
-               fmt::format("component {} of the merged body '{}' is {} by a rigid "
-                           "condition of '{}' that replaces an earlier one of '{}' "
-                           "(as in FEBio)",
-                           kComponentNames[k], into, b.fixed[k] ? "fixed" : "driven", from, into));
-      a.fixed[k] = b.fixed[k];
-      drive_of(a, k) = k < 3 ? b.drives[k] : b.rotation_drives[k - 3];
-      a.order[k] = b.order[k];
-    }
-  a.connected = a.connected || b.connected;
-  if (a.velocity == Vec3::Zero() && a.angular_velocity == Vec3::Zero()) {
-    a.velocity = b.velocity;
-    a.angular_velocity = b.angular_velocity;
-    a.initial = b.initial;
-  }
-  for (io::ConnectorSpec& c : r.connectors)
-    for (std::string* name : {&c.body_a, &c.body_b})
-      if (*name == from)
-        *name = into;
-  for (Reader::JointRotation& j : r.joint_rotations)
-    for (std::string* name : {&j.body_a, &j.body_b})
-      if (*name == from)
-        *name = into;
-  r.warn(b.material, fmt::format("the elements of rigid body '{}' share nodes with those of '{}': "
-                                 "they move as one body, '{}' (as in FEBio)",
-                                 from, into, into));
-  r.rigid_bodies.erase(from);
-}
-
-/// Merges the rigid bodies whose elements share nodes, into the one of the lowest material id,
-/// until none do.
-void merge_touching_bodies(Reader& r) {
-  const auto id = [&](const std::string& name) {
-    return r.rigid_bodies.at(name).material.attribute("id").as_llong();
-  };
-  for (bool merged = true; merged;) {
-    merged = false;
-    std::map<Index, std::string> owner; // node -> body
-    for (const auto& [name, body] : r.rigid_bodies) {
-      for (Index n : element_nodes(r, body)) {
-        const auto [it, fresh] = owner.emplace(n, name);
-        if (fresh || it->second == name)
-          continue;
-        const bool keep_other = id(it->second) <= id(name);
-        const std::string into = keep_other ? it->second : name;
-        const std::string from = keep_other ? name : it->second;
-        merge_body(r, into, from);
-        merged = true;
-        break;
-      }
-      if (merged)
-        break;
-    }
-  }
 }
 
 /// The components of the body's nodes that zero-displacement conditions fix at every node.
@@ -376,7 +269,7 @@ void attach_rigid(Reader& r, pugi::xml_node bc, bool step) {
     r.doc.fail(bc, "nodes attached to a rigid body made of a shell part are not supported");
   const std::string set = r.node_set(bc);
   if (!body.set.empty()) { // attached again: the union of the node sets
-    body.set = union_set(r, body.set, set);
+    body.set = union_node_sets(r, body.set, set);
     return;
   }
   body.set = set;

@@ -293,6 +293,44 @@ torsion_stiffness = 2e-6
           << a.names[c] << " at t = " << b.columns[0][i];
 }
 
+TEST_F(CliDynamic, AFreeRigidBodyWithoutMassIsNamedInAWarning) {
+  // a bone of rigid cells without density on a hinge: its rotation about the hinge is free and
+  // nothing gives it inertia; held in all six components it draws no warning
+  const std::string bone = R"(
+[[mesh.box]]
+name = "bone"
+size = [2.0, 1.0, 0.5]
+divisions = [2, 1, 1]
+[analysis]
+type = "dynamic"
+[time]
+end_time = 0.1
+dt = 0.01
+[[rigid_body]]
+name = "arm"
+blocks = ["bone"]
+)";
+  Result r = trifem({"check", write_file("massless.toml", bone + R"(
+[[connector]]
+type = "revolute"
+name = "hinge"
+body_a = "ground"
+body_b = "arm"
+origin = [-0.5, 0.5, 0.25]
+axis = [0.0, 0.0, 1.0]
+torsion_stiffness = 1e-6
+)")
+                                  .string()});
+  ASSERT_EQ(r.exit_code, kSuccess) << r;
+  EXPECT_TRUE(contains(r.out, "warning: rigid_body[1]: the body has no mass")) << r;
+  std::string held = bone;
+  for (const std::string k : {"x", "y", "z"})
+    held += k + " = { displacement = 0.0 }\nr" + k + " = { rotation = 0.0 }\n";
+  r = trifem({"check", write_file("held.toml", held).string()});
+  ASSERT_EQ(r.exit_code, kSuccess) << r;
+  EXPECT_FALSE(contains(r.out, "has no mass")) << r;
+}
+
 TEST_F(CliDynamic, ADynamicStepThenAQuasiStaticOneEndsAtTheStaticEquilibrium) {
   // after the release, a quasi-static step from the moving state: with no load the static
   // equilibrium is the undeformed block, whatever the motion it starts from

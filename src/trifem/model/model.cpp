@@ -2,6 +2,7 @@
 #include "trifem/model/model.hpp"
 
 #include "trifem/core/error.hpp"
+#include "trifem/core/log.hpp"
 #include "trifem/material/registry.hpp"
 #include "trifem/mesh/gmsh_reader.hpp"
 #include "trifem/mesh/refine.hpp"
@@ -169,6 +170,32 @@ dofs::DirichletCondition unused_dofs(const Model& model,
   return c;
 }
 
+/// A rotating body whose nodes carry no mass (no `density`, no tissue cell at its nodes) and
+/// that is free to move: its unknowns balance statically in the dynamic steps (a warning).
+void warn_of_massless_bodies(const io::CaseSpec& spec, const Model& model,
+                             const physics::InertiaTerm& inertia) {
+  const Vector lumped = inertia.lumped_mass();
+  for (std::size_t i = 0; i < model.rigid_bodies.size(); ++i) {
+    if (model.rigid_bodies[i].rotating < 0)
+      continue;
+    const dofs::RigidBodyDofs& b =
+        model.problem->rigid_map().bodies()[model.rigid_bodies[i].rotating];
+    Real mass = 0.0;
+    for (const auto& follower : b.followers)
+      mass += lumped[follower[0]];
+    bool free = false;
+    for (int k = 0; k < 3; ++k)
+      free = free || !model.dofs.is_constrained(b.translation[k]) ||
+             !model.dofs.is_constrained(b.rotation[k]);
+    if (mass == 0.0 && free)
+      log::warn(
+          "warning: {}: the body has no mass (no density and no tissue cell at its nodes): in the "
+          "dynamic steps its free motions balance statically; give its cells a density "
+          "for their inertia",
+          spec.rigid_bodies[i].key);
+  }
+}
+
 /// The inertia of every cell with mass (the reader requires a density of every material; the
 /// cells of a rigid body without one are massless), for the dynamic steps of the case. The
 /// unknowns of rotating rigid bodies have no mass of their own: the inertia of the nodes they
@@ -189,9 +216,11 @@ std::unique_ptr<physics::InertiaTerm> inertia_term(const io::CaseSpec& spec, con
   const physics::MassMatrix mass = spec.dynamics.mass == io::MassMatrixSpec::Lumped
                                        ? physics::MassMatrix::Lumped
                                        : physics::MassMatrix::Consistent;
-  return std::make_unique<physics::InertiaTerm>(
+  auto term = std::make_unique<physics::InertiaTerm>(
       model.mesh, model.dofs, model.fields.u, std::move(cells), std::move(densities), mass,
       physics::GeneralizedAlpha::from_spectral_radius(spec.dynamics.rho_inf), std::move(massless));
+  warn_of_massless_bodies(spec, model, *term);
+  return term;
 }
 
 void set_scales(const std::vector<CellMaterial>& materials, Model& model) {

@@ -196,6 +196,22 @@ TEST_F(CliDynamic, BiphasicCreepWithNegligibleInertiaIsTheQuasiStaticCreep) {
             << " of the settlement (density 1.05e-9), " << heavy << " (1e-2)\n";
 }
 
+namespace {
+
+/// The rows of the continued history `b` after its first (the restart state itself) equal the
+/// last rows of the uninterrupted `a`, every column to 1e-12 of its unit's largest magnitude.
+void expect_the_same_rows(const History& a, const History& b) {
+  const std::map<std::string, double> scale = unit_scales(a);
+  const std::size_t offset = a.columns[0].size() - b.columns[0].size();
+  for (std::size_t c = 0; c < a.names.size(); ++c)
+    for (std::size_t i = 1; i < b.columns[c].size(); ++i)
+      ASSERT_LE(std::abs(b.columns[c][i] - a.columns[c][offset + i]),
+                1e-12 * scale.at(unit_of(a.names[c])))
+          << a.names[c] << " at t = " << b.columns[0][i];
+}
+
+} // namespace
+
 TEST_F(CliDynamic, ARunRestartedInsideTheDynamicStepContinuesTheUninterruptedOne) {
   // the restart file holds the inertia's history (v, a and the weighted static residual of the
   // last step): the continued run takes the same steps to round-off
@@ -214,13 +230,7 @@ TEST_F(CliDynamic, ARunRestartedInsideTheDynamicStepContinuesTheUninterruptedOne
   ASSERT_EQ(a.names, b.names);
   ASSERT_GT(b.columns[0].size(), 50u) << "the continued run takes the last 100 steps";
   EXPECT_NEAR(b["time [s]"].front(), 1.0001, 1e-12);
-  const std::map<std::string, double> scale = unit_scales(a);
-  const std::size_t offset = a.columns[0].size() - b.columns[0].size();
-  for (std::size_t c = 0; c < a.names.size(); ++c)
-    for (std::size_t i = 1; i < b.columns[c].size(); ++i) // row 0: the restart state itself
-      ASSERT_LE(std::abs(b.columns[c][i] - a.columns[c][offset + i]),
-                1e-12 * scale.at(unit_of(a.names[c])))
-          << a.names[c] << " at t = " << b.columns[0][i];
+  expect_the_same_rows(a, b);
 }
 
 TEST_F(CliDynamic, ASwingingRigidBodyRestartedMidSwingContinuesTheUninterruptedRun) {
@@ -284,13 +294,7 @@ torsion_stiffness = 2e-6
   EXPECT_NEAR(b["time [s]"].front(), 0.1, 1e-12);
   const auto& angle = a["femur.rx [rad]"];
   EXPECT_GT(*std::max_element(angle.begin(), angle.end()), 0.1) << "the bone swings";
-  const std::map<std::string, double> scale = unit_scales(a);
-  const std::size_t offset = a.columns[0].size() - b.columns[0].size();
-  for (std::size_t c = 0; c < a.names.size(); ++c)
-    for (std::size_t i = 1; i < b.columns[c].size(); ++i) // row 0: the restart state itself
-      ASSERT_LE(std::abs(b.columns[c][i] - a.columns[c][offset + i]),
-                1e-12 * scale.at(unit_of(a.names[c])))
-          << a.names[c] << " at t = " << b.columns[0][i];
+  expect_the_same_rows(a, b);
 }
 
 TEST_F(CliDynamic, AFreeRigidBodyWithoutMassIsNamedInAWarning) {

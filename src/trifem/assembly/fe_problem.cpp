@@ -363,6 +363,13 @@ std::string FeProblem::step_rejection() const {
   return {};
 }
 
+std::string FeProblem::step_caution() const {
+  for (const auto& t : terms_)
+    if (std::string why = t->step_caution(eval_state()); !why.empty())
+      return t->name() + ": " + why;
+  return {};
+}
+
 void FeProblem::commit_step() {
   Vector g;
   if (dynamic_) {

@@ -119,6 +119,8 @@ public:
   void begin_step(Real time, Real dt) override;
   /// The first term's rejection of the converged state ("<term>: <reason>"), or empty.
   std::string step_rejection() const override;
+  /// The first term's caution about the converged state ("<term>: <reason>"), or empty.
+  std::string step_caution() const override;
   void commit_step() override;
   void reject_step() override;
   std::vector<Real> step_change() const override;

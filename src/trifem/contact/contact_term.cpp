@@ -219,8 +219,10 @@ std::string ContactTerm::step_rejection(const physics::EvalState& state) const {
   if (active_.pending() > 0)
     return fmt::format("the contact status of {} slave node(s) did not settle within the step",
                        active_.pending());
-  if (std::string why = crossing_rejection(state); !why.empty())
-    return why;
+  return crossing_rejection(state);
+}
+
+std::string ContactTerm::step_caution(const physics::EvalState& /*state*/) const {
   if (committed_pressure_.empty())
     return {};
   const Real peak = *std::max_element(committed_pressure_.begin(), committed_pressure_.end());

@@ -103,13 +103,16 @@ public:
   void commit(const physics::EvalState& state) override;
   /// Restores the active set of the last commit (a retried step starts from it).
   void reject() override { active_ = committed_active_; }
-  /// Rejects a converged step whose active set has not settled (ActiveSet::pending() > 0), in
-  /// which a slave node crossed the master surface (tunnelling: it was in front of the master
-  /// surface, or within the search distance behind it, at the step start and ends behind it
-  /// beyond the search distance, where no projection finds it), or in which a slave node that
-  /// carried a substantial pressure at the step start (more than kReleaseFraction of the peak)
-  /// slid beyond the master surface: the step is cut back.
+  /// Rejects a converged step whose active set has not settled (ActiveSet::pending() > 0), or
+  /// in which a slave node crossed the master surface (tunnelling: it was in front of the
+  /// master surface, or within the search distance behind it, at the step start and ends
+  /// behind it beyond the search distance, where no projection finds it): the step is cut back.
   std::string step_rejection(const physics::EvalState& state) const override;
+  /// A slave node that carried a substantial pressure at the step start (more than
+  /// kReleaseFraction of the peak) slid beyond the master surface: the step is cut back while
+  /// it can be (a smaller step finds the equilibrium in which it leaves), and at the minimum
+  /// step size accepted with a warning (the node left the edge of the master surface).
+  std::string step_caution(const physics::EvalState& state) const override;
   /// The committed active set, admissible projections and contact pressures (3 numbers per
   /// slave node).
   std::vector<double> history() const override;

@@ -38,6 +38,9 @@ public:
   std::string step_rejection(const EvalState& state) const override {
     return inner_->step_rejection(state);
   }
+  std::string step_caution(const EvalState& state) const override {
+    return inner_->step_caution(state);
+  }
   std::vector<double> history() const override { return inner_->history(); }
   void restore_history(const std::vector<double>& values) override {
     inner_->restore_history(values);

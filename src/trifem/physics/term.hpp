@@ -72,6 +72,11 @@ public:
   /// (the time loop cuts it back and logs the reason), e.g. a contact status that has not
   /// settled. `state` is the converged state.
   virtual std::string step_rejection(const EvalState& /*state*/) const { return {}; }
+  /// Called after step_rejection() found nothing: a non-empty reason is a concern a smaller step
+  /// may remove but that does not make the converged state wrong (e.g. a loaded contact node
+  /// sliding off the edge of its master surface). The time loop cuts the step back while it
+  /// can and accepts it at the minimum step size, with the reason in a warning.
+  virtual std::string step_caution(const EvalState& /*state*/) const { return {}; }
   /// The committed history the term keeps outside the state vectors (element histories, a
   /// contact active set), as numbers: what a restart file stores. Empty for stateless terms.
   virtual std::vector<double> history() const { return {}; }

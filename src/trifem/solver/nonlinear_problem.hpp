@@ -92,6 +92,9 @@ public:
   virtual void begin_step(Real time, Real dt) = 0;
   /// Called after Newton converged: a non-empty reason rejects the step (it is cut back).
   virtual std::string step_rejection() const { return {}; }
+  /// Called after step_rejection() found nothing: a non-empty reason cuts the step back while
+  /// it is above the minimum size; at the minimum size the step is accepted with a warning.
+  virtual std::string step_caution() const { return {}; }
   /// Accepts the converged step (history variables become the new old state).
   virtual void commit_step() = 0;
   /// Returns to the state at the beginning of the step (after a failure).

@@ -55,8 +55,12 @@ void StepController::accept(Real dt, int iterations) {
     dt_ = std::min(settings_.dt_max, std::max(dt_, dt) * settings_.growth);
 }
 
+bool StepController::at_minimum(Real dt) const {
+  return dt <= settings_.dt_min * (1.0 + 1e-12);
+}
+
 bool StepController::reject(Real dt) {
-  if (dt <= settings_.dt_min * (1.0 + 1e-12))
+  if (at_minimum(dt))
     return false;
   ++cutbacks_;
   dt_ = std::max(settings_.dt_min, dt * settings_.cutback);

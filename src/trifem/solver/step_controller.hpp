@@ -38,6 +38,8 @@ public:
   void accept(Real dt, int iterations);
   /// The step failed; returns false if the step is already at dt_min (the run must stop).
   bool reject(Real dt);
+  /// True if a step of size dt cannot be cut back (it is at dt_min).
+  bool at_minimum(Real dt) const;
   Real dt() const { return dt_; }
   const StepSettings& settings() const { return settings_; }
   int cutbacks() const { return cutbacks_; }

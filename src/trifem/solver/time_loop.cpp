@@ -119,6 +119,16 @@ RunReport run_time_loop(TransientProblem& problem, NewtonSolver& newton, StepCon
         report.status = SolveStatus::Rejected;
         report.failure_reason = std::move(why);
       }
+    if (report.status == SolveStatus::Converged)
+      if (std::string why = problem.step_caution(); !why.empty()) {
+        if (controller.at_minimum(dt)) {
+          log::warn("  step to t = {:.6g} accepted at the minimum step size {:.3g}: {}", t, dt,
+                    why);
+        } else {
+          report.status = SolveStatus::Rejected;
+          report.failure_reason = std::move(why);
+        }
+      }
     if (report.status == SolveStatus::Interrupted) {
       problem.reject_step();
       run.interrupted = true;

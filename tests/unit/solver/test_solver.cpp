@@ -3,6 +3,7 @@
 #include "trifem/core/error.hpp"
 #include "trifem/solver/newton.hpp"
 #include "trifem/solver/step_controller.hpp"
+#include "trifem/solver/time_loop.hpp"
 
 #include <Eigen/SparseLU>
 #include <gtest/gtest.h>
@@ -209,6 +210,91 @@ TEST(Newton, SolvesACubicSystemQuadratically) {
   }
 }
 
+namespace {
+
+/// x = t, one equation: a transient problem whose steps always converge; its rejection or
+/// caution of every converged step larger than `limit` is set by the test.
+class LinearInTime final : public solver::TransientProblem {
+public:
+  Index num_equations() const override { return 1; }
+  const std::vector<int>& equation_fields() const override { return fields_; }
+  const std::vector<solver::FieldScale>& field_scales() const override { return scales_; }
+  int pattern_id() const override { return 0; }
+  solver::SolveStatus linearize(solver::Linearization& lin, bool with_jacobian) override {
+    lin.residual = Vector::Constant(1, x_ - time_);
+    if (with_jacobian) {
+      lin.jacobian.resize(1, 1);
+      lin.jacobian.insert(0, 0) = 1.0;
+      lin.constraint_rhs = Vector::Zero(1);
+    }
+    return solver::SolveStatus::Converged;
+  }
+  solver::SolveStatus update(const Vector& dx, Real step) override {
+    x_ += step * dx[0];
+    return solver::SolveStatus::Converged;
+  }
+  bool constraints_satisfied() const override { return true; }
+  void save_iterate() override { saved_ = x_; }
+  void restore_iterate() override { x_ = saved_; }
+  void begin_step(Real time, Real dt) override {
+    time_ = time;
+    dt_ = dt;
+  }
+  std::string step_rejection() const override { return dt_ > limit && hard ? "too far" : ""; }
+  std::string step_caution() const override { return dt_ > limit && !hard ? "watch out" : ""; }
+  void commit_step() override { committed_ = x_; }
+  void reject_step() override { x_ = committed_; }
+  std::vector<Real> step_change() const override { return {std::abs(x_ - committed_)}; }
+  void mark_committed() override {}
+  void return_to_mark() override {}
+
+  Real limit = 0.0; ///< steps larger than this are rejected (hard) or cautioned
+  bool hard = false;
+
+private:
+  Real x_ = 0, saved_ = 0, committed_ = 0, time_ = 0, dt_ = 0;
+  std::vector<int> fields_{0};
+  std::vector<solver::FieldScale> scales_{{"x", 1.0, 1.0}};
+};
+
+solver::RunReport run_linear_in_time(LinearInTime& problem, std::vector<Real>& accepted_dt) {
+  solver::StepSettings s;
+  s.end_time = 0.1;
+  s.dt = s.dt_max = 0.1;
+  s.dt_min = 0.025;
+  solver::StepController controller(s);
+  solver::NewtonSolver newton({}, linalg::make_linear_solver({LinearSolverKind::sparselu}));
+  return solver::run_time_loop(problem, newton, controller,
+                               [&](const solver::StepInfo& info) { accepted_dt.push_back(info.dt); });
+}
+
+} // namespace
+
+// A caution cuts the step back while it can and lets it pass at the minimum step size; a
+// rejection there stops the run.
+TEST(TimeLoop, ACautionIsAcceptedAtTheMinimumStepButARejectionIsNot) {
+  for (const Real limit : {0.06, 0.01}) {
+    LinearInTime problem;
+    problem.limit = limit;
+    std::vector<Real> accepted_dt;
+    const solver::RunReport run = run_linear_in_time(problem, accepted_dt);
+    EXPECT_TRUE(run.success) << run.failure;
+    EXPECT_NEAR(run.end_time, 0.1, 1e-15);
+    ASSERT_FALSE(accepted_dt.empty());
+    EXPECT_NEAR(accepted_dt.front(), limit > 0.05 ? 0.05 : 0.025, 1e-15) << "limit " << limit;
+    EXPECT_GE(run.cutbacks, 1);
+  }
+  LinearInTime problem;
+  problem.limit = 0.01;
+  problem.hard = true;
+  std::vector<Real> accepted_dt;
+  const solver::RunReport run = run_linear_in_time(problem, accepted_dt);
+  EXPECT_FALSE(run.success);
+  EXPECT_TRUE(accepted_dt.empty());
+  EXPECT_NE(run.failure.find("failed at the minimum step size 0.025: too far"), std::string::npos)
+      << run.failure;
+}
+
 TEST(StepController, LandsOnMustPointsAndTheEnd) {
   solver::StepSettings s;
   s.end_time = 1.0;
@@ -255,6 +341,7 @@ TEST(StepController, CutsBackThenStopsAtTheMinimumStep) {
   EXPECT_DOUBLE_EQ(c.dt(), 0.05);
   EXPECT_TRUE(c.reject(c.next_step()));
   EXPECT_DOUBLE_EQ(c.dt(), 0.025);
+  EXPECT_TRUE(c.at_minimum(c.next_step()));
   EXPECT_FALSE(c.reject(c.next_step()));
   EXPECT_EQ(c.cutbacks(), 2);
   c.accept(c.next_step(), 2); // an easy step regrows dt

@@ -135,9 +135,10 @@ TEST(ContactSliding, BlockOverLongBlockSlaveNodes) {
 }
 
 // Dragging the slider off the end of the long block: the step in which the loaded contact
-// zone crosses the master's free edge converges, but the term rejects it (a loaded slave node
-// lost its projection); rejecting the step restores the committed active set.
-TEST(ContactSliding, LoadedNodeLeavingTheMasterSurfaceRejectsTheStep) {
+// zone crosses the master's free edge converges, and the term cautions against it (a loaded
+// slave node lost its projection: the time loop cuts such a step back while it can) without
+// rejecting it; rejecting the step restores the committed active set.
+TEST(ContactSliding, LoadedNodeLeavingTheMasterSurfaceCautionsAgainstTheStep) {
   auto m = sliding_model(contact::Integration::BothSurfaces, 4.0, 42); // 0.1 per sliding step
   solver::NewtonSettings newton;
   newton.residual_tolerance = 1e-12;
@@ -149,7 +150,8 @@ TEST(ContactSliding, LoadedNodeLeavingTheMasterSurfaceRejectsTheStep) {
     solver::NewtonSolver solver(newton, linalg::make_linear_solver({LinearSolverKind::umfpack}));
     const solver::NewtonReport report = solver.solve(*m->problem);
     ASSERT_EQ(report.status, solver::SolveStatus::Converged) << "step " << step;
-    reason = m->problem->step_rejection();
+    EXPECT_EQ(m->problem->step_rejection(), "") << "step " << step;
+    reason = m->problem->step_caution();
     if (!reason.empty()) {
       const std::vector<char> committed = m->contact->active_set().flags();
       m->problem->reject_step();
@@ -160,5 +162,5 @@ TEST(ContactSliding, LoadedNodeLeavingTheMasterSurfaceRejectsTheStep) {
   }
   EXPECT_NE(reason.find("left the master surface"), std::string::npos) << reason;
   EXPECT_GT(step, 3) << "rejected while the slider was still on the long block";
-  std::printf("[ sliding ] step %d rejected: %s\n", step, reason.c_str());
+  std::printf("[ sliding ] step %d cautioned: %s\n", step, reason.c_str());
 }

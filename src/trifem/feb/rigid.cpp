@@ -207,7 +207,15 @@ io::RigidBodySpec rotating_body(const Reader& r, const std::string& name,
   spec.angular_velocity = body.angular_velocity;
   if (const pugi::xml_node c = body.material.child("center_of_mass"))
     spec.center = r.doc.vector(c);
-  if (!spec.blocks.empty()) { // the mass of its elements (FEBio's default density 1)
+  if (body.shell) // a surface mesh has mass if its shells have a thickness
+    if (const pugi::xml_node t = body.attachment.child("shell_thickness")) {
+      const Real thickness = r.doc.number(t);
+      if (thickness < 0.0)
+        r.doc.fail(t, "a shell thickness must not be negative");
+      if (thickness > 0.0)
+        spec.shell_thickness = thickness;
+    }
+  if (!spec.blocks.empty() || spec.shell_thickness) { // FEBio's default density 1
     const pugi::xml_node d = body.material.child("density");
     spec.density = d ? r.doc.number(d) : 1.0;
     if (!(*spec.density > 0.0))

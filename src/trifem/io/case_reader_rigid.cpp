@@ -127,18 +127,30 @@ void read_followers(const Table& t, const CaseSpec& spec, RigidBodySpec& b) {
   }
 }
 
-/// density (of the body's cells), velocity and angular_velocity (at the start of the dynamic
-/// analysis: read_dynamic rejects them in a quasi-static one).
+/// shell_thickness (of a surface body), density (of the body's cells or shells), velocity and
+/// angular_velocity (at the start of the dynamic analysis: read_dynamic rejects them in a
+/// quasi-static one).
 void read_motion(const Table& t, RigidBodySpec& b) {
+  if (t.find("shell_thickness")) {
+    if (!b.blocks.empty())
+      fail(t.find("shell_thickness"), t.path("shell_thickness"),
+           "a body made of cells (blocks) has no shells: shell_thickness is for a body whose set "
+           "is a surface mesh");
+    b.shell_thickness = t.number("shell_thickness", {.range = Range::positive(), .unit = "mm"});
+  }
   if (t.find("density")) {
-    if (b.blocks.empty())
+    if (b.blocks.empty() && !b.shell_thickness)
       fail(t.find("density"), t.path("density"),
-           "only a body made of cells (blocks) has a density of its own (the mass of a node set "
-           "or a surface is that of the tissue cells at its nodes)");
+           "only a body made of cells (blocks) or of shells (shell_thickness) has a density of "
+           "its own (the mass of a node set or a surface is that of the tissue cells at its "
+           "nodes)");
     b.density = t.number("density", {.range = Range::positive(),
                                      .unit = "t/mm^3",
                                      .plausible = &material::plausible::density()});
   }
+  if (b.shell_thickness && !b.density)
+    fail(t.find("shell_thickness"), t.path("shell_thickness"),
+         "the shells have no mass without a density: give `density` (t/mm^3)");
   b.velocity = t.vec3("velocity", {.unit = "mm/s"}, Vec3::Zero());
   b.angular_velocity = t.vec3("angular_velocity", {.unit = "rad/s"}, Vec3::Zero());
   if (!b.rotates && t.find("angular_velocity"))
@@ -171,7 +183,8 @@ RigidComponentSpec read_rigid_component(const Table& t, const CaseSpec& spec, bo
 void read_rigid_bodies(const Table& root, CaseSpec& spec) {
   for (const Table& t : root.tables("rigid_body")) {
     t.allow({"name", "set", "blocks", "components", "x", "y", "z", "rotation", "center", "rx", "ry",
-             "rz", "euler_angles", "follower", "density", "velocity", "angular_velocity"});
+             "rz", "euler_angles", "follower", "density", "shell_thickness", "velocity",
+             "angular_velocity"});
     RigidBodySpec b;
     b.key = t.path();
     b.name = read_identifier(t, "name", false);

@@ -222,9 +222,12 @@ struct RigidBodySpec {
   /// a body with blocks rotates. Their nodes, and those of `set` (may then be empty), follow it.
   std::vector<std::string> blocks;
   std::vector<RigidFollowerSpec> followers; ///< of a rotating body
-  /// Mass per reference volume of the body's cells [t/mm³] (none: massless cells; the tissue
-  /// cells at its nodes still carry their mass).
+  /// Mass per reference volume of the body's cells or shells [t/mm³] (none: massless; the
+  /// tissue cells at its nodes still carry their mass).
   std::optional<Real> density;
+  /// The thickness [mm] of the shells of a body whose `set` is a surface mesh (facets bounding
+  /// no cell): with `density`, its facets carry the mass ρ t per reference area.
+  std::optional<Real> shell_thickness;
   /// Velocity of the center [mm/s] and angular velocity [rad/s] at the start of the first
   /// dynamic step, if it starts the analysis.
   Vec3 velocity = Vec3::Zero();

@@ -245,6 +245,8 @@ void write_rigid_bodies(const CaseSpec& spec, TomlText& t) {
       t.vector("center", *b.center);
     if (b.density)
       t.number("density", *b.density);
+    if (b.shell_thickness)
+      t.number("shell_thickness", *b.shell_thickness);
     if (b.angular_velocity != Vec3::Zero())
       t.vector("angular_velocity", b.angular_velocity);
     constexpr std::string_view kRotationKeys[] = {"rx", "ry", "rz"};

@@ -805,7 +805,9 @@ void add_cell_data(const LineReader& in, GmshData& d) {
 Mesh finish(const LineReader& in, GmshData& d) {
   TRIFEM_CHECK(d.seen_nodes, "{}: the file has no $Nodes section", in.location());
   TRIFEM_CHECK(d.seen_elements, "{}: the file has no $Elements section", in.location());
-  TRIFEM_CHECK(d.mesh.num_cells() > 0, "{}: the file has no hex8 (type 5) elements",
+  TRIFEM_CHECK(d.mesh.num_cells() > 0 || !d.quads.empty(),
+               "{}: the file has no hex8 (type 5) cells and no surface mesh (quad4, type 3, or "
+               "triangle3, type 2, elements)",
                in.at(d.elements_line));
   add_cell_blocks(in, d);
   add_surfaces(in, d);

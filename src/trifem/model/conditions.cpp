@@ -4,6 +4,7 @@
 #include "trifem/core/error.hpp"
 #include "trifem/dofs/nodal_frames.hpp"
 #include "trifem/fe/point_location.hpp"
+#include "trifem/model/rigid_bodies.hpp"
 #include "trifem/physics/bath_term.hpp"
 #include "trifem/physics/body_force_term.hpp"
 #include "trifem/physics/surface_load_term.hpp"
@@ -164,9 +165,10 @@ surface_load_terms(const io::CaseSpec& spec, const std::vector<io::PressureSpec>
 
 namespace {
 
-/// The term of [[loads.body_force]] `b`: the cells of its blocks (of the mesh without blocks)
-/// with a mass. InputError naming its key if a block does not exist, a cell is a mixture or a
-/// solid without a density, or no cell has a mass (rigid cells without a density are skipped).
+/// The term of [[loads.body_force]] `b`: the cells of its blocks with a mass (without blocks:
+/// of the mesh, and the shells of the rigid bodies). InputError naming its key if a block does
+/// not exist, a cell is a mixture or a solid without a density, or nothing has a mass (rigid
+/// cells without a density are skipped).
 std::unique_ptr<physics::Term> body_force_term(const io::CaseSpec& spec, const io::BodyForceSpec& b,
                                                const Model& model) {
   std::vector<Index> chosen;
@@ -199,12 +201,16 @@ std::unique_ptr<physics::Term> body_force_term(const io::CaseSpec& spec, const i
       densities.push_back(m.density);
     }
   }
-  TRIFEM_CHECK(!cells.empty(),
+  std::vector<physics::MassElement> masses =
+      physics::cell_mass_elements(model.mesh, cells, densities);
+  if (b.blocks.empty())
+    for (physics::MassElement& shell : rigid_shell_masses(spec, model))
+      masses.push_back(std::move(shell));
+  TRIFEM_CHECK(!masses.empty(),
                "{}: the body force acts on no mass (its cells are those of rigid bodies without a "
                "density: give `density` in their [[rigid_body]])",
                b.key);
-  return std::make_unique<physics::BodyForceTerm>(model.mesh, model.dofs, model.fields.u,
-                                                  std::move(cells), densities, b.force,
+  return std::make_unique<physics::BodyForceTerm>(model.dofs, model.fields.u, masses, b.force,
                                                   make_curve(spec, b.curve));
 }
 

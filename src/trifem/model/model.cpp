@@ -197,7 +197,8 @@ void warn_of_massless_bodies(const io::CaseSpec& spec, const Model& model,
 }
 
 /// The inertia of every cell with mass (the reader requires a density of every material; the
-/// cells of a rigid body without one are massless), for the dynamic steps of the case. The
+/// cells of a rigid body without one are massless) and of the rigid bodies' shells, for the
+/// dynamic steps of the case. The
 /// unknowns of rotating rigid bodies have no mass of their own: the inertia of the nodes they
 /// carry reaches them by condensation.
 std::unique_ptr<physics::InertiaTerm> inertia_term(const io::CaseSpec& spec, const Model& model) {
@@ -216,8 +217,12 @@ std::unique_ptr<physics::InertiaTerm> inertia_term(const io::CaseSpec& spec, con
   const physics::MassMatrix mass = spec.dynamics.mass == io::MassMatrixSpec::Lumped
                                        ? physics::MassMatrix::Lumped
                                        : physics::MassMatrix::Consistent;
+  std::vector<physics::MassElement> masses =
+      physics::cell_mass_elements(model.mesh, cells, densities);
+  for (physics::MassElement& shell : rigid_shell_masses(spec, model))
+    masses.push_back(std::move(shell));
   auto term = std::make_unique<physics::InertiaTerm>(
-      model.mesh, model.dofs, model.fields.u, std::move(cells), std::move(densities), mass,
+      model.dofs, model.fields.u, std::move(masses), mass,
       physics::GeneralizedAlpha::from_spectral_radius(spec.dynamics.rho_inf), std::move(massless));
   warn_of_massless_bodies(spec, model, *term);
   return term;
@@ -315,7 +320,8 @@ mesh::Mesh build_mesh(const io::CaseSpec& spec, std::map<std::string, std::strin
       return 0;
     });
   }
-  TRIFEM_CHECK(mesh.num_cells() > 0, "mesh: the model has no cells");
+  TRIFEM_CHECK(mesh.num_cells() > 0 || !spec.rigid_bodies.empty(),
+               "mesh: the model has no cells (and no rigid body its surface meshes could make)");
   if (spec.mesh_refinement > 0) // [mesh] refine: the refined mesh replaces the given one
     mesh = mesh::refine_uniformly(mesh, spec.mesh_refinement);
   return mesh;

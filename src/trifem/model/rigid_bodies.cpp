@@ -74,13 +74,43 @@ RigidBody translating_body(const io::CaseSpec& spec, const io::RigidBodySpec& b,
   return body;
 }
 
-/// The center of a rotating body: given; else the centroid of its cells (its center of mass:
-/// rigid cells have a uniform density); else the centroid of its nodes.
+/// The facets of the surface mesh of a body with shells (`set` names a surface whose facets
+/// bound no cell). InputError naming the key otherwise.
+const std::vector<mesh::Facet>& shell_facets(const io::RigidBodySpec& b, const Model& model) {
+  TRIFEM_CHECK(model.mesh.has_surface(b.set),
+               "{}.shell_thickness: the set '{}' is no surface (shells are the facets of a surface "
+               "mesh)",
+               b.key, b.set);
+  const std::vector<mesh::Facet>& facets = model.mesh.surface(b.set).facets;
+  for (std::size_t i = 0; i < facets.size(); ++i)
+    TRIFEM_CHECK(facets[i].cell < 0,
+                 "{}.shell_thickness: facet {} of the surface '{}' is a face of cell {} (shells "
+                 "are the facets of a surface mesh that bound no cell)",
+                 b.key, i + 1, b.set, facets[i].cell);
+  return facets;
+}
+
+fe::QuadCoords facet_coordinates(const mesh::Mesh& mesh, const mesh::Facet& f) {
+  fe::QuadCoords X;
+  for (int a = 0; a < 4; ++a)
+    X.row(a) = mesh.node(f.nodes[a]).transpose();
+  return X;
+}
+
+/// The center of a rotating body: given; else the centroid of its cells or shells (its center
+/// of mass: they have a uniform density); else the centroid of its nodes.
 Vec3 body_center(const io::RigidBodySpec& b, const Model& model, const std::vector<Index>& nodes) {
   if (b.center)
     return *b.center;
   Vec3 moment = Vec3::Zero();
   Real volume = 0.0;
+  if (b.shell_thickness)
+    for (const mesh::Facet& f : shell_facets(b, model)) {
+      const Eigen::Matrix4d m = physics::consistent_shell_mass(facet_coordinates(model.mesh, f), 1);
+      const Eigen::Vector4d area = m.rowwise().sum(); // ∫ N_a dA
+      moment += facet_coordinates(model.mesh, f).transpose() * area;
+      volume += area.sum();
+    }
   for (const std::string& block : b.blocks)
     for (Index c : model.mesh.cell_block(block)) {
       const fe::HexCoords X = fe::cell_coordinates(model.mesh, c);
@@ -212,6 +242,8 @@ RigidBodyParts rigid_bodies(const io::CaseSpec& spec, Model& model,
     const std::vector<Index> nodes = body_nodes(b, model);
     TRIFEM_CHECK(!nodes.empty(), "{}: the rigid body has no nodes (node set '{}' is empty)", b.key,
                  b.set);
+    if (b.shell_thickness)
+      shell_facets(b, model); // checks that its set is a surface mesh
     const int index = static_cast<int>(c.rotating.size());
     model.rigid_bodies.push_back(b.rotates
                                      ? rotating_body(spec, b, index, model, nodes, c, conditions)
@@ -249,6 +281,20 @@ void check_frames_of_rotating_bodies(const io::CaseSpec& spec, const Model& mode
                      spec.rigid_bodies[i].key, node);
     }
   }
+}
+
+std::vector<physics::MassElement> rigid_shell_masses(const io::CaseSpec& spec,
+                                                     const Model& model) {
+  std::vector<physics::MassElement> out;
+  for (const io::RigidBodySpec& b : spec.rigid_bodies) {
+    if (!b.shell_thickness || !b.density)
+      continue;
+    for (const mesh::Facet& f : shell_facets(b, model))
+      out.push_back({{f.nodes.begin(), f.nodes.end()},
+                     physics::consistent_shell_mass(facet_coordinates(model.mesh, f),
+                                                    *b.density * *b.shell_thickness)});
+  }
+  return out;
 }
 
 Vector initial_rigid_velocity(const io::CaseSpec& spec, const Model& model) {

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "trifem/model/model.hpp"
+#include "trifem/physics/cell_mass.hpp"
 
 namespace trifem::model {
 
@@ -21,6 +22,10 @@ struct RigidBodyParts {
 /// `conditions` (a component may not be constrained twice) and before the DOF map is finalized.
 RigidBodyParts rigid_bodies(const io::CaseSpec& spec, Model& model,
                             std::vector<dofs::DirichletCondition>& conditions);
+
+/// The shells of the rigid bodies with a shell_thickness t and a density ρ: the facets of their
+/// surface meshes as mass elements of ρ t per reference area (none without a density).
+std::vector<physics::MassElement> rigid_shell_masses(const io::CaseSpec& spec, const Model& model);
 
 /// The velocity of every DOF at the start of the analysis: of the nodes (and unknowns) of the
 /// rigid bodies with a velocity or angular velocity, v_a = v + ω × S_a. Empty if none has one.

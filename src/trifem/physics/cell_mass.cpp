@@ -1,6 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "trifem/physics/cell_mass.hpp"
 
+#include "trifem/core/error.hpp"
+
+#include <cmath>
+
 namespace trifem::physics {
 
 std::optional<Eigen::Matrix<Real, 8, 8>> consistent_cell_mass(const fe::HexCoords& X,
@@ -12,6 +16,35 @@ std::optional<Eigen::Matrix<Real, 8, 8>> consistent_cell_mass(const fe::HexCoord
     if (!(detJ > 0.0))
       return std::nullopt;
     m.noalias() += (density * detJ * q.weight) * (N * N.transpose());
+  }
+  return m;
+}
+
+std::vector<MassElement> cell_mass_elements(const mesh::Mesh& mesh, const std::vector<Index>& cells,
+                                            const std::vector<Real>& densities) {
+  TRIFEM_VERIFY(cells.size() == densities.size(), "one density per cell expected");
+  std::vector<MassElement> out;
+  out.reserve(cells.size());
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    TRIFEM_VERIFY(densities[i] > 0.0 && std::isfinite(densities[i]), "density must be positive");
+    const auto m = consistent_cell_mass(fe::cell_coordinates(mesh, cells[i]), densities[i]);
+    TRIFEM_CHECK(m.has_value(),
+                 "cell {} is inverted or degenerate (det(dX/dxi) <= 0 at a Gauss point); "
+                 "check its node order",
+                 cells[i]);
+    const auto& nodes = mesh.cell(cells[i]);
+    out.push_back({{nodes.begin(), nodes.end()}, *m});
+  }
+  return out;
+}
+
+Eigen::Matrix<Real, 4, 4> consistent_shell_mass(const fe::QuadCoords& X, Real areal_density) {
+  Eigen::Matrix<Real, 4, 4> m = Eigen::Matrix<Real, 4, 4>::Zero();
+  for (const fe::QuadQuadraturePoint& q : fe::quad_gauss_2x2()) {
+    const fe::QuadShape N = fe::quad4_shape(q.xi);
+    const Eigen::Matrix<Real, 2, 3> tangents = fe::quad4_shape_grad(q.xi).transpose() * X;
+    const Real dA = tangents.row(0).cross(tangents.row(1)).norm();
+    m.noalias() += (areal_density * dA * q.weight) * (N * N.transpose());
   }
   return m;
 }

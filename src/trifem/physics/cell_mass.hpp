@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: MIT
-// The consistent mass matrix of a hex8 cell, shared by its inertia and its body forces.
+// Consistent mass matrices of hex8 cells and of quad4 shells, shared by the inertia and the body
+// forces.
 #pragma once
 
 #include "trifem/fe/hex8.hpp"
 
 #include <optional>
+#include <vector>
 
 namespace trifem::physics {
 
@@ -12,5 +14,22 @@ namespace trifem::physics {
 /// parallelepiped); its row sums are ∫ ρ N_a dV. None if det(dX/dξ) ≤ 0 at a Gauss point (an
 /// inverted or degenerate cell).
 std::optional<Eigen::Matrix<Real, 8, 8>> consistent_cell_mass(const fe::HexCoords& X, Real density);
+
+/// A piece of the model's mass: its nodes and its consistent mass matrix m_ab over them.
+struct MassElement {
+  std::vector<Index> nodes;
+  Eigen::MatrixXd mass;
+};
+
+/// The mass elements of hex8 `cells` of the given densities (> 0). Throws InputError naming
+/// the first inverted or degenerate cell.
+std::vector<MassElement> cell_mass_elements(const mesh::Mesh& mesh, const std::vector<Index>& cells,
+                                            const std::vector<Real>& densities);
+
+/// The quad4 facet with reference nodes X (a triangle: its last node repeats the third) as a
+/// thin shell of mass per area `areal_density` = ρ t [t/mm²]: m_ab = ∫ ρ t N_a N_b dA over the
+/// reference mid-surface (2x2 Gauss: exact for a flat parallelogram and a triangle). The
+/// shell's rotary inertia through its thickness, of relative order (t/L)², is left out.
+Eigen::Matrix<Real, 4, 4> consistent_shell_mass(const fe::QuadCoords& X, Real areal_density);
 
 } // namespace trifem::physics

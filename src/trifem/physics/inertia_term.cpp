@@ -2,7 +2,6 @@
 #include "trifem/physics/inertia_term.hpp"
 
 #include "trifem/core/error.hpp"
-#include "trifem/physics/cell_mass.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -19,39 +18,16 @@ GeneralizedAlpha GeneralizedAlpha::from_spectral_radius(Real rho_inf) {
   return m;
 }
 
-namespace {
-
-/// The mass matrix of `kind` of the cell with nodes X (none if inverted or degenerate).
-std::optional<Eigen::Matrix<Real, 8, 8>> cell_mass(const fe::HexCoords& X, Real density,
-                                                   MassMatrix kind) {
-  std::optional<Eigen::Matrix<Real, 8, 8>> m = consistent_cell_mass(X, density);
-  if (m && kind == MassMatrix::Lumped) {
-    const Eigen::Matrix<Real, 8, 1> rows = m->rowwise().sum(); // evaluated before m changes
-    *m = rows.asDiagonal();
-  }
-  return m;
-}
-
-} // namespace
-
-InertiaTerm::InertiaTerm(const mesh::Mesh& mesh, const dofs::DofMap& dofs,
-                         dofs::FieldId displacement, std::vector<Index> cells,
-                         std::vector<Real> densities, MassMatrix mass, GeneralizedAlpha method,
-                         std::vector<Index> massless)
-    : mesh_(mesh), map_(dofs), u_(displacement), cells_(std::move(cells)), method_(method),
+InertiaTerm::InertiaTerm(const dofs::DofMap& dofs, dofs::FieldId displacement,
+                         std::vector<MassElement> elements, MassMatrix mass,
+                         GeneralizedAlpha method, std::vector<Index> massless)
+    : map_(dofs), u_(displacement), elements_(std::move(elements)), method_(method),
       dofs_(std::move(massless)) {
-  TRIFEM_VERIFY(cells_.size() == densities.size(), "one density per cell expected");
-  mass_.reserve(cells_.size());
-  for (std::size_t i = 0; i < cells_.size(); ++i) {
-    TRIFEM_VERIFY(densities[i] > 0.0 && std::isfinite(densities[i]), "density must be positive");
-    const fe::HexCoords X = fe::cell_coordinates(mesh, cells_[i]);
-    const auto m = cell_mass(X, densities[i], mass);
-    TRIFEM_CHECK(m.has_value(),
-                 "cell {} is inverted or degenerate (det(dX/dxi) <= 0 at a Gauss point); "
-                 "check its node order",
-                 cells_[i]);
-    mass_.push_back(*m);
-  }
+  if (mass == MassMatrix::Lumped)
+    for (MassElement& e : elements_) {
+      const Eigen::VectorXd rows = e.mass.rowwise().sum(); // evaluated before the matrix changes
+      e.mass = rows.asDiagonal();
+    }
   std::vector<Index> element;
   for (Index e = 0; e < num_elements(); ++e) {
     element_dofs(e, element);
@@ -65,10 +41,17 @@ InertiaTerm::InertiaTerm(const mesh::Mesh& mesh, const dofs::DofMap& dofs,
   v_ = a_ = g_ = Vector::Zero(static_cast<Index>(dofs_.size()));
 }
 
+InertiaTerm::InertiaTerm(const mesh::Mesh& mesh, const dofs::DofMap& dofs,
+                         dofs::FieldId displacement, const std::vector<Index>& cells,
+                         const std::vector<Real>& densities, MassMatrix mass,
+                         GeneralizedAlpha method, std::vector<Index> massless)
+    : InertiaTerm(dofs, displacement, cell_mass_elements(mesh, cells, densities), mass, method,
+                  std::move(massless)) {}
+
 void InertiaTerm::element_dofs(Index e, std::vector<Index>& dofs) const {
-  dofs.resize(24);
-  const auto& nodes = mesh_.cell(cells_[e]);
-  for (int a = 0; a < 8; ++a)
+  const std::vector<Index>& nodes = elements_[e].nodes;
+  dofs.resize(3 * nodes.size());
+  for (std::size_t a = 0; a < nodes.size(); ++a)
     for (int k = 0; k < 3; ++k)
       dofs[3 * a + k] = map_.dof(u_, nodes[a], k);
 }
@@ -83,29 +66,30 @@ Real InertiaTerm::acceleration_at(Index i, Real x, Real x_old, Real dt) const {
 }
 
 bool InertiaTerm::evaluate(Index e, const EvalState& state, LocalVector& r, LocalMatrix* K) const {
-  r.setZero(24);
+  const std::vector<Index>& nodes = elements_[e].nodes;
+  const auto n = static_cast<Index>(nodes.size());
+  r.setZero(3 * n);
   if (K)
-    K->setZero(24, 24);
+    K->setZero(3 * n, 3 * n);
   if (!(state.dt > 0.0))
     return true;
-  const auto& nodes = mesh_.cell(cells_[e]);
-  Eigen::Matrix<Real, 8, 3> accel; // a_{n+1-α_m} at the nodes
-  for (int a = 0; a < 8; ++a)
+  Eigen::MatrixX3d accel(n, 3); // a_{n+1-α_m} at the nodes
+  for (Index a = 0; a < n; ++a)
     for (int k = 0; k < 3; ++k) {
       const Index dof = map_.dof(u_, nodes[a], k);
       const Index i = slot(dof);
       const Real next = acceleration_at(i, state.x[dof], state.x_old[dof], state.dt);
       accel(a, k) = (1.0 - method_.alpha_m) * next + method_.alpha_m * a_[i];
     }
-  const Eigen::Matrix<Real, 8, 8>& m = mass_[e];
-  const Eigen::Matrix<Real, 8, 3> f = m * accel;
-  for (int a = 0; a < 8; ++a)
+  const Eigen::MatrixXd& m = elements_[e].mass;
+  const Eigen::MatrixX3d f = m * accel;
+  for (Index a = 0; a < n; ++a)
     for (int k = 0; k < 3; ++k)
       r[3 * a + k] = f(a, k);
   if (K) {
     const Real c = (1.0 - method_.alpha_m) / (method_.beta * state.dt * state.dt);
-    for (int a = 0; a < 8; ++a)
-      for (int b = 0; b < 8; ++b)
+    for (Index a = 0; a < n; ++a)
+      for (Index b = 0; b < n; ++b)
         for (int k = 0; k < 3; ++k)
           (*K)(3 * a + k, 3 * b + k) = c * m(a, b);
   }
@@ -167,12 +151,13 @@ Vector InertiaTerm::mass_times(const Vector& u) const {
   std::vector<Index> element;
   for (Index e = 0; e < num_elements(); ++e) {
     element_dofs(e, element);
-    Eigen::Matrix<Real, 8, 3> ue;
-    for (int a = 0; a < 8; ++a)
+    const auto n = static_cast<Index>(elements_[e].nodes.size());
+    Eigen::MatrixX3d ue(n, 3);
+    for (Index a = 0; a < n; ++a)
       for (int k = 0; k < 3; ++k)
         ue(a, k) = u[element[3 * a + k]];
-    const Eigen::Matrix<Real, 8, 3> f = mass_[e] * ue;
-    for (int a = 0; a < 8; ++a)
+    const Eigen::MatrixX3d f = elements_[e].mass * ue;
+    for (Index a = 0; a < n; ++a)
       for (int k = 0; k < 3; ++k)
         out[element[3 * a + k]] += f(a, k);
   }
@@ -184,8 +169,8 @@ Vector InertiaTerm::lumped_mass() const {
   std::vector<Index> element;
   for (Index e = 0; e < num_elements(); ++e) {
     element_dofs(e, element);
-    const Eigen::Matrix<Real, 8, 1> rows = mass_[e].rowwise().sum();
-    for (int a = 0; a < 8; ++a)
+    const Eigen::VectorXd rows = elements_[e].mass.rowwise().sum();
+    for (Index a = 0; a < rows.size(); ++a)
       for (int k = 0; k < 3; ++k)
         out[element[3 * a + k]] += rows[a];
   }

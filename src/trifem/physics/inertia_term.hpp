@@ -7,6 +7,7 @@
 #include "trifem/dofs/dof_map.hpp"
 #include "trifem/fe/hex8.hpp"
 #include "trifem/mesh/mesh.hpp"
+#include "trifem/physics/cell_mass.hpp"
 #include "trifem/physics/term.hpp"
 
 namespace trifem::physics {
@@ -40,22 +41,28 @@ enum class MassMatrix {
   Lumped      ///< diag(Σ_b m_ab) (row sums)
 };
 
-/// The inertia forces M a_{n+1-α_m} of hex8 cells of reference density ρ on the displacement,
-/// with the velocity, acceleration and residual history of the displacement DOFs of their
-/// nodes (committed with the step; history() for restarts). The acceleration a_{n+1} follows
-/// from the state by the Newmark relation, so the unknowns stay the displacements.
+/// The inertia forces M a_{n+1-α_m} of mass elements (hex8 cells of reference density ρ, quad4
+/// shells) on the displacement, with the velocity, acceleration and residual history of the
+/// displacement DOFs of their nodes (committed with the step; history() for restarts). The
+/// acceleration a_{n+1} follows from the state by the Newmark relation, so the unknowns stay
+/// the displacements.
 class InertiaTerm final : public Term {
 public:
-  /// `densities[i]` > 0 is the mass per reference volume of `cells[i]` [t/mm³]. `massless`:
-  /// further DOFs whose motion and residual history the method keeps although no cell gives
-  /// them mass (the unknowns of rigid bodies, which the inertia of their nodes reaches by
-  /// condensation). Throws InputError naming the cell if a cell is inverted or degenerate.
+  /// `elements`: consistent mass matrices (lumped here if `mass` says so). `massless`: further
+  /// DOFs whose motion and residual history the method keeps although no element gives them
+  /// mass (the unknowns of rigid bodies, which the inertia of their nodes reaches by
+  /// condensation).
+  InertiaTerm(const dofs::DofMap& dofs, dofs::FieldId displacement,
+              std::vector<MassElement> elements, MassMatrix mass, GeneralizedAlpha method,
+              std::vector<Index> massless = {});
+  /// Of hex8 cells: `densities[i]` > 0 is the mass per reference volume of `cells[i]`
+  /// [t/mm³]. Throws InputError naming the cell if a cell is inverted or degenerate.
   InertiaTerm(const mesh::Mesh& mesh, const dofs::DofMap& dofs, dofs::FieldId displacement,
-              std::vector<Index> cells, std::vector<Real> densities, MassMatrix mass,
-              GeneralizedAlpha method, std::vector<Index> massless = {});
+              const std::vector<Index>& cells, const std::vector<Real>& densities,
+              MassMatrix mass, GeneralizedAlpha method, std::vector<Index> massless = {});
 
   std::string name() const override { return "inertia"; }
-  Index num_elements() const override { return static_cast<Index>(cells_.size()); }
+  Index num_elements() const override { return static_cast<Index>(elements_.size()); }
   void element_dofs(Index e, std::vector<Index>& dofs) const override;
   /// r = m_e a_{n+1-α_m}, K = (1 − α_m)/(β Δt²) m_e; zero for Δt = 0.
   bool evaluate(Index e, const EvalState& state, LocalVector& r, LocalMatrix* K) const override;
@@ -88,11 +95,9 @@ private:
   /// Entry of dofs() of the DOF `dof`.
   Index slot(Index dof) const;
 
-  const mesh::Mesh& mesh_;
   const dofs::DofMap& map_;
   dofs::FieldId u_;
-  std::vector<Index> cells_;
-  std::vector<Eigen::Matrix<Real, 8, 8>> mass_; ///< m_ab of every cell
+  std::vector<MassElement> elements_;
   GeneralizedAlpha method_;
   std::vector<Index> dofs_;
   std::vector<Index> slot_of_dof_; ///< entry of dofs_ by DOF (−1: none)

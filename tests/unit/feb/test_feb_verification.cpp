@@ -546,6 +546,47 @@ TEST_P(FebRigidShell, ARigidPlateMadeOfAShellPressesTheTopOfAHexByItsDisplacemen
 INSTANTIATE_TEST_SUITE_P(Facets, FebRigidShell, testing::Values(false, true),
                          [](const auto& info) { return info.param ? "Triangles" : "Quads"; });
 
+// A model of the rigid plate alone, held, under gravity (FEBio's body force b = 9.81 along z
+// is the load −ρ b): its shells of thickness 0.01 and density 2 weigh W = ρ t A g, which the
+// hold carries at the centroid of the plate (no moment). The body's force in history.csv is the
+// residual at its unknowns, R = f_int − f_ext = +W along z.
+TEST(FebRigidShell, AHeldShellBodyCarriesTheWeightOfItsShells) {
+  const std::string text = R"(<?xml version="1.0"?>
+<febio_spec version="4.0">
+  <Module type="solid"/>
+  <Control><analysis>STATIC</analysis><time_steps>1</time_steps><step_size>1</step_size></Control>
+  <Material>
+    <material id="1" name="plate" type="rigid body"><density>2</density></material>
+  </Material>
+  <Mesh>
+    <Nodes name="all">
+      <node id="1">-0.5,-0.5,1</node><node id="2">1.5,-0.5,1</node><node id="3">1.5,1.5,1</node><node id="4">-0.5,1.5,1</node>
+      <node id="5">3.5,-0.5,1</node><node id="6">3.5,1.5,1</node>
+    </Nodes>
+    <Elements type="quad4" name="Plate"><elem id="1">1,2,3,4</elem><elem id="2">2,5,6,3</elem></Elements>
+  </Mesh>
+  <MeshDomains><ShellDomain name="Plate" mat="plate"><shell_thickness>0.01</shell_thickness></ShellDomain></MeshDomains>
+  <Rigid>
+    <rigid_bc type="rigid_fixed"><rb>plate</rb><Rx_dof>1</Rx_dof><Ry_dof>1</Ry_dof><Rz_dof>1</Rz_dof><Ru_dof>1</Ru_dof><Rv_dof>1</Rv_dof><Rw_dof>1</Rw_dof></rigid_bc>
+  </Rigid>
+  <Loads><body_load type="const"><z>9.81</z></body_load></Loads>
+</febio_spec>
+)";
+  FebRun run = test::run_feb_case(feb::parse_feb(text, "shell_weight.feb"));
+  ASSERT_TRUE(run.report.success) << run.report.failure;
+  ASSERT_EQ(run.spec.rigid_bodies.size(), 1u);
+  EXPECT_EQ(run.spec.rigid_bodies[0].shell_thickness, 0.01);
+  EXPECT_EQ(run.spec.rigid_bodies[0].density, 2.0);
+  const model::Model& m = *run.model;
+  const model::RigidBody& b = m.rigid_bodies.at(0);
+  EXPECT_LE((m.problem->rigid_map().bodies()[b.rotating].centre - Vec3(1.5, 0.5, 1)).norm(),
+            1e-15); // the centroid of the shells
+  const Real weight = 2.0 * 0.01 * 8.0 * 9.81;
+  const Vec3 force = model::rigid_body_force(m, b, 1.0), moment = model::rigid_body_moment(m, b);
+  EXPECT_LE((force - Vec3(0, 0, weight)).norm(), 1e-12 * weight) << force.transpose();
+  EXPECT_LE(moment.norm(), 1e-12 * weight) << moment.transpose();
+}
+
 // FEBio ignores the fixed and prescribed displacements of the nodes a rigid body carries: the
 // lid with every node's z also "fixed" turns as it did.
 TEST(FebRigid, ConditionsOnTheNodesOfARigidBodyAreIgnoredAsFebioDoes) {

@@ -157,6 +157,23 @@ points = [[0, 0], [1, 1]]
   }
 }
 
+/// with_bone's body as a surface body (its set alone, rotating) with `keys`.
+std::string with_shells(const std::string& keys) {
+  return replaced_in(with_bone("rotation = \"free\"\n" + keys), "blocks = [\"bone\"]\n", "");
+}
+
+TEST(CaseReaderDynamic, ARigidBodysShellThicknessIsReadAndWritten) {
+  const io::CaseSpec c =
+      io::parse_case(with_shells("density = 2e-9\nshell_thickness = 0.25\n"), kMemoryFile);
+  for (const io::CaseSpec& spec : {c, io::parse_case(io::case_toml(c), kMemoryFile)}) {
+    ASSERT_EQ(spec.rigid_bodies.size(), 1u);
+    const io::RigidBodySpec& b = spec.rigid_bodies[0];
+    ASSERT_TRUE(b.shell_thickness.has_value());
+    EXPECT_EQ(*b.shell_thickness, 0.25);
+    EXPECT_EQ(b.density, 2e-9);
+  }
+}
+
 class CaseReaderDynamicErrors : public ::testing::TestWithParam<BadCase> {};
 
 TEST_P(CaseReaderDynamicErrors, NameTheFileAndTheKey) {
@@ -192,6 +209,15 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"density_of_a_body_without_cells",
                 replaced_in(with_bone("density = 1e-9\n"), "blocks = [\"bone\"]\n", ""),
                 {"rigid_body[1].density", "only a body made of cells"}},
+        BadCase{"shell_thickness_of_a_body_of_cells",
+                with_bone("density = 1e-9\nshell_thickness = 0.1\n"),
+                {"rigid_body[1].shell_thickness", "a body made of cells (blocks) has no shells"}},
+        BadCase{"shell_thickness_without_density",
+                with_shells("shell_thickness = 0.1\n"),
+                {"rigid_body[1].shell_thickness", "no mass without a density"}},
+        BadCase{"non_positive_shell_thickness",
+                with_shells("density = 1e-9\nshell_thickness = 0.0\n"),
+                {"rigid_body[1].shell_thickness"}},
         BadCase{"euler_angles_and_rz",
                 with_bone("rz = { rotation = 0.1 }\neuler_angles = { x = { rotation = 0.2 } }\n"),
                 {"rigid_body[1].euler_angles", "either by rx, ry, rz or by euler_angles"}},

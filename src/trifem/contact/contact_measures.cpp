@@ -34,6 +34,7 @@ std::vector<SlaveNodeState> ContactTerm::slave_states(const Vector& x) const {
   const NodePositions pos([this, &x](Index n) { return position(n, x); });
   ProjectionOptions options;
   options.xi_tolerance = settings_.xi_tolerance;
+  options.free_edge_tolerance = settings_.slave_free_edge_tolerance;
   options.search_distance = settings_.search_distance;
   const BucketSearch on_master(master_, pos, settings_.search_distance);
   const auto projections = project_nodes(slave_.nodes(), master_, pos, on_master, options);

@@ -126,6 +126,7 @@ void ContactTerm::project_all(const Vector& x) {
   const NodePositions pos([this, &x](Index n) { return position(n, x); });
   ProjectionOptions options;
   options.xi_tolerance = settings_.xi_tolerance;
+  options.free_edge_tolerance = settings_.slave_free_edge_tolerance;
   options.search_distance = settings_.search_distance;
   const BucketSearch on_master(master_, pos, settings_.search_distance);
   slave_proj_ = project_nodes(slave_.nodes(), master_, pos, on_master, options);

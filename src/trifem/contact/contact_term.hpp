@@ -44,6 +44,11 @@ struct ContactSettings {
   /// symmetry plane cuts both surfaces: master nodes on the plane lie off the slave surface by
   /// |g| sin θ (g their gap, θ the tilt of the slave facet), far below 0.5 % of a facet.
   Real master_xi_tolerance = 1e-2;
+  /// The same for a slave node just beyond a free edge of the master surface: it keeps the
+  /// projection onto the extended edge facet (and its contact) instead of being released.
+  /// Such nodes are the rule where the edges of equal surfaces meet (two blocks of the same
+  /// section pressed together), where round-off alone puts the slave edge on either side.
+  Real slave_free_edge_tolerance = 1e-2;
 };
 
 /// Interface state of one slave node k in a configuration x (ContactTerm::slave_states). A node

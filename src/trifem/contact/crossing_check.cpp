@@ -25,6 +25,7 @@ std::optional<Projection> ContactTerm::nearest_on_master(const Vec3& p, const Ve
   const NodePositions pos([this, &x](Index n) { return position(n, x); });
   ProjectionOptions options;
   options.xi_tolerance = settings_.xi_tolerance; // no distance limit
+  options.free_edge_tolerance = settings_.slave_free_edge_tolerance;
   return project(p, master_, pos, options);
 }
 

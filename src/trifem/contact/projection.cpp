@@ -225,6 +225,15 @@ std::optional<Projection> select(const Vec3& p, const ContactSurface& surface,
   }
   if (best && std::abs(best->gap) > options.search_distance)
     return std::nullopt;
+  if (best && best->on_free_boundary && options.free_edge_tolerance > options.xi_tolerance) {
+    ProjectionOptions extended = options;
+    extended.xi_tolerance = options.free_edge_tolerance;
+    std::optional<Projection> pr = project_onto_facet(p, surface.coords(best->facet, x), extended);
+    if (pr && !pr->on_boundary && std::abs(pr->gap) <= options.search_distance) {
+      pr->facet = best->facet;
+      return pr;
+    }
+  }
   return best;
 }
 

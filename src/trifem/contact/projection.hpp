@@ -37,6 +37,10 @@ struct Projection {
 struct ProjectionOptions {
   /// Accept an interior projection for ξ ∈ [-1-xi_tolerance, 1+xi_tolerance]².
   Real xi_tolerance = 1e-6;
+  /// A point whose nearest projection lies on a free edge of the surface (no neighbour facet)
+  /// but within ξ ∈ [-1-free_edge_tolerance, 1+free_edge_tolerance]² of the extended facet
+  /// gets the interior projection onto the extension instead (0: none).
+  Real free_edge_tolerance = 0;
   /// Points whose distance |p - x(ξ)| to the surface exceeds this get no projection.
   Real search_distance = std::numeric_limits<Real>::infinity();
   /// Newton iterations per start (facet centre, nearest corner, nearest coarse sample).

@@ -283,8 +283,7 @@ void check_frames_of_rotating_bodies(const io::CaseSpec& spec, const Model& mode
   }
 }
 
-std::vector<physics::MassElement> rigid_shell_masses(const io::CaseSpec& spec,
-                                                     const Model& model) {
+std::vector<physics::MassElement> rigid_shell_masses(const io::CaseSpec& spec, const Model& model) {
   std::vector<physics::MassElement> out;
   for (const io::RigidBodySpec& b : spec.rigid_bodies) {
     if (!b.shell_thickness || !b.density)

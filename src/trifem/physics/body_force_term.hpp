@@ -37,7 +37,7 @@ public:
 private:
   const dofs::DofMap& dofs_;
   dofs::FieldId u_;
-  std::vector<std::vector<Index>> nodes_;  ///< of every element
+  std::vector<std::vector<Index>> nodes_;   ///< of every element
   std::vector<Eigen::VectorXd> nodal_mass_; ///< ∫ ρ N_a per element
   Vec3 force_;
   dofs::LoadCurve curve_;

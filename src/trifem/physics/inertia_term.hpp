@@ -58,8 +58,8 @@ public:
   /// Of hex8 cells: `densities[i]` > 0 is the mass per reference volume of `cells[i]`
   /// [t/mm³]. Throws InputError naming the cell if a cell is inverted or degenerate.
   InertiaTerm(const mesh::Mesh& mesh, const dofs::DofMap& dofs, dofs::FieldId displacement,
-              const std::vector<Index>& cells, const std::vector<Real>& densities,
-              MassMatrix mass, GeneralizedAlpha method, std::vector<Index> massless = {});
+              const std::vector<Index>& cells, const std::vector<Real>& densities, MassMatrix mass,
+              GeneralizedAlpha method, std::vector<Index> massless = {});
 
   std::string name() const override { return "inertia"; }
   Index num_elements() const override { return static_cast<Index>(elements_.size()); }

@@ -223,10 +223,10 @@ TEST(CaseReaderBodyForce, NoMassIsAModelError) {
 
 TEST(CaseReaderBodyForce, ShellsOnFacesOfCellsAreAModelErrorNamingTheBodyAndTheSurface) {
   // the body's set is the block's top face: facets of hex cells, no surface mesh
-  const std::string shells = replaced_in(
-      replaced_in(body_case(kGravity), "blocks = [\"bone\"]\n",
-                  "rotation = \"free\"\ndensity = 2e-9\nshell_thickness = 0.1\n"),
-      "name = \"bone\"\n", "name = \"bone\"\nmaterial = \"soft\"\n");
+  const std::string shells =
+      replaced_in(replaced_in(body_case(kGravity), "blocks = [\"bone\"]\n",
+                              "rotation = \"free\"\ndensity = 2e-9\nshell_thickness = 0.1\n"),
+                  "name = \"bone\"\n", "name = \"bone\"\nmaterial = \"soft\"\n");
   expect_contains(model_error_of(shells),
                   {"rigid_body[1].shell_thickness", "facet 1 of the surface 'block.zmax'",
                    "is a face of cell", "bound no cell"});

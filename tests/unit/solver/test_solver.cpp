@@ -264,8 +264,9 @@ solver::RunReport run_linear_in_time(LinearInTime& problem, std::vector<Real>& a
   s.dt_min = 0.025;
   solver::StepController controller(s);
   solver::NewtonSolver newton({}, linalg::make_linear_solver({LinearSolverKind::sparselu}));
-  return solver::run_time_loop(problem, newton, controller,
-                               [&](const solver::StepInfo& info) { accepted_dt.push_back(info.dt); });
+  return solver::run_time_loop(problem, newton, controller, [&](const solver::StepInfo& info) {
+    accepted_dt.push_back(info.dt);
+  });
 }
 
 } // namespace

@@ -198,9 +198,8 @@ void warn_of_massless_bodies(const io::CaseSpec& spec, const Model& model,
 
 /// The inertia of every cell with mass (the reader requires a density of every material; the
 /// cells of a rigid body without one are massless) and of the rigid bodies' shells, for the
-/// dynamic steps of the case. The
-/// unknowns of rotating rigid bodies have no mass of their own: the inertia of the nodes they
-/// carry reaches them by condensation.
+/// dynamic steps of the case. The unknowns of rotating rigid bodies have no mass of their own:
+/// the inertia of the nodes they carry reaches them by condensation.
 std::unique_ptr<physics::InertiaTerm> inertia_term(const io::CaseSpec& spec, const Model& model) {
   std::vector<Index> cells;
   std::vector<Real> densities;

@@ -8,6 +8,7 @@
 #include "case_runner.hpp"
 #include "tissue_materials.hpp"
 #include "trifem/model/rigid_bodies.hpp"
+#include "trifem/parallel/communicator.hpp"
 
 #include <gtest/gtest.h>
 
@@ -110,7 +111,9 @@ torsion_stiffness = {:.17g}
 /// The largest error of the arm's angle over one period in `steps` steps, relative to the
 /// amplitude; the rotation stays about z (to round-off).
 Real angle_error(int steps, Real rho_inf, bool shell = false) {
-  const std::filesystem::path dir = std::filesystem::path(testing::TempDir()) / "trifem_arm";
+  // one directory per process: on several processes each writes and reads its own mesh file
+  const std::filesystem::path dir =
+      std::filesystem::path(testing::TempDir()) / fmt::format("trifem_arm_{}", parallel::rank());
   std::filesystem::create_directories(dir);
   const std::filesystem::path file = dir / "arm.toml";
   Real worst = 0.0;

@@ -639,74 +639,6 @@ void add_cell_blocks(const LineReader& in, GmshData& d) {
                    [&] { d.mesh.add_cell_block("unassigned", std::move(d.unassigned_cells)); });
 }
 
-/// Node indices of a quad in ascending order: identifies a face regardless of orientation.
-using QuadKey = std::array<Index, 4>;
-
-QuadKey sorted_key(QuadKey q) {
-  std::sort(q.begin(), q.end());
-  return q;
-}
-
-struct QuadKeyHash {
-  std::size_t operator()(const QuadKey& q) const {
-    std::size_t h = 0;
-    for (Index v : q)
-      h = h * 1000003u ^ static_cast<std::size_t>(v);
-    return h;
-  }
-};
-
-/// True if `b` lists the nodes of `a` in the same cyclic order (the same oriented quad).
-bool same_orientation(const std::array<Index, 4>& a, const std::array<Index, 4>& b) {
-  for (int shift = 0; shift < 4; ++shift)
-    if (a[0] == b[shift] && a[1] == b[(shift + 1) % 4] && a[2] == b[(shift + 2) % 4] &&
-        a[3] == b[(shift + 3) % 4])
-      return true;
-  return false;
-}
-
-/// The outward-oriented facet of each pending quad: of the hexes that have the quad as a face,
-/// the one whose face has the quad's node order (an interior face names its side by its
-/// orientation), else the first (lowest index); a quad that is no hex's face stays as given
-/// (cell −1: a surface mesh, see add_surfaces). Only the quads are hashed, so this stays cheap
-/// for large meshes.
-std::vector<Facet> orient_quads(const GmshData& d) {
-  std::unordered_map<QuadKey, std::size_t, QuadKeyHash> slot_of;
-  std::vector<std::size_t> slot(d.quads.size());
-  for (std::size_t i = 0; i < d.quads.size(); ++i)
-    slot[i] = slot_of.try_emplace(sorted_key(d.quads[i].nodes), slot_of.size()).first->second;
-  std::vector<std::array<Facet, 2>> found(slot_of.size()); // cell -1: not found yet
-  for (Index c = 0; c < d.mesh.num_cells(); ++c) {
-    for (int f = 0; f < 6; ++f) {
-      Facet facet{.nodes = {}, .cell = c, .local_face = f};
-      for (int a = 0; a < 4; ++a)
-        facet.nodes[a] = d.mesh.cell(c)[kHexFaces[f][a]];
-      const auto it = slot_of.find(sorted_key(facet.nodes));
-      if (it == slot_of.end())
-        continue;
-      std::array<Facet, 2>& sides = found[it->second];
-      if (sides[0].cell < 0)
-        sides[0] = facet;
-      else if (sides[1].cell < 0)
-        sides[1] = facet;
-    }
-  }
-  std::vector<Facet> facets;
-  facets.reserve(d.quads.size());
-  for (std::size_t i = 0; i < d.quads.size(); ++i) {
-    const PendingQuad& q = d.quads[i];
-    const std::array<Facet, 2>& sides = found[slot[i]];
-    if (sides[0].cell < 0) {
-      facets.push_back({.nodes = q.nodes, .cell = -1, .local_face = -1});
-      continue;
-    }
-    const bool second = sides[1].cell >= 0 && !same_orientation(q.nodes, sides[0].nodes) &&
-                        same_orientation(q.nodes, sides[1].nodes);
-    facets.push_back(sides[second ? 1 : 0]);
-  }
-  return facets;
-}
-
 /// A physical surface is made of hex faces, or it is a surface mesh whose quads bound no cell
 /// (e.g. a bone surface carried by a rigid body), oriented by their node order: not a mix,
 /// which is most likely a quad misplaced on a face.
@@ -732,7 +664,11 @@ void check_surface_kinds(const LineReader& in, const GmshData& d,
 }
 
 void add_surfaces(const LineReader& in, GmshData& d) {
-  const std::vector<Facet> facets = orient_quads(d);
+  std::vector<std::array<Index, 4>> quads;
+  quads.reserve(d.quads.size());
+  for (const PendingQuad& q : d.quads)
+    quads.push_back(q.nodes);
+  const std::vector<Facet> facets = d.mesh.orient_quads(quads);
   check_surface_kinds(in, d, facets);
   std::map<int, Surface> surfaces;
   for (std::size_t i = 0; i < facets.size(); ++i)

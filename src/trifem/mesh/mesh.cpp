@@ -61,6 +61,15 @@ Facet make_facet(const Mesh& mesh, Index cell, int face) {
   return f;
 }
 
+/// True if `b` lists the nodes of `a` in the same cyclic order (the same oriented quad).
+bool same_orientation(const std::array<Index, 4>& a, const std::array<Index, 4>& b) {
+  for (int shift = 0; shift < 4; ++shift)
+    if (a[0] == b[shift] && a[1] == b[(shift + 1) % 4] && a[2] == b[(shift + 2) % 4] &&
+        a[3] == b[(shift + 3) % 4])
+      return true;
+  return false;
+}
+
 constexpr Real kNoValue = std::numeric_limits<Real>::quiet_NaN();
 
 /// Pads every cell data to `num_cells` cells with NaN (cells without data).
@@ -214,6 +223,39 @@ std::vector<Facet> Mesh::find_facets(const std::vector<std::array<Index, 4>>& qu
     found.push_back(it->second);
   }
   return found;
+}
+
+std::vector<Facet> Mesh::orient_quads(const std::vector<std::array<Index, 4>>& quads) const {
+  std::unordered_map<FaceKey, std::size_t, FaceKeyHash> slot_of;
+  std::vector<std::size_t> slot(quads.size());
+  for (std::size_t i = 0; i < quads.size(); ++i)
+    slot[i] = slot_of.try_emplace(face_key(quads[i]), slot_of.size()).first->second;
+  std::vector<std::array<Facet, 2>> found(slot_of.size()); // cell -1: not found yet
+  for (Index c = 0; c < num_cells(); ++c)
+    for (int f = 0; f < 6; ++f) {
+      const Facet facet = make_facet(*this, c, f);
+      const auto it = slot_of.find(face_key(facet.nodes));
+      if (it == slot_of.end())
+        continue;
+      std::array<Facet, 2>& sides = found[it->second];
+      if (sides[0].cell < 0)
+        sides[0] = facet;
+      else if (sides[1].cell < 0)
+        sides[1] = facet;
+    }
+  std::vector<Facet> facets;
+  facets.reserve(quads.size());
+  for (std::size_t i = 0; i < quads.size(); ++i) {
+    const std::array<Facet, 2>& sides = found[slot[i]];
+    if (sides[0].cell < 0) {
+      facets.push_back({.nodes = quads[i], .cell = -1, .local_face = -1});
+      continue;
+    }
+    const bool second = sides[1].cell >= 0 && !same_orientation(quads[i], sides[0].nodes) &&
+                        same_orientation(quads[i], sides[1].nodes);
+    facets.push_back(sides[second ? 1 : 0]);
+  }
+  return facets;
 }
 
 std::vector<Facet> Mesh::boundary_facets() const {

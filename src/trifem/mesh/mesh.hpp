@@ -104,6 +104,13 @@ public:
   /// with exactly these nodes. Throws InputError naming the first quad that is no cell face.
   std::vector<Facet> find_facets(const std::vector<std::array<Index, 4>>& quads) const;
 
+  /// For each quad (its node order is its orientation), the facet of the cell face with these
+  /// nodes, oriented outward: of the cells that have the quad as a face, the one whose face
+  /// lists its nodes in the same cyclic order (an interior face names its side by its
+  /// orientation), else the first; a quad that is no cell's face stays as given (cell −1: a
+  /// surface mesh). Only the quads are hashed, so this stays cheap for large meshes.
+  std::vector<Facet> orient_quads(const std::vector<std::array<Index, 4>>& quads) const;
+
   /// Facets of all cell faces that belong to exactly one cell (the mesh boundary).
   std::vector<Facet> boundary_facets() const;
 

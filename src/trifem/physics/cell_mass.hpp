@@ -15,10 +15,18 @@ namespace trifem::physics {
 /// inverted or degenerate cell).
 std::optional<Eigen::Matrix<Real, 8, 8>> consistent_cell_mass(const fe::HexCoords& X, Real density);
 
+/// The most nodes of a mass element (a hex8 cell; a quad4 shell has 4).
+inline constexpr int kMaxMassNodes = 8;
+/// A matrix over the nodes of a mass element (at most kMaxMassNodes: no heap allocation).
+using NodalMatrix =
+    Eigen::Matrix<Real, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxMassNodes, kMaxMassNodes>;
+/// A vector per node of a mass element (rows: nodes, columns: x, y, z).
+using NodalVectors = Eigen::Matrix<Real, Eigen::Dynamic, 3, 0, kMaxMassNodes, 3>;
+
 /// A piece of the model's mass: its nodes and its consistent mass matrix m_ab over them.
 struct MassElement {
   std::vector<Index> nodes;
-  Eigen::MatrixXd mass;
+  NodalMatrix mass;
 };
 
 /// The mass elements of hex8 `cells` of the given densities (> 0). Throws InputError naming

@@ -73,7 +73,7 @@ bool InertiaTerm::evaluate(Index e, const EvalState& state, LocalVector& r, Loca
     K->setZero(3 * n, 3 * n);
   if (!(state.dt > 0.0))
     return true;
-  Eigen::MatrixX3d accel(n, 3); // a_{n+1-α_m} at the nodes
+  NodalVectors accel(n, 3); // a_{n+1-α_m} at the nodes
   for (Index a = 0; a < n; ++a)
     for (int k = 0; k < 3; ++k) {
       const Index dof = map_.dof(u_, nodes[a], k);
@@ -81,8 +81,8 @@ bool InertiaTerm::evaluate(Index e, const EvalState& state, LocalVector& r, Loca
       const Real next = acceleration_at(i, state.x[dof], state.x_old[dof], state.dt);
       accel(a, k) = (1.0 - method_.alpha_m) * next + method_.alpha_m * a_[i];
     }
-  const Eigen::MatrixXd& m = elements_[e].mass;
-  const Eigen::MatrixX3d f = m * accel;
+  const NodalMatrix& m = elements_[e].mass;
+  const NodalVectors f = m * accel;
   for (Index a = 0; a < n; ++a)
     for (int k = 0; k < 3; ++k)
       r[3 * a + k] = f(a, k);
@@ -152,11 +152,11 @@ Vector InertiaTerm::mass_times(const Vector& u) const {
   for (Index e = 0; e < num_elements(); ++e) {
     element_dofs(e, element);
     const auto n = static_cast<Index>(elements_[e].nodes.size());
-    Eigen::MatrixX3d ue(n, 3);
+    NodalVectors ue(n, 3);
     for (Index a = 0; a < n; ++a)
       for (int k = 0; k < 3; ++k)
         ue(a, k) = u[element[3 * a + k]];
-    const Eigen::MatrixX3d f = elements_[e].mass * ue;
+    const NodalVectors f = elements_[e].mass * ue;
     for (Index a = 0; a < n; ++a)
       for (int k = 0; k < 3; ++k)
         out[element[3 * a + k]] += f(a, k);

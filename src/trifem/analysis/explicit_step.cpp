@@ -6,6 +6,7 @@
 #include "trifem/core/log.hpp"
 #include "trifem/core/timer.hpp"
 #include "trifem/model/conditions.hpp"
+#include "trifem/model/rigid_bodies.hpp"
 #include "trifem/parallel/communicator.hpp"
 
 #include <algorithm>
@@ -175,12 +176,16 @@ void check_explicit_outputs(const model::Model& model) {
 
 ExplicitStep::ExplicitStep(const io::CaseSpec& part, model::Model& model, Real start,
                            const Vector& velocity)
-    : part_(part), model_(model), start_(start), view_(std::make_unique<ed::ExplicitModel>(model)),
+    : part_(part), model_(model), start_(start),
+      view_(std::make_unique<ed::ExplicitModel>(model, model::rigid_shell_masses(part, model))),
       balance_(*view_) {
   check_explicit_outputs(model);
-  const ed::InitialState initial{view_->gather(model.problem->state()),
-                                 velocity.size() > 0 ? view_->gather(velocity) : Vector(),
-                                 model.problem->time()};
+  const Vector& x = model.problem->state();
+  ed::InitialState initial{view_->gather(x),
+                           velocity.size() > 0 ? view_->gather(velocity) : Vector(),
+                           model.problem->time()};
+  for (std::size_t b = 0; b < view_->bodies().size(); ++b)
+    initial.bodies.push_back(view_->motion(b, x, velocity));
   solver_ = std::make_unique<ed::ExplicitSolver>(*view_, settings_of(part), initial);
   check_step_count(part, solver_->time_step_info(), start);
   results_ = std::make_unique<Results>(*view_, *solver_, model);
@@ -191,7 +196,9 @@ ExplicitStep::~ExplicitStep() = default;
 void ExplicitStep::log_settings() const {
   std::set<std::string> logged;
   for (const model::CellMaterial& m : model_.materials)
-    if (logged.insert(m.name).second)
+    if (m.rigid() && logged.insert(m.name).second)
+      log::info("  rigid body {}: density {:.4g} t/mm^3", m.name, m.density);
+    else if (logged.insert(m.name).second)
       log::info("  material {}: {}, density {:.4g} t/mm^3, shear modulus {:.4g} MPa", m.name,
                 m.solid->type(), m.density, m.solid->shear_modulus());
   const ed::ExplicitSettings& s = solver_->settings();
@@ -229,8 +236,9 @@ std::vector<double> ExplicitStep::state() const {
 }
 
 std::size_t ExplicitStep::state_size(const model::Model& model) {
-  return kStepScalars +
-         ed::ExplicitSolver::state_size(3 * model.mesh.num_nodes(), model.mesh.num_cells());
+  return kStepScalars + ed::ExplicitSolver::state_size(3 * model.mesh.num_nodes(),
+                                                       model.mesh.num_cells(),
+                                                       ed::ExplicitModel::count_bodies(model));
 }
 
 void ExplicitStep::restore(const std::vector<double>& state) {
@@ -248,7 +256,7 @@ void ExplicitStep::restore(const std::vector<double>& state) {
 void ExplicitStep::write(OutputWriter& output, const ed::StepReport& report, bool volume) {
   ScopedTimer timer(output_seconds_);
   Vector x = model_.problem->state();
-  view_->scatter(solver_->displacement(), x);
+  view_->scatter_state(solver_->displacement(), solver_->body_motions(), solver_->time(), x);
   model_.problem->set_state(x);
   model_.problem->set_time(solver_->time());
   results_->update(report, volume);
@@ -334,6 +342,10 @@ solver::RunReport ExplicitStep::run(OutputWriter& output, const std::string& his
 Vector ExplicitStep::velocity() const {
   Vector v = Vector::Zero(model_.dofs.num_dofs());
   view_->scatter(solver_->velocity(), v);
+  const std::vector<ed::BodyVelocity> bodies = solver_->body_velocities();
+  for (std::size_t b = 0; b < bodies.size(); ++b)
+    view_->scatter_body_velocity(b, solver_->body_motions()[b], bodies[b].pivot, bodies[b].omega,
+                                 v);
   return v;
 }
 

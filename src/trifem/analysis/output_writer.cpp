@@ -258,11 +258,12 @@ std::vector<double> OutputWriter::history_row(Real time, int step, Real dt, int 
   append_contact_history(model_, row);
   for (const model::RigidBody& b : model_.rigid_bodies) {
     const Vec3 u = model::rigid_body_displacement(model_, b),
-               f = model::rigid_body_force(model_, b, time);
+               f = model::rigid_body_force(b, time, R);
     row.insert(row.end(), {u.x(), u.y(), u.z(), f.x(), f.y(), f.z()});
     if (b.rotating < 0)
       continue;
-    const Vec3 r = model::rigid_body_rotation(model_, b), m = model::rigid_body_moment(model_, b);
+    const Vec3 r = model::rigid_body_rotation(model_, b),
+               m = model::rigid_body_moment(model_, b, R);
     row.insert(row.end(), {r.x(), r.y(), r.z(), m.x(), m.y(), m.z()});
   }
   if (model_.connectors)

@@ -481,7 +481,7 @@ public:
       with_case_file(spec, [&] { check_explicit_outputs(model); });
     if (spec.is_explicit()) {
       parts_.push_back(explicit_part(spec, std::nullopt));
-      whole_ = explicit_step(spec, parts_.back(), std::nullopt, model, 0.0);
+      whole_ = explicit_step(spec, parts_.back(), std::nullopt, model, 0.0, model.initial_velocity);
     }
   }
   void log_settings() const {

@@ -111,6 +111,12 @@ CellStatus evaluate_cells(const ExplicitModel& model, Constraint constraint, con
   for (Index c = 0; c < n; ++c) {
     if (!model.evaluates(c))
       continue;
+    if (!model.deformable(c)) { // moves rigidly: no forces, no strain
+      out.internal[c].setZero();
+      out.gradient[c].setZero();
+      out.psi[c] = out.energy[c] = out.volume_change[c] = out.gauss_volume_change[c] = 0.0;
+      continue;
+    }
     Real W = 0.0;
     const int code = evaluate_cell(model.geometry()[c], model.cell_values(c, U), model.law(c),
                                    constraint, request, out.internal[c], out.gradient[c],

@@ -10,7 +10,8 @@ namespace trifem::explicit_dynamics {
 EnergyBalance::EnergyBalance(const ExplicitModel& model) {
   Real stiffness_volume = 0.0; // Σ μ_e V_e [mJ]
   for (Index c = 0; c < model.num_cells(); ++c)
-    stiffness_volume += model.law(c).shear_modulus() * model.volumes()[c];
+    if (model.deformable(c))
+      stiffness_volume += model.law(c).shear_modulus() * model.volumes()[c];
   floor_ = 1e-10 * stiffness_volume;
 }
 

@@ -48,7 +48,11 @@ Real ExplicitSolver::inverse_penalty() const {
 }
 
 Vector ExplicitSolver::multiplier_diagonal() const {
-  return inverse_penalty() * model_.volumes();
+  Vector diagonal = inverse_penalty() * model_.volumes();
+  for (Index c = 0; c < model_.num_cells(); ++c)
+    if (!model_.deformable(c)) // H_e = 0, Ψ_e = 0: a row of its own keeps Λ_e = 0
+      diagonal[c] = model_.volumes()[c];
+  return diagonal;
 }
 
 namespace {
@@ -83,6 +87,15 @@ void ExplicitSolver::initialize(const InitialState& initial) {
     V_[d] = 0.0;
   }
   time_ = initial.time;
+  motions_ = initial.bodies;
+  if (motions_.empty())
+    motions_.assign(model_.bodies().size(), BodyMotion{});
+  TRIFEM_CHECK(motions_.size() == model_.bodies().size(),
+               "explicit: the initial state has {} rigid bodies, the model {}", motions_.size(),
+               model_.bodies().size());
+  trial_motions_ = motions_;
+  for (std::size_t b = 0; b < motions_.size(); ++b)
+    place(model_.bodies()[b], motions_[b], U_);
   lambda_ = Vector::Zero(model_.num_cells());
   const CellStatus status =
       evaluate_cells(model_, settings_.constraint, U_, {true, true, true, false}, fields_);
@@ -112,7 +125,7 @@ void ExplicitSolver::initial_multiplier() {
 
 void ExplicitSolver::update_end_forces() {
   gather(model_, fields_.internal, nullptr, f_int_);
-  model_.external_force(U_, time_, f_ext_);
+  model_.external_force(U_, time_, f_ext_, motions_, &body_loads_);
 }
 
 void ExplicitSolver::estimate_stable_step() {
@@ -247,8 +260,45 @@ Vector ExplicitSolver::velocity() const {
   const Real half = 0.5 * dt_prev_;
   if (half == 0.0)
     return V_; // the initial state (a non-finite initial force must not make it NaN)
-  return (V_ - half * model_.inverse_mass().cwiseProduct(reaction_force())) /
-         (1.0 + half * settings_.damping);
+  if (motions_.empty())
+    return (V_ - half * model_.inverse_mass().cwiseProduct(reaction_force())) /
+           (1.0 + half * settings_.damping);
+  const Vector reaction = reaction_force();
+  Vector v =
+      (V_ - half * model_.inverse_mass().cwiseProduct(reaction)) / (1.0 + half * settings_.damping);
+  const std::vector<BodyVelocity> bodies = body_velocities();
+  for (std::size_t b = 0; b < bodies.size(); ++b)
+    place_velocity(model_.bodies()[b], motions_[b], bodies[b], v);
+  return v;
+}
+
+std::vector<BodyVelocity> ExplicitSolver::body_velocities() const {
+  const std::vector<ExplicitBody>& bodies = model_.bodies();
+  std::vector<BodyVelocity> out(bodies.size());
+  if (bodies.empty())
+    return out;
+  const Real half = 0.5 * dt_prev_;
+  if (half == 0.0) { // the initial state: the velocities it was given
+    for (std::size_t b = 0; b < bodies.size(); ++b) {
+      const BodyMotion& m = motions_[b];
+      out[b].pivot = m.v;
+      if (bodies[b].rotation == BodyRotation::Axis)
+        out[b].omega = m.L / bodies[b].inertia(bodies[b].axis, bodies[b].axis);
+      else if (bodies[b].rotates()) // (a body on a line has no velocity along it)
+        out[b].omega = m.R * bodies[b].inertia.completeOrthogonalDecomposition().pseudoInverse() *
+                       m.R.transpose() * m.L;
+    }
+    return out;
+  }
+  const Vector force = -reaction_force();
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    BodyLoad load = nodal_load(bodies[b], motions_[b], force);
+    load.force += body_loads_[b].force;
+    load.moment += body_loads_[b].moment;
+    out[b] = velocity_at_step(bodies[b], motions_[b], load, model_.target(b, time_ - half),
+                              model_.target(b, time_ + half), half, settings_.damping);
+  }
+  return out;
 }
 
 Energies ExplicitSolver::energies() const {
@@ -261,9 +311,10 @@ Energies ExplicitSolver::energies() const {
       if (model_.fixed()[d])
         e.external_work += 0.5 * R[d] * support_step_[d];
   }
+  e.external_work += 0.5 * drive_work_; // the bodies' drives from t_{n−½} to t_n
   e.damping_work = damping_work_;
   const Vector v = velocity();
-  e.kinetic = 0.5 * v.cwiseAbs2().dot(model_.free_mass()); // prescribed DOFs: the support's
+  e.kinetic = 0.5 * v.cwiseAbs2().dot(model_.kinetic_mass()); // prescribed DOFs: the support's
   CellFields w;
   const CellStatus s =
       evaluate_cells(model_, settings_.constraint, U_, {false, false, false, true}, w);

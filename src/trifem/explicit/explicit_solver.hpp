@@ -54,9 +54,10 @@ struct Energies {
 /// The state a run starts from; the default is at rest in the reference configuration at t = 0.
 /// A run that continues a quasi-static analysis starts from its final displacement.
 struct InitialState {
-  Vector displacement; ///< U0 per DOF 3 a + k [mm] (empty: 0); 0 on fixed DOFs
-  Vector velocity;     ///< v0 per DOF [mm/s] (empty: 0); set to 0 on fixed DOFs
-  Real time = 0.0;     ///< t0 [s]
+  Vector displacement;            ///< U0 per DOF 3 a + k [mm] (empty: 0); 0 on fixed DOFs
+  Vector velocity;                ///< v0 per DOF [mm/s] (empty: 0); set to 0 on fixed DOFs
+  Real time = 0.0;                ///< t0 [s]
+  std::vector<BodyMotion> bodies; ///< of ExplicitModel::bodies() (empty: at rest, unturned)
 };
 
 /// How the step size was chosen.
@@ -112,6 +113,10 @@ public:
   /// support reaction, the force the support exerts on the body; on free DOFs it is −M aⁿ.
   Vector reaction_force() const { return reaction_force(lambda_); }
   const Vector& multiplier() const { return lambda_; } ///< Λ^n per cell [MPa]
+  /// The motion of every body of the model at t_n (its velocities of t_{n−½}).
+  const std::vector<BodyMotion>& body_motions() const { return motions_; }
+  /// The velocity of every body at t_n (as velocity()).
+  std::vector<BodyVelocity> body_velocities() const;
   const CellFields& fields() const { return fields_; } ///< cell results at U^n
   /// max over cells of |J̄_e − 1|, J̄_e = cell-mean J, at U^n: the volume change the P0
   /// multiplier controls (|J̄ − 1| = |Λ|/α at convergence for Ψ = J − 1).
@@ -130,8 +135,9 @@ public:
   /// the counters, the step sizes and the stability estimate, the work done so far, v^{n−½},
   /// Λⁿ, Λ^{n−1} and the supports' last step.
   std::vector<double> state() const;
-  /// The number of values of state() for a model of `dofs` DOFs and `cells` cells.
-  static std::size_t state_size(Index dofs, Index cells);
+  /// The number of values of state() for a model of `dofs` DOFs, `cells` cells and `bodies`
+  /// rigid bodies.
+  static std::size_t state_size(Index dofs, Index cells, std::size_t bodies);
   /// Continues from `state` (of state()) at the displacement `U` as if the run had not stopped
   /// there; InputError if it does not fit the model. The next step factorizes the multiplier
   /// matrix anew.
@@ -163,7 +169,15 @@ private:
   void commit(Real dt, Real dt_avg, Vector& U, Vector& lambda, CellFields& fields);
   void update_end_forces();
   void sync_lambda_timings();
-  Vector explicit_force(const CellFields& f, const Vector& U, Real time) const;
+  /// F_S − Q_V at U and `time`; the loads applied to the bodies into `body_loads`.
+  Vector explicit_force(const CellFields& f, const Vector& U, Real time,
+                        std::vector<BodyLoad>& body_loads) const;
+  /// Moves the bodies through the step under the nodal forces `force` and the loads `applied`
+  /// (into trial_motions_) and writes their nodes into U.
+  void move_bodies(const Vector& force, const std::vector<BodyLoad>& applied, Real t_new,
+                   Vector& U);
+  /// The work of the bodies' drives over the step to trial_motions_ and of their applied loads.
+  Real body_work(const std::vector<BodyLoad>& applied_before) const;
   Real inverse_penalty() const;
   /// Γ/α: V_e/α per cell, the diagonal of the multiplier matrix A2.21.
   Vector multiplier_diagonal() const;
@@ -178,6 +192,13 @@ private:
   Vector f_ext_;                       ///< F_S(t_n, U^n)
   Vector f_int_;                       ///< Q_V(U^n) gathered
   Vector support_step_; ///< U^n − U^{n−1} (the work of moving supports over the last step)
+  std::vector<BodyMotion> motions_;        ///< of the bodies at t_n
+  std::vector<BodyMotion> trial_motions_;  ///< at t_{n+1} in the current iterate
+  std::vector<BodyLoad> body_loads_;       ///< applied to the bodies at t_n
+  std::vector<BodyLoad> trial_body_loads_; ///< applied at t_{n+1} (reading A)
+  Vector body_force_;     ///< the nodal forces that move the bodies in the current iterate
+  StepCoefficients step_; ///< of the step being tried
+  Real drive_work_ = 0.0; ///< the bodies' drives' work over the last step
   CellFields fields_;
   CellFields work_; ///< scratch of the iteration, swapped with fields_ on acceptance
   Real time_ = 0.0, dt_prev_ = 0.0, dt_current_ = 0.0;

@@ -35,8 +35,9 @@ bool is_count(double v) {
 
 } // namespace
 
-std::size_t ExplicitSolver::state_size(Index dofs, Index cells) {
-  return kScalars + 2 * static_cast<std::size_t>(dofs + cells);
+std::size_t ExplicitSolver::state_size(Index dofs, Index cells, std::size_t bodies) {
+  return kScalars + 2 * static_cast<std::size_t>(dofs + cells) +
+         (bodies > 0 ? 1 + BodyMotion::kValues * bodies : 0);
 }
 
 std::vector<double> ExplicitSolver::state() const {
@@ -58,12 +59,16 @@ std::vector<double> ExplicitSolver::state() const {
   s[kReduced] = dt_info_.reduced ? 1.0 : 0.0;
   for (const Vector* v : {&V_, &lambda_, &lambda_old_, &support_step_})
     s.insert(s.end(), v->data(), v->data() + v->size());
+  if (!motions_.empty()) // the bodies' drives' work over the last step, their motions
+    s.push_back(drive_work_);
+  for (const BodyMotion& m : motions_)
+    m.to_values(s);
   return s;
 }
 
 void ExplicitSolver::restore(const Vector& U, const std::vector<double>& state) {
   const Index n = model_.num_dofs(), cells = model_.num_cells();
-  const std::size_t expected = state_size(n, cells);
+  const std::size_t expected = state_size(n, cells, model_.bodies().size());
   TRIFEM_CHECK(state.size() == expected && U.size() == n,
                "the explicit integrator's state has {} values, this model's needs {}", state.size(),
                expected);
@@ -97,6 +102,15 @@ void ExplicitSolver::restore(const Vector& U, const std::vector<double>& state) 
     *v = Eigen::Map<const Vector>(at, size);
     at += size;
   }
+  if (!motions_.empty())
+    drive_work_ = *at++;
+  for (BodyMotion& m : motions_) {
+    m = BodyMotion::from_values(at);
+    at += BodyMotion::kValues;
+    TRIFEM_CHECK((m.R.transpose() * m.R - Mat3::Identity()).norm() <= 1e-9,
+                 "the explicit integrator's state holds a rigid body rotation that is not one");
+  }
+  trial_motions_ = motions_;
   update_end_forces();
   refactorize();
 }

@@ -37,6 +37,10 @@ void apply_stiffness(const ExplicitModel& model, Constraint constraint, const Ve
   for (Index c = 0; c < n; ++c) {
     if (!model.evaluates(c)) // (gather reads the cells of this process's nodes only)
       continue;
+    if (!model.deformable(c)) {
+      scratch[c].setZero();
+      continue;
+    }
     const physics::HexMatrix K = cell_stiffness(model, constraint, U, lambda, c);
     const fe::HexCoords vc = model.cell_values(c, v);
     CellVector ve;
@@ -59,6 +63,10 @@ public:
     for (Index c = 0; c < model.num_cells(); ++c) {
       if (!model.evaluates(c))
         continue;
+      if (!model.deformable(c)) { // H_e = 0: a row of its own
+        diagonal[c] = 1.0;
+        continue;
+      }
       Real d = 0.0;
       for (int a = 0; a < 8; ++a) {
         const Index node = model.mesh().cell(c)[a];
@@ -84,12 +92,12 @@ private:
   bool ok_ = false;
 };
 
-/// A deterministic, non-smooth start vector (zero on fixed DOFs): it has components along the
-/// high-frequency modes that the power iteration must find.
+/// A deterministic, non-smooth start vector (zero on fixed DOFs and those of rigid bodies): it has
+/// components along the high-frequency modes that the power iteration must find.
 Vector start_vector(const ExplicitModel& model) {
   Vector v(model.num_dofs());
   for (Index i = 0; i < model.num_dofs(); ++i)
-    v[i] = model.fixed()[i] ? 0.0 : std::sin(12.9898 * i + 78.233 * (i % 7)) + 0.1;
+    v[i] = model.inverse_mass()[i] == 0.0 ? 0.0 : std::sin(12.9898 * i + 78.233 * (i % 7)) + 0.1;
   return v;
 }
 
@@ -111,6 +119,8 @@ FrequencyEstimate power_iteration_omega(const ExplicitModel& model, Constraint c
   Vector v = start_vector(model), y;
   if (projector)
     projector->apply(v);
+  if (mass_norm(model, v) == 0.0) // nothing moves freely: no frequency of the mesh
+    return {0.0, 0, true};
   v /= mass_norm(model, v);
   std::vector<CellVector> scratch;
   FrequencyEstimate est;
@@ -139,6 +149,8 @@ FrequencyEstimate element_bound_omega(const ExplicitModel& model, Constraint con
   Real max_omega2 = 0.0;
 #pragma omp parallel for schedule(static) reduction(max : max_omega2) if (n >= kMinParallelLoop)
   for (Index c = 0; c < n; ++c) {
+    if (!model.deformable(c))
+      continue;
     const fe::HexGeometry& geo = model.geometry()[c];
     const physics::HexMatrix K = cell_stiffness(model, constraint, U, lambda, c);
     CellVector m = CellVector::Zero();

@@ -45,11 +45,37 @@ constexpr const char* kAxis[3] = {"x", "y", "z"};
 
 } // namespace
 
-Vector ExplicitSolver::explicit_force(const CellFields& f, const Vector& U, Real time) const {
+Vector ExplicitSolver::explicit_force(const CellFields& f, const Vector& U, Real time,
+                                      std::vector<BodyLoad>& body_loads) const {
   Vector q, fs;
   gather(model_, f.internal, nullptr, q);
-  model_.external_force(U, time, fs); // a follower pressure depends on U
+  model_.external_force(U, time, fs, motions_, &body_loads); // a follower pressure depends on U
   return fs - q;
+}
+
+void ExplicitSolver::move_bodies(const Vector& force, const std::vector<BodyLoad>& applied,
+                                 Real t_new, Vector& U) {
+  const std::vector<ExplicitBody>& bodies = model_.bodies();
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    BodyLoad load = nodal_load(bodies[b], motions_[b], force);
+    load.force += applied[b].force;
+    load.moment += applied[b].moment;
+    trial_motions_[b] = advance(bodies[b], motions_[b], load, model_.target(b, t_new), step_);
+    place(bodies[b], trial_motions_[b], U);
+  }
+}
+
+Real ExplicitSolver::body_work(const std::vector<BodyLoad>& applied_before) const {
+  const std::vector<ExplicitBody>& bodies = model_.bodies();
+  Real work = 0.0;
+  for (std::size_t b = 0; b < bodies.size(); ++b) { // motions_ at t_{n+1}: the step's travel
+    const BodyMotion& after = motions_[b];
+    const BodyLoad& old_load = applied_before[b];
+    const BodyLoad& new_load = body_loads_[b];
+    work += 0.5 * (old_load.force + new_load.force).dot(after.step) +
+            0.5 * (old_load.moment + new_load.moment).dot(after.turn);
+  }
+  return work + drive_work_;
 }
 
 StepReport ExplicitSolver::try_step(Real dt) {
@@ -57,6 +83,7 @@ StepReport ExplicitSolver::try_step(Real dt) {
   const Real beta = 1.0 + 0.5 * settings_.damping * dt_avg;
   const Real gamma = (1.0 - 0.5 * settings_.damping * dt_avg) / beta;
   const Real h2 = dt * dt_avg / beta;
+  step_ = {dt, dt_avg, beta, gamma, settings_.damping};
   Vector U_pred = U_ + (dt * gamma) * V_;
   if (model_.has_prescribed_motion()) // constrained DOFs move as prescribed (m⁻¹ = 0 there)
     model_.prescribe(time_ + dt, U_pred);
@@ -76,6 +103,10 @@ StepReport ExplicitSolver::try_step(Real dt) {
     force -= pressure;
   }
   Vector U = U_pred + h2 * model_.inverse_mass().cwiseProduct(force);
+  if (!motions_.empty()) {
+    body_force_ = force;
+    move_bodies(body_force_, body_loads_, time_ + dt, U);
+  }
   StepReport r = settings_.reading == Reading::A
                      ? iterate_forces(h2, U_pred, time_ + dt, U, lambda, work_)
                      : iterate_multiplier(h2, U_pred, U, lambda, work_);
@@ -143,9 +174,11 @@ StepReport ExplicitSolver::iterate_forces(Real h2, const Vector& U_pred, Real t_
     StepReport r;
     if (k > 0 && (converged(k, U, U_prev, lambda, fields, r, du_prev, growing) || !r.ok()))
       return r;
+    Vector force;
     {
       ScopedTimer timer(timings_.forces);
-      U_m = U_pred + h2 * minv.cwiseProduct(explicit_force(fields, U, t_new)); // A2.16
+      force = explicit_force(fields, U, t_new, trial_body_loads_);
+      U_m = U_pred + h2 * minv.cwiseProduct(force); // A2.16
     }
     U_prev = U;
     if (settings_.multiplier) {
@@ -159,9 +192,13 @@ StepReport ExplicitSolver::iterate_forces(Real h2, const Vector& U_pred, Real t_
       Vector pressure;
       gather(model_, fields.gradient, &lambda, pressure);
       U = U_m - h2 * minv.cwiseProduct(pressure); // A2.17
+      if (!motions_.empty())
+        force -= pressure;
     } else {
       U = U_m;
     }
+    if (!motions_.empty())
+      move_bodies(force, trial_body_loads_, t_new, U);
     if (const StepReport bad = check_finite(U, lambda); !bad.ok())
       return bad;
   }
@@ -173,9 +210,11 @@ StepReport ExplicitSolver::iterate_multiplier(Real h2, const Vector& U_pred, Vec
   const Vector U_m = U_pred + h2 * minv.cwiseProduct(f_ext_ - f_int_); // A2.16 at t_n
   if (!settings_.multiplier) {
     U = U_m;
+    if (!motions_.empty())
+      move_bodies(body_force_, body_loads_, time_ + step_.dt, U);
     return check_finite(U, lambda);
   }
-  const Vector U_0 = U, lambda_0 = lambda;
+  const Vector U_0 = U, lambda_0 = lambda, body_force_0 = body_force_;
   const bool stale = factorization_.age > 0;
   if (needs_factorization(h2) && !factorize_multiplier_matrix(h2))
     return factorization_failure();
@@ -184,6 +223,7 @@ StepReport ExplicitSolver::iterate_multiplier(Real h2, const Vector& U_pred, Vec
     // A reused factorization may be too far from A_n: retry once with a fresh one.
     U = U_0;
     lambda = lambda_0;
+    body_force_ = body_force_0;
     if (!factorize_multiplier_matrix(h2))
       return factorization_failure();
     r = multiplier_loop(h2, U, lambda, fields);
@@ -236,6 +276,10 @@ StepReport ExplicitSolver::multiplier_loop(Real h2, Vector& U, Vector& lambda, C
       gather(model_, fields_.gradient, &delta, pressure);
     }
     U -= h2 * minv.cwiseProduct(pressure); // A2.17 with H_n
+    if (!motions_.empty()) {
+      body_force_ -= pressure;
+      move_bodies(body_force_, body_loads_, time_ + step_.dt, U);
+    }
     if (const StepReport bad = check_finite(U, lambda); !bad.ok())
       return bad;
   }
@@ -276,7 +320,20 @@ void ExplicitSolver::commit(Real dt, Real dt_avg, Vector& U, Vector& lambda, Cel
     support = reaction_force(lambda);
   Vector V_new = (U - U_) / dt;
   const Vector v_mid = 0.5 * (V_ + V_new);
-  damping_work_ += settings_.damping * dt_avg * v_mid.cwiseAbs2().dot(model_.free_mass());
+  damping_work_ += settings_.damping * dt_avg * v_mid.cwiseAbs2().dot(model_.kinetic_mass());
+  std::vector<BodyLoad> applied_before;
+  if (!motions_.empty()) {
+    drive_work_ = 0.0;
+    const std::vector<ExplicitBody>& bodies = model_.bodies();
+    for (std::size_t b = 0; b < bodies.size(); ++b) {
+      BodyLoad load = nodal_load(bodies[b], motions_[b], body_force_);
+      load.force += body_loads_[b].force;
+      load.moment += body_loads_[b].moment;
+      drive_work_ += drive_work(bodies[b], motions_[b], trial_motions_[b], load, step_);
+    }
+    applied_before = body_loads_;
+    motions_.swap(trial_motions_);
+  }
   Vector f_ext_old = f_ext_;
   const Vector dU = U - U_;
   U_.swap(U);
@@ -292,6 +349,8 @@ void ExplicitSolver::commit(Real dt, Real dt_avg, Vector& U, Vector& lambda, Cel
     update_end_forces();
   }
   external_work_ += 0.5 * (f_ext_old + f_ext_).dot(dU);
+  if (!motions_.empty())
+    external_work_ += body_work(applied_before);
   if (model_.has_prescribed_motion()) { // the work of the supports that move the body
     if (settings_.reading == Reading::A)
       support = reaction_force();

@@ -26,7 +26,7 @@ void check_rigid_velocities(const Table& root) {
       if (b.find(key))
         fail(b.find(key), b.path(key),
              "only applies to dynamic analyses (the velocity at the start of the first "
-             "dynamic step; set [analysis] type = \"dynamic\")");
+             "dynamic step; set [analysis] type = \"dynamic\" or \"dynamic-explicit\")");
 }
 
 } // namespace
@@ -34,7 +34,8 @@ void check_rigid_velocities(const Table& root) {
 void read_dynamic(const Table& root, CaseSpec& spec) {
   const auto t = root.table("dynamic");
   if (!spec.has_dynamic_step()) {
-    check_rigid_velocities(root);
+    if (!spec.is_explicit() && !spec.has_explicit_step())
+      check_rigid_velocities(root);
     if (t)
       fail(t->where(), t->path(),
            "only applies to dynamic analyses (set [analysis] type = \"dynamic\", or analysis = "

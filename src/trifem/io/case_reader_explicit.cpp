@@ -115,7 +115,6 @@ void check_analysis_sections(const Table& root, const CaseSpec& spec) {
   if (const auto boundary = root.table("boundary"))
     check_explicit_boundary(*boundary);
   reject_tables(root, "contact", "contact needs the implicit solver");
-  reject_tables(root, "rigid_body", "use boundary.fixed for a clamped part");
   reject_tables(root, "connector", "connectors join rigid bodies, which need the implicit solver");
   reject_tables(root, "constraint", "constraints need the implicit solver (Lagrange multipliers)");
   if (const auto solver = root.table("solver"))

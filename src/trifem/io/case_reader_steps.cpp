@@ -79,7 +79,7 @@ void read_explicit_step_time(const Table& t, TimeSpec& s, Real start) {
 }
 
 /// What a dynamic-explicit step needs of the whole case: solid materials with a density, no
-/// contact, rigid bodies or conditions it cannot apply, and a step before it.
+/// contact or conditions it cannot apply, and a step before it.
 void check_explicit_step(const Table& t, const CaseSpec& spec,
                          const std::vector<StepSpec>& earlier) {
   if (earlier.empty())
@@ -102,9 +102,8 @@ void check_explicit_step(const Table& t, const CaseSpec& spec,
   }
   if (!spec.contacts.empty())
     explicit_step_error(t, "the case has [[contact]] pairs (contact needs the implicit solver)");
-  if (!spec.rigid_bodies.empty())
-    explicit_step_error(t, "the case has [[rigid_body]] tables (use boundary.fixed in the "
-                           "step for a clamped part)");
+  if (!spec.connectors.empty())
+    explicit_step_error(t, "the case has [[connector]] tables (joints need the implicit solver)");
   if (!spec.constraints.empty())
     explicit_step_error(t, "the case has [[constraint]] tables (constraints are imposed with "
                            "Lagrange multipliers, which need the implicit solver)");

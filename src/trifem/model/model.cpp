@@ -349,8 +349,11 @@ std::unique_ptr<Model> build_model(const io::CaseSpec& spec) {
   for (auto& t : constraint_terms(spec, *model, bcs)) // before the rigid bodies: may fix DOFs
     terms.push_back(std::move(t));
   RigidBodyParts rigid = rigid_bodies(spec, *model, bcs);
-  for (auto& t : rigid.loads) // before unused_dofs: connectors use their multipliers
+  for (auto& t : rigid.loads) {       // before unused_dofs: connectors use their multipliers
+    if (t.get() != model->connectors) // the bodies' forces and moments
+      model->loads.push_back(t.get());
     terms.push_back(std::move(t));
+  }
   bcs.push_back(unused_dofs(*model, terms, bcs));
   dofs::NodalFrames frames = impermeable_surfaces(spec, *model, bcs);
   check_frames_of_rotating_bodies(spec, *model, frames);
@@ -366,10 +369,10 @@ std::unique_ptr<Model> build_model(const io::CaseSpec& spec) {
                                                          std::move(terms), field_scales(*model),
                                                          std::move(frames), std::move(rigid.map));
   model->problem->set_node_positions(model->fields.u, model->mesh.nodes());
-  if (spec.has_dynamic_step()) {
+  if (spec.has_dynamic_step())
     model->problem->add_inertia(inertia_term(spec, *model));
+  if (spec.has_dynamic_step() || spec.is_explicit() || spec.has_explicit_step())
     model->initial_velocity = initial_rigid_velocity(spec, *model);
-  }
   if (model->mixture) {
     Vector x = model->problem->state();
     const auto kind = spec.analysis.initial_state == io::InitialStateKind::DonnanPrestressed

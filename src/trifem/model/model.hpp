@@ -108,8 +108,9 @@ struct Model {
   std::vector<dofs::FieldId> contact_fields;   ///< contact pressure of each [[contact]] pair
   std::vector<contact::ContactTerm*> contacts; ///< owned by problem
   std::unique_ptr<assembly::FeProblem> problem;
-  /// The external loads among the problem's terms (owned by it): the surface loads and baths of
-  /// the case, then the surface loads of the steps.
+  /// The external loads among the problem's terms (owned by it): the surface loads, body forces
+  /// and baths of the case, the forces and moments on the rigid bodies, then the surface loads
+  /// of the steps.
   std::vector<const physics::Term*> loads;
   std::vector<ReactionSet> reactions;
   std::vector<Probe> probes;

@@ -327,7 +327,10 @@ Vector initial_rigid_velocity(const io::CaseSpec& spec, const Model& model) {
 }
 
 Vec3 rigid_body_force(const Model& model, const RigidBody& b, Real time) {
-  const Vector& R = model.problem->full_residual();
+  return rigid_body_force(b, time, model.problem->full_residual());
+}
+
+Vec3 rigid_body_force(const RigidBody& b, Real time, const Vector& R) {
   Vec3 f = Vec3::Zero();
   for (int k = 0; k < 3; ++k) {
     if (!b.tied[k])
@@ -356,9 +359,12 @@ Vec3 rigid_body_rotation(const Model& model, const RigidBody& b) {
 }
 
 Vec3 rigid_body_moment(const Model& model, const RigidBody& b) {
+  return rigid_body_moment(model, b, model.problem->full_residual());
+}
+
+Vec3 rigid_body_moment(const Model& model, const RigidBody& b, const Vector& R) {
   const dofs::RigidBodyDofs& r = model.problem->rigid_map().bodies()[b.rotating];
   const Vector& x = model.problem->state();
-  const Vector& R = model.problem->full_residual();
   const Vec3 center =
       r.centre + Vec3(x[r.translation[0]], x[r.translation[1]], x[r.translation[2]]);
   Vec3 m = Vec3::Zero();

@@ -42,6 +42,8 @@ void check_frames_of_rotating_bodies(const io::CaseSpec& spec, const Model& mode
 /// force of force-driven components at equilibrium and is the reaction of displacement-driven
 /// ones (the same sign convention as [[output.reaction]]).
 Vec3 rigid_body_force(const Model& model, const RigidBody& b, Real time);
+/// rigid_body_force with the residual `R` of every DOF (e.g. an explicit step's reactions).
+Vec3 rigid_body_force(const RigidBody& b, Real time, const Vector& R);
 
 /// The translation of rigid body `b` [mm] (of its center if it rotates; 0 in the components
 /// it does not tie).
@@ -53,5 +55,7 @@ Vec3 rigid_body_rotation(const Model& model, const RigidBody& b);
 /// The moment a rotating rigid body applies to the tissue about its current center [N mm]:
 /// Σ (x_a − x_c) × R_a over its nodes (the sign convention of rigid_body_force).
 Vec3 rigid_body_moment(const Model& model, const RigidBody& b);
+/// rigid_body_moment with the residual `R` of every DOF.
+Vec3 rigid_body_moment(const Model& model, const RigidBody& b, const Vector& R);
 
 } // namespace trifem::model

@@ -36,7 +36,7 @@ public:
   /// move with it (bodies()). `shells`: the mass elements of the bodies' shells. Throws
   /// InputError if a solid cell has no density, a cell is a mixture's, a free node belongs to
   /// no cell, a cell is inverted, the model has rigid connectors, or a body's drive is not one
-  /// the explicit integrator takes (docs/theory/explicit.md §7).
+  /// the explicit integrator takes (docs/theory/explicit.md §9).
   explicit ExplicitModel(const model::Model& model,
                          const std::vector<physics::MassElement>& shells = {});
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Rigid bodies in the explicit scheme (docs/theory/explicit.md §7): the nodes a body carries
+// Rigid bodies in the explicit scheme (docs/theory/explicit.md §9): the nodes a body carries
 // have no equation of their own; the body's pivot translates and the body turns under the
 // resultant and the moment of the forces on its nodes, by central differences of the
 // translation and of the angular momentum (the rotation by the exponential map of the

@@ -180,12 +180,21 @@ StepReport ExplicitSolver::iterate_forces(Real h2, const Vector& U_pred, Real t_
       force = explicit_force(fields, U, t_new, trial_body_loads_);
       U_m = U_pred + h2 * minv.cwiseProduct(force); // A2.16
     }
+    if (!motions_.empty()) // the bodies under the same forces, as the nodes
+      move_bodies(force, trial_body_loads_, t_new, U_m);
     U_prev = U;
     if (settings_.multiplier) {
       if (!system_->factorize(fields.gradient, minv, h2, multiplier_diagonal()))
         return factorization_failure();
-      Vector HtdU;
-      cell_dot(model_, fields.gradient, U - U_m, HtdU);
+      Vector HtdU, dU = U - U_m;
+      // A2.21 leaves out the bodies' mobility (M⁻¹ = 0 on their nodes), so must its right-hand
+      // side: the bodies follow Λ by iteration, and the fixed point is Ψ = ΓΛ/α
+      for (const ExplicitBody& body : model_.bodies())
+        for (Index a : body.nodes)
+          for (int k = 0; k < 3; ++k)
+            if (body.moves[k])
+              dU[3 * a + k] = 0.0;
+      cell_dot(model_, fields.gradient, dU, HtdU);
       system_->solve(fields.psi - HtdU, lambda); // A2.21
       if (const StepReport bad = check_finite(U_m, lambda); !bad.ok())
         return bad;
@@ -197,8 +206,10 @@ StepReport ExplicitSolver::iterate_forces(Real h2, const Vector& U_pred, Real t_
     } else {
       U = U_m;
     }
-    if (!motions_.empty())
-      move_bodies(force, trial_body_loads_, t_new, U);
+    if (!motions_.empty()) { // (the forces of the last iterate: the drives' work)
+      body_force_ = std::move(force);
+      move_bodies(body_force_, trial_body_loads_, t_new, U);
+    }
     if (const StepReport bad = check_finite(U, lambda); !bad.ok())
       return bad;
   }

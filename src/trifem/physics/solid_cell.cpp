@@ -1,0 +1,85 @@
+// SPDX-License-Identifier: MIT
+#include "trifem/physics/solid_cell.hpp"
+
+namespace trifem::physics {
+namespace {
+
+/// The rows of {dE} = B_a {du_a} of node a with ∇N_a = g (strain-like Voigt rows).
+Eigen::Matrix<Real, 6, 3> node_strain_displacement(const Mat3& F, const Vec3& g) {
+  Eigen::Matrix<Real, 6, 3> B;
+  for (int k = 0; k < 3; ++k) {
+    B(0, k) = F(k, 0) * g[0];
+    B(1, k) = F(k, 1) * g[1];
+    B(2, k) = F(k, 2) * g[2];
+    B(3, k) = F(k, 0) * g[1] + F(k, 1) * g[0];
+    B(4, k) = F(k, 1) * g[2] + F(k, 2) * g[1];
+    B(5, k) = F(k, 0) * g[2] + F(k, 2) * g[0];
+  }
+  return B;
+}
+
+/// Adds the material and geometric stiffness of one point to K.
+void add_point_tangent(const fe::ShapeGrads& g, const Mat3& F, const material::StressTangent& st,
+                       Real dV, CellMatrixX& K) {
+  const Index n = g.rows();
+  Eigen::Matrix<Real, 6, Eigen::Dynamic, 0, 6, kMaxCellDofs> DB(6, 3 * n);
+  Eigen::Matrix<Real, 6, Eigen::Dynamic, 0, 6, kMaxCellDofs> B(6, 3 * n);
+  for (Index a = 0; a < n; ++a)
+    B.middleCols<3>(3 * a) = node_strain_displacement(F, g.row(a).transpose());
+  DB.noalias() = (st.D * dV) * B;
+  K.noalias() += B.transpose() * DB;
+  for (Index a = 0; a < n; ++a)
+    for (Index b = 0; b < n; ++b) {
+      const Real geometric = g.row(a).dot(st.S * g.row(b).transpose()) * dV;
+      for (int k = 0; k < 3; ++k)
+        K(3 * a + k, 3 * b + k) += geometric;
+    }
+}
+
+} // namespace
+
+std::optional<CellGeometry> cell_geometry(const fe::ReferenceCell& reference,
+                                          const fe::CellNodeCoords& X) {
+  CellGeometry geo;
+  geo.reference = &reference;
+  for (const fe::CellQuadraturePoint& p : reference.rule().points) {
+    const fe::ShapeGrads dN = reference.shape_grad(p.xi);
+    const Mat3 J = X.transpose() * dN; // dX/dxi
+    const Real det = J.determinant();
+    if (!(det > 0.0))
+      return std::nullopt;
+    geo.dN_dX.push_back(dN * J.inverse());
+    geo.dV.push_back(det * p.weight);
+  }
+  return geo;
+}
+
+bool solid_cell(const CellGeometry& geo, const fe::CellNodeCoords& u,
+                const material::ElasticLaw& law, CellVectorX& f, CellMatrixX* K) {
+  const Index n = geo.num_nodes();
+  f.setZero(3 * n);
+  if (K)
+    K->setZero(3 * n, 3 * n);
+  for (std::size_t q = 0; q < geo.dV.size(); ++q) {
+    const fe::ShapeGrads& g = geo.dN_dX[q];
+    const Mat3 F = Mat3::Identity() + u.transpose() * g;
+    if (!(F.determinant() > 0.0))
+      return false;
+    const Mat3 C = F.transpose() * F;
+    const Real dV = geo.dV[q];
+    if (!K) {
+      const Mat3 P = F * law.stress(C);
+      for (Index a = 0; a < n; ++a)
+        f.segment<3>(3 * a) += P * g.row(a).transpose() * dV;
+      continue;
+    }
+    const material::StressTangent st = law.stress_tangent(C);
+    const Mat3 P = F * st.S;
+    for (Index a = 0; a < n; ++a)
+      f.segment<3>(3 * a) += P * g.row(a).transpose() * dV;
+    add_point_tangent(g, F, st, dV, *K);
+  }
+  return true;
+}
+
+} // namespace trifem::physics

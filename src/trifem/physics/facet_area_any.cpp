@@ -1,0 +1,31 @@
+// SPDX-License-Identifier: MIT
+#include "trifem/physics/facet_area_any.hpp"
+
+#include "trifem/tensor/rotation.hpp"
+
+namespace trifem::physics {
+
+FacetVectorX facet_area_vectors(const fe::ReferenceFacet& reference, const FacetPositions& x,
+                                FacetMatrixX* derivative) {
+  const Index n = reference.num_nodes();
+  FacetVectorX a = FacetVectorX::Zero(3 * n);
+  if (derivative)
+    derivative->setZero(3 * n, 3 * n);
+  for (const fe::FacetQuadraturePoint& p : reference.rule().points) {
+    const fe::FacetShapeValues N = reference.shape(p.xi);
+    const fe::FacetShapeGrads dN = reference.shape_grad(p.xi);
+    const Vec3 t1 = x.transpose() * dN.col(0), t2 = x.transpose() * dN.col(1);
+    const Vec3 r = t1.cross(t2) * p.weight;
+    for (Index i = 0; i < n; ++i) {
+      a.segment<3>(3 * i) += N[i] * r;
+      if (!derivative)
+        continue;
+      for (Index b = 0; b < n; ++b)
+        derivative->block<3, 3>(3 * i, 3 * b) +=
+            N[i] * p.weight * (dN(b, 1) * rotation::skew(t1) - dN(b, 0) * rotation::skew(t2));
+    }
+  }
+  return a;
+}
+
+} // namespace trifem::physics

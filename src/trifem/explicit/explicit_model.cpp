@@ -48,6 +48,7 @@ ExplicitModel::ExplicitModel(const model::Model& model,
   inverse_mass_.resize(num_dofs());
   free_mass_.resize(num_dofs());
   kinetic_mass_.resize(num_dofs());
+  frequency_inverse_mass_.resize(num_dofs());
   std::vector<char> carried(num_dofs(), 0);
   for (const ExplicitBody& b : bodies_)
     for (Index a : b.nodes)
@@ -60,6 +61,7 @@ ExplicitModel::ExplicitModel(const model::Model& model,
     inverse_mass_[i] = free ? 1.0 / mass_[i] : 0.0;
     free_mass_[i] = free ? mass_[i] : 0.0;
     kinetic_mass_[i] = fixed_[i] ? 0.0 : mass_[i];
+    frequency_inverse_mass_[i] = fixed_[i] || mass_[i] == 0.0 ? 0.0 : 1.0 / mass_[i];
   }
   set_deformable();
   build_incidence();

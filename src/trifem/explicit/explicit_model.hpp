@@ -63,6 +63,10 @@ public:
   const Vector& free_mass() const { return free_mass_; }
   /// 1/m per DOF, 0 on fixed DOFs (the forces do not move them) [1/t].
   const Vector& inverse_mass() const { return inverse_mass_; }
+  /// 1/m per DOF of every node with a mass that is not constrained, those of the rigid bodies
+  /// included as if they were free: the frequencies of the mesh without the bodies' rigidity
+  /// bound those with it from above, so the stable step estimated with it is safe [1/t].
+  const Vector& frequency_inverse_mass() const { return frequency_inverse_mass_; }
   /// true for DOFs the model constrains (fixed or prescribed).
   const std::vector<char>& fixed() const { return fixed_; }
   /// The lumped mass of the DOFs whose motion the kinetic energy counts: the free DOFs and those
@@ -147,6 +151,7 @@ private:
   std::vector<Index> local_; ///< 3 a + k of the model's displacement DOFs (−1: other fields)
   std::vector<fe::HexGeometry> geometry_;
   Vector volumes_, lengths_, mass_, free_mass_, inverse_mass_, kinetic_mass_;
+  Vector frequency_inverse_mass_;
   std::vector<char> fixed_, deformable_;
   std::vector<ExplicitBody> bodies_;
   std::vector<int> rotating_; ///< per body: its index among the model's rotating bodies (−1)

@@ -70,11 +70,12 @@ public:
       Real d = 0.0;
       for (int a = 0; a < 8; ++a) {
         const Index node = model.mesh().cell(c)[a];
-        d += h_[c].segment<3>(3 * a).cwiseAbs2().dot(model.inverse_mass().segment<3>(3 * node));
+        d += h_[c].segment<3>(3 * a).cwiseAbs2().dot(
+            model.frequency_inverse_mass().segment<3>(3 * node));
       }
       diagonal[c] = 1e-10 * d;
     }
-    ok_ = system_.factorize(h_, model.inverse_mass(), 1.0, diagonal);
+    ok_ = system_.factorize(h_, model.frequency_inverse_mass(), 1.0, diagonal);
   }
   bool ok() const { return ok_; }
   void apply(Vector& w) {
@@ -82,7 +83,7 @@ public:
     cell_dot(model_, h_, w, rhs);
     system_.solve(rhs, mu);
     gather(model_, h_, &mu, Hmu);
-    w -= model_.inverse_mass().cwiseProduct(Hmu);
+    w -= model_.frequency_inverse_mass().cwiseProduct(Hmu);
   }
 
 private:
@@ -97,7 +98,9 @@ private:
 Vector start_vector(const ExplicitModel& model) {
   Vector v(model.num_dofs());
   for (Index i = 0; i < model.num_dofs(); ++i)
-    v[i] = model.inverse_mass()[i] == 0.0 ? 0.0 : std::sin(12.9898 * i + 78.233 * (i % 7)) + 0.1;
+    v[i] = model.frequency_inverse_mass()[i] == 0.0
+               ? 0.0
+               : std::sin(12.9898 * i + 78.233 * (i % 7)) + 0.1;
   return v;
 }
 
@@ -134,7 +137,7 @@ FrequencyEstimate power_iteration_omega(const ExplicitModel& model, Constraint c
       break;
     }
     previous = omega2;
-    v = model.inverse_mass().cwiseProduct(y);
+    v = model.frequency_inverse_mass().cwiseProduct(y);
     if (projector)
       projector->apply(v);
     v /= mass_norm(model, v);

@@ -166,6 +166,18 @@ void ExplicitSolver::choose_time_step() {
   dt_current_ = dt_current_ > 0.0 ? std::min(dt_current_, info.used) : info.used;
 }
 
+StepReport ExplicitSolver::with_stable_step_hint(StepReport r) const {
+  // a run that had to halve its steps before it diverged: the estimate fell behind
+  const bool diverged = r.status == StepStatus::TooManyHalvings ||
+                        (r.status == StepStatus::NonFinite && halvings_ > 0);
+  if (diverged && settings_.stable_step_interval == 0 &&
+      settings_.stable_step != StableStepMethod::None)
+    r.message += ". The stable step was estimated once, at the start: a body that deforms much "
+                 "stiffens and needs it re-estimated (set explicit.stable_step_interval, e.g. "
+                 "50 steps)";
+  return r;
+}
+
 StepReport ExplicitSolver::fatal(StepStatus status, const std::string& what) const {
   StepReport r;
   r.status = status;
@@ -208,14 +220,15 @@ StepReport ExplicitSolver::step(Real t_end) {
     const bool retry =
         r.status == StepStatus::NotConverged || r.status == StepStatus::NegativeJacobian;
     if (!retry)
-      return r;
+      return with_stable_step_hint(r);
     if (++halvings > settings_.max_halvings) {
       r.status = StepStatus::TooManyHalvings;
       r.message += fmt::format(" (given up after {} halvings of the step)", settings_.max_halvings);
-      return r;
+      return with_stable_step_hint(r);
     }
     log::warn("explicit: {}; repeating with dt = {:.6g} s", r.message, 0.5 * dt_current_);
     dt_current_ *= 0.5;
+    ++halvings_;
     successes_since_halving_ = 0;
   }
 }

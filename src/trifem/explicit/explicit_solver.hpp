@@ -184,6 +184,8 @@ private:
   /// Q_V + H Λ − F_S at U^n with the multiplier `lambda`.
   Vector reaction_force(const Vector& lambda) const;
   StepReport fatal(StepStatus status, const std::string& what) const;
+  /// `r` with a hint at stable_step_interval if the run diverged on a step estimated only once.
+  StepReport with_stable_step_hint(StepReport r) const;
 
   const ExplicitModel& model_;
   ExplicitSettings settings_;
@@ -204,6 +206,7 @@ private:
   Real time_ = 0.0, dt_prev_ = 0.0, dt_current_ = 0.0;
   long step_count_ = 0, total_iterations_ = 0;
   int successes_since_halving_ = 0;
+  long halvings_ = 0; ///< of this solver (not kept by restart files)
   Real external_work_ = 0.0, damping_work_ = 0.0;
   Real initial_energy_ = 0.0; ///< kinetic + strain at t0
   TimeStepInfo dt_info_;

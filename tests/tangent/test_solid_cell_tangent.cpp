@@ -2,39 +2,17 @@
 // Finite-difference checks of the solid element of every cell family (physics/solid_cell.hpp)
 // for every registered law, on distorted cells at random deformed states: the force is the
 // gradient of the stored energy and the tangent the Jacobian of the force.
+#include "cell_families.hpp"
 #include "trifem/material/registry.hpp"
 #include "trifem/physics/solid_cell.hpp"
 
 #include <gtest/gtest.h>
 
-#include <random>
-
 using namespace trifem;
+using test::kCellFamilies;
+using test::Noise;
 
 namespace {
-
-constexpr fe::CellType kFamilies[] = {fe::CellType::Tet4, fe::CellType::Tet10, fe::CellType::Penta6,
-                                      fe::CellType::Hex8, fe::CellType::Hex20};
-
-/// Uniform numbers in [-1, 1] from a fixed seed (the same sequence on every platform).
-class Noise {
-public:
-  explicit Noise(unsigned seed) : engine_(seed) {}
-  Real next() { return 2.0 * static_cast<Real>(engine_()) / engine_.max() - 1.0; }
-
-private:
-  std::mt19937 engine_;
-};
-
-/// The reference nodes of `type` moved by up to 8 % of the cell size (a valid cell).
-fe::CellNodeCoords distorted_cell(fe::CellType type, unsigned seed) {
-  Noise noise(seed);
-  fe::CellNodeCoords X = fe::reference_cell(type).nodes();
-  for (Index a = 0; a < X.rows(); ++a)
-    for (int k = 0; k < 3; ++k)
-      X(a, k) += 0.08 * noise.next();
-  return X;
-}
 
 fe::CellNodeCoords as_rows(const Eigen::VectorXd& v) {
   fe::CellNodeCoords u(v.size() / 3, 3);
@@ -57,12 +35,13 @@ Real stored_energy(const physics::CellGeometry& geo, const fe::CellNodeCoords& u
 } // namespace
 
 TEST(SolidCell, ForceIsTheGradientOfTheEnergyAndTangentTheJacobianOfTheForce) {
-  for (const fe::CellType type : kFamilies)
+  for (const fe::CellType type : kCellFamilies)
     for (const auto& entry : material::registered_laws()) {
       SCOPED_TRACE(::testing::Message()
                    << "cell type " << static_cast<int>(type) << ", law " << entry.type);
       const auto law = material::create_law(entry.type, entry.example, "m");
-      const auto geo = physics::cell_geometry(fe::reference_cell(type), distorted_cell(type, 7));
+      const auto geo =
+          physics::cell_geometry(fe::reference_cell(type), test::distorted_cell(type, 7, 0.08));
       ASSERT_TRUE(geo.has_value());
       const Index n = 3 * geo->num_nodes();
       Noise noise(11);

@@ -94,6 +94,7 @@ void ExplicitSolver::initialize(const InitialState& initial) {
                "explicit: the initial state has {} rigid bodies, the model {}", motions_.size(),
                model_.bodies().size());
   trial_motions_ = motions_;
+  targets_.assign(motions_.size(), BodyTarget{});
   for (std::size_t b = 0; b < motions_.size(); ++b)
     place(model_.bodies()[b], motions_[b], U_);
   lambda_ = Vector::Zero(model_.num_cells());

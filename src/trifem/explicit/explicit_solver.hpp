@@ -172,10 +172,9 @@ private:
   /// F_S − Q_V at U and `time`; the loads applied to the bodies into `body_loads`.
   Vector explicit_force(const CellFields& f, const Vector& U, Real time,
                         std::vector<BodyLoad>& body_loads) const;
-  /// Moves the bodies through the step under the nodal forces `force` and the loads `applied`
-  /// (into trial_motions_) and writes their nodes into U.
-  void move_bodies(const Vector& force, const std::vector<BodyLoad>& applied, Real t_new,
-                   Vector& U);
+  /// Moves the bodies through the step to their drives' targets_ under the nodal forces `force`
+  /// and the loads `applied` (into trial_motions_) and writes their nodes into U.
+  void move_bodies(const Vector& force, const std::vector<BodyLoad>& applied, Vector& U);
   /// The work of the bodies' drives over the step to trial_motions_ and of their applied loads.
   Real body_work(const std::vector<BodyLoad>& applied_before) const;
   Real inverse_penalty() const;
@@ -198,6 +197,7 @@ private:
   std::vector<BodyMotion> trial_motions_;  ///< at t_{n+1} in the current iterate
   std::vector<BodyLoad> body_loads_;       ///< applied to the bodies at t_n
   std::vector<BodyLoad> trial_body_loads_; ///< applied at t_{n+1} (reading A)
+  std::vector<BodyTarget> targets_;        ///< the bodies' drives at t_{n+1} of the step tried
   Vector body_force_;     ///< the nodal forces that move the bodies in the current iterate
   StepCoefficients step_; ///< of the step being tried
   Real drive_work_ = 0.0; ///< the bodies' drives' work over the last step

@@ -54,13 +54,13 @@ Vector ExplicitSolver::explicit_force(const CellFields& f, const Vector& U, Real
 }
 
 void ExplicitSolver::move_bodies(const Vector& force, const std::vector<BodyLoad>& applied,
-                                 Real t_new, Vector& U) {
+                                 Vector& U) {
   const std::vector<ExplicitBody>& bodies = model_.bodies();
   for (std::size_t b = 0; b < bodies.size(); ++b) {
     BodyLoad load = nodal_load(bodies[b], motions_[b], force);
     load.force += applied[b].force;
     load.moment += applied[b].moment;
-    trial_motions_[b] = advance(bodies[b], motions_[b], load, model_.target(b, t_new), step_);
+    trial_motions_[b] = advance(bodies[b], motions_[b], load, targets_[b], step_);
     place(bodies[b], trial_motions_[b], U);
   }
 }
@@ -84,6 +84,8 @@ StepReport ExplicitSolver::try_step(Real dt) {
   const Real gamma = (1.0 - 0.5 * settings_.damping * dt_avg) / beta;
   const Real h2 = dt * dt_avg / beta;
   step_ = {dt, dt_avg, beta, gamma, settings_.damping};
+  for (std::size_t b = 0; b < targets_.size(); ++b) // the drives at t_{n+1}, once per try
+    targets_[b] = model_.target(b, time_ + dt);
   Vector U_pred = U_ + (dt * gamma) * V_;
   if (model_.has_prescribed_motion()) // constrained DOFs move as prescribed (m⁻¹ = 0 there)
     model_.prescribe(time_ + dt, U_pred);
@@ -105,7 +107,7 @@ StepReport ExplicitSolver::try_step(Real dt) {
   Vector U = U_pred + h2 * model_.inverse_mass().cwiseProduct(force);
   if (!motions_.empty()) {
     body_force_ = force;
-    move_bodies(body_force_, body_loads_, time_ + dt, U);
+    move_bodies(body_force_, body_loads_, U);
   }
   StepReport r = settings_.reading == Reading::A
                      ? iterate_forces(h2, U_pred, time_ + dt, U, lambda, work_)
@@ -181,7 +183,7 @@ StepReport ExplicitSolver::iterate_forces(Real h2, const Vector& U_pred, Real t_
       U_m = U_pred + h2 * minv.cwiseProduct(force); // A2.16
     }
     if (!motions_.empty()) // the bodies under the same forces, as the nodes
-      move_bodies(force, trial_body_loads_, t_new, U_m);
+      move_bodies(force, trial_body_loads_, U_m);
     U_prev = U;
     if (settings_.multiplier) {
       if (!system_->factorize(fields.gradient, minv, h2, multiplier_diagonal()))
@@ -208,7 +210,7 @@ StepReport ExplicitSolver::iterate_forces(Real h2, const Vector& U_pred, Real t_
     }
     if (!motions_.empty()) { // (the forces of the last iterate: the drives' work)
       body_force_ = std::move(force);
-      move_bodies(body_force_, trial_body_loads_, t_new, U);
+      move_bodies(body_force_, trial_body_loads_, U);
     }
     if (const StepReport bad = check_finite(U, lambda); !bad.ok())
       return bad;
@@ -222,7 +224,7 @@ StepReport ExplicitSolver::iterate_multiplier(Real h2, const Vector& U_pred, Vec
   if (!settings_.multiplier) {
     U = U_m;
     if (!motions_.empty())
-      move_bodies(body_force_, body_loads_, time_ + step_.dt, U);
+      move_bodies(body_force_, body_loads_, U);
     return check_finite(U, lambda);
   }
   const Vector U_0 = U, lambda_0 = lambda, body_force_0 = body_force_;
@@ -289,7 +291,7 @@ StepReport ExplicitSolver::multiplier_loop(Real h2, Vector& U, Vector& lambda, C
     U -= h2 * minv.cwiseProduct(pressure); // A2.17 with H_n
     if (!motions_.empty()) {
       body_force_ -= pressure;
-      move_bodies(body_force_, body_loads_, time_ + step_.dt, U);
+      move_bodies(body_force_, body_loads_, U);
     }
     if (const StepReport bad = check_finite(U, lambda); !bad.ok())
       return bad;

@@ -3,42 +3,19 @@
 // do not use them: a closed surface (the facets of a curved, distorted cell) has ∮ n da = 0 and
 // ∮ x × n da = 0, a flat triangle's area vectors sum to its area times its normal, the quad4
 // family is the quad4 function, and the derivative is that of finite differences.
+#include "cell_families.hpp"
 #include "trifem/physics/facet_area.hpp"
 #include "trifem/physics/facet_area_any.hpp"
 
 #include <gtest/gtest.h>
 
-#include <random>
-
 using namespace trifem;
+using test::Noise;
 
 namespace {
 
-constexpr fe::CellType kClosedCells[] = {fe::CellType::Tet4, fe::CellType::Tet10,
-                                         fe::CellType::Penta6, fe::CellType::Hex8,
-                                         fe::CellType::Hex20};
 constexpr fe::FacetType kFacets[] = {fe::FacetType::Tri3, fe::FacetType::Tri6, fe::FacetType::Quad4,
                                      fe::FacetType::Quad8};
-
-/// Uniform numbers in [-1, 1] from a fixed seed (the same on every platform).
-class Noise {
-public:
-  explicit Noise(unsigned seed) : engine_(seed) {}
-  Real next() { return 2.0 * static_cast<Real>(engine_()) / engine_.max() - 1.0; }
-
-private:
-  std::mt19937 engine_;
-};
-
-/// The nodes of a reference cell moved by up to 10 % (mid-edge nodes too: curved facets).
-fe::CellNodeCoords distorted(fe::CellType type, unsigned seed) {
-  Noise noise(seed);
-  fe::CellNodeCoords X = fe::reference_cell(type).nodes();
-  for (Index a = 0; a < X.rows(); ++a)
-    for (int k = 0; k < 3; ++k)
-      X(a, k) += 0.1 * noise.next();
-  return X;
-}
 
 physics::FacetPositions facet_positions(const fe::CellNodeCoords& X, const fe::CellFacet& f) {
   physics::FacetPositions x(static_cast<Index>(f.nodes.size()), 3);
@@ -50,8 +27,8 @@ physics::FacetPositions facet_positions(const fe::CellNodeCoords& X, const fe::C
 } // namespace
 
 TEST(FacetAreaVectors, AClosedSurfaceHasNoNetAreaAndNoNetMoment) {
-  for (const fe::CellType type : kClosedCells) {
-    const fe::CellNodeCoords X = distorted(type, 3);
+  for (const fe::CellType type : test::kCellFamilies) {
+    const fe::CellNodeCoords X = test::distorted_cell(type, 3, 0.1);
     Vec3 area = Vec3::Zero(), moment = Vec3::Zero(), gross = Vec3::Zero();
     for (const fe::CellFacet& facet : fe::reference_cell(type).facets()) {
       const physics::FacetPositions x = facet_positions(X, facet);

@@ -3,6 +3,7 @@
 // use it: the nodal forces of a homogeneous stress are its tractions integrated over the
 // cell's facets (divergence theorem, with the facets' own shape functions and rules), a rigid
 // rotation loads no node, the hex8 family is the hex8 kernel, and an inverted cell is refused.
+#include "cell_families.hpp"
 #include "trifem/material/registry.hpp"
 #include "trifem/physics/solid_cell.hpp"
 #include "trifem/physics/solid_kernel.hpp"
@@ -13,9 +14,6 @@
 using namespace trifem;
 
 namespace {
-
-constexpr fe::CellType kFamilies[] = {fe::CellType::Tet4, fe::CellType::Tet10, fe::CellType::Penta6,
-                                      fe::CellType::Hex8, fe::CellType::Hex20};
 
 std::unique_ptr<material::ElasticLaw> neo_hookean() {
   return material::create_law("neo-hookean", {{"E", 2.0}, {"nu", 0.3}}, "test");
@@ -61,7 +59,7 @@ TEST(SolidCell, TheForcesOfAHomogeneousStressAreItsTractionsOnTheFacets) {
   const auto law = neo_hookean();
   Mat3 F;
   F << 1.1, 0.05, 0.0, -0.03, 0.95, 0.1, 0.02, 0.0, 1.05;
-  for (const fe::CellType type : kFamilies) {
+  for (const fe::CellType type : test::kCellFamilies) {
     SCOPED_TRACE(static_cast<int>(type));
     const fe::CellNodeCoords X = affine_cell(type);
     const auto geo = physics::cell_geometry(fe::reference_cell(type), X);
@@ -79,7 +77,7 @@ TEST(SolidCell, TheForcesOfAHomogeneousStressAreItsTractionsOnTheFacets) {
 TEST(SolidCell, ARigidRotationLoadsNoNode) {
   const auto law = neo_hookean();
   const Mat3 R = rotation::matrix(Vec3(0.3, -0.7, 1.1));
-  for (const fe::CellType type : kFamilies) {
+  for (const fe::CellType type : test::kCellFamilies) {
     const fe::CellNodeCoords X = affine_cell(type);
     const auto geo = physics::cell_geometry(fe::reference_cell(type), X);
     ASSERT_TRUE(geo.has_value());
@@ -117,7 +115,7 @@ TEST(SolidCell, TheHex8FamilyIsTheHex8Kernel) {
 }
 
 TEST(SolidCell, AnInvertedCellHasNoGeometry) {
-  for (const fe::CellType type : kFamilies) {
+  for (const fe::CellType type : test::kCellFamilies) {
     fe::CellNodeCoords X = affine_cell(type);
     X.col(2) *= -1.0; // mirrored: det(dX/dxi) < 0 everywhere
     EXPECT_FALSE(physics::cell_geometry(fe::reference_cell(type), X).has_value())

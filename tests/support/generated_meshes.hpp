@@ -43,8 +43,8 @@ inline mesh::Mesh transform_nodes(const mesh::Mesh& in,
   mesh::Mesh out;
   for (const Vec3& X : in.nodes())
     out.add_node(map(X));
-  for (const mesh::Hex8& c : in.cells())
-    out.add_cell(c);
+  for (Index c = 0; c < in.num_cells(); ++c)
+    out.add_cell(in.cell_type(c), in.cell_nodes(c));
   for (const auto& [name, nodes] : in.node_sets())
     if (!in.has_surface(name))
       out.add_node_set(name, nodes);

@@ -24,8 +24,8 @@ mesh::Mesh distorted_block() {
       x += 0.08 * Vec3::Random();
     out.add_node(x);
   }
-  for (const auto& c : box.cells())
-    out.add_cell(c);
+  for (Index c = 0; c < box.num_cells(); ++c)
+    out.add_cell(box.cell_type(c), box.cell_nodes(c));
   std::vector<Index> boundary;
   for (const auto& f : box.boundary_facets())
     boundary.insert(boundary.end(), f.nodes.begin(), f.nodes.end());

@@ -6,7 +6,7 @@
 namespace trifem::analysis {
 
 Mat3 centre_deformation_gradient(const model::Model& model, Index cell, const Vector& x) {
-  const auto& nodes = model.mesh.cells()[static_cast<std::size_t>(cell)];
+  const mesh::Hex8 nodes = model.mesh.cell(cell);
   fe::HexCoords X, u;
   for (int a = 0; a < 8; ++a) {
     X.row(a) = model.mesh.node(nodes[a]).transpose();

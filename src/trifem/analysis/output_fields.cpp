@@ -32,7 +32,7 @@ io::DataArray nodal_average(const model::Model& model, const io::DataArray& cell
   io::DataArray a = array(std::move(name), 1, n);
   std::vector<int> count(n, 0);
   for (Index c = 0; c < model.mesh.num_cells(); ++c)
-    for (Index node : model.mesh.cell(c)) {
+    for (Index node : model.mesh.cell_nodes(c)) {
       a.values[node] += cells.values[c];
       ++count[node];
     }

@@ -10,6 +10,7 @@
 #include "trifem/core/error.hpp"
 #include "trifem/core/log.hpp"
 #include "trifem/core/timer.hpp"
+#include "trifem/fe/reference_element.hpp"
 #include "trifem/io/pvtu_writer.hpp"
 #include "trifem/io/vtu_writer.hpp"
 #include "trifem/parallel/communicator.hpp"
@@ -97,8 +98,15 @@ void add_body_columns(const MassBalance& balance, std::vector<std::string>& cols
 io::UnstructuredGrid volume_grid(const model::Model& model) {
   io::UnstructuredGrid grid;
   grid.points = model.mesh.nodes();
-  for (const auto& cell : model.mesh.cells())
-    grid.add_cell(io::vtk_cell::kHexahedron, cell);
+  std::vector<Index> vtk_nodes;
+  for (Index c = 0; c < model.mesh.num_cells(); ++c) {
+    const fe::ReferenceCell& reference = fe::reference_cell(model.mesh.cell_type(c));
+    const std::span<const Index> nodes = model.mesh.cell_nodes(c);
+    vtk_nodes.clear();
+    for (int a : reference.vtk_order())
+      vtk_nodes.push_back(nodes[static_cast<std::size_t>(a)]);
+    grid.add_cell(static_cast<std::uint8_t>(reference.vtk_type()), vtk_nodes);
+  }
   return grid;
 }
 
@@ -138,7 +146,7 @@ std::vector<Index> cells_of_process(const model::Model& model, int rank) {
   std::vector<Index> mine;
   for (Index c = 0; c < model.mesh.num_cells(); ++c) {
     int cell_owner = -1;
-    for (Index node : model.mesh.cells()[c])
+    for (Index node : model.mesh.cell_nodes(c))
       if ((cell_owner = model::node_owner(model, node)) >= 0)
         break;
     if (std::max(cell_owner, 0) == rank)

@@ -57,9 +57,12 @@ std::uint64_t mesh_hash(const mesh::Mesh& mesh) {
   for (const Vec3& x : mesh.nodes())
     h.vec3(x);
   h.integer(mesh.num_cells());
-  for (const mesh::Hex8& cell : mesh.cells())
-    for (const Index node : cell)
+  for (Index c = 0; c < mesh.num_cells(); ++c) {
+    if (mesh.cell_type(c) != mesh::CellType::Hex8) // (a hex8 mesh hashes as before)
+      h.integer(-1 - static_cast<std::int64_t>(mesh.cell_type(c)));
+    for (const Index node : mesh.cell_nodes(c))
       h.integer(node);
+  }
   h.integer(static_cast<std::int64_t>(mesh.cell_blocks().size()));
   for (const auto& [name, cells] : mesh.cell_blocks()) {
     h.text(name);

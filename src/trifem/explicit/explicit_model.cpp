@@ -236,8 +236,8 @@ void ExplicitModel::build_partition() {
 void ExplicitModel::build_incidence() {
   const Index nn = mesh_.num_nodes();
   incidence_.offsets.assign(nn + 1, 0);
-  for (const mesh::Hex8& cell : mesh_.cells())
-    for (Index a : cell)
+  for (Index c = 0; c < mesh_.num_cells(); ++c)
+    for (Index a : mesh_.cell(c))
       ++incidence_.offsets[a + 1];
   for (Index a = 0; a < nn; ++a)
     incidence_.offsets[a + 1] += incidence_.offsets[a];

@@ -13,15 +13,7 @@
 namespace trifem::fe {
 namespace {
 
-using Edge = std::array<int, 2>;
-
-// Gmsh's mid-edge node orders: mid-edge node e (numbered after the corners) lies halfway
-// between the corners of edge e.
-constexpr Edge kTet10Edges[] = {{0, 1}, {1, 2}, {0, 2}, {0, 3}, {2, 3}, {1, 3}};
-constexpr Edge kHex20Edges[] = {{0, 1}, {0, 3}, {0, 4}, {1, 2}, {1, 5}, {2, 3},
-                                {2, 6}, {3, 7}, {4, 5}, {4, 7}, {5, 6}, {6, 7}};
-constexpr Edge kTri6Edges[] = {{0, 1}, {1, 2}, {2, 0}};
-constexpr Edge kQuad8Edges[] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}};
+using mesh::Edge;
 
 // VTK's mid-edge node orders of VTK_QUADRATIC_TETRA and VTK_QUADRATIC_HEXAHEDRON.
 constexpr Edge kVtkTet10Edges[] = {{0, 1}, {1, 2}, {2, 0}, {0, 3}, {1, 3}, {2, 3}};
@@ -35,13 +27,6 @@ constexpr std::array<std::array<Real, 3>, 6> kWedgeCorners = {
 constexpr std::array<std::array<Real, 2>, 3> kTriangleCorners = {{{0, 0}, {1, 0}, {0, 1}}};
 constexpr std::array<std::array<Real, 2>, 4> kSquareCorners = {
     {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}}};
-
-// Faces of the linear cells, corners counter-clockwise seen from outside (hex: mesh::kHexFaces).
-constexpr std::array<std::array<int, 3>, 4> kTetFaces = {
-    {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}}};
-constexpr std::array<std::array<int, 3>, 2> kWedgeTriangles = {{{0, 2, 1}, {3, 4, 5}}};
-constexpr std::array<std::array<int, 4>, 3> kWedgeQuads = {
-    {{0, 1, 4, 3}, {1, 2, 5, 4}, {2, 0, 3, 5}}};
 
 template <int D>
 using Point = Eigen::Matrix<Real, D, 1>;
@@ -214,27 +199,6 @@ int mid_edge_node(std::span<const Edge> edges, int num_corners, int a, int b) {
   detail::throw_logic_error(fmt::format("no edge ({}, {})", a, b), __FILE__, __LINE__);
 }
 
-template <std::size_t N, std::size_t M>
-void add_faces(std::vector<CellFacet>& facets, const std::array<std::array<int, N>, M>& faces) {
-  static_assert(N == 3 || N == 4);
-  for (const auto& face : faces)
-    facets.push_back({N == 3 ? FacetType::Tri3 : FacetType::Quad4, {face.begin(), face.end()}});
-}
-
-/// The facets of a quadratic cell from those of its corners: the mid-edge nodes of each facet
-/// follow its corners, edge (0,1) first.
-std::vector<CellFacet> quadratic_facets(std::vector<CellFacet> facets, std::span<const Edge> edges,
-                                        int num_corners) {
-  for (CellFacet& facet : facets) {
-    facet.type = facet.type == FacetType::Tri3 ? FacetType::Tri6 : FacetType::Quad8;
-    const std::vector<int> corners = facet.nodes;
-    for (std::size_t i = 0; i < corners.size(); ++i)
-      facet.nodes.push_back(
-          mid_edge_node(edges, num_corners, corners[i], corners[(i + 1) % corners.size()]));
-  }
-  return facets;
-}
-
 std::vector<int> identity_order(int n) {
   std::vector<int> order(static_cast<std::size_t>(n));
   std::iota(order.begin(), order.end(), 0);
@@ -255,19 +219,15 @@ struct CellDefinition {
   CellNodeCoords nodes;
   CellRule rule;
   Real volume;
-  std::vector<CellFacet> facets;
   int vtk_type;
   std::vector<int> vtk_order;
 };
 
 CellDefinition hex8_definition() {
-  std::vector<CellFacet> facets;
-  add_faces(facets, mesh::kHexFaces);
   return {.order = 1,
           .nodes = corner_coords<CellNodeCoords>(mesh::kHexNodeCoords),
           .rule = hex_gauss_rule(2),
           .volume = 8.0,
-          .facets = facets,
           .vtk_type = 12,
           .vtk_order = identity_order(8)};
 }
@@ -275,22 +235,18 @@ CellDefinition hex8_definition() {
 CellDefinition hex20_definition() {
   CellDefinition d = hex8_definition();
   return {.order = 2,
-          .nodes = with_mid_edge_nodes(d.nodes, kHex20Edges),
+          .nodes = with_mid_edge_nodes(d.nodes, mesh::mid_edges(CellType::Hex20)),
           .rule = hex_gauss_rule(3),
           .volume = 8.0,
-          .facets = quadratic_facets(d.facets, kHex20Edges, 8),
           .vtk_type = 25,
-          .vtk_order = vtk_order_by_edges(8, kHex20Edges, kVtkHex20Edges)};
+          .vtk_order = vtk_order_by_edges(8, mesh::mid_edges(CellType::Hex20), kVtkHex20Edges)};
 }
 
 CellDefinition tet4_definition() {
-  std::vector<CellFacet> facets;
-  add_faces(facets, kTetFaces);
   return {.order = 1,
           .nodes = corner_coords<CellNodeCoords>(kTetCorners),
           .rule = tet_rule_degree2(),
           .volume = 1.0 / 6.0,
-          .facets = facets,
           .vtk_type = 10,
           .vtk_order = identity_order(4)};
 }
@@ -298,23 +254,18 @@ CellDefinition tet4_definition() {
 CellDefinition tet10_definition() {
   CellDefinition d = tet4_definition();
   return {.order = 2,
-          .nodes = with_mid_edge_nodes(d.nodes, kTet10Edges),
+          .nodes = with_mid_edge_nodes(d.nodes, mesh::mid_edges(CellType::Tet10)),
           .rule = tet_rule_degree5(),
           .volume = 1.0 / 6.0,
-          .facets = quadratic_facets(d.facets, kTet10Edges, 4),
           .vtk_type = 24,
-          .vtk_order = vtk_order_by_edges(4, kTet10Edges, kVtkTet10Edges)};
+          .vtk_order = vtk_order_by_edges(4, mesh::mid_edges(CellType::Tet10), kVtkTet10Edges)};
 }
 
 CellDefinition penta6_definition() {
-  std::vector<CellFacet> facets;
-  add_faces(facets, kWedgeTriangles);
-  add_faces(facets, kWedgeQuads);
   return {.order = 1,
           .nodes = corner_coords<CellNodeCoords>(kWedgeCorners),
           .rule = wedge_rule_degree2(),
           .volume = 1.0,
-          .facets = facets,
           .vtk_type = 13,
           .vtk_order = {0, 2, 1, 3, 5, 4}}; // VTK's triangle (0,1,2) faces out of the cell
 }
@@ -349,11 +300,13 @@ FacetDefinition facet_definition(FacetType type) {
   case FacetType::Tri3:
     return {1, triangle, triangle_rule_degree2(), 0.5};
   case FacetType::Tri6:
-    return {2, with_mid_edge_nodes(triangle, kTri6Edges), triangle_rule_degree4(), 0.5};
+    return {2, with_mid_edge_nodes(triangle, mesh::mid_edges(FacetType::Tri6)),
+            triangle_rule_degree4(), 0.5};
   case FacetType::Quad4:
     return {1, square, quad_gauss_rule(2), 4.0};
   case FacetType::Quad8:
-    return {2, with_mid_edge_nodes(square, kQuad8Edges), quad_gauss_rule(3), 4.0};
+    return {2, with_mid_edge_nodes(square, mesh::mid_edges(FacetType::Quad8)), quad_gauss_rule(3),
+            4.0};
   }
   unknown_type(static_cast<int>(type));
 }
@@ -366,7 +319,6 @@ ReferenceCell::ReferenceCell(CellType type) : type_(type) {
   nodes_ = d.nodes;
   rule_ = std::move(d.rule);
   volume_ = d.volume;
-  facets_ = std::move(d.facets);
   vtk_type_ = d.vtk_type;
   vtk_order_ = std::move(d.vtk_order);
 }
@@ -378,7 +330,7 @@ ShapeValues ReferenceCell::shape(const Vec3& xi) const {
   case CellType::Tet4:
     return barycentric<3>(xi);
   case CellType::Tet10:
-    return quadratic_simplex_shape<3>(xi, kTet10Edges);
+    return quadratic_simplex_shape<3>(xi, mesh::mid_edges(CellType::Tet10));
   case CellType::Penta6:
     return wedge6_shape(xi);
   case CellType::Hex20:
@@ -394,7 +346,7 @@ ShapeGrads ReferenceCell::shape_grad(const Vec3& xi) const {
   case CellType::Tet4:
     return barycentric_grad<3>();
   case CellType::Tet10:
-    return quadratic_simplex_grad<3>(xi, kTet10Edges);
+    return quadratic_simplex_grad<3>(xi, mesh::mid_edges(CellType::Tet10));
   case CellType::Penta6:
     return wedge6_grad(xi);
   case CellType::Hex20:
@@ -416,7 +368,7 @@ FacetShapeValues ReferenceFacet::shape(const Vec2& s) const {
   case FacetType::Tri3:
     return barycentric<2>(s);
   case FacetType::Tri6:
-    return quadratic_simplex_shape<2>(s, kTri6Edges);
+    return quadratic_simplex_shape<2>(s, mesh::mid_edges(FacetType::Tri6));
   case FacetType::Quad4:
     return quad4_shape(s);
   case FacetType::Quad8:
@@ -430,7 +382,7 @@ FacetShapeGrads ReferenceFacet::shape_grad(const Vec2& s) const {
   case FacetType::Tri3:
     return barycentric_grad<2>();
   case FacetType::Tri6:
-    return quadratic_simplex_grad<2>(s, kTri6Edges);
+    return quadratic_simplex_grad<2>(s, mesh::mid_edges(FacetType::Tri6));
   case FacetType::Quad4:
     return quad4_shape_grad(s);
   case FacetType::Quad8:

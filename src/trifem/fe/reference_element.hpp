@@ -35,17 +35,17 @@
 #pragma once
 
 #include "trifem/fe/simplex_quadrature.hpp"
+#include "trifem/mesh/cell_type.hpp"
 
 #include <cstdint>
 #include <vector>
 
 namespace trifem::fe {
 
-enum class CellType : std::uint8_t { Hex8, Tet4, Tet10, Penta6, Hex20 };
-enum class FacetType : std::uint8_t { Tri3, Tri6, Quad4, Quad8 };
-
-inline constexpr int kMaxCellNodes = 20;
-inline constexpr int kMaxFacetNodes = 8;
+using mesh::CellType;
+using mesh::FacetType;
+using mesh::kMaxCellNodes;
+using mesh::kMaxFacetNodes;
 
 // Fixed-capacity matrices: no heap allocation per evaluation.
 using ShapeValues = Eigen::Matrix<Real, Eigen::Dynamic, 1, 0, kMaxCellNodes, 1>;
@@ -60,13 +60,9 @@ using FacetShapeGrads = Eigen::Matrix<Real, Eigen::Dynamic, 2, 0, kMaxFacetNodes
 using FacetNodeCoords = Eigen::Matrix<Real, Eigen::Dynamic, 2, 0, kMaxFacetNodes, 2>;
 
 /// A facet of a reference cell: its type and the cell's local node numbers in the facet's node
-/// order, corners counter-clockwise seen from outside the cell, then the mid-edge nodes. The
-/// facet's shape functions map its reference facet onto the cell's face with d x/d s1 x
-/// d x/d s2 pointing out of the cell.
-struct CellFacet {
-  FacetType type;
-  std::vector<int> nodes;
-};
+/// order (mesh::cell_faces). The facet's shape functions map its reference facet onto the
+/// cell's face with d x/d s1 x d x/d s2 pointing out of the cell.
+using CellFacet = mesh::CellFace;
 
 /// The reference element of a cell type (one immutable object per type: reference_cell()).
 class ReferenceCell {
@@ -90,7 +86,7 @@ public:
   /// The facets: hex zeta = -1, zeta = +1, eta = -1, xi = +1, eta = +1, xi = -1 (the faces of
   /// mesh::kHexFaces); tet opposite node 3, 2, 1, 0; penta6 the triangles z = -1 and z = +1,
   /// then the quadrilaterals y = 0, x + y = 1, x = 0.
-  const std::vector<CellFacet>& facets() const { return facets_; }
+  const std::vector<CellFacet>& facets() const { return mesh::cell_faces(type_); }
   /// VTK cell type number (hex8 12, tet4 10, tet10 24, penta6 13 = wedge, hex20 25).
   int vtk_type() const { return vtk_type_; }
   /// For each VTK node of the cell, the local node number.
@@ -105,7 +101,6 @@ private:
   CellNodeCoords nodes_;
   CellRule rule_;
   Real volume_;
-  std::vector<CellFacet> facets_;
   int vtk_type_;
   std::vector<int> vtk_order_;
 };

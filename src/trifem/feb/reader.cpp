@@ -59,7 +59,7 @@ int Electrochemistry::charge(const Document& doc, pugi::xml_node node,
 std::vector<Index> block_nodes(const mesh::Mesh& mesh, const std::string& block) {
   std::vector<Index> nodes;
   for (Index c : mesh.cell_block(block))
-    nodes.insert(nodes.end(), mesh.cell(c).begin(), mesh.cell(c).end());
+    nodes.insert(nodes.end(), mesh.cell_nodes(c).begin(), mesh.cell_nodes(c).end());
   std::sort(nodes.begin(), nodes.end());
   nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
   return nodes;

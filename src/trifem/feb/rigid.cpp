@@ -327,7 +327,7 @@ std::vector<std::array<bool, 3>> carried_components(const Reader& r) {
       nodes = mesh.node_set(b.set);
     for (const std::string& block : b.blocks)
       for (Index c : mesh.cell_block(block))
-        nodes.insert(nodes.end(), mesh.cell(c).begin(), mesh.cell(c).end());
+        nodes.insert(nodes.end(), mesh.cell_nodes(c).begin(), mesh.cell_nodes(c).end());
     for (Index n : nodes)
       for (int k = 0; k < 3; ++k)
         carried[n][k] =

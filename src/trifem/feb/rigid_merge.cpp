@@ -29,7 +29,7 @@ std::vector<Index> element_nodes(const Reader& r, const RigidBodyInput& body) {
   std::vector<Index> nodes;
   for (const std::string& block : body.blocks)
     for (Index c : r.mesh.mesh.cell_block(block))
-      nodes.insert(nodes.end(), r.mesh.mesh.cell(c).begin(), r.mesh.mesh.cell(c).end());
+      nodes.insert(nodes.end(), r.mesh.mesh.cell_nodes(c).begin(), r.mesh.mesh.cell_nodes(c).end());
   std::sort(nodes.begin(), nodes.end());
   nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
   return nodes;

@@ -165,13 +165,32 @@ std::pair<int, int> dofs_per_node_and_cell(const CaseSpec& spec) {
   return {3 + (mixture ? 3 : 0) + (ions ? 6 : 0), (mixture ? 1 : 0) + (ions ? 1 : 0)};
 }
 
+/// Cells per hex of the grid and nodes per grid node (about, with the mid-edge nodes: a hex
+/// grid has 3 edges per node, 7 with the diagonals of Kuhn's split) of a box's cells.
+std::pair<Real, Real> box_cell_factors(mesh::CellType cell) {
+  switch (cell) {
+  case mesh::CellType::Tet4:
+    return {6.0, 1.0};
+  case mesh::CellType::Tet10:
+    return {6.0, 8.0};
+  case mesh::CellType::Penta6:
+    return {2.0, 1.0};
+  case mesh::CellType::Hex20:
+    return {1.0, 4.0};
+  case mesh::CellType::Hex8:
+    break;
+  }
+  return {1.0, 1.0};
+}
+
 ModelSize estimate_size(const CaseSpec& spec) {
   ModelSize m;
   const Real split = std::ldexp(1.0, spec.mesh_refinement); // [mesh] refine: divisions x 2^L
   for (const auto& b : spec.boxes) {
     const Vec3 n = split * Vec3(b.box.divisions[0], b.box.divisions[1], b.box.divisions[2]);
-    m.nodes += (n[0] + 1.0) * (n[1] + 1.0) * (n[2] + 1.0);
-    m.cells += n[0] * n[1] * n[2];
+    const auto [cells_per_hex, nodes_per_node] = box_cell_factors(b.box.cell);
+    m.nodes += nodes_per_node * (n[0] + 1.0) * (n[1] + 1.0) * (n[2] + 1.0);
+    m.cells += cells_per_hex * n[0] * n[1] * n[2];
   }
   const auto [per_node, per_cell] = dofs_per_node_and_cell(spec);
   const Real dn = per_node, dc = per_cell;

@@ -459,8 +459,14 @@ void check_node_count(const Table& t, const std::array<int, 3>& n) {
 }
 
 BoxMeshSpec read_box(const Table& t, const CaseSpec& spec) {
-  t.allow({"name", "origin", "size", "divisions", "grading", "material"});
+  t.allow({"name", "origin", "size", "divisions", "grading", "cell", "material"});
+  static const Options<mesh::CellType> cells = {{"hex8", mesh::CellType::Hex8},
+                                                {"hex20", mesh::CellType::Hex20},
+                                                {"tet4", mesh::CellType::Tet4},
+                                                {"tet10", mesh::CellType::Tet10},
+                                                {"penta6", mesh::CellType::Penta6}};
   BoxMeshSpec b;
+  b.box.cell = t.choice("cell", cells, std::optional(mesh::CellType::Hex8), "cell type");
   b.box.name = read_identifier(t, "name", true);
   for (std::size_t i = 0; i < spec.boxes.size(); ++i)
     if (spec.boxes[i].box.name == b.box.name)

@@ -67,6 +67,8 @@ void write_meshes(const CaseSpec& spec, TomlText& t) {
     t.raw("divisions",
           fmt::format("[{}, {}, {}]", b.box.divisions[0], b.box.divisions[1], b.box.divisions[2]));
     t.vector("grading", b.box.grading);
+    if (b.box.cell != mesh::CellType::Hex8)
+      t.string("cell", std::string(mesh::name(b.box.cell)));
     if (!b.material.empty())
       t.string("material", b.material);
   }

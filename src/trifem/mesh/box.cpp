@@ -2,6 +2,7 @@
 #include "trifem/mesh/box.hpp"
 
 #include "trifem/core/error.hpp"
+#include "trifem/mesh/convert_cells.hpp"
 #include "trifem/mesh/hex_faces.hpp"
 
 #include <cmath>
@@ -89,7 +90,7 @@ Mesh make_box(const BoxSpec& spec) {
   for (Index n = 0; n < mesh.num_nodes(); ++n)
     all[n] = n;
   mesh.add_node_set(spec.name + ".all", std::move(all));
-  return mesh;
+  return spec.cell == CellType::Hex8 ? mesh : convert_cells(mesh, spec.cell);
 }
 
 } // namespace trifem::mesh

@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <limits>
 #include <map>
+#include <set>
 #include <span>
 #include <string>
 #include <string_view>
@@ -101,12 +102,16 @@ struct GroupName {
   long line = 0;
 };
 
-/// A quad4 element of a physical surface, kept until all hexes are known.
+/// A surface element of a physical surface, kept until all cells are known: its corners (a
+/// triangle's fourth repeats its third) and the mid-edge nodes of a quadratic one.
 struct PendingQuad {
   std::array<Index, 4> nodes{};
   Tag element = 0;
   long line = 0;
   int physical = 0;
+  std::vector<Index> mid_edge_nodes = {};
+
+  bool triangle() const { return nodes[3] == nodes[2]; }
 };
 
 /// One element line: its tag, type, the dimension of its entity (-1 if unknown) and its
@@ -351,11 +356,48 @@ void check_hex_orientation(const LineReader& in, const Mesh& mesh, Tag tag, cons
   }
 }
 
-void read_hex(LineReader& in, GmshData& d, const ElementHeader& e) {
-  Hex8 cell;
+/// The Jacobian determinant of the map from the corners of a tet or a wedge at its centroid
+/// and its scale (the product of the columns' lengths).
+std::pair<Real, Real> corner_jacobian(const Mesh& mesh, CellType type,
+                                      std::span<const Index> cell) {
+  auto x = [&](int a) { return mesh.node(cell[static_cast<std::size_t>(a)]); };
+  Mat3 jac;
+  if (type == CellType::Penta6) { // triangle (0,1,2) x [-1,1] at (1/3, 1/3, 0)
+    jac.col(0) = 0.5 * (x(1) - x(0) + x(4) - x(3));
+    jac.col(1) = 0.5 * (x(2) - x(0) + x(5) - x(3));
+    jac.col(2) = (x(3) + x(4) + x(5) - x(0) - x(1) - x(2)) / 6.0;
+  } else {
+    jac << x(1) - x(0), x(2) - x(0), x(3) - x(0);
+  }
+  return {jac.determinant(), jac.col(0).norm() * jac.col(1).norm() * jac.col(2).norm()};
+}
+
+/// Rejects a tet or wedge whose corners are in the inverted order or degenerate. (A curved
+/// quadratic cell folding inside is found where the cells are integrated.)
+void check_corner_orientation(const LineReader& in, const Mesh& mesh, Tag tag, CellType type,
+                              std::span<const Index> cell) {
+  const auto [det, scale] = corner_jacobian(mesh, type, cell);
+  TRIFEM_CHECK(det >= 0.0,
+               "{}: {} element {} has negative volume (inverted node order; expected Gmsh's: {})",
+               in.location(), name(type), tag,
+               type == CellType::Penta6 ? "nodes 0-2 counter-clockwise seen from nodes 3-5"
+                                        : "nodes 0-2 counter-clockwise seen from node 3");
+  TRIFEM_CHECK(det > 1e-12 * scale, "{}: {} element {} is degenerate (zero volume)", in.location(),
+               name(type), tag);
+}
+
+void read_cell(LineReader& in, GmshData& d, const ElementHeader& e, CellType type) {
+  std::array<Index, kMaxCellNodes> nodes{};
+  const std::span<Index> cell(nodes.data(), static_cast<std::size_t>(num_nodes(type)));
   read_element_nodes(in, d, e, cell);
-  check_hex_orientation(in, d.mesh, e.tag, cell);
-  const Index c = d.mesh.add_cell(cell);
+  if (type == CellType::Hex8 || type == CellType::Hex20) {
+    Hex8 corners;
+    std::copy_n(cell.begin(), 8, corners.begin());
+    check_hex_orientation(in, d.mesh, e.tag, corners);
+  } else {
+    check_corner_orientation(in, d.mesh, e.tag, type, cell);
+  }
+  const Index c = d.mesh.add_cell(type, cell);
   d.element_cells[e.tag] = c;
   for (int p : e.physicals) {
     d.volume_cells[p].push_back(c);
@@ -365,11 +407,14 @@ void read_hex(LineReader& in, GmshData& d, const ElementHeader& e) {
     d.unassigned_cells.push_back(c);
 }
 
-void read_quad(LineReader& in, GmshData& d, const ElementHeader& e) {
+void read_quad(LineReader& in, GmshData& d, const ElementHeader& e, int mid_edge_nodes = 0) {
   if (e.physicals.empty())
     return; // a quad in no physical surface is not needed
   PendingQuad quad{.nodes = {}, .element = e.tag, .line = in.line(), .physical = 0};
-  read_element_nodes(in, d, e, quad.nodes);
+  std::array<Index, 8> nodes{};
+  read_element_nodes(in, d, e, std::span<Index>(nodes.data(), 4 + mid_edge_nodes));
+  std::copy_n(nodes.begin(), 4, quad.nodes.begin());
+  quad.mid_edge_nodes.assign(nodes.begin() + 4, nodes.begin() + 4 + mid_edge_nodes);
   for (int p : e.physicals) {
     quad.physical = p;
     d.quads.push_back(quad);
@@ -377,14 +422,18 @@ void read_quad(LineReader& in, GmshData& d, const ElementHeader& e) {
   }
 }
 
-/// A triangle of a physical surface: a quad whose last node repeats the third. It bounds no
-/// hex, so its surface is a surface mesh (add_surfaces).
-void read_triangle(LineReader& in, GmshData& d, const ElementHeader& e) {
+/// A triangle of a physical surface: a quad whose last node repeats the third, with the
+/// mid-edge nodes of a tri6. Its surface is a surface mesh if it bounds no cell, or the node
+/// set of a face of a tet or a wedge (add_surfaces).
+void read_triangle(LineReader& in, GmshData& d, const ElementHeader& e, int mid_edge_nodes = 0) {
   if (e.physicals.empty())
     return;
   PendingQuad quad{.nodes = {}, .element = e.tag, .line = in.line(), .physical = 0};
-  read_element_nodes(in, d, e, std::span<Index>(quad.nodes.data(), 3));
+  std::array<Index, 6> nodes{};
+  read_element_nodes(in, d, e, std::span<Index>(nodes.data(), 3 + mid_edge_nodes));
+  std::copy_n(nodes.begin(), 3, quad.nodes.begin());
   quad.nodes[3] = quad.nodes[2];
+  quad.mid_edge_nodes.assign(nodes.begin() + 3, nodes.begin() + 3 + mid_edge_nodes);
   for (int p : e.physicals) {
     quad.physical = p;
     d.quads.push_back(quad);
@@ -417,16 +466,32 @@ void read_element(LineReader& in, GmshData& d, const ElementHeader& e) {
   d.element_cells[e.tag] = -1; // a hex sets its cell below
   if (dim == 0 || dim == 1)
     return read_low_dim_element(in, d, e, dim);
-  if (e.type == kGmshHex8)
-    return read_hex(in, d, e);
-  if (e.type == kGmshQuad4)
+  switch (e.type) {
+  case kGmshHex8:
+    return read_cell(in, d, e, CellType::Hex8);
+  case kGmshTet4:
+    return read_cell(in, d, e, CellType::Tet4);
+  case kGmshTet10:
+    return read_cell(in, d, e, CellType::Tet10);
+  case kGmshPrism6:
+    return read_cell(in, d, e, CellType::Penta6);
+  case kGmshHex20:
+    return read_cell(in, d, e, CellType::Hex20);
+  case kGmshQuad4:
     return read_quad(in, d, e);
-  if (e.type == kGmshTri3)
+  case kGmshQuad8:
+    return read_quad(in, d, e, 4);
+  case kGmshTri3:
     return read_triangle(in, d, e);
-  throw InputError(fmt::format("{}: element {} has unsupported element type {} ({}); trifem reads "
-                               "hex8 (type 5) volumes, quad4 (type 3) surfaces and triangle3 "
-                               "(type 2) surface meshes only",
-                               in.location(), e.tag, e.type, type ? type->name : "unknown"));
+  case kGmshTri6:
+    return read_triangle(in, d, e, 3);
+  default:
+    throw InputError(fmt::format(
+        "{}: element {} has unsupported element type {} ({}); trifem reads the volume elements "
+        "hexahedron8 (type 5), tetra4 (4), tetra10 (11), prism6 (6) and hexahedron20 (17) and "
+        "the surface elements quad4 (3), quad8 (16), triangle3 (2) and triangle6 (9)",
+        in.location(), e.tag, e.type, type ? type->name : "unknown"));
+  }
 }
 
 /// One entity block of $Elements (4.1). Returns its element count.
@@ -663,7 +728,65 @@ void check_surface_kinds(const LineReader& in, const GmshData& d,
   }
 }
 
+/// The sorted corners of a face (a triangle's fourth entry −1).
+std::array<Index, 4> corner_key(std::array<Index, 4> corners, bool triangle) {
+  if (triangle)
+    corners[3] = -1;
+  std::sort(corners.begin(), corners.end());
+  return corners;
+}
+
+/// The corner keys of the faces of the cells that are not hex8.
+std::set<std::array<Index, 4>> non_hex8_faces(const Mesh& mesh) {
+  std::set<std::array<Index, 4>> keys;
+  for (Index c = 0; c < mesh.num_cells(); ++c) {
+    if (mesh.cell_type(c) == CellType::Hex8)
+      continue;
+    const std::span<const Index> nodes = mesh.cell_nodes(c);
+    for (const CellFace& face : cell_faces(mesh.cell_type(c))) {
+      const bool triangle = face.type == FacetType::Tri3 || face.type == FacetType::Tri6;
+      std::array<Index, 4> corners{};
+      for (int i = 0; i < (triangle ? 3 : 4); ++i)
+        corners[i] = nodes[static_cast<std::size_t>(face.nodes[i])];
+      keys.insert(corner_key(corners, triangle));
+    }
+  }
+  return keys;
+}
+
+/// The physical surfaces that can only be node sets for now: those with a quadratic element or
+/// a face of a cell that is not a hex8 (a tet, wedge or hex20). Each becomes the node set of
+/// all its elements' nodes; the surface of the same name is missing (Mesh::surface says why).
+/// The other surface elements are left in d.quads.
+void add_face_node_sets(const LineReader& in, GmshData& d) {
+  const std::set<std::array<Index, 4>> faces = non_hex8_faces(d.mesh);
+  std::set<int> node_set_only;
+  for (const PendingQuad& q : d.quads)
+    if (!q.mid_edge_nodes.empty() || faces.contains(corner_key(q.nodes, q.triangle())))
+      node_set_only.insert(q.physical);
+  if (node_set_only.empty())
+    return;
+  std::map<int, std::vector<Index>> nodes;
+  std::vector<PendingQuad> rest;
+  for (PendingQuad& q : d.quads) {
+    if (!node_set_only.contains(q.physical)) {
+      rest.push_back(std::move(q));
+      continue;
+    }
+    std::vector<Index>& set = nodes[q.physical];
+    set.insert(set.end(), q.nodes.begin(), q.nodes.end());
+    set.insert(set.end(), q.mid_edge_nodes.begin(), q.mid_edge_nodes.end());
+  }
+  d.quads = std::move(rest);
+  for (auto& entry : nodes) {
+    const DimTag group{2, entry.first};
+    register_named(in, group_line(d, group),
+                   [&] { d.mesh.add_node_set(group_name(d, group), std::move(entry.second)); });
+  }
+}
+
 void add_surfaces(const LineReader& in, GmshData& d) {
+  add_face_node_sets(in, d);
   std::vector<std::array<Index, 4>> quads;
   quads.reserve(d.quads.size());
   for (const PendingQuad& q : d.quads)
@@ -695,7 +818,7 @@ void add_volume_node_sets(Mesh& mesh) {
       continue;
     std::vector<Index> nodes;
     for (Index c : cells)
-      nodes.insert(nodes.end(), mesh.cell(c).begin(), mesh.cell(c).end());
+      nodes.insert(nodes.end(), mesh.cell_nodes(c).begin(), mesh.cell_nodes(c).end());
     std::sort(nodes.begin(), nodes.end());
     nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
     mesh.add_node_set(name, std::move(nodes));
@@ -742,8 +865,8 @@ Mesh finish(const LineReader& in, GmshData& d) {
   TRIFEM_CHECK(d.seen_nodes, "{}: the file has no $Nodes section", in.location());
   TRIFEM_CHECK(d.seen_elements, "{}: the file has no $Elements section", in.location());
   TRIFEM_CHECK(d.mesh.num_cells() > 0 || !d.quads.empty(),
-               "{}: the file has no hex8 (type 5) cells and no surface mesh (quad4, type 3, or "
-               "triangle3, type 2, elements)",
+               "{}: the file has no volume elements (hexahedron8, tetra4, tetra10, prism6 or "
+               "hexahedron20) and no surface mesh (quad4, type 3, or triangle3, type 2, elements)",
                in.at(d.elements_line));
   add_cell_blocks(in, d);
   add_surfaces(in, d);

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Reader for Gmsh MSH files (ASCII 4.1 and 2.2) producing a hex8 Mesh.
+// Reader for Gmsh MSH files (ASCII 4.1 and 2.2) producing a Mesh.
 #pragma once
 
 #include "trifem/mesh/mesh.hpp"
@@ -10,14 +10,18 @@ namespace trifem::mesh {
 
 /// Reads a Gmsh MSH file (format 4.1 ASCII; also 2.2 ASCII).
 ///
-/// - Hex8 (type 5) volume elements become cells. Physical volume groups become named cell
-///   blocks. If the file defines no physical groups at all, every hex goes into block "volume";
-///   otherwise hexes in no physical volume go into block "unassigned" (created only if needed).
+/// - Volume elements become cells: hexahedron8 (type 5), tetra4 (4), tetra10 (11), prism6 (6,
+///   a penta6 cell) and hexahedron20 (17), in Gmsh's node order (mesh/cell_type.hpp). Physical
+///   volume groups become named cell blocks. If the file defines no physical groups at all, every
+///   hex goes into block "volume"; otherwise hexes in no physical volume go into block "unassigned"
+///   (created only if needed).
 /// - Quad4 (type 3) elements in physical surface groups become named surfaces, oriented outward
 ///   against the hex that owns the face (each also registers a node set of the same name). A
 ///   quad on a face between two hexes is oriented out of the hex whose face has the quad's node
 ///   order (right-hand rule), else out of the hex with the lower index. Quads in no physical
-///   group are ignored.
+///   group are ignored. A physical surface with a face of a tet, wedge or hex20 cell, or with
+///   quadratic elements (triangle6, type 9; quad8, type 16), becomes a node set only (of all
+///   its elements' nodes) for now: surfaces are made of hex8 faces.
 /// - Elements of dimension 0 or 1 in physical point/curve groups become node sets; otherwise
 ///   they are ignored.
 /// - Names come from $PhysicalNames; an unnamed physical group of dimension 0/1/2/3 is called
@@ -31,7 +35,7 @@ namespace trifem::mesh {
 ///
 /// Throws InputError, with a message starting with "<file>:<line>: ", for a missing, empty,
 /// binary or truncated file, an unsupported version, an undefined node tag, any other volume or
-/// surface element type (tets, prisms, triangles, second order...), a hex with negative volume,
+/// surface element type (pyramids, hexahedron27, ...), a cell with negative volume,
 /// a quad of a physical surface that is not a face of any hex, or, in $ElementData, a malformed
 /// header, a wrong number of values on a line, a non-finite value, an element tag not in
 /// $Elements, or a second value for one element.

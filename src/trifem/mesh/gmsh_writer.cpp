@@ -71,7 +71,7 @@ std::vector<CellRun> cell_runs(const Mesh& mesh) {
 std::vector<Index> block_nodes(const Mesh& mesh, const std::vector<Index>& cells) {
   std::vector<Index> nodes;
   for (Index c : cells)
-    nodes.insert(nodes.end(), mesh.cell(c).begin(), mesh.cell(c).end());
+    nodes.insert(nodes.end(), mesh.cell_nodes(c).begin(), mesh.cell_nodes(c).end());
   std::sort(nodes.begin(), nodes.end());
   nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
   return nodes;
@@ -161,7 +161,7 @@ void write_entities(const Mesh& mesh, const Layout& l, Buffer& b) {
   for (const CellRun& run : l.runs) {
     std::vector<Index> nodes;
     for (Index c = run.first; c < run.end; ++c)
-      nodes.insert(nodes.end(), mesh.cell(c).begin(), mesh.cell(c).end());
+      nodes.insert(nodes.end(), mesh.cell_nodes(c).begin(), mesh.cell_nodes(c).end());
     fmt::format_to(out, "{} {} {}", ++tag, bounding_box(mesh, nodes), run.physicals.size());
     for (int p : run.physicals)
       fmt::format_to(out, " {}", p);
@@ -221,6 +221,10 @@ void write_elements(const Mesh& mesh, const Layout& l, Buffer& b) {
 
 void write_gmsh(const Mesh& mesh, std::ostream& out) {
   TRIFEM_CHECK(mesh.num_cells() > 0, "the mesh has no cells: nothing to write to a Gmsh file");
+  TRIFEM_CHECK(mesh.all_hex8(),
+               "meshes of hex8 cells only are written to Gmsh files so far (this "
+               "one has {} cells)",
+               name(mesh.cell_type(mesh.first_non_hex8())));
   const Layout layout{cell_runs(mesh), point_groups(mesh)};
   Buffer b;
   fmt::format_to(std::back_inserter(b), "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n");

@@ -56,9 +56,30 @@ Facet make_facet(const Mesh& mesh, Index cell, int face) {
   Facet f;
   f.cell = cell;
   f.local_face = face;
+  const std::span<const Index> nodes = mesh.cell_nodes(cell);
   for (int i = 0; i < 4; ++i)
-    f.nodes[i] = mesh.cell(cell)[kHexFaces[face][i]];
+    f.nodes[i] = nodes[static_cast<std::size_t>(kHexFaces[face][i])];
   return f;
+}
+
+/// The key of face `face` of cell c: its sorted corners (a triangle's fourth entry −1).
+FaceKey cell_face_key(const Mesh& mesh, Index c, const CellFace& face) {
+  const std::span<const Index> nodes = mesh.cell_nodes(c);
+  const bool triangle = face.type == FacetType::Tri3 || face.type == FacetType::Tri6;
+  std::array<Index, 4> corners{};
+  for (int i = 0; i < 4; ++i)
+    corners[i] = triangle && i == 3 ? -1 : nodes[static_cast<std::size_t>(face.nodes[i])];
+  return face_key(corners);
+}
+
+/// Calls visit(cell, local face, key) for every face of every cell.
+template <class Visit>
+void for_each_face(const Mesh& mesh, Visit&& visit) {
+  for (Index c = 0; c < mesh.num_cells(); ++c) {
+    const std::vector<CellFace>& faces = cell_faces(mesh.cell_type(c));
+    for (std::size_t f = 0; f < faces.size(); ++f)
+      visit(c, static_cast<int>(f), cell_face_key(mesh, c, faces[f]));
+  }
 }
 
 /// True if `b` lists the nodes of `a` in the same cyclic order (the same oriented quad).
@@ -94,13 +115,35 @@ Index Mesh::add_node(const Vec3& x) {
 }
 
 Index Mesh::add_cell(const Hex8& nodes) {
+  return add_cell(CellType::Hex8, nodes);
+}
+
+Index Mesh::add_cell(CellType type, std::span<const Index> nodes) {
+  TRIFEM_CHECK(std::ssize(nodes) == mesh::num_nodes(type),
+               "cell {} of type {} has {} nodes, expected {}", num_cells(), name(type),
+               nodes.size(), mesh::num_nodes(type));
   for (Index n : nodes)
     TRIFEM_CHECK(n >= 0 && n < num_nodes(), "cell {} refers to node {} but the mesh has {} nodes",
                  num_cells(), n, num_nodes());
-  cells_.push_back(nodes);
+  cell_types_.push_back(type);
+  cell_node_list_.insert(cell_node_list_.end(), nodes.begin(), nodes.end());
+  cell_offsets_.push_back(static_cast<Index>(cell_node_list_.size()));
   if (!cell_data_.empty())
     pad_cell_data(cell_data_, num_cells());
-  return static_cast<Index>(cells_.size()) - 1;
+  return num_cells() - 1;
+}
+
+Hex8 Mesh::cell(Index c) const {
+  TRIFEM_VERIFY(cell_type(c) == CellType::Hex8, "cell {} is a {}, not a hex8", c,
+                name(cell_type(c)));
+  Hex8 nodes;
+  std::ranges::copy(cell_nodes(c), nodes.begin());
+  return nodes;
+}
+
+Index Mesh::first_non_hex8() const {
+  const auto it = std::ranges::find_if_not(cell_types_, is_hex8);
+  return it == cell_types_.end() ? -1 : static_cast<Index>(it - cell_types_.begin());
 }
 
 void Mesh::add_node_set(const std::string& name, std::vector<Index> nodes) {
@@ -140,6 +183,11 @@ const std::vector<Index>& Mesh::node_set(const std::string& name) const {
   return find_named(node_sets_, "node set", name);
 }
 const Surface& Mesh::surface(const std::string& name) const {
+  TRIFEM_CHECK(surfaces_.contains(name) || !node_sets_.contains(name) || all_hex8(),
+               "'{}' is a node set but not a surface: surfaces (surface loads, contact, baths, "
+               "drained or impermeable faces) are made of the faces of hex8 cells for now, and "
+               "this mesh has {} cells",
+               name, mesh::name(cell_type(first_non_hex8())));
   return find_named(surfaces_, "surface", name);
 }
 const std::vector<Index>& Mesh::cell_block(const std::string& name) const {
@@ -155,10 +203,11 @@ void Mesh::append(const Mesh& other) {
   const Index node_offset = num_nodes();
   const Index cell_offset = num_cells();
   nodes_.insert(nodes_.end(), other.nodes_.begin(), other.nodes_.end());
-  for (Hex8 c : other.cells_) {
-    for (Index& n : c)
-      n += node_offset;
-    cells_.push_back(c);
+  for (Index c = 0; c < other.num_cells(); ++c) {
+    cell_types_.push_back(other.cell_type(c));
+    for (Index n : other.cell_nodes(c))
+      cell_node_list_.push_back(n + node_offset);
+    cell_offsets_.push_back(static_cast<Index>(cell_node_list_.size()));
   }
   for (const auto& [name, nodes] : other.node_sets_) {
     if (other.surfaces_.contains(name))
@@ -209,6 +258,8 @@ void Mesh::append_cell_data(const Mesh& other, Index cell_offset) {
 std::vector<Facet> Mesh::find_facets(const std::vector<std::array<Index, 4>>& quads) const {
   std::unordered_map<FaceKey, Facet, FaceKeyHash> faces;
   for (Index c = 0; c < num_cells(); ++c) {
+    if (cell_type(c) != CellType::Hex8)
+      continue;
     for (int f = 0; f < 6; ++f) {
       Facet facet = make_facet(*this, c, f);
       faces.try_emplace(face_key(facet.nodes), facet);
@@ -232,7 +283,7 @@ std::vector<Facet> Mesh::orient_quads(const std::vector<std::array<Index, 4>>& q
     slot[i] = slot_of.try_emplace(face_key(quads[i]), slot_of.size()).first->second;
   std::vector<std::array<Facet, 2>> found(slot_of.size()); // cell -1: not found yet
   for (Index c = 0; c < num_cells(); ++c)
-    for (int f = 0; f < 6; ++f) {
+    for (int f = 0; f < 6 && cell_type(c) == CellType::Hex8; ++f) {
       const Facet facet = make_facet(*this, c, f);
       const auto it = slot_of.find(face_key(facet.nodes));
       if (it == slot_of.end())
@@ -259,18 +310,25 @@ std::vector<Facet> Mesh::orient_quads(const std::vector<std::array<Index, 4>>& q
 }
 
 std::vector<Facet> Mesh::boundary_facets() const {
-  std::unordered_map<FaceKey, std::pair<Facet, int>, FaceKeyHash> faces;
-  for (Index c = 0; c < num_cells(); ++c) {
-    for (int f = 0; f < 6; ++f) {
-      Facet facet = make_facet(*this, c, f);
-      auto [it, inserted] = faces.try_emplace(face_key(facet.nodes), facet, 0);
-      ++it->second.second;
-    }
-  }
+  struct Face {
+    Index cell;
+    int local_face;
+    int count;
+  };
+  std::unordered_map<FaceKey, Face, FaceKeyHash> faces;
+  for_each_face(*this, [&](Index c, int f, const FaceKey& key) {
+    auto [it, inserted] = faces.try_emplace(key, Face{c, f, 0});
+    ++it->second.count;
+  });
   std::vector<Facet> boundary;
-  for (const auto& [key, entry] : faces)
-    if (entry.second == 1)
-      boundary.push_back(entry.first);
+  for (const auto& [key, face] : faces) {
+    if (face.count != 1)
+      continue;
+    TRIFEM_VERIFY(cell_type(face.cell) == CellType::Hex8,
+                  "the boundary of cell {} ({}) has no facets yet", face.cell,
+                  name(cell_type(face.cell)));
+    boundary.push_back(make_facet(*this, face.cell, face.local_face));
+  }
   std::sort(boundary.begin(), boundary.end(), [](const Facet& a, const Facet& b) {
     return a.cell != b.cell ? a.cell < b.cell : a.local_face < b.local_face;
   });
@@ -300,26 +358,17 @@ Real mean_facet_size(const Mesh& mesh, const Surface& surface) {
 }
 
 EdgeRange edge_length_range(const Mesh& mesh) {
-  // hex8 edges in the VTK/Gmsh node order: bottom face, top face, verticals
-  constexpr std::array<std::array<int, 2>, 12> kEdges = {{{0, 1},
-                                                          {1, 2},
-                                                          {2, 3},
-                                                          {3, 0},
-                                                          {4, 5},
-                                                          {5, 6},
-                                                          {6, 7},
-                                                          {7, 4},
-                                                          {0, 4},
-                                                          {1, 5},
-                                                          {2, 6},
-                                                          {3, 7}}};
   EdgeRange range{std::numeric_limits<Real>::infinity(), 0.0};
-  for (const Hex8& cell : mesh.cells())
-    for (const auto& [a, b] : kEdges) {
-      const Real h = (mesh.node(cell[b]) - mesh.node(cell[a])).norm();
+  for (Index c = 0; c < mesh.num_cells(); ++c) {
+    const std::span<const Index> nodes = mesh.cell_nodes(c);
+    for (const auto& [a, b] : corner_edges(mesh.cell_type(c))) {
+      const Real h = (mesh.node(nodes[static_cast<std::size_t>(b)]) -
+                      mesh.node(nodes[static_cast<std::size_t>(a)]))
+                         .norm();
       range.min = std::min(range.min, h);
       range.max = std::max(range.max, h);
     }
+  }
   if (mesh.num_cells() == 0)
     range.min = 0.0;
   return range;

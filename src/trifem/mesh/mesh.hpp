@@ -1,13 +1,17 @@
 // SPDX-License-Identifier: MIT
-// Unstructured hex8 mesh with named node sets, surfaces and cell blocks.
+// Unstructured mesh of hex8, tet4, tet10, penta6 and hex20 cells (cell_type.hpp) with named
+// node sets, surfaces and cell blocks.
 // The mesh knows geometry and topology only: no DOFs, no fields.
 #pragma once
 
 #include "trifem/core/types.hpp"
+#include "trifem/mesh/cell_type.hpp"
 #include "trifem/tensor/tensor.hpp"
 
+#include <algorithm>
 #include <array>
 #include <map>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -47,20 +51,36 @@ struct CellData {
   }
 };
 
-/// Hex8 mesh with named sets. Names are unique per kind.
+/// A mesh with named sets. Names are unique per kind. Surfaces (Facet) are faces of hex8 cells
+/// or of no cell.
 class Mesh {
 public:
   /// Appends a node at reference position x; returns its index.
   Index add_node(const Vec3& x);
   /// Appends a hex8 cell; returns its index. Nodes must exist. The cell has no cell data (NaN).
   Index add_cell(const Hex8& nodes);
+  /// Appends a cell of `type` whose num_nodes(type) nodes are in the order of cell_type.hpp;
+  /// returns its index. Nodes must exist. The cell has no cell data (NaN).
+  Index add_cell(CellType type, std::span<const Index> nodes);
 
   Index num_nodes() const { return static_cast<Index>(nodes_.size()); }
-  Index num_cells() const { return static_cast<Index>(cells_.size()); }
+  Index num_cells() const { return static_cast<Index>(cell_types_.size()); }
   const Vec3& node(Index i) const { return nodes_[i]; }
-  const Hex8& cell(Index c) const { return cells_[c]; }
   const std::vector<Vec3>& nodes() const { return nodes_; }
-  const std::vector<Hex8>& cells() const { return cells_; }
+  CellType cell_type(Index c) const { return cell_types_[static_cast<std::size_t>(c)]; }
+  /// The nodes of cell c in the order of its type.
+  std::span<const Index> cell_nodes(Index c) const {
+    const auto first = static_cast<std::size_t>(cell_offsets_[static_cast<std::size_t>(c)]);
+    const auto last = static_cast<std::size_t>(cell_offsets_[static_cast<std::size_t>(c) + 1]);
+    return {cell_node_list_.data() + first, last - first};
+  }
+  /// The nodes of hex8 cell c (a program error if cell c is of another type: code that takes
+  /// any cell reads cell_nodes()).
+  Hex8 cell(Index c) const;
+  /// True if every cell is a hex8 (so for a mesh without cells).
+  bool all_hex8() const { return std::ranges::all_of(cell_types_, is_hex8); }
+  /// The first cell that is not a hex8, −1 if none.
+  Index first_non_hex8() const;
 
   /// Registers a named node set (sorted, duplicates removed). Throws InputError on a name clash.
   void add_node_set(const std::string& name, std::vector<Index> nodes);
@@ -100,7 +120,7 @@ public:
   /// components differ); the cells of a mesh without some data get NaN in it.
   void append(const Mesh& other);
 
-  /// For each quad (four node indices, any order), the outward-oriented facet of the cell face
+  /// For each quad (four node indices, any order), the outward-oriented facet of the hex8 face
   /// with exactly these nodes. Throws InputError naming the first quad that is no cell face.
   std::vector<Facet> find_facets(const std::vector<std::array<Index, 4>>& quads) const;
 
@@ -111,15 +131,20 @@ public:
   /// surface mesh). Only the quads are hashed, so this stays cheap for large meshes.
   std::vector<Facet> orient_quads(const std::vector<std::array<Index, 4>>& quads) const;
 
-  /// Facets of all cell faces that belong to exactly one cell (the mesh boundary).
+  /// Facets of all cell faces that belong to exactly one cell (the mesh boundary). A program
+  /// error if a boundary face is not that of a hex8.
   std::vector<Facet> boundary_facets() const;
 
 private:
   /// Joins the cell data of `other`, whose cells were appended from `cell_offset` on.
   void append_cell_data(const Mesh& other, Index cell_offset);
 
+  static bool is_hex8(CellType type) { return type == CellType::Hex8; }
+
   std::vector<Vec3> nodes_;
-  std::vector<Hex8> cells_;
+  std::vector<CellType> cell_types_;
+  std::vector<Index> cell_offsets_ = {0}; ///< cell c's nodes: cell_node_list_[offsets c..c+1)
+  std::vector<Index> cell_node_list_;
   std::map<std::string, std::vector<Index>> node_sets_;
   std::map<std::string, Surface> surfaces_;
   std::map<std::string, std::vector<Index>> cell_blocks_;
@@ -142,7 +167,7 @@ struct EdgeRange {
   Real max = 0.0;
 };
 
-/// The range of the cell edge lengths (the twelve edges of every hex8) in the reference mesh.
+/// The range of the lengths of the cells' edges between corners in the reference mesh.
 EdgeRange edge_length_range(const Mesh& mesh);
 
 } // namespace trifem::mesh

@@ -225,6 +225,10 @@ Mesh refine_uniformly(const Mesh& mesh, int levels) {
   TRIFEM_CHECK(levels >= 0, "mesh refinement: {} levels (expected 0 or more)", levels);
   if (levels == 0)
     return mesh;
+  TRIFEM_CHECK(mesh.all_hex8(),
+               "mesh refinement: meshes of hex8 cells only can be refined so far, and this one "
+               "has {} cells (refine it in the mesher)",
+               name(mesh.cell_type(mesh.first_non_hex8())));
   Mesh fine = refine_uniformly(mesh);
   for (int level = 1; level < levels; ++level)
     fine = refine_uniformly(fine);

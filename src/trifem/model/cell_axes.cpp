@@ -26,9 +26,10 @@ BasisKey key_of(const Mat3& Q) {
 
 Vec3 centroid(const mesh::Mesh& mesh, Index cell) {
   Vec3 x = Vec3::Zero();
-  for (Index n : mesh.cells()[static_cast<std::size_t>(cell)])
+  const std::span<const Index> nodes = mesh.cell_nodes(cell);
+  for (Index n : nodes)
     x += mesh.node(n);
-  return x / 8.0;
+  return x / static_cast<Real>(nodes.size());
 }
 
 std::string text(const Vec3& v) {

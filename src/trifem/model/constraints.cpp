@@ -77,7 +77,7 @@ std::set<Index> rigid_nodes(const io::CaseSpec& spec, const mesh::Mesh& mesh) {
     for (const std::string& block : b.blocks)
       if (mesh.has_cell_block(block))
         for (Index c : mesh.cell_block(block))
-          nodes.insert(mesh.cells()[c].begin(), mesh.cells()[c].end());
+          nodes.insert(mesh.cell_nodes(c).begin(), mesh.cell_nodes(c).end());
   }
   return nodes;
 }

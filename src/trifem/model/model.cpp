@@ -8,6 +8,7 @@
 #include "trifem/mesh/refine.hpp"
 #include "trifem/model/averages.hpp"
 #include "trifem/model/cell_axes.hpp"
+#include "trifem/model/cell_families.hpp"
 #include "trifem/model/conditions.hpp"
 #include "trifem/model/constraints.hpp"
 #include "trifem/model/contact_pairs.hpp"
@@ -117,7 +118,7 @@ bulk_terms(const io::CaseSpec& spec, const std::vector<CellMaterial>& materials,
     } else if (materials[c].solid) { // not a rigid cell
       solid_cells.push_back(c);
       laws.push_back(materials[c].solid);
-      elements.push_back(materials[c].element);
+      elements.push_back(cell_element(model, c));
     }
   }
   std::vector<std::unique_ptr<physics::Term>> terms;
@@ -331,6 +332,7 @@ std::unique_ptr<Model> build_model(const io::CaseSpec& spec) {
   std::map<std::string, std::string> block_materials;
   model->mesh = build_mesh(spec, block_materials);
   model->materials = cell_materials(spec, model->mesh, block_materials);
+  check_cell_families(spec, *model);
   model->axes = orient_cells(spec, model->mesh, block_materials, model->materials);
   const std::vector<CellMaterial>& materials = model->materials;
   model->chem = electrochemistry(spec.electrochemistry);

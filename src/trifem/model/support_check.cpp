@@ -20,9 +20,11 @@ std::vector<Index> node_components(const mesh::Mesh& mesh) {
       n = parent[n] = parent[parent[n]];
     return n;
   };
-  for (const mesh::Hex8& cell : mesh.cells())
+  for (Index c = 0; c < mesh.num_cells(); ++c) {
+    const std::span<const Index> cell = mesh.cell_nodes(c);
     for (Index a : cell)
       parent[root(a)] = root(cell[0]);
+  }
   for (Index n = 0; n < mesh.num_nodes(); ++n)
     parent[n] = root(n);
   return parent;
@@ -32,7 +34,7 @@ std::vector<Index> node_components(const mesh::Mesh& mesh) {
 std::string body_name(const mesh::Mesh& mesh, const std::vector<Index>& component, Index c) {
   for (const auto& [name, cells] : mesh.cell_blocks())
     for (Index cell : cells)
-      if (component[mesh.cell(cell)[0]] == c)
+      if (component[mesh.cell_nodes(cell)[0]] == c)
         return "'" + name + "'";
   return "of the mesh";
 }
@@ -47,7 +49,7 @@ void check_rigid_bodies(const io::CaseSpec& spec, const Model& model,
   std::vector<char> deformable(mesh.num_nodes(), 0);
   for (Index c = 0; c < mesh.num_cells(); ++c)
     if (!model.materials[c].rigid())
-      for (Index n : mesh.cell(c))
+      for (Index n : mesh.cell_nodes(c))
         deformable[n] = 1;
   const Index u_offset = model.dofs.field(model.fields.u).offset;
   for (std::size_t i = 0; i < model.rigid_bodies.size(); ++i) {

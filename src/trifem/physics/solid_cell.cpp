@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "trifem/physics/solid_cell.hpp"
 
+#include "trifem/tensor/kinematics.hpp"
+
 namespace trifem::physics {
 namespace {
 
@@ -80,6 +82,22 @@ bool solid_cell(const CellGeometry& geo, const fe::CellNodeCoords& u,
     add_point_tangent(g, F, st, dV, *K);
   }
   return true;
+}
+
+CellStress solid_cell_stress(const CellGeometry& geo, const fe::CellNodeCoords& u,
+                             const material::ElasticLaw& law) {
+  CellStress out;
+  Real volume = 0.0, current = 0.0;
+  for (std::size_t q = 0; q < geo.dV.size(); ++q) {
+    const Mat3 F = Mat3::Identity() + u.transpose() * geo.dN_dX[q];
+    const Real J = F.determinant();
+    out.cauchy += kinematics::cauchy_from_pk2(F, law.stress(F.transpose() * F)) * J * geo.dV[q];
+    volume += geo.dV[q];
+    current += J * geo.dV[q];
+  }
+  out.cauchy /= current;
+  out.J = current / volume;
+  return out;
 }
 
 } // namespace trifem::physics

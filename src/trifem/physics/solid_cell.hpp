@@ -7,6 +7,7 @@
 
 #include "trifem/fe/reference_element.hpp"
 #include "trifem/material/elastic_law.hpp"
+#include "trifem/physics/solid_kernel.hpp"
 
 #include <optional>
 #include <vector>
@@ -40,5 +41,10 @@ std::optional<CellGeometry> cell_geometry(const fe::ReferenceCell& reference,
 /// u (one row per node). False if J <= 0 at a point of the rule.
 bool solid_cell(const CellGeometry& geo, const fe::CellNodeCoords& u,
                 const material::ElasticLaw& law, CellVectorX& f, CellMatrixX* K);
+
+/// The volume-averaged Cauchy stress, (∫ σ dv) / (∫ dv), and J = v / V of the cell (as
+/// solid_hex8_stress).
+CellStress solid_cell_stress(const CellGeometry& geo, const fe::CellNodeCoords& u,
+                             const material::ElasticLaw& law);
 
 } // namespace trifem::physics

@@ -18,23 +18,39 @@ SolidTerm::SolidTerm(const mesh::Mesh& mesh, const dofs::DofMap& dofs, dofs::Fie
     elements_.assign(cells_.size(), SolidElement::Displacement);
   TRIFEM_VERIFY(elements_.size() == cells_.size(), "one formulation per cell expected");
   geometry_.reserve(cells_.size());
-  for (Index c : cells_) {
-    const fe::HexCoords X = fe::cell_coordinates(mesh, c);
-    auto geo = fe::hex8_geometry(X);
+  for (std::size_t e = 0; e < cells_.size(); ++e) {
+    const Index c = cells_[e];
+    const mesh::CellType type = mesh.cell_type(c);
+    TRIFEM_VERIFY(type == mesh::CellType::Hex8 || elements_[e] == SolidElement::Displacement,
+                  "the mean-dilatation element is a hex8's (cell {} is a {})", c, mesh::name(type));
+    if (type == mesh::CellType::Hex8) {
+      const auto geo = fe::hex8_geometry(fe::cell_coordinates(mesh, c));
+      TRIFEM_CHECK(geo.has_value(),
+                   "cell {} is inverted or degenerate (det(dX/dxi) <= 0 at a Gauss point); "
+                   "check its node order",
+                   c);
+      geometry_.emplace_back(*geo);
+      continue;
+    }
+    const std::span<const Index> nodes = mesh.cell_nodes(c);
+    fe::CellNodeCoords X(static_cast<Index>(nodes.size()), 3);
+    for (std::size_t a = 0; a < nodes.size(); ++a)
+      X.row(static_cast<Index>(a)) = mesh.node(nodes[a]).transpose();
+    auto geo = cell_geometry(fe::reference_cell(type), X);
     TRIFEM_CHECK(geo.has_value(),
-                 "cell {} is inverted or degenerate (det(dX/dxi) <= 0 at a Gauss point); "
-                 "check its node order",
-                 c);
-    geometry_.push_back(*geo);
+                 "cell {} ({}) is inverted or degenerate (det(dX/dxi) <= 0 at a quadrature "
+                 "point); check its node order and its mid-edge nodes",
+                 c, mesh::name(type));
+    geometry_.emplace_back(std::move(*geo));
   }
 }
 
 void SolidTerm::element_dofs(Index e, std::vector<Index>& dofs) const {
-  dofs.resize(24);
-  const auto& nodes = mesh_.cell(cells_[e]);
-  for (int a = 0; a < 8; ++a)
+  const std::span<const Index> nodes = mesh_.cell_nodes(cells_[e]);
+  dofs.resize(3 * nodes.size());
+  for (std::size_t a = 0; a < nodes.size(); ++a)
     for (int k = 0; k < 3; ++k)
-      dofs[3 * a + k] = dofs_.dof(u_, nodes[a], k);
+      dofs[3 * a + static_cast<std::size_t>(k)] = dofs_.dof(u_, nodes[a], k);
 }
 
 fe::HexCoords SolidTerm::displacements(Index e, const Vector& x) const {
@@ -46,12 +62,32 @@ fe::HexCoords SolidTerm::displacements(Index e, const Vector& x) const {
   return u;
 }
 
+fe::CellNodeCoords SolidTerm::cell_displacements(Index e, const Vector& x) const {
+  const std::span<const Index> nodes = mesh_.cell_nodes(cells_[e]);
+  fe::CellNodeCoords u(static_cast<Index>(nodes.size()), 3);
+  for (std::size_t a = 0; a < nodes.size(); ++a)
+    for (int k = 0; k < 3; ++k)
+      u(static_cast<Index>(a), k) = x[dofs_.dof(u_, nodes[a], k)];
+  return u;
+}
+
 bool SolidTerm::evaluate(Index e, const EvalState& state, LocalVector& r, LocalMatrix* K) const {
+  if (const auto* geo = std::get_if<CellGeometry>(&geometry_[e])) {
+    CellVectorX f;
+    CellMatrixX Ke;
+    if (!solid_cell(*geo, cell_displacements(e, state.x), *laws_[e], f, K ? &Ke : nullptr))
+      return false;
+    r = f;
+    if (K)
+      *K = Ke;
+    return true;
+  }
   HexVector f;
   HexMatrix Ke;
   const auto kernel =
       elements_[e] == SolidElement::MeanDilatation ? mean_dilatation_hex8 : solid_hex8;
-  const bool ok = kernel(geometry_[e], displacements(e, state.x), *laws_[e], f, K ? &Ke : nullptr);
+  const bool ok = kernel(std::get<fe::HexGeometry>(geometry_[e]), displacements(e, state.x),
+                         *laws_[e], f, K ? &Ke : nullptr);
   if (!ok)
     return false;
   r = f;
@@ -65,9 +101,11 @@ std::string SolidTerm::step_rejection(const EvalState& state) const {
 }
 
 CellStress SolidTerm::stress(Index e, const Vector& x) const {
+  if (const auto* geo = std::get_if<CellGeometry>(&geometry_[e]))
+    return solid_cell_stress(*geo, cell_displacements(e, x), *laws_[e]);
   const auto stress = elements_[e] == SolidElement::MeanDilatation ? mean_dilatation_hex8_stress
                                                                    : solid_hex8_stress;
-  return stress(geometry_[e], displacements(e, x), *laws_[e]);
+  return stress(std::get<fe::HexGeometry>(geometry_[e]), displacements(e, x), *laws_[e]);
 }
 
 } // namespace trifem::physics

@@ -1,30 +1,35 @@
 // SPDX-License-Identifier: MIT
-// Hex8 hyperelastic solid over a set of cells (total Lagrangian).
+// Hyperelastic solid over a set of cells of any family (total Lagrangian).
 #pragma once
 
 #include "trifem/dofs/dof_map.hpp"
 #include "trifem/fe/hex8.hpp"
 #include "trifem/material/elastic_law.hpp"
 #include "trifem/mesh/mesh.hpp"
+#include "trifem/physics/solid_cell.hpp"
 #include "trifem/physics/solid_kernel.hpp"
 #include "trifem/physics/term.hpp"
 
 #include <memory>
+#include <variant>
 
 namespace trifem::physics {
 
-/// The hex8 formulation of a solid cell.
+/// The formulation of a solid cell.
 enum class SolidElement {
   Displacement,   ///< standard displacement element (locks when nearly incompressible)
-  MeanDilatation, ///< Q1/P0 mean dilatation (mean_dilatation_kernel.hpp)
+  MeanDilatation, ///< Q1/P0 mean dilatation of a hex8 (mean_dilatation_kernel.hpp)
 };
 
-/// Internal virtual work of hyperelastic hex8 cells. Each cell has a law (shared, immutable).
+/// Internal virtual work of hyperelastic cells: hex8 cells by solid_kernel.hpp and
+/// mean_dilatation_kernel.hpp, the other families by solid_cell.hpp. Each cell has a law
+/// (shared, immutable).
 class SolidTerm final : public Term {
 public:
-  /// `cells[i]` uses `laws[i]` and the formulation `elements[i]` (empty: all displacement);
-  /// reference geometry is computed once here. Throws InputError naming the cell if a cell is
-  /// inverted or degenerate in the reference configuration.
+  /// `cells[i]` uses `laws[i]` and the formulation `elements[i]` (empty: all displacement;
+  /// mean dilatation for hex8 cells only); reference geometry is computed once here. Throws
+  /// InputError naming the cell if a cell is inverted or degenerate in the reference
+  /// configuration.
   SolidTerm(const mesh::Mesh& mesh, const dofs::DofMap& dofs, dofs::FieldId displacement,
             std::vector<Index> cells, std::vector<std::shared_ptr<const material::ElasticLaw>> laws,
             std::vector<SolidElement> elements = {});
@@ -43,6 +48,7 @@ public:
 
 private:
   fe::HexCoords displacements(Index e, const Vector& x) const;
+  fe::CellNodeCoords cell_displacements(Index e, const Vector& x) const;
 
   const mesh::Mesh& mesh_;
   const dofs::DofMap& dofs_;
@@ -50,7 +56,8 @@ private:
   std::vector<Index> cells_;
   std::vector<std::shared_ptr<const material::ElasticLaw>> laws_;
   std::vector<SolidElement> elements_;
-  std::vector<fe::HexGeometry> geometry_;
+  /// Per element: the hex8 kernels' geometry, or that of another family.
+  std::vector<std::variant<fe::HexGeometry, CellGeometry>> geometry_;
 };
 
 } // namespace trifem::physics

@@ -27,8 +27,8 @@ mesh::Mesh distorted_box() {
         (x.array() > 1e-12).all() && (x.array() < spec.size.array() - 1e-12).all();
     out.add_node(interior ? Vec3(x + Vec3(shift(rng), shift(rng), shift(rng))) : x);
   }
-  for (const mesh::Hex8& c : box.cells())
-    out.add_cell(c);
+  for (Index c = 0; c < box.num_cells(); ++c)
+    out.add_cell(box.cell_type(c), box.cell_nodes(c));
   return out;
 }
 

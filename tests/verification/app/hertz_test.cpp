@@ -47,8 +47,8 @@ mesh::Mesh rigid_cap(Indenter indenter, int n) {
     const Real r2 = X.x() * X.x() + (sphere ? X.y() * X.y() : 0.0);
     cap.add_node(X + Vec3(0.0, 0.0, kR - std::sqrt(kR * kR - r2)));
   }
-  for (const auto& cell : flat.cells())
-    cap.add_cell(cell);
+  for (Index c = 0; c < flat.num_cells(); ++c)
+    cap.add_cell(flat.cell_type(c), flat.cell_nodes(c));
   for (const auto& [name, surface] : flat.surfaces())
     cap.add_surface(name, surface);
   for (const auto& [name, nodes] : flat.node_sets())

@@ -23,8 +23,8 @@ mesh::Mesh map_nodes(const mesh::Mesh& mesh, Map&& map) {
   mesh::Mesh out;
   for (Index n = 0; n < mesh.num_nodes(); ++n)
     out.add_node(map(mesh.node(n)));
-  for (const auto& c : mesh.cells())
-    out.add_cell(c);
+  for (Index c = 0; c < mesh.num_cells(); ++c)
+    out.add_cell(mesh.cell_type(c), mesh.cell_nodes(c));
   for (const auto& [name, surface] : mesh.surfaces())
     out.add_surface(name, surface);
   for (const auto& [name, nodes] : mesh.node_sets())

@@ -46,9 +46,9 @@ void write_cook_mesh(int n, const fs::path& file) {
     for (const mesh::Facet& f : *facets)
       out << id++ << " 3 2 " << tag << " " << tag << " " << f.nodes[0] + 1 << " " << f.nodes[1] + 1
           << " " << f.nodes[2] + 1 << " " << f.nodes[3] + 1 << "\n";
-  for (const mesh::Hex8& c : m.cells()) {
+  for (Index c = 0; c < m.num_cells(); ++c) {
     out << id++ << " 5 2 3 3";
-    for (Index a : c)
+    for (Index a : m.cell(c))
       out << " " << a + 1;
     out << "\n";
   }

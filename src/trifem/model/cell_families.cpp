@@ -1,0 +1,78 @@
+// SPDX-License-Identifier: MIT
+#include "trifem/model/cell_families.hpp"
+
+#include "trifem/core/error.hpp"
+
+namespace trifem::model {
+namespace {
+
+/// "a tet4 cell (cell 12 of block 'plug')".
+std::string describe(const mesh::Mesh& mesh, Index c) {
+  for (const auto& [name, cells] : mesh.cell_blocks())
+    if (std::find(cells.begin(), cells.end(), c) != cells.end())
+      return fmt::format("a {} cell (cell {} of block '{}')", mesh::name(mesh.cell_type(c)), c,
+                         name);
+  return fmt::format("a {} cell (cell {})", mesh::name(mesh.cell_type(c)), c);
+}
+
+constexpr const char* kSoFar = "for now only hex8 cells take it";
+
+void check_material(const io::CaseSpec& spec, const Model& model, Index c) {
+  const CellMaterial& m = model.materials[static_cast<std::size_t>(c)];
+  const std::string where = describe(model.mesh, c);
+  TRIFEM_CHECK(!m.mixture,
+               "materials.{}: {} has this mixture material; {} (the mixture fields on tet, wedge "
+               "and hex20 cells come next)",
+               m.name, where, kSoFar);
+  TRIFEM_CHECK(!m.rigid(), "{} is a cell of rigid body '{}'; the cells of rigid bodies are hex8 {}",
+               where, m.name, "for now");
+  const io::MaterialSpec& given = spec.materials.at(m.name);
+  TRIFEM_CHECK(!given.axes, "materials.{}.axes: {} has this material; {}", m.name, where, kSoFar);
+  TRIFEM_CHECK(given.element != io::SolidElementSpec::MeanDilatation,
+               "materials.{}.element: the mean-dilatation element is a hex8's, and {} has this "
+               "material; use element = \"displacement\" there",
+               m.name, where);
+  TRIFEM_CHECK(given.element != io::SolidElementSpec::Auto ||
+                   m.element == physics::SolidElement::Displacement,
+               "materials.{}: the law is nearly incompressible (bulk modulus at least {} times "
+               "the shear modulus), and {} has this material: the displacement element of tet, "
+               "wedge and hex20 cells locks there (too stiff) and their locking-free element is "
+               "not in yet. Set element = \"displacement\" to run it anyway, or mesh the body "
+               "with hex8 cells",
+               m.name, kNearlyIncompressible, where);
+}
+
+void check_analysis(const io::CaseSpec& spec, const std::string& where) {
+  TRIFEM_CHECK(!spec.is_explicit() && !spec.has_explicit_step(),
+               "analysis: dynamic-explicit analyses run on hex8 cells only, and the mesh has {}",
+               where);
+  TRIFEM_CHECK(!spec.has_dynamic_step(),
+               "analysis: dynamic analyses (inertia) run on hex8 cells only, and the mesh has {}",
+               where);
+  TRIFEM_CHECK(spec.body_forces.empty(),
+               "{}: body forces act on hex8 cells only, and the mesh has {}",
+               spec.body_forces.empty() ? "" : spec.body_forces.front().key, where);
+  TRIFEM_CHECK(spec.output.probes.empty() && spec.output.averages.empty(),
+               "output: probes and averages are evaluated in hex8 cells only, and the mesh has {}",
+               where);
+}
+
+} // namespace
+
+void check_cell_families(const io::CaseSpec& spec, const Model& model) {
+  const Index first = model.mesh.first_non_hex8();
+  if (first < 0)
+    return;
+  check_analysis(spec, describe(model.mesh, first));
+  for (Index c = first; c < model.mesh.num_cells(); ++c)
+    if (model.mesh.cell_type(c) != mesh::CellType::Hex8)
+      check_material(spec, model, c);
+}
+
+physics::SolidElement cell_element(const Model& model, Index c) {
+  return model.mesh.cell_type(c) == mesh::CellType::Hex8
+             ? model.materials[static_cast<std::size_t>(c)].element
+             : physics::SolidElement::Displacement;
+}
+
+} // namespace trifem::model

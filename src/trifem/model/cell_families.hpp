@@ -1,0 +1,22 @@
+// SPDX-License-Identifier: MIT
+// What the cells that are not hex8 (tet4, tet10, penta6, hex20) take so far, checked when the
+// model is built so that a case using anything else stops with an error naming its key.
+#pragma once
+
+#include "trifem/io/case_spec.hpp"
+#include "trifem/model/model.hpp"
+
+namespace trifem::model {
+
+/// Throws InputError, naming the case key, the cell family and a cell block holding such a
+/// cell, if a cell that is not a hex8 has a mixture material, is a rigid body's, has material
+/// axes or a law whose element is mean dilatation (given, or chosen by `auto` for a nearly
+/// incompressible law: the displacement element of such cells locks, so it must be asked for),
+/// or if the case has a dynamic or explicit analysis or step, body forces, probes or averages.
+/// Surfaces are made of hex8 faces (mesh::Mesh::surface says so when one is missing).
+void check_cell_families(const io::CaseSpec& spec, const Model& model);
+
+/// The element of cell c: that of its material on a hex8, the displacement element otherwise.
+physics::SolidElement cell_element(const Model& model, Index c);
+
+} // namespace trifem::model

@@ -1,0 +1,11 @@
+Point(1) = {0, 0, 0, 0.5}; Point(2) = {1, 0, 0, 0.5}; Point(3) = {1, 1, 0, 0.5}; Point(4) = {0, 1, 0, 0.5};
+Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};
+Curve Loop(1) = {1, 2, 3, 4}; Plane Surface(1) = {1};
+out[] = Extrude {0, 0, 1} { Surface{1}; Layers{2}; Recombine; };
+Physical Volume("cube") = {out[1]};
+Physical Surface("zmin") = {1};
+Physical Surface("zmax") = {out[0]};
+Physical Surface("ymin") = {out[2]};
+Physical Surface("xmax") = {out[3]};
+Physical Surface("ymax") = {out[4]};
+Physical Surface("xmin") = {out[5]};

@@ -1,0 +1,225 @@
+// SPDX-License-Identifier: MIT
+// The solid element of every cell family (tet4, tet10, penta6, hex20; hex8 alongside) against
+// exact answers: the patch test under a homogeneous finite deformation on distorted cells, the
+// closed-form uniaxial stretch with free lateral faces, and the convergence of the displacement
+// of a thick cylinder under prescribed radial displacements (Lamé) at the order of the family.
+#include "solid_model.hpp"
+#include "trifem/fe/reference_element.hpp"
+#include "trifem/mesh/convert_cells.hpp"
+#include "trifem/tensor/kinematics.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <random>
+
+using namespace trifem;
+using mesh::CellType;
+
+namespace element_families_test {
+
+const CellType kFamilies[] = {CellType::Tet4, CellType::Tet10, CellType::Penta6, CellType::Hex20,
+                              CellType::Hex8};
+
+std::string family_name(const ::testing::TestParamInfo<CellType>& info) {
+  return std::string(mesh::name(info.param));
+}
+
+/// `spec`'s box of hex8 cells whose nodes are moved to move(x), then made of `type` cells (the
+/// mid-edge nodes at the images of the edges' midpoints: curved cells if `move` is not affine).
+template <class Move>
+mesh::Mesh mapped_box(const mesh::BoxSpec& spec, CellType type, Move&& move) {
+  const mesh::Mesh hexes = mesh::make_box(spec);
+  mesh::Mesh cells = mesh::convert_cells(hexes, type);
+  mesh::Mesh out;
+  for (const Vec3& x : cells.nodes())
+    out.add_node(move(x));
+  for (Index c = 0; c < cells.num_cells(); ++c)
+    out.add_cell(cells.cell_type(c), cells.cell_nodes(c));
+  for (const auto& [name, nodes] : cells.node_sets())
+    out.add_node_set(name, nodes);
+  return out;
+}
+
+/// The nodes of the six faces of box "box".
+std::vector<Index> boundary_nodes(const mesh::Mesh& m) {
+  std::vector<Index> nodes;
+  for (const char* side : {"xmin", "xmax", "ymin", "ymax", "zmin", "zmax"}) {
+    const auto& set = m.node_set(std::string("box.") + side);
+    nodes.insert(nodes.end(), set.begin(), set.end());
+  }
+  std::sort(nodes.begin(), nodes.end());
+  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+  return nodes;
+}
+
+/// Prescribes u(X) ramped over [0, 1] at `nodes`, component by component.
+template <class Field>
+void prescribe_field(test::SolidModel& m, const std::vector<Index>& nodes, Field&& u,
+                     std::array<bool, 3> components = {true, true, true}) {
+  for (Index n : nodes) {
+    const Vec3 value = u(m.mesh.node(n));
+    for (int k = 0; k < 3; ++k)
+      if (components[static_cast<std::size_t>(k)])
+        m.conditions.push_back({{m.dofs.dof(m.u, n, k)},
+                                value[k],
+                                dofs::LoadCurve({{0, 0}, {1, 1}}, dofs::Interpolation::Linear)});
+  }
+}
+
+class ElementFamilies : public ::testing::TestWithParam<CellType> {};
+
+// A distorted 3x3x3 block (interior corners moved by up to 0.04 of its 1 mm edge) with
+// u = (F − I) X prescribed on its boundary: the displacement is (F − I) X at every node and
+// the stress that of F in every cell, to round-off.
+TEST_P(ElementFamilies, PatchTestReproducesAHomogeneousFiniteDeformation) {
+  mesh::BoxSpec spec;
+  spec.divisions = {3, 3, 3};
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<Real> shift(-0.04, 0.04);
+  auto distort = [&](const Vec3& x) {
+    const bool interior = (x.array() > 1e-12).all() && (x.array() < 1 - 1e-12).all();
+    return interior ? Vec3(x + Vec3(shift(rng), shift(rng), shift(rng))) : x;
+  };
+  // the hexes' corners are moved before the cells are made: mid-edge nodes at the midpoints
+  const mesh::Mesh hexes = mesh::make_box(spec);
+  mesh::Mesh moved;
+  for (const Vec3& x : hexes.nodes())
+    moved.add_node(distort(x));
+  for (Index c = 0; c < hexes.num_cells(); ++c)
+    moved.add_cell(hexes.cell_type(c), hexes.cell_nodes(c));
+  for (const auto& [name, nodes] : hexes.node_sets())
+    moved.add_node_set(name, nodes);
+  test::SolidModel m(mesh::convert_cells(moved, GetParam()), "neo-hookean",
+                     {{"E", 1.0}, {"nu", 0.3}});
+  Mat3 F;
+  F << 1.2, 0.1, -0.05, 0.02, 0.9, 0.08, -0.1, 0.05, 1.1;
+  prescribe_field(m, boundary_nodes(m.mesh),
+                  [&](const Vec3& X) { return Vec3((F - Mat3::Identity()) * X); });
+  m.build();
+  for (int step = 1; step <= 2; ++step)
+    ASSERT_EQ(m.solve_step(0.5 * step, 0.5).status, solver::SolveStatus::Converged);
+  const Mat3 exact = kinematics::cauchy_from_pk2(F, m.law->stress(F.transpose() * F));
+  const Real bulk = m.law->p_wave_modulus() - 4.0 / 3.0 * m.law->shear_modulus();
+  for (Index e = 0; e < m.solid->num_elements(); ++e) {
+    const physics::CellStress s = m.solid->stress(e, m.problem->state());
+    EXPECT_LE((s.cauchy - exact).norm(), 1e-10 * exact.norm() + 1e-14 * bulk) << "cell " << e;
+    EXPECT_NEAR(s.J, F.determinant(), 1e-12);
+  }
+  for (Index n = 0; n < m.mesh.num_nodes(); ++n) // |u| ~ 0.2 of the 1 mm block
+    EXPECT_LE((m.displacement(n) - (F - Mat3::Identity()) * m.mesh.node(n)).norm(), 1e-12)
+        << "node " << n;
+}
+
+// A 2 x 1 x 1 mm bar stretched to 1.5 times its length with its lateral faces free (symmetry
+// planes at x = 0, y = 0, z = 0): in every cell the Cauchy stress is the closed-form uniaxial
+// stress of the neo-Hookean law, with the lateral stretch t of mu (t² − 1) + lambda ln(l t²) = 0.
+TEST_P(ElementFamilies, UniaxialStretchWithFreeLateralFacesMatchesTheClosedForm) {
+  mesh::BoxSpec spec;
+  spec.size = {2.0, 1.0, 1.0};
+  spec.divisions = {3, 2, 2};
+  test::SolidModel m(mapped_box(spec, GetParam(), [](const Vec3& x) { return x; }), "neo-hookean",
+                     {{"E", 1.0}, {"nu", 0.3}});
+  const Real l = 1.5;
+  m.prescribe(m.mesh.node_set("box.xmin"), 0, 0.0);
+  m.prescribe(m.mesh.node_set("box.ymin"), 1, 0.0);
+  m.prescribe(m.mesh.node_set("box.zmin"), 2, 0.0);
+  m.prescribe(m.mesh.node_set("box.xmax"), 0, (l - 1.0) * 2.0);
+  m.build();
+  for (int step = 1; step <= 4; ++step)
+    ASSERT_EQ(m.solve_step(0.25 * step, 0.25).status, solver::SolveStatus::Converged);
+  const auto [lambda, mu] = material::lame_from_young(1.0, 0.3);
+  Real t = 1.0;
+  for (int it = 0; it < 60; ++it)
+    t -= (mu * (t * t - 1) + lambda * std::log(l * t * t)) / (2 * mu * t + 2 * lambda / t);
+  const Real J = l * t * t;
+  Mat3 exact = Mat3::Zero();
+  exact(0, 0) = (mu * (l * l - 1) + lambda * std::log(J)) / J;
+  for (Index e = 0; e < m.solid->num_elements(); ++e) {
+    const physics::CellStress s = m.solid->stress(e, m.problem->state());
+    EXPECT_LE((s.cauchy - exact).norm(), 1e-10 * exact(0, 0)) << "cell " << e;
+    EXPECT_NEAR(s.J, J, 1e-12);
+  }
+}
+
+/// A quarter of a thick cylinder a <= r <= b (plane strain, u_z = 0 on both ends) with radial
+/// displacements prescribed on both radii: u = (A r + B / r) e_r for any isotropic law in the
+/// small-strain limit (its divergence is constant and its curl zero).
+struct LameCylinder {
+  static constexpr Real a = 1.0, b = 2.0, thickness = 0.25;
+  static constexpr Real ua = 1e-7, ub = 0.5e-7; ///< small: the law's nonlinearity is ~1e-7
+  Real A = (ub * b - ua * a) / (b * b - a * a);
+  Real B = a * (ua - A * a);
+
+  static Vec3 map(const Vec3& s) { // box [0,1]^2 x [0, thickness] -> the quarter cylinder
+    const Real r = a + (b - a) * s.x(), theta = 0.5 * std::numbers::pi * s.y();
+    return {r * std::cos(theta), r * std::sin(theta), s.z()};
+  }
+  Vec3 u(const Vec3& X) const {
+    const Real r = std::hypot(X.x(), X.y());
+    const Real ur = A * r + B / r;
+    return {ur * X.x() / r, ur * X.y() / r, 0.0};
+  }
+};
+
+/// ‖u_h − u‖ in L2 over the mesh, by each family's rule.
+Real l2_error(const test::SolidModel& m, const LameCylinder& exact) {
+  Real sum = 0.0;
+  for (Index c = 0; c < m.mesh.num_cells(); ++c) {
+    const fe::ReferenceCell& ref = fe::reference_cell(m.mesh.cell_type(c));
+    const std::span<const Index> nodes = m.mesh.cell_nodes(c);
+    fe::CellNodeCoords X(static_cast<Index>(nodes.size()), 3), U(X.rows(), 3);
+    for (std::size_t a = 0; a < nodes.size(); ++a) {
+      X.row(static_cast<Index>(a)) = m.mesh.node(nodes[a]).transpose();
+      U.row(static_cast<Index>(a)) = m.displacement(nodes[a]).transpose();
+    }
+    for (const fe::CellQuadraturePoint& p : ref.rule().points) {
+      const fe::ShapeValues N = ref.shape(p.xi);
+      const Vec3 x = X.transpose() * N;
+      const Vec3 uh = U.transpose() * N;
+      const Real dV = (X.transpose() * ref.shape_grad(p.xi)).determinant() * p.weight;
+      sum += (uh - exact.u(x)).squaredNorm() * dV;
+    }
+  }
+  return std::sqrt(sum);
+}
+
+Real lame_error(CellType type, int n) {
+  const LameCylinder exact;
+  mesh::BoxSpec spec;
+  spec.size = {1.0, 1.0, LameCylinder::thickness};
+  spec.divisions = {n, n, 1};
+  test::SolidModel m(mapped_box(spec, type, LameCylinder::map), "neo-hookean",
+                     {{"E", 1.0}, {"nu", 0.3}});
+  auto u = [&](const Vec3& X) { return exact.u(X); };
+  prescribe_field(m, m.mesh.node_set("box.xmin"), u, {true, true, false}); // r = a
+  prescribe_field(m, m.mesh.node_set("box.xmax"), u, {true, true, false}); // r = b
+  m.prescribe(m.mesh.node_set("box.ymin"), 1, 0.0); // theta = 0: the plane y = 0
+  m.prescribe(m.mesh.node_set("box.ymax"), 0, 0.0); // theta = pi/2: the plane x = 0
+  m.prescribe(m.mesh.node_set("box.zmin"), 2, 0.0);
+  m.prescribe(m.mesh.node_set("box.zmax"), 2, 0.0);
+  m.build();
+  EXPECT_EQ(m.solve_step(1.0, 1.0).status, solver::SolveStatus::Converged);
+  return l2_error(m, exact);
+}
+
+// The L2 error of the displacement falls as h² for the linear families and h³ for the
+// quadratic ones (isoparametric: their mid-edge nodes lie on the curved radii).
+TEST_P(ElementFamilies, LameCylinderConvergesAtTheOrderOfTheFamily) {
+  const CellType type = GetParam();
+  const Real coarse = lame_error(type, 6), fine = lame_error(type, 12);
+  const Real rate = std::log2(coarse / fine);
+  RecordProperty("l2_error_6", fmt::format("{:.3e}", coarse));
+  RecordProperty("l2_error_12", fmt::format("{:.3e}", fine));
+  RecordProperty("rate", fmt::format("{:.3f}", rate));
+  const Real order = fe::reference_cell(type).order() + 1.0;
+  EXPECT_GT(rate, order - 0.2) << "errors " << coarse << " " << fine;
+  EXPECT_LT(rate, order + 0.6) << "errors " << coarse << " " << fine;
+  // and the error is small against the displacement (ua = 1e-7 mm, volume 0.59 mm³)
+  EXPECT_LT(fine, 1e-2 * LameCylinder::ua);
+}
+
+INSTANTIATE_TEST_SUITE_P(Cells, ElementFamilies, ::testing::ValuesIn(kFamilies), family_name);
+
+} // namespace element_families_test

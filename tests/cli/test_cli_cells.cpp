@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Cases on meshes of tet4, tet10, penta6 and hex20 cells through the executable: a Gmsh mesh of
 // tet10 cells (made by Gmsh 4.8, tests/unit/mesh/data) stretched with free lateral faces gives
-// the closed-form uniaxial reaction; what these cells do not take yet stops with an error
-// naming the key.
+// the closed-form uniaxial reaction, probes and averages; a traction on its faces is carried by
+// the supports; what these cells do not take yet stops with an error naming the key.
 #include "cli_harness.hpp"
 
 #include <fmt/format.h>
@@ -69,17 +69,59 @@ double uniaxial_force(double l) {
 
 class CellsCli : public Cli {};
 
-TEST_F(CellsCli, AGmshTet10CubeStretchedGivesTheClosedFormReaction) {
-  const fs::path file = write_file("cube.toml", cube_case("cube_tet10_v41.msh", 1.2));
+TEST_F(CellsCli, AGmshTet10CubeStretchedGivesTheClosedFormReactionAndProbes) {
+  const fs::path file = write_file("cube.toml", cube_case("cube_tet10_v41.msh", 1.2) + R"(
+[[output.probe]]
+name = "corner"
+point = [1.0, 1.0, 1.0]
+[[output.probe]]
+name = "inside"
+point = [0.3, 0.6, 0.45]
+[[output.average]]
+name = "mean"
+quantity = "displacement"
+block = "cube"
+)");
   const Result r = trifem({"run", file.string(), "-o", output().string()});
   ASSERT_EQ(r.exit_code, 0) << r;
   const History h = read_history(output() / "history.csv");
   const auto& force = h["xmax.Rx [N]"];
   ASSERT_FALSE(force.empty());
   EXPECT_NEAR(force.back(), uniaxial_force(1.2), 1e-8 * uniaxial_force(1.2));
-  // 100 tets: the VTU files hold them as cells on the mesh's 189 points (corners and mid-edge)
+  // probes at a corner and inside a tet follow the homogeneous stretch (lateral stretch t)
+  const double l = 1.2, lambda = 0.3 / (1.3 * 0.4), mu = 1.0 / 2.6;
+  double t = 1.0;
+  for (int it = 0; it < 60; ++it)
+    t -= (mu * (t * t - 1) + lambda * std::log(l * t * t)) / (2 * mu * t + 2 * lambda / t);
+  for (const auto& [name, X] : {std::pair<std::string, std::array<double, 3>>{"corner", {1, 1, 1}},
+                                {"inside", {0.3, 0.6, 0.45}}}) {
+    EXPECT_NEAR(h[name + ".ux [mm]"].back(), (l - 1) * X[0], 1e-9) << name;
+    EXPECT_NEAR(h[name + ".uy [mm]"].back(), (t - 1) * X[1], 1e-9) << name;
+    EXPECT_NEAR(h[name + ".uz [mm]"].back(), (t - 1) * X[2], 1e-9) << name;
+  }
+  // the average over the cube is that of the homogeneous field: ((l − 1)/2, (t − 1)/2, (t − 1)/2)
+  EXPECT_NEAR(h["mean.ux [mm]"].back(), (l - 1) / 2, 1e-9);
+  EXPECT_NEAR(h["mean.uy [mm]"].back(), (t - 1) / 2, 1e-9);
+  // 100 tets: the VTU files hold them as cells on the mesh's points (corners and mid-edge)
   const std::string vtu = read_text(output() / "volume_0004.vtu");
   EXPECT_TRUE(contains(vtu, R"(NumberOfCells="100")")) << vtu.substr(0, 400);
+}
+
+// The same cube pulled by a dead traction on its tri6 faces: the supports carry the load
+// (the stretch is checked against the closed form in Cells/ElementFamilies).
+TEST_F(CellsCli, ATractionOnTheFacesOfATet10CubeIsCarriedByTheSupports) {
+  std::string text = cube_case("cube_tet10_v41.msh", 1.2);
+  const std::size_t first = text.find("[[boundary.prescribed]]");
+  text.replace(first, text.find("[time]") - first,
+               "[[loads.traction]]\nsurface = \"xmax\"\nvalue = [0.2, 0.0, 0.0]\ncurve = "
+               "\"ramp\"\n\n");
+  text.replace(text.find("set = \"xmax\"\n", text.find("[[output.reaction]]")), 13,
+               "set = \"xmin\"\n");
+  const fs::path file = write_file("cube.toml", text);
+  const Result r = trifem({"run", file.string(), "-o", output().string()});
+  ASSERT_EQ(r.exit_code, 0) << r;
+  const History h = read_history(output() / "history.csv");
+  EXPECT_NEAR(h["xmin.Rx [N]"].back(), -0.2, 1e-10);
 }
 
 TEST_F(CellsCli, ANearlyIncompressibleLawOnTetsAsksForTheElement) {
@@ -98,19 +140,27 @@ TEST_F(CellsCli, ANearlyIncompressibleLawOnTetsAsksForTheElement) {
   EXPECT_EQ(trifem({"run", file.string(), "-o", output().string()}).exit_code, 0);
 }
 
-TEST_F(CellsCli, APressureOnTheFaceOfTetsSaysSurfacesAreHexFacesForNow) {
+// A plate of hex8 cells pressed on the tet faces of the cube: contact takes quad4 facets so far.
+TEST_F(CellsCli, ContactOnTheFacesOfTetsIsRefusedNamingTheSurface) {
   std::string text = cube_case("cube_tet4_v22.msh", 1.1);
   text += R"(
-[[loads.pressure]]
-surface = "zmax"
-value = 0.01
-curve = "ramp"
+[[mesh.box]]
+name = "plate"
+origin = [0.0, 0.0, 1.0]
+size = [1.0, 1.0, 0.2]
+divisions = [1, 1, 1]
+material = "tissue"
+
+[[contact]]
+master = "plate.zmin"
+slave = "zmax"
 )";
   const fs::path file = write_file("cube.toml", text);
   const Result r = trifem({"run", file.string(), "-o", output().string()});
   EXPECT_EQ(r.exit_code, kInvalidInput) << r;
-  EXPECT_TRUE(contains(r.err, "'zmax' is a node set but not a surface")) << r;
-  EXPECT_TRUE(contains(r.err, "tet4")) << r;
+  EXPECT_TRUE(contains(r.err, "contact[1].slave")) << r;
+  EXPECT_TRUE(contains(r.err, "the surface 'zmax' has tri3 facets")) << r;
+  EXPECT_TRUE(contains(r.err, "contact takes the quad4 faces of hex8 cells so far")) << r;
 }
 
 TEST_F(CellsCli, ABoxOfWedgesRunsAndTetsRefuseRefinement) {

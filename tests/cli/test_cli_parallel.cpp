@@ -489,6 +489,60 @@ TEST_F(CliParallel, AnExplicitRunWithAFreeBodyRestartedOnTwoProcessesContinuesTh
   EXPECT_GT(std::abs(b["weight.rz [rad]"].back()), 1e-3) << "the body turns";
 }
 
+/// A 2 x 1 x 1 mm bar of tet10 cells (a box split into Kuhn's tets) pulled by a dead traction on
+/// its tri6 end face and pushed sideways by a follower pressure, with probes and an average.
+std::string tet10_bar_case() {
+  return R"(
+[[mesh.box]]
+name = "bar"
+size = [2.0, 1.0, 1.0]
+divisions = [4, 2, 2]
+cell = "tet10"
+material = "tissue"
+[materials.tissue]
+type = "neo-hookean"
+E = 1.0
+nu = 0.3
+[[boundary.fixed]]
+set = "bar.xmin"
+[curves.ramp]
+points = [[0.0, 0.0], [1.0, 1.0]]
+[[loads.traction]]
+surface = "bar.xmax"
+value = [0.1, 0.0, 0.02]
+curve = "ramp"
+[[loads.pressure]]
+surface = "bar.ymax"
+value = 0.01
+curve = "ramp"
+[time]
+end_time = 1.0
+dt = 0.25
+[output]
+interval = 0.25
+[[output.reaction]]
+set = "bar.xmin"
+[[output.probe]]
+name = "tip"
+point = [2.0, 0.5, 0.5]
+[[output.average]]
+name = "bar"
+quantity = "displacement"
+block = "bar"
+)";
+}
+
+TEST_F(CliParallel, ATet10BarGivesTheOneProcessHistory) {
+  expect_the_one_process_results(write_file("tet10_bar.toml", tet10_bar_case()), 1e-10,
+                                 {"history.csv"});
+}
+
+TEST_F(CliParallel, ATet10BarRestartedOnTwoProcessesContinuesTheOneProcessRun) {
+  const History h = expect_a_two_process_restart_to_continue(
+      write_file("tet10_bar.toml", tet10_bar_case()), 4, 1, 0.5);
+  EXPECT_FALSE(h.columns.empty());
+}
+
 TEST_F(CliParallel, TheKrylovBackendIsRefusedWithOneErrorLine) {
   std::string text = read_text(kExamples / "cantilever" / "cantilever.toml");
   text += "\n[solver]\nlinear_solver = \"krylov\"\n";

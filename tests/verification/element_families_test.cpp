@@ -6,6 +6,7 @@
 #include "solid_model.hpp"
 #include "trifem/fe/reference_element.hpp"
 #include "trifem/mesh/convert_cells.hpp"
+#include "trifem/physics/surface_load_term.hpp"
 #include "trifem/tensor/kinematics.hpp"
 
 #include <gtest/gtest.h>
@@ -141,6 +142,91 @@ TEST_P(ElementFamilies, UniaxialStretchWithFreeLateralFacesMatchesTheClosedForm)
     EXPECT_LE((s.cauchy - exact).norm(), 1e-10 * exact(0, 0)) << "cell " << e;
     EXPECT_NEAR(s.J, J, 1e-12);
   }
+}
+
+/// The neo-Hookean (E = 1, ν = 0.3) bar stretched uniaxially by l with free lateral faces.
+struct UniaxialState {
+  Real t;     ///< lateral stretch: μ (t² − 1) + λ ln(l t²) = 0
+  Real J;     ///< l t²
+  Real sigma; ///< Cauchy stress along the bar
+  Real P;     ///< first Piola–Kirchhoff stress along the bar, J σ / l
+};
+
+UniaxialState uniaxial(Real l) {
+  const auto [lambda, mu] = material::lame_from_young(1.0, 0.3);
+  Real t = 1.0;
+  for (int it = 0; it < 60; ++it)
+    t -= (mu * (t * t - 1) + lambda * std::log(l * t * t)) / (2 * mu * t + 2 * lambda / t);
+  const Real J = l * t * t, sigma = (mu * (l * l - 1) + lambda * std::log(J)) / J;
+  return {t, J, sigma, J * sigma / l};
+}
+
+/// The stretch l at which `stress`(uniaxial(l)) = target, by bisection on [0.3, 3].
+template <class Stress>
+Real stretch_at(Real target, Stress&& stress) {
+  Real lo = 0.3, hi = 3.0;
+  for (int it = 0; it < 200 && hi - lo > 1e-16; ++it) {
+    const Real mid = 0.5 * (lo + hi);
+    (stress(uniaxial(mid)) < target ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+/// A 2 x 1 x 1 mm bar of `type` cells (surfaces box.xmin ... box.zmax).
+mesh::Mesh bar(CellType type) {
+  mesh::BoxSpec spec;
+  spec.size = {2.0, 1.0, 1.0};
+  spec.divisions = {3, 2, 2};
+  spec.cell = type;
+  return mesh::make_box(spec);
+}
+
+/// The bar of m on symmetry supports (x = 0, y = 0, z = 0) loaded on its end face x = 2 by
+/// `load` (a term made of its facets), ramped over 4 steps.
+template <class MakeLoad>
+void load_bar(test::SolidModel& m, MakeLoad&& load) {
+  m.prescribe(m.mesh.node_set("box.xmin"), 0, 0.0);
+  m.prescribe(m.mesh.node_set("box.ymin"), 1, 0.0);
+  m.prescribe(m.mesh.node_set("box.zmin"), 2, 0.0);
+  m.loads.push_back(load(m, m.mesh.surface("box.xmax").facets));
+  m.build();
+  for (int step = 1; step <= 4; ++step)
+    EXPECT_EQ(m.solve_step(0.25 * step, 0.25).status, solver::SolveStatus::Converged);
+}
+
+/// Every node of the bar at its homogeneous uniaxial position (stretch l, lateral t).
+void expect_uniaxial_displacements(const test::SolidModel& m, Real l, Real t) {
+  for (Index n = 0; n < m.mesh.num_nodes(); ++n) {
+    const Vec3 X = m.mesh.node(n);
+    const Vec3 expected((l - 1.0) * X.x(), (t - 1.0) * X.y(), (t - 1.0) * X.z());
+    EXPECT_LE((m.displacement(n) - expected).norm(), 1e-10) << "node " << n; // of the 2 mm bar
+  }
+}
+
+const dofs::LoadCurve kRamp({{0, 0}, {1, 1}}, dofs::Interpolation::Linear);
+
+// A follower pressure p = 0.2 MPa on the end face (tri3, tri6, quad4 or quad8 facets):
+// uniaxial compression with Cauchy stress −p along the bar, at the stretch of the closed form.
+TEST_P(ElementFamilies, FollowerPressureOnTheEndFaceGivesTheClosedFormCompression) {
+  const Real p = 0.2;
+  test::SolidModel m(bar(GetParam()), "neo-hookean", {{"E", 1.0}, {"nu", 0.3}});
+  load_bar(m, [&](test::SolidModel& s, auto facets) {
+    return std::make_unique<physics::PressureTerm>(s.mesh, s.dofs, s.u, facets, p, kRamp);
+  });
+  const Real l = stretch_at(-p, [](const UniaxialState& u) { return u.sigma; });
+  expect_uniaxial_displacements(m, l, uniaxial(l).t);
+}
+
+// A dead traction T = 0.2 MPa per reference area on the end face: P = T along the bar.
+TEST_P(ElementFamilies, DeadTractionOnTheEndFaceGivesTheClosedFormStretch) {
+  const Real T = 0.2;
+  test::SolidModel m(bar(GetParam()), "neo-hookean", {{"E", 1.0}, {"nu", 0.3}});
+  load_bar(m, [&](test::SolidModel& s, auto facets) {
+    return std::make_unique<physics::TractionTerm>(s.mesh, s.dofs, s.u, facets, Vec3(T, 0, 0),
+                                                   kRamp);
+  });
+  const Real l = stretch_at(T, [](const UniaxialState& u) { return u.P; });
+  expect_uniaxial_displacements(m, l, uniaxial(l).t);
 }
 
 /// A quarter of a thick cylinder a <= r <= b (plane strain, u_z = 0 on both ends) with radial

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "trifem/analysis/probes.hpp"
 
-#include "trifem/fe/hex8.hpp"
+#include "trifem/fe/reference_element.hpp"
 
 #include <fmt/format.h>
 
@@ -26,20 +26,20 @@ std::pair<dofs::FieldId, Real> nodal_field(const model::Model& model, std::strin
 Vec3 nodal_quantity(const model::Model& model, const io::ProbeQuantity& q, Index cell,
                     const Vec3& xi, const Vector& x) {
   const auto [field, scale] = nodal_field(model, q.name);
-  const fe::HexShape N = fe::hex8_shape(xi);
-  const mesh::Hex8& nodes = model.mesh.cell(cell);
+  const fe::ShapeValues N = fe::reference_cell(model.mesh.cell_type(cell)).shape(xi);
+  const std::span<const Index> nodes = model.mesh.cell_nodes(cell);
   Vec3 value = Vec3::Zero();
-  for (int a = 0; a < 8; ++a) {
+  for (Index a = 0; a < N.size(); ++a) {
     if (N[a] == 0.0)
       continue; // a point on a node or an edge takes exactly the nodal values there
     for (int k = 0; k < 3; ++k)
-      value[k] += N[a] * x[model.dofs.dof(field, nodes[a], k)];
+      value[k] += N[a] * x[model.dofs.dof(field, nodes[static_cast<std::size_t>(a)], k)];
   }
   value *= scale;
   if (q.name == "position") {
     Vec3 X = Vec3::Zero();
-    for (int a = 0; a < 8; ++a)
-      X += N[a] * model.mesh.node(nodes[a]);
+    for (Index a = 0; a < N.size(); ++a)
+      X += N[a] * model.mesh.node(nodes[static_cast<std::size_t>(a)]);
     value += X;
   }
   return value;

@@ -82,6 +82,11 @@ std::uint64_t mesh_hash(const mesh::Mesh& mesh) {
         h.integer(node);
       h.integer(f.cell);
       h.integer(f.local_face);
+      if (!f.is_quad4()) { // (the facets of hex8 cells hash as before)
+        h.integer(static_cast<std::int64_t>(f.type));
+        for (const Index node : f.mid_edge_nodes)
+          h.integer(node);
+      }
     }
   }
   h.integer(static_cast<std::int64_t>(mesh.cell_data().size()));

@@ -63,12 +63,25 @@ void log_mixture_scales(const model::Model& model) {
   }
 }
 
+/// "12 hex8 cells", "100 tet10 cells", "8 hex8 + 6 penta6 cells".
+std::string cell_counts(const mesh::Mesh& mesh) {
+  std::map<mesh::CellType, Index> count;
+  for (Index c = 0; c < mesh.num_cells(); ++c)
+    ++count[mesh.cell_type(c)];
+  if (count.empty())
+    return "0 cells";
+  std::vector<std::string> parts;
+  for (const auto& [type, n] : count)
+    parts.push_back(fmt::format("{} {}", n, mesh::name(type)));
+  return fmt::format("{} cells", fmt::join(parts, " + "));
+}
+
 void log_model(const io::CaseSpec& spec, const model::Model& model) {
   log::info("trifem {}  case {}", TRIFEM_VERSION, spec.file.string());
   if (!spec.title.empty())
     log::info("  {}", spec.title);
-  log::info("  mesh: {} nodes, {} hex8 cells; {} equations, {} prescribed DOFs; {} threads{}",
-            model.mesh.num_nodes(), model.mesh.num_cells(), model.dofs.num_equations(),
+  log::info("  mesh: {} nodes, {}; {} equations, {} prescribed DOFs; {} threads{}",
+            model.mesh.num_nodes(), cell_counts(model.mesh), model.dofs.num_equations(),
             model.dofs.num_constrained(), omp_get_max_threads(),
             parallel::active() ? fmt::format(" on each of {} processes", parallel::size()) : "");
   log::info("  scales: length {:.4g} mm, modulus {:.4g} MPa", model.length_scale,

@@ -24,8 +24,8 @@ struct BoxSpec {
 
 /// Builds the box: one cell block `name`, six outward-oriented surfaces
 /// `name.xmin, name.xmax, name.ymin, name.ymax, name.zmin, name.zmax` (each also a node set),
-/// and the node set `name.all`; cells other than hex8 have the six node sets of those names but
-/// no surfaces (convert_cells). Throws InputError on invalid parameters.
+/// and the node set `name.all` (with cells other than hex8: their facets on the faces,
+/// convert_cells). Throws InputError on invalid parameters.
 Mesh make_box(const BoxSpec& spec);
 
 /// The 1-D node coordinates of a graded division of [0, length] into n cells.

@@ -82,6 +82,29 @@ std::map<std::string, std::vector<Index>> node_sets(const Mesh& hexes, const Mid
   return sets;
 }
 
+/// The faces of the cells `children` of a hex that lie on its facet f (their corners among
+/// f's), as quads (a triangle's fourth corner repeating its third).
+void add_child_faces(const Mesh& out, const std::vector<Index>& children, const Facet& f,
+                     std::vector<std::array<Index, 4>>& faces) {
+  for (Index child : children) {
+    const std::span<const Index> nodes = out.cell_nodes(child);
+    for (const CellFace& face : cell_faces(out.cell_type(child))) {
+      const int corners = face.type == FacetType::Tri3 || face.type == FacetType::Tri6 ? 3 : 4;
+      std::array<Index, 4> quad{};
+      bool on_f = true;
+      for (int i = 0; i < corners; ++i) {
+        quad[static_cast<std::size_t>(i)] = nodes[static_cast<std::size_t>(face.nodes[i])];
+        on_f =
+            on_f && std::ranges::find(f.nodes, quad[static_cast<std::size_t>(i)]) != f.nodes.end();
+      }
+      if (corners == 3)
+        quad[3] = quad[2];
+      if (on_f)
+        faces.push_back(quad);
+    }
+  }
+}
+
 } // namespace
 
 Mesh convert_cells(const Mesh& hexes, CellType type) {
@@ -110,7 +133,15 @@ Mesh convert_cells(const Mesh& hexes, CellType type) {
     }
   }
   for (auto& [name, set] : node_sets(hexes, mid))
-    out.add_node_set(name, std::move(set));
+    if (!hexes.has_surface(name)) // (re-created with the surface below)
+      out.add_node_set(name, std::move(set));
+  for (const auto& [name, surface] : hexes.surfaces()) {
+    std::vector<std::array<Index, 4>> faces;
+    for (const Facet& f : surface.facets)
+      if (f.bounds_cell())
+        add_child_faces(out, children[static_cast<std::size_t>(f.cell)], f, faces);
+    out.add_surface(name, Surface{out.orient_quads(faces)});
+  }
   for (const auto& [name, cells] : hexes.cell_blocks()) {
     std::vector<Index> block;
     for (Index c : cells)

@@ -15,8 +15,9 @@ namespace trifem::mesh {
 /// tet10 and hex20 with a node at the midpoint of every edge. The cells of a hex follow one
 /// another and take its cell blocks and cell data; node sets are kept, and a mid-edge node joins
 /// every node set holding both ends of its edge (which, on a box, puts the nodes of a face's
-/// edges on the face). Surfaces are kept as node sets only for the families without facets
-/// (all but hex8). InputError if `hexes` has cells other than hex8.
+/// edges on the face). A surface's facets on hex faces become the faces of the cells on them
+/// (tri3 or tri6 facets of tets, those of wedges on its bottom and top faces, quad8 facets of
+/// hex20), oriented as they were. InputError if `hexes` has cells other than hex8.
 Mesh convert_cells(const Mesh& hexes, CellType type);
 
 } // namespace trifem::mesh

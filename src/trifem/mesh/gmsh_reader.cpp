@@ -13,7 +13,6 @@
 #include <cstdint>
 #include <limits>
 #include <map>
-#include <set>
 #include <span>
 #include <string>
 #include <string_view>
@@ -721,77 +720,32 @@ void check_surface_kinds(const LineReader& in, const GmshData& d,
       continue;
     const PendingQuad& q = d.quads[quads[0]];
     throw InputError(fmt::format(
-        "{}: element {} of physical surface '{}' is not a face of any hex8 element, while "
+        "{}: element {} of physical surface '{}' is not a face of any cell, while "
         "its other quads are (a surface mesh that bounds no cell, such as a rigid bone surface, "
         "must be a physical surface of its own)",
         in.at(q.line), q.element, group_name(d, {2, physical})));
   }
 }
 
-/// The sorted corners of a face (a triangle's fourth entry −1).
-std::array<Index, 4> corner_key(std::array<Index, 4> corners, bool triangle) {
-  if (triangle)
-    corners[3] = -1;
-  std::sort(corners.begin(), corners.end());
-  return corners;
-}
-
-/// The corner keys of the faces of the cells that are not hex8.
-std::set<std::array<Index, 4>> non_hex8_faces(const Mesh& mesh) {
-  std::set<std::array<Index, 4>> keys;
-  for (Index c = 0; c < mesh.num_cells(); ++c) {
-    if (mesh.cell_type(c) == CellType::Hex8)
-      continue;
-    const std::span<const Index> nodes = mesh.cell_nodes(c);
-    for (const CellFace& face : cell_faces(mesh.cell_type(c))) {
-      const bool triangle = face.type == FacetType::Tri3 || face.type == FacetType::Tri6;
-      std::array<Index, 4> corners{};
-      for (int i = 0; i < (triangle ? 3 : 4); ++i)
-        corners[i] = nodes[static_cast<std::size_t>(face.nodes[i])];
-      keys.insert(corner_key(corners, triangle));
-    }
-  }
-  return keys;
-}
-
-/// The physical surfaces that can only be node sets for now: those with a quadratic element or
-/// a face of a cell that is not a hex8 (a tet, wedge or hex20). Each becomes the node set of
-/// all its elements' nodes; the surface of the same name is missing (Mesh::surface says why).
-/// The other surface elements are left in d.quads.
-void add_face_node_sets(const LineReader& in, GmshData& d) {
-  const std::set<std::array<Index, 4>> faces = non_hex8_faces(d.mesh);
-  std::set<int> node_set_only;
-  for (const PendingQuad& q : d.quads)
-    if (!q.mid_edge_nodes.empty() || faces.contains(corner_key(q.nodes, q.triangle())))
-      node_set_only.insert(q.physical);
-  if (node_set_only.empty())
-    return;
-  std::map<int, std::vector<Index>> nodes;
-  std::vector<PendingQuad> rest;
-  for (PendingQuad& q : d.quads) {
-    if (!node_set_only.contains(q.physical)) {
-      rest.push_back(std::move(q));
-      continue;
-    }
-    std::vector<Index>& set = nodes[q.physical];
-    set.insert(set.end(), q.nodes.begin(), q.nodes.end());
-    set.insert(set.end(), q.mid_edge_nodes.begin(), q.mid_edge_nodes.end());
-  }
-  d.quads = std::move(rest);
-  for (auto& entry : nodes) {
-    const DimTag group{2, entry.first};
-    register_named(in, group_line(d, group),
-                   [&] { d.mesh.add_node_set(group_name(d, group), std::move(entry.second)); });
-  }
+/// A quadratic element of a physical surface must be a cell's face (surface meshes that bound
+/// no cell are linear).
+void check_quadratic_faces(const LineReader& in, const GmshData& d,
+                           const std::vector<Facet>& facets) {
+  for (std::size_t i = 0; i < facets.size(); ++i)
+    TRIFEM_CHECK(facets[i].bounds_cell() || d.quads[i].mid_edge_nodes.empty(),
+                 "{}: element {} of physical surface '{}' is quadratic but no face of a cell (a "
+                 "surface mesh that bounds no cell is made of quad4 or triangle3 elements)",
+                 in.at(d.quads[i].line), d.quads[i].element,
+                 group_name(d, {2, d.quads[i].physical}));
 }
 
 void add_surfaces(const LineReader& in, GmshData& d) {
-  add_face_node_sets(in, d);
   std::vector<std::array<Index, 4>> quads;
   quads.reserve(d.quads.size());
   for (const PendingQuad& q : d.quads)
     quads.push_back(q.nodes);
   const std::vector<Facet> facets = d.mesh.orient_quads(quads);
+  check_quadratic_faces(in, d, facets);
   check_surface_kinds(in, d, facets);
   std::map<int, Surface> surfaces;
   for (std::size_t i = 0; i < facets.size(); ++i)

@@ -19,9 +19,9 @@ namespace trifem::mesh {
 ///   against the hex that owns the face (each also registers a node set of the same name). A
 ///   quad on a face between two hexes is oriented out of the hex whose face has the quad's node
 ///   order (right-hand rule), else out of the hex with the lower index. Quads in no physical
-///   group are ignored. A physical surface with a face of a tet, wedge or hex20 cell, or with
-///   quadratic elements (triangle6, type 9; quad8, type 16), becomes a node set only (of all
-///   its elements' nodes) for now: surfaces are made of hex8 faces.
+///   group are ignored. Triangles (triangle3, type 2; triangle6, 9) and quads (quad4, 3; quad8,
+///   16) on the faces of tets, wedges and hex20 cells likewise become their facets (of the
+///   cell face's type: a tet10's face is a tri6 facet with its mid-edge nodes).
 /// - Elements of dimension 0 or 1 in physical point/curve groups become node sets; otherwise
 ///   they are ignored.
 /// - Names come from $PhysicalNames; an unnamed physical group of dimension 0/1/2/3 is called

@@ -37,11 +37,22 @@ const auto& find_named(const Map& map, const std::string& kind, const std::strin
   return it->second;
 }
 
-/// Key of a face independent of node order: the sorted node indices.
+/// Key of a face independent of node order: its sorted corners (a triangle's fourth −1).
 using FaceKey = std::array<Index, 4>;
 FaceKey face_key(std::array<Index, 4> nodes) {
   std::sort(nodes.begin(), nodes.end());
   return nodes;
+}
+
+bool is_triangle(FacetType type) {
+  return type == FacetType::Tri3 || type == FacetType::Tri6;
+}
+
+/// The key of a quad given by its corners (a triangle's fourth repeating its third).
+FaceKey quad_key(std::array<Index, 4> corners) {
+  if (corners[3] == corners[2])
+    corners[3] = -1;
+  return face_key(corners);
 }
 struct FaceKeyHash {
   std::size_t operator()(const FaceKey& k) const {
@@ -52,23 +63,31 @@ struct FaceKeyHash {
   }
 };
 
+/// The facet of face `face` (of cell_faces()) of cell `cell`.
 Facet make_facet(const Mesh& mesh, Index cell, int face) {
+  const CellFace& local = cell_faces(mesh.cell_type(cell))[static_cast<std::size_t>(face)];
+  const std::span<const Index> nodes = mesh.cell_nodes(cell);
   Facet f;
   f.cell = cell;
   f.local_face = face;
-  const std::span<const Index> nodes = mesh.cell_nodes(cell);
-  for (int i = 0; i < 4; ++i)
-    f.nodes[i] = nodes[static_cast<std::size_t>(kHexFaces[face][i])];
+  f.type = local.type;
+  const std::size_t corners = is_triangle(local.type) ? 3 : 4;
+  for (std::size_t i = 0; i < local.nodes.size(); ++i) {
+    const Index n = nodes[static_cast<std::size_t>(local.nodes[i])];
+    (i < corners ? f.nodes[i] : f.mid_edge_nodes[i - corners]) = n;
+  }
+  if (corners == 3)
+    f.nodes[3] = f.nodes[2];
   return f;
 }
 
 /// The key of face `face` of cell c: its sorted corners (a triangle's fourth entry −1).
 FaceKey cell_face_key(const Mesh& mesh, Index c, const CellFace& face) {
   const std::span<const Index> nodes = mesh.cell_nodes(c);
-  const bool triangle = face.type == FacetType::Tri3 || face.type == FacetType::Tri6;
   std::array<Index, 4> corners{};
   for (int i = 0; i < 4; ++i)
-    corners[i] = triangle && i == 3 ? -1 : nodes[static_cast<std::size_t>(face.nodes[i])];
+    corners[i] =
+        is_triangle(face.type) && i == 3 ? -1 : nodes[static_cast<std::size_t>(face.nodes[i])];
   return face_key(corners);
 }
 
@@ -82,12 +101,17 @@ void for_each_face(const Mesh& mesh, Visit&& visit) {
   }
 }
 
-/// True if `b` lists the nodes of `a` in the same cyclic order (the same oriented quad).
+/// True if `b` lists the corners of `a` in the same cyclic order (the same oriented quad or
+/// triangle; a triangle's fourth corner repeats its third).
 bool same_orientation(const std::array<Index, 4>& a, const std::array<Index, 4>& b) {
-  for (int shift = 0; shift < 4; ++shift)
-    if (a[0] == b[shift] && a[1] == b[(shift + 1) % 4] && a[2] == b[(shift + 2) % 4] &&
-        a[3] == b[(shift + 3) % 4])
+  const int n = a[3] == a[2] ? 3 : 4;
+  for (int shift = 0; shift < n; ++shift) {
+    bool same = true;
+    for (int i = 0; i < n && same; ++i)
+      same = a[static_cast<std::size_t>(i)] == b[static_cast<std::size_t>((shift + i) % n)];
+    if (same)
       return true;
+  }
   return false;
 }
 
@@ -183,11 +207,6 @@ const std::vector<Index>& Mesh::node_set(const std::string& name) const {
   return find_named(node_sets_, "node set", name);
 }
 const Surface& Mesh::surface(const std::string& name) const {
-  TRIFEM_CHECK(surfaces_.contains(name) || !node_sets_.contains(name) || all_hex8(),
-               "'{}' is a node set but not a surface: surfaces (surface loads, contact, baths, "
-               "drained or impermeable faces) are made of the faces of hex8 cells for now, and "
-               "this mesh has {} cells",
-               name, mesh::name(cell_type(first_non_hex8())));
   return find_named(surfaces_, "surface", name);
 }
 const std::vector<Index>& Mesh::cell_block(const std::string& name) const {
@@ -224,6 +243,9 @@ void Mesh::append(const Mesh& other) {
         f.cell += cell_offset;
       for (Index& n : f.nodes)
         n += node_offset;
+      for (Index& n : f.mid_edge_nodes)
+        if (n >= 0)
+          n += node_offset;
     }
     add_surface(name, std::move(shifted));
   }
@@ -257,20 +279,15 @@ void Mesh::append_cell_data(const Mesh& other, Index cell_offset) {
 
 std::vector<Facet> Mesh::find_facets(const std::vector<std::array<Index, 4>>& quads) const {
   std::unordered_map<FaceKey, Facet, FaceKeyHash> faces;
-  for (Index c = 0; c < num_cells(); ++c) {
-    if (cell_type(c) != CellType::Hex8)
-      continue;
-    for (int f = 0; f < 6; ++f) {
-      Facet facet = make_facet(*this, c, f);
-      faces.try_emplace(face_key(facet.nodes), facet);
-    }
-  }
+  for_each_face(*this, [&](Index c, int f, const FaceKey& key) {
+    if (!faces.contains(key))
+      faces.emplace(key, make_facet(*this, c, f));
+  });
   std::vector<Facet> found;
   found.reserve(quads.size());
   for (const auto& quad : quads) {
-    const auto it = faces.find(face_key(quad));
-    TRIFEM_CHECK(it != faces.end(), "quad ({}) is not a face of any hex8 cell",
-                 fmt::join(quad, ", "));
+    const auto it = faces.find(quad_key(quad));
+    TRIFEM_CHECK(it != faces.end(), "quad ({}) is not a face of any cell", fmt::join(quad, ", "));
     found.push_back(it->second);
   }
   return found;
@@ -280,20 +297,18 @@ std::vector<Facet> Mesh::orient_quads(const std::vector<std::array<Index, 4>>& q
   std::unordered_map<FaceKey, std::size_t, FaceKeyHash> slot_of;
   std::vector<std::size_t> slot(quads.size());
   for (std::size_t i = 0; i < quads.size(); ++i)
-    slot[i] = slot_of.try_emplace(face_key(quads[i]), slot_of.size()).first->second;
+    slot[i] = slot_of.try_emplace(quad_key(quads[i]), slot_of.size()).first->second;
   std::vector<std::array<Facet, 2>> found(slot_of.size()); // cell -1: not found yet
-  for (Index c = 0; c < num_cells(); ++c)
-    for (int f = 0; f < 6 && cell_type(c) == CellType::Hex8; ++f) {
-      const Facet facet = make_facet(*this, c, f);
-      const auto it = slot_of.find(face_key(facet.nodes));
-      if (it == slot_of.end())
-        continue;
-      std::array<Facet, 2>& sides = found[it->second];
-      if (sides[0].cell < 0)
-        sides[0] = facet;
-      else if (sides[1].cell < 0)
-        sides[1] = facet;
-    }
+  for_each_face(*this, [&](Index c, int f, const FaceKey& key) {
+    const auto it = slot_of.find(key);
+    if (it == slot_of.end())
+      return;
+    std::array<Facet, 2>& sides = found[it->second];
+    if (sides[0].cell < 0)
+      sides[0] = make_facet(*this, c, f);
+    else if (sides[1].cell < 0)
+      sides[1] = make_facet(*this, c, f);
+  });
   std::vector<Facet> facets;
   facets.reserve(quads.size());
   for (std::size_t i = 0; i < quads.size(); ++i) {
@@ -324,9 +339,6 @@ std::vector<Facet> Mesh::boundary_facets() const {
   for (const auto& [key, face] : faces) {
     if (face.count != 1)
       continue;
-    TRIFEM_VERIFY(cell_type(face.cell) == CellType::Hex8,
-                  "the boundary of cell {} ({}) has no facets yet", face.cell,
-                  name(cell_type(face.cell)));
     boundary.push_back(make_facet(*this, face.cell, face.local_face));
   }
   std::sort(boundary.begin(), boundary.end(), [](const Facet& a, const Facet& b) {
@@ -338,8 +350,12 @@ std::vector<Facet> Mesh::boundary_facets() const {
 std::vector<Index> surface_nodes(const Surface& surface) {
   std::vector<Index> nodes;
   nodes.reserve(surface.facets.size() * 4);
-  for (const Facet& f : surface.facets)
+  for (const Facet& f : surface.facets) {
     nodes.insert(nodes.end(), f.nodes.begin(), f.nodes.end());
+    for (Index n : f.mid_edge_nodes)
+      if (n >= 0)
+        nodes.push_back(n);
+  }
   std::sort(nodes.begin(), nodes.end());
   nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
   return nodes;

@@ -20,15 +20,30 @@ namespace trifem::mesh {
 /// Hex8 connectivity (VTK/Gmsh order, see hex_faces.hpp).
 using Hex8 = std::array<Index, 8>;
 
-/// A quad4 boundary facet. `nodes` are ordered so that the right-hand rule gives the normal
-/// pointing out of `cell`; `local_face` indexes kHexFaces. A facet of a surface mesh that bounds
-/// no cell (a rigid bone surface) has cell −1 and its normal from its node order.
+/// A boundary facet: a face of `cell` (its face `local_face` of cell_faces(); for a hex8 that of
+/// kHexFaces) or, with cell −1, a facet of a surface mesh that bounds no cell (a rigid bone
+/// surface), whose normal comes from its node order. `nodes` are its corners, ordered so that
+/// the right-hand rule gives the normal pointing out of `cell`; a triangle's fourth corner
+/// repeats its third (a surface mesh's triangles are such quads, of type Quad4). A quadratic
+/// facet (tri6, quad8: faces of tet10 and hex20 cells) also has its mid-edge nodes.
 struct Facet {
   std::array<Index, 4> nodes{};
   Index cell = -1;
   int local_face = -1;
+  FacetType type = FacetType::Quad4;
+  std::array<Index, 4> mid_edge_nodes{-1, -1, -1, -1}; ///< tri6: 3, quad8: 4, else none
 
   bool bounds_cell() const { return cell >= 0; }
+  /// A quad4 facet (or a triangle of a surface mesh as a quad): what the facet kernels of
+  /// contact, baths, fluxes and frames take so far.
+  bool is_quad4() const { return type == FacetType::Quad4; }
+  int num_nodes() const { return mesh::num_nodes(type); }
+  /// Node i in the order of its type: the corners, then the mid-edge nodes.
+  Index node(int i) const {
+    const int corners = type == FacetType::Tri3 || type == FacetType::Tri6 ? 3 : 4;
+    return i < corners ? nodes[static_cast<std::size_t>(i)]
+                       : mid_edge_nodes[static_cast<std::size_t>(i - corners)];
+  }
 };
 
 /// A named surface: a list of oriented facets.
@@ -51,8 +66,7 @@ struct CellData {
   }
 };
 
-/// A mesh with named sets. Names are unique per kind. Surfaces (Facet) are faces of hex8 cells
-/// or of no cell.
+/// A mesh with named sets. Names are unique per kind.
 class Mesh {
 public:
   /// Appends a node at reference position x; returns its index.
@@ -124,15 +138,16 @@ public:
   /// with exactly these nodes. Throws InputError naming the first quad that is no cell face.
   std::vector<Facet> find_facets(const std::vector<std::array<Index, 4>>& quads) const;
 
-  /// For each quad (its node order is its orientation), the facet of the cell face with these
-  /// nodes, oriented outward: of the cells that have the quad as a face, the one whose face
-  /// lists its nodes in the same cyclic order (an interior face names its side by its
-  /// orientation), else the first; a quad that is no cell's face stays as given (cell −1: a
-  /// surface mesh). Only the quads are hashed, so this stays cheap for large meshes.
+  /// For each quad (its node order is its orientation; a triangle's fourth node repeats its
+  /// third), the facet of the cell face with these corners, oriented outward (with the cell
+  /// face's own type and mid-edge nodes): of the cells that have the quad as a face, the one
+  /// whose face lists its corners in the same cyclic order (an interior face names its side by
+  /// its orientation), else the first; a quad that is no cell's face stays as given (cell −1,
+  /// type Quad4: a surface mesh). Only the quads are hashed, so this stays cheap for large
+  /// meshes.
   std::vector<Facet> orient_quads(const std::vector<std::array<Index, 4>>& quads) const;
 
-  /// Facets of all cell faces that belong to exactly one cell (the mesh boundary). A program
-  /// error if a boundary face is not that of a hex8.
+  /// Facets of all cell faces that belong to exactly one cell (the mesh boundary).
   std::vector<Facet> boundary_facets() const;
 
 private:
@@ -154,8 +169,9 @@ private:
 /// Sorted, unique node indices of a surface.
 std::vector<Index> surface_nodes(const Surface& surface);
 
-/// The area vector of a facet in the reference configuration, ½ (x2 − x0) × (x3 − x1) (exact for
-/// a flat quad; for a triangle, a quad whose last node repeats the third, its area vector).
+/// The area vector of a facet's corners in the reference configuration, ½ (x2 − x0) × (x3 − x1)
+/// (exact for a flat quad; for a triangle, whose last corner repeats the third, its area
+/// vector; a curved quadratic facet's is that of its corners).
 Vec3 facet_area_vector(const Mesh& mesh, const Facet& facet);
 
 /// The mean facet size √(area) of a surface in the reference configuration [length].

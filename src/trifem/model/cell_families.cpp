@@ -52,9 +52,6 @@ void check_analysis(const io::CaseSpec& spec, const std::string& where) {
   TRIFEM_CHECK(spec.body_forces.empty(),
                "{}: body forces act on hex8 cells only, and the mesh has {}",
                spec.body_forces.empty() ? "" : spec.body_forces.front().key, where);
-  TRIFEM_CHECK(spec.output.probes.empty() && spec.output.averages.empty(),
-               "output: probes and averages are evaluated in hex8 cells only, and the mesh has {}",
-               where);
 }
 
 } // namespace
@@ -67,6 +64,17 @@ void check_cell_families(const io::CaseSpec& spec, const Model& model) {
   for (Index c = first; c < model.mesh.num_cells(); ++c)
     if (model.mesh.cell_type(c) != mesh::CellType::Hex8)
       check_material(spec, model, c);
+}
+
+const mesh::Surface& quad4_surface(const mesh::Mesh& mesh, const std::string& name,
+                                   std::string_view use) {
+  const mesh::Surface& surface = mesh.surface(name);
+  for (const mesh::Facet& f : surface.facets)
+    TRIFEM_CHECK(f.is_quad4(),
+                 "the surface '{}' has {} facets (faces of {}): {} takes the quad4 faces of hex8 "
+                 "cells so far (surface loads and the conditions on a surface's nodes take any)",
+                 name, mesh::name(f.type), describe(mesh, f.cell), use);
+  return surface;
 }
 
 physics::SolidElement cell_element(const Model& model, Index c) {

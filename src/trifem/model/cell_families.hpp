@@ -12,9 +12,14 @@ namespace trifem::model {
 /// cell, if a cell that is not a hex8 has a mixture material, is a rigid body's, has material
 /// axes or a law whose element is mean dilatation (given, or chosen by `auto` for a nearly
 /// incompressible law: the displacement element of such cells locks, so it must be asked for),
-/// or if the case has a dynamic or explicit analysis or step, body forces, probes or averages.
-/// Surfaces are made of hex8 faces (mesh::Mesh::surface says so when one is missing).
+/// or if the case has a dynamic or explicit analysis or step or body forces.
 void check_cell_families(const io::CaseSpec& spec, const Model& model);
+
+/// The surface `name` of the mesh for `use` (contact, a bath, ...), whose kernels take quad4
+/// facets so far: InputError if one of its facets is a tri3, tri6 or quad8 (the face of a tet,
+/// wedge or hex20 cell; surface loads take those).
+const mesh::Surface& quad4_surface(const mesh::Mesh& mesh, const std::string& name,
+                                   std::string_view use);
 
 /// The element of cell c: that of its material on a hex8, the displacement element otherwise.
 physics::SolidElement cell_element(const Model& model, Index c);

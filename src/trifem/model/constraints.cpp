@@ -3,6 +3,7 @@
 
 #include "trifem/contact/rigid_wall_term.hpp"
 #include "trifem/core/log.hpp"
+#include "trifem/model/cell_families.hpp"
 #include "trifem/model/conditions.hpp"
 #include "trifem/physics/linear_constraint_term.hpp"
 
@@ -148,7 +149,7 @@ void check_not_rigid(const std::set<Index>& rigid, Index node) {
 
 void surface_equations(const io::ConstraintSpec& c, const Model& model,
                        const std::set<Index>& rigid, HeldDirections& held, Equations& out) {
-  const mesh::Surface& surface = model.mesh.surface(c.surface);
+  const mesh::Surface& surface = quad4_surface(model.mesh, c.surface, "a constraint");
   if (c.kind == ConstraintKind::SymmetryPlane) {
     const Vec3 n = plane_normal(model.mesh, surface);
     for (Index node : mesh::surface_nodes(surface)) {
@@ -201,7 +202,7 @@ std::vector<Index> wall_nodes(const Model& model, const mesh::Surface& surface, 
 
 std::unique_ptr<physics::Term> rigid_wall(const io::CaseSpec& spec, const io::ConstraintSpec& c,
                                           Model& model, const std::set<Index>& fixed) {
-  const mesh::Surface& surface = model.mesh.surface(c.surface);
+  const mesh::Surface& surface = quad4_surface(model.mesh, c.surface, "a constraint");
   std::vector<Index> nodes = wall_nodes(model, surface, c.normal, fixed);
   const auto all = static_cast<Index>(mesh::surface_nodes(surface).size());
   TRIFEM_CHECK(!nodes.empty(),

@@ -4,6 +4,7 @@
 #include "trifem/contact/contact_law.hpp"
 #include "trifem/contact/mixture_contact_law.hpp"
 #include "trifem/core/log.hpp"
+#include "trifem/model/cell_families.hpp"
 #include "trifem/model/conditions.hpp"
 
 #include <cmath>
@@ -122,8 +123,9 @@ void check_initial_geometry(const io::ContactSpec& c, const contact::ContactTerm
 void add_contact_fields(const io::CaseSpec& spec, Model& model) {
   for (std::size_t i = 0; i < spec.contacts.size(); ++i) {
     const io::ContactSpec& c = spec.contacts[i];
-    const auto& slave = with_context(
-        c.key + ".slave", [&]() -> const mesh::Surface& { return model.mesh.surface(c.slave); });
+    const auto& slave = with_context(c.key + ".slave", [&]() -> const mesh::Surface& {
+      return quad4_surface(model.mesh, c.slave, "contact");
+    });
     const auto nodes = static_cast<Index>(mesh::surface_nodes(slave).size());
     // components: contact pressure [+ water potential [+ c_ref x ion potentials]]
     const int components = model.fields.j_plus.valid() ? 4 : model.fields.w.valid() ? 2 : 1;
@@ -136,8 +138,9 @@ std::vector<std::unique_ptr<physics::Term>> contact_terms(const io::CaseSpec& sp
   std::vector<std::unique_ptr<physics::Term>> terms;
   for (std::size_t i = 0; i < spec.contacts.size(); ++i) {
     const io::ContactSpec& c = spec.contacts[i];
-    const mesh::Surface& master = with_context(
-        c.key + ".master", [&]() -> const mesh::Surface& { return model.mesh.surface(c.master); });
+    const mesh::Surface& master = with_context(c.key + ".master", [&]() -> const mesh::Surface& {
+      return quad4_surface(model.mesh, c.master, "contact");
+    });
     const mesh::Surface& slave = model.mesh.surface(c.slave);
     contact::ContactSettings settings;
     settings.integration =

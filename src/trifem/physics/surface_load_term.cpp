@@ -3,16 +3,29 @@
 
 #include "trifem/fe/hex8.hpp"
 #include "trifem/physics/facet_area.hpp"
+#include "trifem/physics/facet_area_any.hpp"
 
 namespace trifem::physics {
 namespace {
 
 void facet_dofs(const mesh::Facet& f, const dofs::DofMap& map, dofs::FieldId u,
                 std::vector<Index>& dofs) {
-  dofs.resize(12);
-  for (int a = 0; a < 4; ++a)
+  const int n = f.num_nodes();
+  dofs.resize(static_cast<std::size_t>(3 * n));
+  for (int a = 0; a < n; ++a)
     for (int k = 0; k < 3; ++k)
-      dofs[3 * a + k] = map.dof(u, f.nodes[a], k);
+      dofs[static_cast<std::size_t>(3 * a + k)] = map.dof(u, f.node(a), k);
+}
+
+/// The reference coordinates of a facet's nodes plus `displacement` of them (none: reference).
+FacetPositions facet_positions(const mesh::Mesh& mesh, const mesh::Facet& f,
+                               const dofs::DofMap* dofs = nullptr, dofs::FieldId u = {},
+                               const Vector* x = nullptr) {
+  FacetPositions p(f.num_nodes(), 3);
+  for (int a = 0; a < f.num_nodes(); ++a)
+    for (int k = 0; k < 3; ++k)
+      p(a, k) = mesh.node(f.node(a))[k] + (x ? (*x)[dofs->dof(u, f.node(a), k)] : 0.0);
+  return p;
 }
 
 } // namespace
@@ -29,6 +42,15 @@ void PressureTerm::element_dofs(Index e, std::vector<Index>& dofs) const {
 
 bool PressureTerm::evaluate(Index e, const EvalState& state, LocalVector& r, LocalMatrix* K) const {
   const mesh::Facet& f = facets_[e];
+  if (!f.is_quad4()) {
+    const Real p = magnitude_ * curve_(state.time);
+    FacetMatrixX da;
+    r = p * facet_area_vectors(fe::reference_facet(f.type),
+                               facet_positions(mesh_, f, &dofs_, u_, &state.x), K ? &da : nullptr);
+    if (K)
+      *K = p * da;
+    return true;
+  }
   fe::QuadCoords x;
   for (int a = 0; a < 4; ++a)
     for (int k = 0; k < 3; ++k)
@@ -49,6 +71,20 @@ TractionTerm::TractionTerm(const mesh::Mesh& mesh, const dofs::DofMap& dofs,
       curve_(std::move(curve)) {
   nodal_area_.reserve(facets_.size());
   for (const auto& f : facets_) {
+    if (!f.is_quad4()) { // ∫ N_a dA by the facet type's rule
+      const fe::ReferenceFacet& ref = fe::reference_facet(f.type);
+      const FacetPositions X = facet_positions(mesh, f);
+      std::vector<Real> w(static_cast<std::size_t>(ref.num_nodes()), 0.0);
+      for (const fe::FacetQuadraturePoint& p : ref.rule().points) {
+        const fe::FacetShapeGrads dN = ref.shape_grad(p.xi);
+        const Vec3 T1 = X.transpose() * dN.col(0), T2 = X.transpose() * dN.col(1);
+        const fe::FacetShapeValues N = ref.shape(p.xi);
+        for (int a = 0; a < ref.num_nodes(); ++a)
+          w[static_cast<std::size_t>(a)] += N[a] * T1.cross(T2).norm() * p.weight;
+      }
+      nodal_area_.push_back(std::move(w));
+      continue;
+    }
     fe::QuadCoords X;
     for (int a = 0; a < 4; ++a)
       X.row(a) = mesh.node(f.nodes[a]).transpose();
@@ -58,7 +94,7 @@ TractionTerm::TractionTerm(const mesh::Mesh& mesh, const dofs::DofMap& dofs,
       const Vec3 T1 = X.transpose() * dN.col(0), T2 = X.transpose() * dN.col(1);
       w += fe::quad4_shape(qp.xi) * T1.cross(T2).norm() * qp.weight;
     }
-    nodal_area_.push_back(w);
+    nodal_area_.emplace_back(w.begin(), w.end());
   }
 }
 
@@ -68,11 +104,12 @@ void TractionTerm::element_dofs(Index e, std::vector<Index>& dofs) const {
 
 bool TractionTerm::evaluate(Index e, const EvalState& state, LocalVector& r, LocalMatrix* K) const {
   const Vec3 t = traction_ * curve_(state.time);
-  r.resize(12);
-  for (int a = 0; a < 4; ++a)
-    r.segment<3>(3 * a) = -nodal_area_[e][a] * t;
+  const auto n = static_cast<Index>(nodal_area_[e].size());
+  r.resize(3 * n);
+  for (Index a = 0; a < n; ++a)
+    r.segment<3>(3 * a) = -nodal_area_[e][static_cast<std::size_t>(a)] * t;
   if (K)
-    K->setZero(12, 12);
+    K->setZero(3 * n, 3 * n);
   return true;
 }
 

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Surface loads on quad4 facets: follower pressure and dead traction.
+// Surface loads on facets of any family (quad4 by facet_area.hpp, tri3, tri6 and quad8 by
+// facet_area_any.hpp): follower pressure and dead traction.
 #pragma once
 
 #include "trifem/dofs/dof_map.hpp"
@@ -45,7 +46,7 @@ private:
   const dofs::DofMap& dofs_;
   dofs::FieldId u_;
   std::vector<mesh::Facet> facets_;
-  std::vector<Eigen::Matrix<Real, 4, 1>> nodal_area_; ///< int N_a dA per facet
+  std::vector<std::vector<Real>> nodal_area_; ///< int N_a dA per facet and node
   Vec3 traction_;
   dofs::LoadCurve curve_;
 };

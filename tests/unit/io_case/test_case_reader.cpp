@@ -474,7 +474,7 @@ const std::vector<BadCase> kBadCases = {
     {"unknown_nested_key",
      kBase + "\n[[mesh.box]]\nname = \"b\"\nsizes = [1, 1, 1]\ndivisions = [1, 1, 1]\n",
      {"mesh.box[2].sizes: unknown key (expected one of: name, origin, size, divisions, grading, "
-      "material); did you mean 'size'?"}},
+      "cell, material); did you mean 'size'?"}},
     {"wrong_type",
      replaced("dt = 0.1", "dt = \"0.1\""),
      {"time.dt: expected a number, got a string (line 17)"}},

@@ -3,6 +3,7 @@
 // exact answers: the patch test under a homogeneous finite deformation on distorted cells, the
 // closed-form uniaxial stretch with free lateral faces, and the convergence of the displacement
 // of a thick cylinder under prescribed radial displacements (Lamé) at the order of the family.
+#include "generated_meshes.hpp"
 #include "solid_model.hpp"
 #include "trifem/fe/reference_element.hpp"
 #include "trifem/mesh/convert_cells.hpp"
@@ -71,10 +72,12 @@ void prescribe_field(test::SolidModel& m, const std::vector<Index>& nodes, Field
 
 class ElementFamilies : public ::testing::TestWithParam<CellType> {};
 
-// A distorted 3x3x3 block (interior corners moved by up to 0.04 of its 1 mm edge) with
-// u = (F − I) X prescribed on its boundary: the displacement is (F − I) X at every node and
-// the stress that of F in every cell, to round-off.
-TEST_P(ElementFamilies, PatchTestReproducesAHomogeneousFiniteDeformation) {
+/// A distorted 3x3x3 block of `type` cells (interior corners moved by up to 0.04 of its 1 mm
+/// edge, then the cells made: mid-edge nodes at the midpoints of the moved edges) with
+/// u = (F − I) X prescribed on its boundary, solved with `element` for a neo-Hookean law of
+/// Poisson's ratio nu: the displacement is (F − I) X at every node and the stress that of F in
+/// every cell, to round-off.
+void run_patch_test(CellType type, physics::SolidElement element, const Mat3& F, Real nu) {
   mesh::BoxSpec spec;
   spec.divisions = {3, 3, 3};
   std::mt19937 rng(7);
@@ -83,7 +86,6 @@ TEST_P(ElementFamilies, PatchTestReproducesAHomogeneousFiniteDeformation) {
     const bool interior = (x.array() > 1e-12).all() && (x.array() < 1 - 1e-12).all();
     return interior ? Vec3(x + Vec3(shift(rng), shift(rng), shift(rng))) : x;
   };
-  // the hexes' corners are moved before the cells are made: mid-edge nodes at the midpoints
   const mesh::Mesh hexes = mesh::make_box(spec);
   mesh::Mesh moved;
   for (const Vec3& x : hexes.nodes())
@@ -92,16 +94,15 @@ TEST_P(ElementFamilies, PatchTestReproducesAHomogeneousFiniteDeformation) {
     moved.add_cell(hexes.cell_type(c), hexes.cell_nodes(c));
   for (const auto& [name, nodes] : hexes.node_sets())
     moved.add_node_set(name, nodes);
-  test::SolidModel m(mesh::convert_cells(moved, GetParam()), "neo-hookean",
-                     {{"E", 1.0}, {"nu", 0.3}});
-  Mat3 F;
-  F << 1.2, 0.1, -0.05, 0.02, 0.9, 0.08, -0.1, 0.05, 1.1;
+  test::SolidModel m(mesh::convert_cells(moved, type), "neo-hookean", {{"E", 1.0}, {"nu", nu}});
+  m.element = element;
   prescribe_field(m, boundary_nodes(m.mesh),
                   [&](const Vec3& X) { return Vec3((F - Mat3::Identity()) * X); });
   m.build();
   for (int step = 1; step <= 2; ++step)
     ASSERT_EQ(m.solve_step(0.5 * step, 0.5).status, solver::SolveStatus::Converged);
   const Mat3 exact = kinematics::cauchy_from_pk2(F, m.law->stress(F.transpose() * F));
+  // the pressure is the bulk modulus times ln J, with J known to a few ulp
   const Real bulk = m.law->p_wave_modulus() - 4.0 / 3.0 * m.law->shear_modulus();
   for (Index e = 0; e < m.solid->num_elements(); ++e) {
     const physics::CellStress s = m.solid->stress(e, m.problem->state());
@@ -111,6 +112,26 @@ TEST_P(ElementFamilies, PatchTestReproducesAHomogeneousFiniteDeformation) {
   for (Index n = 0; n < m.mesh.num_nodes(); ++n) // |u| ~ 0.2 of the 1 mm block
     EXPECT_LE((m.displacement(n) - (F - Mat3::Identity()) * m.mesh.node(n)).norm(), 1e-12)
         << "node " << n;
+}
+
+/// A general homogeneous deformation (det F = 1.16).
+Mat3 general_deformation() {
+  Mat3 F;
+  F << 1.2, 0.1, -0.05, 0.02, 0.9, 0.08, -0.1, 0.05, 1.1;
+  return F;
+}
+
+TEST_P(ElementFamilies, PatchTestReproducesAHomogeneousFiniteDeformation) {
+  run_patch_test(GetParam(), physics::SolidElement::Displacement, general_deformation(), 0.3);
+}
+
+// The mean-dilatation element of every family passes the same patch test, and with an
+// isochoric F (det F = 1) and ν = 0.4999999 (κ/μ = 3.3e6) keeps J = 1 to round-off.
+TEST_P(ElementFamilies, MeanDilatationPassesThePatchTestAndTheConstrainedVolumeOne) {
+  run_patch_test(GetParam(), physics::SolidElement::MeanDilatation, general_deformation(), 0.3);
+  Mat3 F = general_deformation();
+  F /= std::cbrt(F.determinant());
+  run_patch_test(GetParam(), physics::SolidElement::MeanDilatation, F, 0.4999999);
 }
 
 // A 2 x 1 x 1 mm bar stretched to 1.5 times its length with its lateral faces free (symmetry
@@ -304,6 +325,53 @@ TEST_P(ElementFamilies, LameCylinderConvergesAtTheOrderOfTheFamily) {
   EXPECT_LT(rate, order + 0.6) << "errors " << coarse << " " << fine;
   // and the error is small against the displacement (ua = 1e-7 mm, volume 0.59 mm³)
   EXPECT_LT(fine, 1e-2 * LameCylinder::ua);
+}
+
+/// Cook's membrane (plane strain, neo-Hookean E = 240.565 MPa, ν = 0.499, 100 N shear on the
+/// free edge of 16 mm, in 8 steps) of n x n x 1 hexes made into `type` cells: the deflection
+/// u_y of the top corner (48, 60) [mm]. The reference for the converged problem is about
+/// 6.89 mm (incompressible/cook_membrane_test.cpp).
+Real cook_tip(CellType type, int n, physics::SolidElement element) {
+  test::CookSpec spec;
+  spec.nx = spec.ny = n;
+  test::SolidModel m(mesh::convert_cells(test::make_cook_membrane(spec), type), "neo-hookean",
+                     {{"E", 240.565}, {"nu", 0.499}});
+  m.element = element;
+  for (int k = 0; k < 3; ++k)
+    m.prescribe(m.mesh.node_set("cook.xmin"), k, 0.0);
+  m.prescribe(m.mesh.node_set("cook.all"), 2, 0.0);
+  m.loads.push_back(std::make_unique<physics::TractionTerm>(
+      m.mesh, m.dofs, m.u, m.mesh.surface("cook.xmax").facets, Vec3(0.0, 6.25, 0.0), kRamp));
+  m.build();
+  for (int step = 1; step <= 8; ++step)
+    EXPECT_EQ(m.solve_step(0.125 * step, 0.125).status, solver::SolveStatus::Converged);
+  for (Index i = 0; i < m.mesh.num_nodes(); ++i)
+    if ((m.mesh.node(i) - Vec3(48.0, 60.0, 0.0)).norm() < 1e-9)
+      return m.displacement(i).y();
+  ADD_FAILURE() << "no node at the tip";
+  return 0.0;
+}
+
+// Nearly incompressible: the mean-dilatation element of hex8, hex20 and tet10 cells converges to
+// the reference where the displacement element of hex8 locks; tet4 and penta6 (a triangle in
+// the plane: one volume per triangle) lock with either element, which is what the model's
+// check says when such cells get a nearly incompressible law.
+TEST_P(ElementFamilies, CookMembraneShowsWhichFamiliesLock) {
+  constexpr Real kReference = 6.89;
+  const CellType type = GetParam();
+  const Real md8 = cook_tip(type, 8, physics::SolidElement::MeanDilatation);
+  const Real md16 = cook_tip(type, 16, physics::SolidElement::MeanDilatation);
+  const Real disp16 = cook_tip(type, 16, physics::SolidElement::Displacement);
+  RecordProperty("mean_dilatation_8", fmt::format("{:.4f}", md8));
+  RecordProperty("mean_dilatation_16", fmt::format("{:.4f}", md16));
+  RecordProperty("displacement_16", fmt::format("{:.4f}", disp16));
+  if (type == CellType::Tet4 || type == CellType::Penta6) {
+    EXPECT_LT(md16, 0.5 * kReference);
+    EXPECT_LT(disp16, 0.5 * kReference);
+    return;
+  }
+  EXPECT_NEAR(md16, kReference, 0.03 * kReference);
+  EXPECT_LT(std::abs(md16 - kReference), std::abs(md8 - kReference));
 }
 
 INSTANTIATE_TEST_SUITE_P(Cells, ElementFamilies, ::testing::ValuesIn(kFamilies), family_name);

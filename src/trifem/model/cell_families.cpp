@@ -28,17 +28,22 @@ void check_material(const io::CaseSpec& spec, const Model& model, Index c) {
                where, m.name, "for now");
   const io::MaterialSpec& given = spec.materials.at(m.name);
   TRIFEM_CHECK(!given.axes, "materials.{}.axes: {} has this material; {}", m.name, where, kSoFar);
-  TRIFEM_CHECK(given.element != io::SolidElementSpec::MeanDilatation,
-               "materials.{}.element: the mean-dilatation element is a hex8's, and {} has this "
-               "material; use element = \"displacement\" there",
+  const mesh::CellType type = model.mesh.cell_type(c);
+  if (type != mesh::CellType::Tet4 && type != mesh::CellType::Penta6)
+    return; // hex20 and tet10 take the locking-free mean-dilatation element
+  TRIFEM_CHECK(type != mesh::CellType::Tet4 ||
+                   given.element != io::SolidElementSpec::MeanDilatation,
+               "materials.{}.element: a tet4 has one strain per cell, so the mean-dilatation "
+               "element is its displacement element and locks as it does, and {} has this "
+               "material; use tet10 cells (or hex8, hex20), or element = \"displacement\"",
                m.name, where);
   TRIFEM_CHECK(given.element != io::SolidElementSpec::Auto ||
                    m.element == physics::SolidElement::Displacement,
                "materials.{}: the law is nearly incompressible (bulk modulus at least {} times "
-               "the shear modulus), and {} has this material: the displacement element of tet, "
-               "wedge and hex20 cells locks there (too stiff) and their locking-free element is "
-               "not in yet. Set element = \"displacement\" to run it anyway, or mesh the body "
-               "with hex8 cells",
+               "the shear modulus), and {} has this material: tet4 and penta6 cells lock there "
+               "(too stiff: one volume per tet, or per triangle of a wedge). Mesh the body with "
+               "tet10, hex20 or hex8 cells, which take the locking-free mean-dilatation element, "
+               "or set element = \"displacement\" to run it anyway",
                m.name, kNearlyIncompressible, where);
 }
 
@@ -78,9 +83,10 @@ const mesh::Surface& quad4_surface(const mesh::Mesh& mesh, const std::string& na
 }
 
 physics::SolidElement cell_element(const Model& model, Index c) {
-  return model.mesh.cell_type(c) == mesh::CellType::Hex8
-             ? model.materials[static_cast<std::size_t>(c)].element
-             : physics::SolidElement::Displacement;
+  // (a tet4 has one strain: its mean-dilatation element is its displacement element)
+  return model.mesh.cell_type(c) == mesh::CellType::Tet4
+             ? physics::SolidElement::Displacement
+             : model.materials[static_cast<std::size_t>(c)].element;
 }
 
 } // namespace trifem::model

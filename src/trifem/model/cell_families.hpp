@@ -9,10 +9,11 @@
 namespace trifem::model {
 
 /// Throws InputError, naming the case key, the cell family and a cell block holding such a
-/// cell, if a cell that is not a hex8 has a mixture material, is a rigid body's, has material
-/// axes or a law whose element is mean dilatation (given, or chosen by `auto` for a nearly
-/// incompressible law: the displacement element of such cells locks, so it must be asked for),
-/// or if the case has a dynamic or explicit analysis or step or body forces.
+/// cell, if a cell that is not a hex8 has a mixture material, is a rigid body's or has material
+/// axes, if a tet4 or a penta6 has a nearly incompressible law with `element = "auto"` (they
+/// lock there with either element, so the element must be asked for) or a tet4 the
+/// mean-dilatation element, or if the case has a dynamic or explicit analysis or step or body
+/// forces.
 void check_cell_families(const io::CaseSpec& spec, const Model& model);
 
 /// The surface `name` of the mesh for `use` (contact, a bath, ...), whose kernels take quad4
@@ -21,7 +22,7 @@ void check_cell_families(const io::CaseSpec& spec, const Model& model);
 const mesh::Surface& quad4_surface(const mesh::Mesh& mesh, const std::string& name,
                                    std::string_view use);
 
-/// The element of cell c: that of its material on a hex8, the displacement element otherwise.
+/// The element of cell c: that of its material, but the displacement element on a tet4.
 physics::SolidElement cell_element(const Model& model, Index c);
 
 } // namespace trifem::model

@@ -7,6 +7,68 @@
 namespace trifem::physics {
 namespace {
 
+/// The hex8 cell's fixed-size types and kernels (its bits stay those of the hex8 element).
+struct Hex8Cell {
+  using Geometry = fe::HexGeometry;
+  using Displacements = fe::HexCoords;
+  using Vector = HexVector;
+  using Matrix = HexMatrix;
+  using Strain = BMatrix;
+  static constexpr int kMaxPoints = 8;
+
+  static int points(const Geometry&) { return 8; }
+  static const fe::HexShapeGrad& grad(const Geometry& geo, int q) { return geo.dN_dX[q]; }
+  static Mat3 deformation(const Geometry& geo, int q, const Displacements& u) {
+    return deformation_gradient(geo.dN_dX[q], u);
+  }
+  static Vector zero(const Geometry&) { return Vector::Zero(); }
+  static void strain(const Mat3& F, const Geometry& geo, int q, Strain& B) {
+    strain_displacement(F, geo.dN_dX[q], B);
+  }
+  static void geometric(const Geometry& geo, int q, const Mat3& T, Real w, Matrix& K) {
+    add_geometric_stiffness(geo.dN_dX[q], T, w, K);
+  }
+};
+
+/// A cell of any family (solid_cell.hpp), sized at run time.
+struct AnyCell {
+  using Geometry = CellGeometry;
+  using Displacements = fe::CellNodeCoords;
+  using Vector = CellVectorX;
+  using Matrix = CellMatrixX;
+  using Strain = Eigen::Matrix<Real, 6, Eigen::Dynamic, 0, 6, kMaxCellDofs>;
+  static constexpr int kMaxPoints = 27; // hex20's 3x3x3 Gauss rule
+
+  static int points(const Geometry& geo) { return static_cast<int>(geo.dV.size()); }
+  static Mat3 deformation(const Geometry& geo, int q, const Displacements& u) {
+    return Mat3::Identity() + u.transpose() * geo.dN_dX[static_cast<std::size_t>(q)];
+  }
+  static Vector zero(const Geometry& geo) { return Vector::Zero(3 * geo.num_nodes()); }
+  static void strain(const Mat3& F, const Geometry& geo, int q, Strain& B) {
+    const fe::ShapeGrads& g = geo.dN_dX[static_cast<std::size_t>(q)];
+    B.resize(6, 3 * g.rows());
+    for (Index a = 0; a < g.rows(); ++a)
+      for (int k = 0; k < 3; ++k) {
+        const Index c = 3 * a + k;
+        B(0, c) = F(k, 0) * g(a, 0);
+        B(1, c) = F(k, 1) * g(a, 1);
+        B(2, c) = F(k, 2) * g(a, 2);
+        B(3, c) = F(k, 0) * g(a, 1) + F(k, 1) * g(a, 0);
+        B(4, c) = F(k, 1) * g(a, 2) + F(k, 2) * g(a, 1);
+        B(5, c) = F(k, 0) * g(a, 2) + F(k, 2) * g(a, 0);
+      }
+  }
+  static void geometric(const Geometry& geo, int q, const Mat3& T, Real w, Matrix& K) {
+    const fe::ShapeGrads& g = geo.dN_dX[static_cast<std::size_t>(q)];
+    for (Index a = 0; a < g.rows(); ++a)
+      for (Index b = 0; b < g.rows(); ++b) {
+        const Real G = g.row(a).dot(T * g.row(b).transpose()) * w;
+        for (int k = 0; k < 3; ++k)
+          K(3 * a + k, 3 * b + k) += G;
+      }
+  }
+};
+
 /// Kinematics and modified-deformation stress at one Gauss point.
 struct PointState {
   Mat3 F, C, Ci;
@@ -17,8 +79,10 @@ struct PointState {
 };
 
 /// The cell's points and its volume averages.
+template <class Cell>
 struct CellState {
-  std::array<PointState, 8> points;
+  std::array<PointState, Cell::kMaxPoints> points;
+  int n = 0;       ///< points used
   Real V = 0.0;    ///< reference volume
   Real v = 0.0;    ///< current volume
   Real Jbar = 1.0; ///< v / V
@@ -27,23 +91,26 @@ struct CellState {
 
 /// Fills `cell` at displacement u; false if J <= 0 somewhere. With `tangent` the laws'
 /// tangents are evaluated too.
-bool evaluate_state(const fe::HexGeometry& geo, const fe::HexCoords& u,
-                    const material::ElasticLaw& law, bool tangent, CellState& cell) {
-  for (int q = 0; q < 8; ++q) {
-    PointState& p = cell.points[q];
-    p.F = deformation_gradient(geo.dN_dX[q], u);
+template <class Cell>
+bool evaluate_state(const typename Cell::Geometry& geo, const typename Cell::Displacements& u,
+                    const material::ElasticLaw& law, bool tangent, CellState<Cell>& cell) {
+  cell.n = Cell::points(geo);
+  for (int q = 0; q < cell.n; ++q) {
+    PointState& p = cell.points[static_cast<std::size_t>(q)];
+    p.F = Cell::deformation(geo, q, u);
     p.J = p.F.determinant();
     if (!(p.J > 0.0))
       return false;
     p.C = p.F.transpose() * p.F;
     p.Ci = p.C.inverse();
-    p.w = geo.dV[q];
+    p.w = geo.dV[static_cast<std::size_t>(q)];
     cell.V += p.w;
     cell.v += p.J * p.w;
   }
   cell.Jbar = cell.v / cell.V;
   Real sum_s = 0.0;
-  for (PointState& p : cell.points) {
+  for (int q = 0; q < cell.n; ++q) {
+    PointState& p = cell.points[static_cast<std::size_t>(q)];
     p.alpha = std::cbrt(cell.Jbar / p.J);
     const Mat3 Cbar = p.alpha * p.alpha * p.C;
     if (tangent)
@@ -65,15 +132,17 @@ Mat3 effective_stress(const PointState& p, Real pbar) {
 /// Adds the exact tangent of f = Σ B^T T w. Per point, ΔT = A ΔE + a ΔJ̄ + b Δp̄ with
 /// ΔJ̄ = Σ j·ΔE and Δp̄ = Σ π·ΔE (docs/theory/solid.md), so that
 /// K = Σ (Bᵀ A B + geometric) w + (Σ Bᵀ a w)(Σ Bᵀ j)ᵀ + (Σ Bᵀ b w)(Σ Bᵀ π)ᵀ.
-void add_tangent(const fe::HexGeometry& geo, const CellState& cell, HexMatrix& K) {
+template <class Cell>
+void add_tangent(const typename Cell::Geometry& geo, const CellState<Cell>& cell,
+                 typename Cell::Matrix& K) {
   const Real Jbar = cell.Jbar, pbar = cell.pbar;
   const Mat6 I6 = Mat6::Identity();
-  HexVector sum_a = HexVector::Zero(), sum_b = HexVector::Zero();
-  HexVector grad_Jbar = HexVector::Zero(), grad_pbar = HexVector::Zero();
+  typename Cell::Vector sum_a = Cell::zero(geo), sum_b = Cell::zero(geo);
+  typename Cell::Vector grad_Jbar = Cell::zero(geo), grad_pbar = Cell::zero(geo);
   Real dpbar_dJbar = 0.0;
-  BMatrix B;
-  for (int q = 0; q < 8; ++q) {
-    const PointState& p = cell.points[q];
+  typename Cell::Strain B;
+  for (int q = 0; q < cell.n; ++q) {
+    const PointState& p = cell.points[static_cast<std::size_t>(q)];
     const Real a2 = p.alpha * p.alpha;
     const Vec6 c = voigt::stress(p.Ci);                 // C⁻¹ : ΔE = c · ΔE
     const Vec6 Cv = voigt::strain(p.C);                 // c · Cv = 3
@@ -91,9 +160,9 @@ void add_tangent(const fe::HexGeometry& geo, const CellState& cell, HexMatrix& K
     const Vec6 pi = p.w * a2 / (3.0 * cell.v) * (P.transpose() * h) - pbar * p.w / cell.v * p.J * c;
     dpbar_dJbar += p.w * a2 * h.dot(Cv) / (9.0 * cell.v * Jbar);
 
-    strain_displacement(p.F, geo.dN_dX[q], B);
+    Cell::strain(p.F, geo, q, B);
     K.noalias() += B.transpose() * (A * p.w) * B;
-    add_geometric_stiffness(geo.dN_dX[q], T, p.w, K);
+    Cell::geometric(geo, q, T, p.w, K);
     sum_a.noalias() += B.transpose() * (a * p.w);
     sum_b.noalias() += B.transpose() * (b * p.w);
     grad_Jbar.noalias() += B.transpose() * j;
@@ -103,38 +172,64 @@ void add_tangent(const fe::HexGeometry& geo, const CellState& cell, HexMatrix& K
   K.noalias() += sum_a * grad_Jbar.transpose() + sum_b * grad_pbar.transpose();
 }
 
+template <class Cell>
+bool mean_dilatation(const typename Cell::Geometry& geo, const typename Cell::Displacements& u,
+                     const material::ElasticLaw& law, typename Cell::Vector& f,
+                     typename Cell::Matrix* K) {
+  f = Cell::zero(geo);
+  if (K)
+    K->setZero(f.size(), f.size());
+  CellState<Cell> cell;
+  if (!evaluate_state<Cell>(geo, u, law, K != nullptr, cell))
+    return false;
+  typename Cell::Strain B;
+  for (int q = 0; q < cell.n; ++q) {
+    const PointState& p = cell.points[static_cast<std::size_t>(q)];
+    Cell::strain(p.F, geo, q, B);
+    f.noalias() += B.transpose() * voigt::stress(effective_stress(p, cell.pbar)) * p.w;
+  }
+  if (K)
+    add_tangent<Cell>(geo, cell, *K);
+  return true;
+}
+
+template <class Cell>
+CellStress mean_dilatation_stress(const typename Cell::Geometry& geo,
+                                  const typename Cell::Displacements& u,
+                                  const material::ElasticLaw& law) {
+  CellState<Cell> cell;
+  CellStress out;
+  if (!evaluate_state<Cell>(geo, u, law, false, cell))
+    return {Mat3::Zero(), 0.0}; // inverted: no converged state is (the residual fails there)
+  for (int q = 0; q < cell.n; ++q) {
+    const PointState& p = cell.points[static_cast<std::size_t>(q)];
+    out.cauchy += p.F * effective_stress(p, cell.pbar) * p.F.transpose() * p.w;
+  }
+  out.cauchy /= cell.v;
+  out.J = cell.Jbar;
+  return out;
+}
+
 } // namespace
 
 bool mean_dilatation_hex8(const fe::HexGeometry& geo, const fe::HexCoords& u,
                           const material::ElasticLaw& law, HexVector& f, HexMatrix* K) {
-  f.setZero();
-  if (K)
-    K->setZero();
-  CellState cell;
-  if (!evaluate_state(geo, u, law, K != nullptr, cell))
-    return false;
-  BMatrix B;
-  for (int q = 0; q < 8; ++q) {
-    const PointState& p = cell.points[q];
-    strain_displacement(p.F, geo.dN_dX[q], B);
-    f.noalias() += B.transpose() * voigt::stress(effective_stress(p, cell.pbar)) * p.w;
-  }
-  if (K)
-    add_tangent(geo, cell, *K);
-  return true;
+  return mean_dilatation<Hex8Cell>(geo, u, law, f, K);
 }
 
 CellStress mean_dilatation_hex8_stress(const fe::HexGeometry& geo, const fe::HexCoords& u,
                                        const material::ElasticLaw& law) {
-  CellState cell;
-  CellStress out;
-  if (!evaluate_state(geo, u, law, false, cell))
-    return {Mat3::Zero(), 0.0}; // inverted: no converged state is (the residual fails there)
-  for (const PointState& p : cell.points)
-    out.cauchy += p.F * effective_stress(p, cell.pbar) * p.F.transpose() * p.w;
-  out.cauchy /= cell.v;
-  out.J = cell.Jbar;
-  return out;
+  return mean_dilatation_stress<Hex8Cell>(geo, u, law);
+}
+
+bool mean_dilatation_cell(const CellGeometry& geo, const fe::CellNodeCoords& u,
+                          const material::ElasticLaw& law, CellVectorX& f, CellMatrixX* K) {
+  return mean_dilatation<AnyCell>(geo, u, law, f, K);
+}
+
+CellStress mean_dilatation_cell_stress(const CellGeometry& geo, const fe::CellNodeCoords& u,
+                                       const material::ElasticLaw& law) {
+  return mean_dilatation_stress<AnyCell>(geo, u, law);
 }
 
 } // namespace trifem::physics

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
-// Locking-free hex8 solid for nearly incompressible materials: the mean-dilatation (Q1/P0
+// Locking-free solid for nearly incompressible materials: the mean-dilatation (Q1/P0
 // three-field) element, condensed per cell, for any hyperelastic law.
 #pragma once
 
+#include "trifem/physics/solid_cell.hpp"
 #include "trifem/physics/solid_kernel.hpp"
 
 namespace trifem::physics {
@@ -23,6 +24,16 @@ bool mean_dilatation_hex8(const fe::HexGeometry& geo, const fe::HexCoords& u,
 
 /// Volume-averaged Cauchy stress (1/v) Σ_q F T Fᵀ w_q and J̄ of a mean-dilatation hex8.
 CellStress mean_dilatation_hex8_stress(const fe::HexGeometry& geo, const fe::HexCoords& u,
+                                       const material::ElasticLaw& law);
+
+/// The same element for a cell of any family (solid_cell.hpp) and its family's rule: hex20
+/// with a constant dilatation (Q2/P0), tet10 (P2/P0), penta6 (the wedge's analogue of Q1/P0).
+/// A tet4 has one strain per cell already: there it is the displacement element.
+bool mean_dilatation_cell(const CellGeometry& geo, const fe::CellNodeCoords& u,
+                          const material::ElasticLaw& law, CellVectorX& f, CellMatrixX* K);
+
+/// Volume-averaged Cauchy stress and J̄ of mean_dilatation_cell.
+CellStress mean_dilatation_cell_stress(const CellGeometry& geo, const fe::CellNodeCoords& u,
                                        const material::ElasticLaw& law);
 
 } // namespace trifem::physics

@@ -21,8 +21,6 @@ SolidTerm::SolidTerm(const mesh::Mesh& mesh, const dofs::DofMap& dofs, dofs::Fie
   for (std::size_t e = 0; e < cells_.size(); ++e) {
     const Index c = cells_[e];
     const mesh::CellType type = mesh.cell_type(c);
-    TRIFEM_VERIFY(type == mesh::CellType::Hex8 || elements_[e] == SolidElement::Displacement,
-                  "the mean-dilatation element is a hex8's (cell {} is a {})", c, mesh::name(type));
     if (type == mesh::CellType::Hex8) {
       const auto geo = fe::hex8_geometry(fe::cell_coordinates(mesh, c));
       TRIFEM_CHECK(geo.has_value(),
@@ -75,7 +73,9 @@ bool SolidTerm::evaluate(Index e, const EvalState& state, LocalVector& r, LocalM
   if (const auto* geo = std::get_if<CellGeometry>(&geometry_[e])) {
     CellVectorX f;
     CellMatrixX Ke;
-    if (!solid_cell(*geo, cell_displacements(e, state.x), *laws_[e], f, K ? &Ke : nullptr))
+    const auto kernel =
+        elements_[e] == SolidElement::MeanDilatation ? mean_dilatation_cell : solid_cell;
+    if (!kernel(*geo, cell_displacements(e, state.x), *laws_[e], f, K ? &Ke : nullptr))
       return false;
     r = f;
     if (K)
@@ -102,7 +102,9 @@ std::string SolidTerm::step_rejection(const EvalState& state) const {
 
 CellStress SolidTerm::stress(Index e, const Vector& x) const {
   if (const auto* geo = std::get_if<CellGeometry>(&geometry_[e]))
-    return solid_cell_stress(*geo, cell_displacements(e, x), *laws_[e]);
+    return (elements_[e] == SolidElement::MeanDilatation
+                ? mean_dilatation_cell_stress
+                : solid_cell_stress)(*geo, cell_displacements(e, x), *laws_[e]);
   const auto stress = elements_[e] == SolidElement::MeanDilatation ? mean_dilatation_hex8_stress
                                                                    : solid_hex8_stress;
   return stress(std::get<fe::HexGeometry>(geometry_[e]), displacements(e, x), *laws_[e]);

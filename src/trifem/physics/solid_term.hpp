@@ -18,16 +18,16 @@ namespace trifem::physics {
 /// The formulation of a solid cell.
 enum class SolidElement {
   Displacement,   ///< standard displacement element (locks when nearly incompressible)
-  MeanDilatation, ///< Q1/P0 mean dilatation of a hex8 (mean_dilatation_kernel.hpp)
+  MeanDilatation, ///< mean dilatation, Q1/P0 on a hex8 (mean_dilatation_kernel.hpp)
 };
 
 /// Internal virtual work of hyperelastic cells: hex8 cells by solid_kernel.hpp and
-/// mean_dilatation_kernel.hpp, the other families by solid_cell.hpp. Each cell has a law
-/// (shared, immutable).
+/// mean_dilatation_kernel.hpp, the other families by solid_cell.hpp and mean_dilatation_cell.
+/// Each cell has a law (shared, immutable).
 class SolidTerm final : public Term {
 public:
-  /// `cells[i]` uses `laws[i]` and the formulation `elements[i]` (empty: all displacement;
-  /// mean dilatation for hex8 cells only); reference geometry is computed once here. Throws
+  /// `cells[i]` uses `laws[i]` and the formulation `elements[i]` (empty: all displacement);
+  /// reference geometry is computed once here. Throws
   /// InputError naming the cell if a cell is inverted or degenerate in the reference
   /// configuration.
   SolidTerm(const mesh::Mesh& mesh, const dofs::DofMap& dofs, dofs::FieldId displacement,

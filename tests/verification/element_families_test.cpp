@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 #include <numbers>
 #include <random>
 
@@ -28,20 +29,11 @@ std::string family_name(const ::testing::TestParamInfo<CellType>& info) {
   return std::string(mesh::name(info.param));
 }
 
-/// `spec`'s box of hex8 cells whose nodes are moved to move(x), then made of `type` cells (the
-/// mid-edge nodes at the images of the edges' midpoints: curved cells if `move` is not affine).
-template <class Move>
-mesh::Mesh mapped_box(const mesh::BoxSpec& spec, CellType type, Move&& move) {
-  const mesh::Mesh hexes = mesh::make_box(spec);
-  mesh::Mesh cells = mesh::convert_cells(hexes, type);
-  mesh::Mesh out;
-  for (const Vec3& x : cells.nodes())
-    out.add_node(move(x));
-  for (Index c = 0; c < cells.num_cells(); ++c)
-    out.add_cell(cells.cell_type(c), cells.cell_nodes(c));
-  for (const auto& [name, nodes] : cells.node_sets())
-    out.add_node_set(name, nodes);
-  return out;
+/// `spec`'s box of hex8 cells made of `type` cells, its nodes then moved to move(x) (the mid-edge
+/// nodes at the images of the edges' midpoints: curved cells if `move` is not affine).
+mesh::Mesh mapped_box(const mesh::BoxSpec& spec, CellType type,
+                      const std::function<Vec3(const Vec3&)>& move) {
+  return test::transform_nodes(mesh::convert_cells(mesh::make_box(spec), type), move);
 }
 
 /// The nodes of the six faces of box "box".
@@ -86,15 +78,10 @@ void run_patch_test(CellType type, physics::SolidElement element, const Mat3& F,
     const bool interior = (x.array() > 1e-12).all() && (x.array() < 1 - 1e-12).all();
     return interior ? Vec3(x + Vec3(shift(rng), shift(rng), shift(rng))) : x;
   };
-  const mesh::Mesh hexes = mesh::make_box(spec);
-  mesh::Mesh moved;
-  for (const Vec3& x : hexes.nodes())
-    moved.add_node(distort(x));
-  for (Index c = 0; c < hexes.num_cells(); ++c)
-    moved.add_cell(hexes.cell_type(c), hexes.cell_nodes(c));
-  for (const auto& [name, nodes] : hexes.node_sets())
-    moved.add_node_set(name, nodes);
-  test::SolidModel m(mesh::convert_cells(moved, type), "neo-hookean", {{"E", 1.0}, {"nu", nu}});
+  // the hexes' corners are moved before the cells are made: mid-edge nodes at the midpoints
+  test::SolidModel m(
+      mesh::convert_cells(test::transform_nodes(mesh::make_box(spec), distort), type),
+      "neo-hookean", {{"E", 1.0}, {"nu", nu}});
   m.element = element;
   prescribe_field(m, boundary_nodes(m.mesh),
                   [&](const Vec3& X) { return Vec3((F - Mat3::Identity()) * X); });

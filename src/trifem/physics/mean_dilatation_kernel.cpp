@@ -36,7 +36,7 @@ struct AnyCell {
   using Displacements = fe::CellNodeCoords;
   using Vector = CellVectorX;
   using Matrix = CellMatrixX;
-  using Strain = Eigen::Matrix<Real, 6, Eigen::Dynamic, 0, 6, kMaxCellDofs>;
+  using Strain = StrainMatrixX;
   static constexpr int kMaxPoints = 27; // hex20's 3x3x3 Gauss rule
 
   static int points(const Geometry& geo) { return static_cast<int>(geo.dV.size()); }
@@ -45,27 +45,10 @@ struct AnyCell {
   }
   static Vector zero(const Geometry& geo) { return Vector::Zero(3 * geo.num_nodes()); }
   static void strain(const Mat3& F, const Geometry& geo, int q, Strain& B) {
-    const fe::ShapeGrads& g = geo.dN_dX[static_cast<std::size_t>(q)];
-    B.resize(6, 3 * g.rows());
-    for (Index a = 0; a < g.rows(); ++a)
-      for (int k = 0; k < 3; ++k) {
-        const Index c = 3 * a + k;
-        B(0, c) = F(k, 0) * g(a, 0);
-        B(1, c) = F(k, 1) * g(a, 1);
-        B(2, c) = F(k, 2) * g(a, 2);
-        B(3, c) = F(k, 0) * g(a, 1) + F(k, 1) * g(a, 0);
-        B(4, c) = F(k, 1) * g(a, 2) + F(k, 2) * g(a, 1);
-        B(5, c) = F(k, 0) * g(a, 2) + F(k, 2) * g(a, 0);
-      }
+    strain_displacement(F, geo.dN_dX[static_cast<std::size_t>(q)], B);
   }
   static void geometric(const Geometry& geo, int q, const Mat3& T, Real w, Matrix& K) {
-    const fe::ShapeGrads& g = geo.dN_dX[static_cast<std::size_t>(q)];
-    for (Index a = 0; a < g.rows(); ++a)
-      for (Index b = 0; b < g.rows(); ++b) {
-        const Real G = g.row(a).dot(T * g.row(b).transpose()) * w;
-        for (int k = 0; k < 3; ++k)
-          K(3 * a + k, 3 * b + k) += G;
-      }
+    add_geometric_stiffness(geo.dN_dX[static_cast<std::size_t>(q)], T, w, K);
   }
 };
 

@@ -6,39 +6,40 @@
 namespace trifem::physics {
 namespace {
 
-/// The rows of {dE} = B_a {du_a} of node a with ∇N_a = g (strain-like Voigt rows).
-Eigen::Matrix<Real, 6, 3> node_strain_displacement(const Mat3& F, const Vec3& g) {
-  Eigen::Matrix<Real, 6, 3> B;
-  for (int k = 0; k < 3; ++k) {
-    B(0, k) = F(k, 0) * g[0];
-    B(1, k) = F(k, 1) * g[1];
-    B(2, k) = F(k, 2) * g[2];
-    B(3, k) = F(k, 0) * g[1] + F(k, 1) * g[0];
-    B(4, k) = F(k, 1) * g[2] + F(k, 2) * g[1];
-    B(5, k) = F(k, 0) * g[2] + F(k, 2) * g[0];
-  }
-  return B;
-}
-
 /// Adds the material and geometric stiffness of one point to K.
 void add_point_tangent(const fe::ShapeGrads& g, const Mat3& F, const material::StressTangent& st,
                        Real dV, CellMatrixX& K) {
-  const Index n = g.rows();
-  Eigen::Matrix<Real, 6, Eigen::Dynamic, 0, 6, kMaxCellDofs> DB(6, 3 * n);
-  Eigen::Matrix<Real, 6, Eigen::Dynamic, 0, 6, kMaxCellDofs> B(6, 3 * n);
-  for (Index a = 0; a < n; ++a)
-    B.middleCols<3>(3 * a) = node_strain_displacement(F, g.row(a).transpose());
-  DB.noalias() = (st.D * dV) * B;
+  StrainMatrixX B;
+  strain_displacement(F, g, B);
+  const StrainMatrixX DB = (st.D * dV) * B;
   K.noalias() += B.transpose() * DB;
-  for (Index a = 0; a < n; ++a)
-    for (Index b = 0; b < n; ++b) {
-      const Real geometric = g.row(a).dot(st.S * g.row(b).transpose()) * dV;
+  add_geometric_stiffness(g, st.S, dV, K);
+}
+
+} // namespace
+
+void strain_displacement(const Mat3& F, const fe::ShapeGrads& g, StrainMatrixX& B) {
+  B.resize(6, 3 * g.rows());
+  for (Index a = 0; a < g.rows(); ++a)
+    for (int k = 0; k < 3; ++k) {
+      const Index c = 3 * a + k;
+      B(0, c) = F(k, 0) * g(a, 0);
+      B(1, c) = F(k, 1) * g(a, 1);
+      B(2, c) = F(k, 2) * g(a, 2);
+      B(3, c) = F(k, 0) * g(a, 1) + F(k, 1) * g(a, 0);
+      B(4, c) = F(k, 1) * g(a, 2) + F(k, 2) * g(a, 1);
+      B(5, c) = F(k, 0) * g(a, 2) + F(k, 2) * g(a, 0);
+    }
+}
+
+void add_geometric_stiffness(const fe::ShapeGrads& g, const Mat3& S, Real dV, CellMatrixX& K) {
+  for (Index a = 0; a < g.rows(); ++a)
+    for (Index b = 0; b < g.rows(); ++b) {
+      const Real geometric = g.row(a).dot(S * g.row(b).transpose()) * dV;
       for (int k = 0; k < 3; ++k)
         K(3 * a + k, 3 * b + k) += geometric;
     }
 }
-
-} // namespace
 
 std::optional<CellGeometry> cell_geometry(const fe::ReferenceCell& reference,
                                           const fe::CellNodeCoords& X) {

@@ -23,6 +23,16 @@ using CellVectorX = Eigen::Matrix<Real, Eigen::Dynamic, 1, 0, kMaxCellDofs, 1>;
 using CellMatrixX =
     Eigen::Matrix<Real, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxCellDofs, kMaxCellDofs>;
 
+/// A strain-displacement matrix of a cell (6 strain-like Voigt rows, node-major columns).
+using StrainMatrixX = Eigen::Matrix<Real, 6, Eigen::Dynamic, 0, 6, kMaxCellDofs>;
+
+/// {dE} = B {du} at a point with deformation gradient F and ∇N_a = row a of g (as
+/// solid_kernel.hpp's hex8 version).
+void strain_displacement(const Mat3& F, const fe::ShapeGrads& g, StrainMatrixX& B);
+
+/// Adds the geometric stiffness of the stress S over dV: K_ab += (∇N_a · S ∇N_b) dV I.
+void add_geometric_stiffness(const fe::ShapeGrads& g, const Mat3& S, Real dV, CellMatrixX& K);
+
 /// Reference-configuration values of a cell at the points of its family's rule.
 struct CellGeometry {
   const fe::ReferenceCell* reference = nullptr;

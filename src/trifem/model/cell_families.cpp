@@ -3,6 +3,9 @@
 
 #include "trifem/core/error.hpp"
 
+#include <algorithm>
+#include <set>
+
 namespace trifem::model {
 namespace {
 
@@ -66,9 +69,14 @@ void check_cell_families(const io::CaseSpec& spec, const Model& model) {
   if (first < 0)
     return;
   check_analysis(spec, describe(model.mesh, first));
-  for (Index c = first; c < model.mesh.num_cells(); ++c)
-    if (model.mesh.cell_type(c) != mesh::CellType::Hex8)
+  // one check per material and cell type, at its first cell (the message names it)
+  std::set<std::pair<std::string, mesh::CellType>> checked;
+  for (Index c = first; c < model.mesh.num_cells(); ++c) {
+    const mesh::CellType type = model.mesh.cell_type(c);
+    if (type != mesh::CellType::Hex8 &&
+        checked.emplace(model.materials[static_cast<std::size_t>(c)].name, type).second)
       check_material(spec, model, c);
+  }
 }
 
 const mesh::Surface& quad4_surface(const mesh::Mesh& mesh, const std::string& name,

@@ -20,16 +20,7 @@ void add_point_tangent(const fe::ShapeGrads& g, const Mat3& F, const material::S
 
 void strain_displacement(const Mat3& F, const fe::ShapeGrads& g, StrainMatrixX& B) {
   B.resize(6, 3 * g.rows());
-  for (Index a = 0; a < g.rows(); ++a)
-    for (int k = 0; k < 3; ++k) {
-      const Index c = 3 * a + k;
-      B(0, c) = F(k, 0) * g(a, 0);
-      B(1, c) = F(k, 1) * g(a, 1);
-      B(2, c) = F(k, 2) * g(a, 2);
-      B(3, c) = F(k, 0) * g(a, 1) + F(k, 1) * g(a, 0);
-      B(4, c) = F(k, 1) * g(a, 2) + F(k, 2) * g(a, 1);
-      B(5, c) = F(k, 0) * g(a, 2) + F(k, 2) * g(a, 0);
-    }
+  fill_strain_displacement(F, g, B);
 }
 
 void add_geometric_stiffness(const fe::ShapeGrads& g, const Mat3& S, Real dV, CellMatrixX& K) {

@@ -5,17 +5,7 @@
 
 namespace trifem::physics {
 void strain_displacement(const Mat3& F, const fe::HexShapeGrad& g, BMatrix& B) {
-  for (int a = 0; a < 8; ++a) {
-    for (int k = 0; k < 3; ++k) {
-      const int c = 3 * a + k;
-      B(0, c) = F(k, 0) * g(a, 0);
-      B(1, c) = F(k, 1) * g(a, 1);
-      B(2, c) = F(k, 2) * g(a, 2);
-      B(3, c) = F(k, 0) * g(a, 1) + F(k, 1) * g(a, 0);
-      B(4, c) = F(k, 1) * g(a, 2) + F(k, 2) * g(a, 1);
-      B(5, c) = F(k, 0) * g(a, 2) + F(k, 2) * g(a, 0);
-    }
-  }
+  fill_strain_displacement(F, g, B);
 }
 
 void add_geometric_stiffness(const fe::HexShapeGrad& g, const Mat3& S, Real dV, HexMatrix& K) {

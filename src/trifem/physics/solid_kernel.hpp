@@ -16,6 +16,23 @@ inline Mat3 deformation_gradient(const fe::HexShapeGrad& dN_dX, const fe::HexCoo
   return Mat3::Identity() + u.transpose() * dN_dX;
 }
 
+/// Fills the nonlinear strain-displacement matrix B (6 x 3n, sized by the caller) of the n nodes
+/// whose gradients ∇N_a are the rows of g: {dE} = B {du} (strain-like Voigt rows, node-major DOF
+/// columns). Shared by the hex8 and the other families' elements.
+template <class Grads, class Strain>
+void fill_strain_displacement(const Mat3& F, const Grads& g, Strain& B) {
+  for (Index a = 0; a < static_cast<Index>(g.rows()); ++a)
+    for (int k = 0; k < 3; ++k) {
+      const Index c = 3 * a + k;
+      B(0, c) = F(k, 0) * g(a, 0);
+      B(1, c) = F(k, 1) * g(a, 1);
+      B(2, c) = F(k, 2) * g(a, 2);
+      B(3, c) = F(k, 0) * g(a, 1) + F(k, 1) * g(a, 0);
+      B(4, c) = F(k, 1) * g(a, 2) + F(k, 2) * g(a, 1);
+      B(5, c) = F(k, 0) * g(a, 2) + F(k, 2) * g(a, 0);
+    }
+}
+
 /// Nonlinear strain-displacement matrix at a point: {dE} = B {du} (strain-like Voigt rows,
 /// node-major DOF columns).
 void strain_displacement(const Mat3& F, const fe::HexShapeGrad& dN_dX, BMatrix& B);

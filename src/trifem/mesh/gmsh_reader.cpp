@@ -333,25 +333,26 @@ Mat3 hex_jacobian(const Mesh& mesh, const Hex8& cell, const Vec3& xi) {
 
 /// Rejects a hex whose Jacobian determinant at the centre is negative or zero (inverted or
 /// degenerate), or at one of the 2x2x2 Gauss points where the elements integrate (distorted).
-void check_hex_orientation(const LineReader& in, const Mesh& mesh, Tag tag, const Hex8& cell) {
+void check_hex_orientation(const LineReader& in, const Mesh& mesh, Tag tag, const Hex8& cell,
+                           CellType type = CellType::Hex8) {
   const Mat3 centre = hex_jacobian(mesh, cell, Vec3::Zero());
   const Real det = centre.determinant();
   const Real scale = centre.col(0).norm() * centre.col(1).norm() * centre.col(2).norm();
   TRIFEM_CHECK(det >= 0.0,
-               "{}: hex8 element {} has negative volume (inverted node order; expected nodes "
+               "{}: {} element {} has negative volume (inverted node order; expected nodes "
                "0-3 counter-clockwise seen from nodes 4-7)",
-               in.location(), tag);
-  TRIFEM_CHECK(det > 1e-12 * scale, "{}: hex8 element {} is degenerate (zero volume)",
-               in.location(), tag);
+               in.location(), name(type), tag);
+  TRIFEM_CHECK(det > 1e-12 * scale, "{}: {} element {} is degenerate (zero volume)", in.location(),
+               name(type), tag);
   const Real g = 1.0 / std::sqrt(3.0);
   for (int a = 0; a < 8; ++a) {
     const Vec3 xi(g * kHexNodeCoords[a][0], g * kHexNodeCoords[a][1], g * kHexNodeCoords[a][2]);
     TRIFEM_CHECK(
         hex_jacobian(mesh, cell, xi).determinant() > 1e-12 * scale,
-        "{}: hex8 element {} is too distorted: its volume map folds near its local node {} (the "
+        "{}: {} element {} is too distorted: its volume map folds near its local node {} (the "
         "Jacobian determinant is not positive at the Gauss point next to it; move the "
         "node or split the element)",
-        in.location(), tag, a + 1);
+        in.location(), name(type), tag, a + 1);
   }
 }
 
@@ -392,7 +393,7 @@ void read_cell(LineReader& in, GmshData& d, const ElementHeader& e, CellType typ
   if (type == CellType::Hex8 || type == CellType::Hex20) {
     Hex8 corners;
     std::copy_n(cell.begin(), 8, corners.begin());
-    check_hex_orientation(in, d.mesh, e.tag, corners);
+    check_hex_orientation(in, d.mesh, e.tag, corners, type);
   } else {
     check_corner_orientation(in, d.mesh, e.tag, type, cell);
   }

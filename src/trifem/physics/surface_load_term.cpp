@@ -17,7 +17,8 @@ void facet_dofs(const mesh::Facet& f, const dofs::DofMap& map, dofs::FieldId u,
       dofs[static_cast<std::size_t>(3 * a + k)] = map.dof(u, f.node(a), k);
 }
 
-/// The reference coordinates of a facet's nodes plus `displacement` of them (none: reference).
+/// The coordinates of a facet's nodes: reference ones plus their displacements in x (none: the
+/// reference configuration).
 FacetPositions facet_positions(const mesh::Mesh& mesh, const mesh::Facet& f,
                                const dofs::DofMap* dofs = nullptr, dofs::FieldId u = {},
                                const Vector* x = nullptr) {

@@ -29,7 +29,7 @@ namespace trifem::mesh {
 /// - Nodes are renumbered densely 0..n-1 in file order.
 /// - Each $ElementData view becomes cell data named by the view (its first string tag), with
 ///   the view's number of components; cells the view does not list get NaN. Values on elements
-///   that are not hexes (e.g. the quads of a physical surface) are ignored. Sections with the
+///   that are not cells (e.g. the quads of a physical surface) are ignored. Sections with the
 ///   same view name (e.g. partitions) are joined; the time value and step are ignored.
 ///   $NodeData and $ElementNodeData are ignored.
 ///

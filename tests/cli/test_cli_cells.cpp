@@ -2,7 +2,8 @@
 // Cases on meshes of tet4, tet10, penta6 and hex20 cells through the executable: a Gmsh mesh of
 // tet10 cells (made by Gmsh 4.8, tests/unit/mesh/data) stretched with free lateral faces gives
 // the closed-form uniaxial reaction, probes and averages; a traction on its faces is carried by
-// the supports; what these cells do not take yet stops with an error naming the key.
+// the supports; triphasic cubes of tet10 and penta6 cells swell in a bath to the closed form;
+// what these cells do not take yet stops with an error naming the key.
 #include "cli_harness.hpp"
 
 #include <fmt/format.h>
@@ -193,6 +194,123 @@ dt = 0.5
       trifem({"run", file.string(), "-o", (dir_ / "fine").string(), "--refine-mesh", "1"});
   EXPECT_EQ(r.exit_code, kInvalidInput) << r;
   EXPECT_TRUE(contains(r.err, "penta6")) << r;
+}
+
+/// The octant of a triphasic cube of `mesh` (the paper's tissue, SVK, E = 0.3 MPa, nu = 0):
+/// symmetry planes xmin, ymin, zmin (normal displacement and fluxes fixed), the other faces in a
+/// bath whose NaCl concentration falls from the reference 0.15 M to `bath` [mmol/mm^3] over 1 s,
+/// run to equilibrium (`extra` is appended).
+std::string swelling_octant(const std::string& mesh, double bath, const std::string& extra = "") {
+  std::string text = fmt::format(R"(
+[[mesh.gmsh]]
+file = "{}"
+materials = {{ cube = "tissue" }}
+
+[materials.tissue]
+type = "triphasic"
+phi_s0 = 0.25
+permeability = 1.07e-3
+fixed_charge = 2e-4
+d_plus = 5e-4
+d_minus = 8e-4
+[materials.tissue.solid]
+type = "saint-venant-kirchhoff"
+E = 0.3
+nu = 0.0
+
+[curves.ramp]
+points = [[0.0, 0.0], [1.0, 1.0]]
+
+[[boundary.bath]]
+surface = "xmax"
+concentration = {}
+curve = "ramp"
+[[boundary.bath]]
+surface = "ymax"
+concentration = {}
+curve = "ramp"
+[[boundary.bath]]
+surface = "zmax"
+concentration = {}
+curve = "ramp"
+
+[time]
+end_time = 3e5
+dt = 0.1
+dt_max = 2e4
+
+[[output.probe]]
+name = "corner"
+point = [1.0, 1.0, 1.0]
+)",
+                                 (kMeshes / mesh).generic_string(), bath, bath, bath);
+  for (const auto& [set, axis] :
+       {std::pair<const char*, const char*>{"xmin", "x"}, {"ymin", "y"}, {"zmin", "z"}})
+    for (const char* field : {"displacement", "fluid_flux", "cation_flux", "anion_flux"})
+      text += fmt::format("[[boundary.fixed]]\nset = \"{}\"\nfield = \"{}\"\ncomponents = "
+                          "[\"{}\"]\n",
+                          set, field, axis);
+  return text + extra;
+}
+
+// A triphasic cube of wedges extruded by Gmsh from an unstructured triangle mesh, moved to a
+// 0.015 M bath on its tri3 and quad4 faces, swells to the closed-form isotropic stretch 1.38074
+// (docs/theory/reference-solutions.md §R4.4; the hex8 cube: OsmoticLoading.FreeCubeInDiluteBath).
+TEST_F(CellsCli, ATriphasicGmshCubeOfWedgesSwellsInADiluteBathToTheClosedForm) {
+  const fs::path file = write_file("swell.toml", swelling_octant("cube_penta6_v41.msh", 1.5e-5));
+  const Result r = trifem({"run", file.string(), "-o", output().string()});
+  ASSERT_EQ(r.exit_code, 0) << r;
+  const History h = read_history(output() / "history.csv");
+  for (const char* u : {"corner.ux [mm]", "corner.uy [mm]", "corner.uz [mm]"})
+    EXPECT_NEAR(1.0 + h[u].back(), 1.38074, 1e-5) << u;
+}
+
+// The Gmsh tet10 cube as a biphasic tissue stretched by 20 % in 1 s and held: the fluid first
+// carries part of the load (the reaction peaks at the end of the ramp), then drains through the
+// free faces until the reaction is the solid's closed-form uniaxial one.
+TEST_F(CellsCli, ABiphasicGmshTet10CubeRelaxesToTheDrainedClosedForm) {
+  std::string text = cube_case("cube_tet10_v41.msh", 1.2);
+  const auto replace = [&](const std::string& from, const std::string& to) {
+    text.replace(text.find(from), from.size(), to);
+  };
+  replace("type = \"neo-hookean\"\nE = 1.0\nnu = 0.3",
+          "type = \"biphasic\"\nphi_s0 = 0.2\npermeability = 1e-2\n[materials.tissue.solid]\n"
+          "type = \"neo-hookean\"\nE = 1.0\nnu = 0.3");
+  replace("end_time = 1.0\ndt = 0.25", "end_time = 20000.0\ndt = 0.25\ndt_max = 2000.0");
+  replace("points = [[0.0, 0.0], [1.0, 1.0]]", "points = [[0.0, 0.0], [1.0, 1.0], [20000.0, 1.0]]");
+  for (const auto& [set, axis] : {std::pair<const char*, const char*>{"xmin", "x"},
+                                  {"ymin", "y"},
+                                  {"zmin", "z"},
+                                  {"xmax", "x"}})
+    text += fmt::format("[[boundary.fixed]]\nset = \"{}\"\nfield = \"fluid_flux\"\n"
+                        "components = [\"{}\"]\n",
+                        set, axis);
+  const fs::path file = write_file("relax.toml", text);
+  const Result r = trifem({"run", file.string(), "-o", output().string()});
+  ASSERT_EQ(r.exit_code, 0) << r;
+  const History h = read_history(output() / "history.csv");
+  const auto& force = h["xmax.Rx [N]"];
+  const auto& time = h["time [s]"];
+  ASSERT_GT(force.size(), 5u);
+  double at_ramp_end = 0.0;
+  for (std::size_t i = 0; i < time.size(); ++i)
+    if (std::abs(time[i] - 1.0) < 1e-9)
+      at_ramp_end = force[i];
+  EXPECT_GT(at_ramp_end, 1.05 * uniaxial_force(1.2)); // pressurised
+  EXPECT_NEAR(force.back(), uniaxial_force(1.2), 1e-6 * uniaxial_force(1.2));
+}
+
+TEST_F(CellsCli, MixturesOnTet4AndTriphasicOnTet10AreRefusedNamingTheMaterial) {
+  const std::pair<const char*, const char*> cases[] = {
+      {"cube_tet4_v22.msh", "tet4 cells cannot carry it"},
+      {"cube_tet10_v41.msh", "tet10 cells carry biphasic materials only so far"}};
+  for (const auto& [mesh, message] : cases) {
+    const fs::path file = write_file("refused.toml", swelling_octant(mesh, 1.5e-4));
+    const Result r = trifem({"run", file.string(), "-o", output().string()});
+    EXPECT_EQ(r.exit_code, kInvalidInput) << r;
+    EXPECT_TRUE(contains(r.err, "materials.tissue")) << r;
+    EXPECT_TRUE(contains(r.err, message)) << r;
+  }
 }
 
 } // namespace

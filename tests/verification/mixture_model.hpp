@@ -71,8 +71,28 @@ struct MixtureModel {
         fix(set, fl, k);
   }
 
+  /// Fixes the fluxes of the nodes that are no cell's corner (the mid-edge nodes of tet10 and
+  /// hex20 cells): the fluxes are interpolated from the corners (physics::mixture_flux_map), so
+  /// no element uses them (the models fix every unused DOF so).
+  void fix_mid_edge_fluxes() {
+    std::vector<char> corner(static_cast<std::size_t>(mesh.num_nodes()), 0);
+    for (Index c = 0; c < mesh.num_cells(); ++c)
+      for (Index n :
+           mesh.cell_nodes(c).first(static_cast<std::size_t>(mesh::num_corners(mesh.cell_type(c)))))
+        corner[static_cast<std::size_t>(n)] = 1;
+    dofs::DirichletCondition c{{}, 0.0, dofs::LoadCurve::constant()};
+    for (Index n = 0; n < mesh.num_nodes(); ++n)
+      if (!corner[static_cast<std::size_t>(n)])
+        for (dofs::FieldId fl : {f.w, f.j_plus, f.j_minus})
+          for (int k = 0; k < 3 && fl.valid(); ++k)
+            c.dofs.push_back(dofs.dof(fl, n, k));
+    if (!c.dofs.empty())
+      conditions.push_back(std::move(c));
+  }
+
   /// Finalizes the model; initial state IC-1 (Donnan at the reference) unless told otherwise.
   void build(physics::InitialState initial = physics::InitialState::Donnan) {
+    fix_mid_edge_fluxes();
     dofs::constrain_all(conditions, dofs);
     dofs.finalize();
     std::vector<Index> cells(mesh.num_cells());

@@ -17,7 +17,7 @@ BalanceRegion make_region(const model::Model& model, std::string name, const Ins
     if (inside(model.mixture->cell(e)))
       r.elements.push_back(e);
   for (const mesh::Facet& f : boundary)
-    if (inside(f.cell) && f.is_quad4()) // (the other cells have no mixture so far)
+    if (inside(f.cell))
       r.facets.push_back(f);
   return r;
 }

@@ -25,6 +25,26 @@ io::DataArray nodal_vector(const model::Model& model, dofs::FieldId f, std::stri
   return a;
 }
 
+/// A flux field (stored at the corners of the cells: physics::mixture_flux_map) with the values
+/// of its linear interpolation at the mid-edge nodes of tet10 and hex20 cells, so that the
+/// quadratic cells of the output draw it as the model interpolates it.
+io::DataArray nodal_flux(const model::Model& model, dofs::FieldId f, std::string name, Real scale) {
+  io::DataArray a = nodal_vector(model, f, std::move(name), scale);
+  for (Index c = 0; c < model.mesh.num_cells(); ++c) {
+    const mesh::CellType type = model.mesh.cell_type(c);
+    const std::span<const mesh::Edge> mids = mesh::mid_edges(type);
+    const std::span<const Index> nodes = model.mesh.cell_nodes(c);
+    for (std::size_t m = 0; m < mids.size(); ++m) {
+      const auto node = [&](int local) { return nodes[static_cast<std::size_t>(local)]; };
+      const Index mid = node(mesh::num_corners(type) + static_cast<int>(m));
+      for (int k = 0; k < 3; ++k)
+        a.values[3 * mid + k] =
+            0.5 * (a.values[3 * node(mids[m][0]) + k] + a.values[3 * node(mids[m][1]) + k]);
+    }
+  }
+  return a;
+}
+
 /// Average of a cell array over the cells around each node.
 io::DataArray nodal_average(const model::Model& model, const io::DataArray& cells,
                             std::string name) {
@@ -56,12 +76,12 @@ std::vector<io::DataArray> point_fields(const model::Model& model, const Vector&
   out.push_back(std::move(reaction));
   if (!model.mixture)
     return out;
-  out.push_back(nodal_vector(model, model.fields.w, "fluid_flux [mm/s]", 1.0));
+  out.push_back(nodal_flux(model, model.fields.w, "fluid_flux [mm/s]", 1.0));
   if (model.fields.j_plus.valid()) {
     out.push_back(
-        nodal_vector(model, model.fields.j_plus, "cation_flux [mmol/(mm^2 s)]", model.chem.c_ref));
+        nodal_flux(model, model.fields.j_plus, "cation_flux [mmol/(mm^2 s)]", model.chem.c_ref));
     out.push_back(
-        nodal_vector(model, model.fields.j_minus, "anion_flux [mmol/(mm^2 s)]", model.chem.c_ref));
+        nodal_flux(model, model.fields.j_minus, "anion_flux [mmol/(mm^2 s)]", model.chem.c_ref));
   }
   // nodal averages of the element-constant pressure and potential (for smooth contours)
   io::DataArray p = array("p", 1, model.mesh.num_cells()), psi = p;

@@ -2,6 +2,7 @@
 #include "trifem/analysis/probes.hpp"
 
 #include "trifem/fe/reference_element.hpp"
+#include "trifem/physics/mixture_kernel.hpp"
 
 #include <fmt/format.h>
 
@@ -26,7 +27,10 @@ std::pair<dofs::FieldId, Real> nodal_field(const model::Model& model, std::strin
 Vec3 nodal_quantity(const model::Model& model, const io::ProbeQuantity& q, Index cell,
                     const Vec3& xi, const Vector& x) {
   const auto [field, scale] = nodal_field(model, q.name);
-  const fe::ShapeValues N = fe::reference_cell(model.mesh.cell_type(cell)).shape(xi);
+  const mesh::CellType type = model.mesh.cell_type(cell);
+  fe::ShapeValues N = fe::reference_cell(type).shape(xi);
+  if (field != model.fields.u) // the fluxes: linear from the corners on a tet10 or hex20
+    N = physics::mixture_flux_map(type) * N;
   const std::span<const Index> nodes = model.mesh.cell_nodes(cell);
   Vec3 value = Vec3::Zero();
   for (Index a = 0; a < N.size(); ++a) {

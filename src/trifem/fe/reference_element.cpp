@@ -321,6 +321,8 @@ ReferenceCell::ReferenceCell(CellType type) : type_(type) {
   volume_ = d.volume;
   vtk_type_ = d.vtk_type;
   vtk_order_ = std::move(d.vtk_order);
+  for (const CellQuadraturePoint& p : rule_.points)
+    rule_shapes_.push_back(shape(p.xi));
 }
 
 ShapeValues ReferenceCell::shape(const Vec3& xi) const {

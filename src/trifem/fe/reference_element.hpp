@@ -81,6 +81,8 @@ public:
   /// 2 x order): hex8 2x2x2 Gauss, hex20 3x3x3 Gauss, tet4 4 points of degree 2, tet10 14
   /// points of degree 5, penta6 3 triangle points times 2 Gauss points.
   const CellRule& rule() const { return rule_; }
+  /// N_a at each point of rule(), in its order.
+  const std::vector<ShapeValues>& rule_shapes() const { return rule_shapes_; }
   /// Volume of the reference domain.
   Real volume() const { return volume_; }
   /// The facets: hex zeta = -1, zeta = +1, eta = -1, xi = +1, eta = +1, xi = -1 (the faces of
@@ -100,6 +102,7 @@ private:
   int order_;
   CellNodeCoords nodes_;
   CellRule rule_;
+  std::vector<ShapeValues> rule_shapes_;
   Real volume_;
   int vtk_type_;
   std::vector<int> vtk_order_;

@@ -126,6 +126,10 @@ int num_corners(CellType type) {
   unknown_type(static_cast<int>(type));
 }
 
+int num_corners(FacetType type) {
+  return type == FacetType::Tri3 || type == FacetType::Tri6 ? 3 : 4;
+}
+
 std::string_view name(CellType type) {
   switch (type) {
   case CellType::Hex8:

@@ -33,6 +33,7 @@ int num_nodes(CellType type);
 int num_nodes(FacetType type);
 /// The number of corner (vertex) nodes; they come first.
 int num_corners(CellType type);
+int num_corners(FacetType type);
 /// Lower-case name as in input files: "hex8", "tet4", "tet10", "penta6", "hex20".
 std::string_view name(CellType type);
 /// "tri3", "tri6", "quad4", "quad8".

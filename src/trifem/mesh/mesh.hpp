@@ -38,9 +38,10 @@ struct Facet {
   /// contact, baths, fluxes and frames take so far.
   bool is_quad4() const { return type == FacetType::Quad4; }
   int num_nodes() const { return mesh::num_nodes(type); }
+  int num_corners() const { return mesh::num_corners(type); }
   /// Node i in the order of its type: the corners, then the mid-edge nodes.
   Index node(int i) const {
-    const int corners = type == FacetType::Tri3 || type == FacetType::Tri6 ? 3 : 4;
+    const int corners = num_corners();
     return i < corners ? nodes[static_cast<std::size_t>(i)]
                        : mid_edge_nodes[static_cast<std::size_t>(i - corners)];
   }

@@ -23,15 +23,30 @@ constexpr const char* kSoFar = "for now only hex8 cells take it";
 void check_material(const io::CaseSpec& spec, const Model& model, Index c) {
   const CellMaterial& m = model.materials[static_cast<std::size_t>(c)];
   const std::string where = describe(model.mesh, c);
-  TRIFEM_CHECK(!m.mixture,
-               "materials.{}: {} has this mixture material; {} (the mixture fields on tet, wedge "
-               "and hex20 cells come next)",
-               m.name, where, kSoFar);
+  const mesh::CellType type = model.mesh.cell_type(c);
+  TRIFEM_CHECK(!m.mixture || type != mesh::CellType::Tet4,
+               "materials.{}: {} has this mixture material, and tet4 cells cannot carry it: their "
+               "fluxes are linear and the pressure is one per cell, and a tet mesh has about six "
+               "cells per node against three flux unknowns per node, so that the equations are "
+               "singular (docs/theory/elements.md). Mesh the tissue with tet10 cells (Gmsh: "
+               "-order 2), or with penta6, hex8 or hex20 cells",
+               m.name, where);
+  TRIFEM_CHECK(!m.mixture || !m.mixture->charged || type != mesh::CellType::Tet10,
+               "materials.{}: {} has this triphasic material, and tet10 cells carry biphasic "
+               "materials only so far: the electric potential, one per cell, is balanced by the "
+               "ion fluxes alone, linear on a tet, too few for about six cells per node, and the "
+               "equations are singular (docs/theory/elements.md). Mesh the tissue with penta6 "
+               "(wedge layers), hex8 or hex20 cells",
+               m.name, where);
+  TRIFEM_CHECK(!m.mixture || spec.solver.linear_solver.schur != SchurApproximation::drained,
+               "solver.schur_approximation: the drained Schur complement takes the mixture on hex8 "
+               "cells only, and {} has the mixture material '{}'; use \"selfp\" or a direct "
+               "solver",
+               where, m.name);
   TRIFEM_CHECK(!m.rigid(), "{} is a cell of rigid body '{}'; the cells of rigid bodies are hex8 {}",
                where, m.name, "for now");
   const io::MaterialSpec& given = spec.materials.at(m.name);
   TRIFEM_CHECK(!given.axes, "materials.{}.axes: {} has this material; {}", m.name, where, kSoFar);
-  const mesh::CellType type = model.mesh.cell_type(c);
   if (type != mesh::CellType::Tet4 && type != mesh::CellType::Penta6)
     return; // hex20 and tet10 take the locking-free mean-dilatation element
   TRIFEM_CHECK(type != mesh::CellType::Tet4 ||

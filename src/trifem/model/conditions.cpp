@@ -4,7 +4,6 @@
 #include "trifem/core/error.hpp"
 #include "trifem/dofs/nodal_frames.hpp"
 #include "trifem/fe/point_location.hpp"
-#include "trifem/model/cell_families.hpp"
 #include "trifem/model/rigid_bodies.hpp"
 #include "trifem/physics/bath_term.hpp"
 #include "trifem/physics/body_force_term.hpp"
@@ -122,7 +121,7 @@ dofs::NodalFrames impermeable_surfaces(const io::CaseSpec& spec, const Model& mo
   std::vector<std::vector<mesh::Facet>> faces;
   for (const auto& s : spec.impermeable_surfaces)
     faces.push_back(with_context(s.key + ".surface", [&] {
-      return quad4_surface(model.mesh, s.surface, "an impermeable surface").facets;
+      return model.mesh.surface(s.surface).facets; // (normals from the corners: any facet)
     }));
   std::vector<dofs::FieldId> fields;
   for (dofs::FieldId f : {model.fields.w, model.fields.j_plus, model.fields.j_minus})
@@ -225,9 +224,9 @@ std::vector<std::unique_ptr<physics::Term>> load_terms(const io::CaseSpec& spec,
     terms.push_back(body_force_term(spec, b, model));
   for (std::size_t i = 0; i < spec.baths.size(); ++i) {
     const auto& b = spec.baths[i];
-    const auto& surface = with_context(
-        fmt::format("boundary.bath[{}].surface", i + 1),
-        [&]() -> const mesh::Surface& { return quad4_surface(model.mesh, b.surface, "a bath"); });
+    const auto& surface =
+        with_context(fmt::format("boundary.bath[{}].surface", i + 1),
+                     [&]() -> const mesh::Surface& { return model.mesh.surface(b.surface); });
     terms.push_back(std::make_unique<physics::BathTerm>(
         model.mesh, model.dofs, model.fields, surface.facets, model.chem,
         b.concentration > 0.0 ? b.concentration : model.chem.c_ref, make_curve(spec, b.curve),

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // A bath of NaCl concentration c*(t) different from the reference bath, on a surface of a
-// mixture: the natural boundary terms -int N_a mu*_bar n da of the water and ion rows
-// (docs/theory/triphasic.md §2 and §8 item 4). Surfaces without any condition are in the
-// reference bath (no term).
+// mixture (facets of any family; the fluxes at their corners): the natural boundary terms -int N_a
+// mu*_bar n da of the water and ion rows (docs/theory/triphasic.md §2 and §8 item 4). Surfaces
+// without any condition are in the reference bath (no term).
 #pragma once
 
 #include "trifem/dofs/load_curve.hpp"
@@ -35,6 +35,8 @@ public:
 
 private:
   bool ions() const { return fields_.j_plus.valid(); }
+  /// The scaled natural values -mu* of the water and ion rows at the state's time.
+  std::array<Real, 3> natural_factors(const EvalState& state) const;
 
   const mesh::Mesh& mesh_;
   const dofs::DofMap& dofs_;

@@ -5,6 +5,15 @@
 
 namespace trifem::physics {
 
+FacetPositions facet_positions(const mesh::Mesh& mesh, const mesh::Facet& f,
+                               const dofs::DofMap* dofs, dofs::FieldId u, const Vector* x) {
+  FacetPositions p(f.num_nodes(), 3);
+  for (int a = 0; a < f.num_nodes(); ++a)
+    for (int k = 0; k < 3; ++k)
+      p(a, k) = mesh.node(f.node(a))[k] + (x ? (*x)[dofs->dof(u, f.node(a), k)] : 0.0);
+  return p;
+}
+
 FacetVectorX facet_area_vectors(const fe::ReferenceFacet& reference, const FacetPositions& x,
                                 FacetMatrixX* derivative) {
   const Index n = reference.num_nodes();

@@ -5,7 +5,9 @@
 // f_a = −p a_a. The quad4 facets of the models keep facet_area.hpp.
 #pragma once
 
+#include "trifem/dofs/dof_map.hpp"
 #include "trifem/fe/reference_element.hpp"
+#include "trifem/mesh/mesh.hpp"
 
 namespace trifem::physics {
 
@@ -17,6 +19,12 @@ using FacetPositions = Eigen::Matrix<Real, Eigen::Dynamic, 3, 0, fe::kMaxFacetNo
 using FacetVectorX = Eigen::Matrix<Real, Eigen::Dynamic, 1, 0, kMaxFacetDofs, 1>;
 using FacetMatrixX =
     Eigen::Matrix<Real, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxFacetDofs, kMaxFacetDofs>;
+
+/// The coordinates of a facet's nodes (mesh::Facet::node order): the reference ones plus their
+/// displacements (field u) in x, or the reference ones without x.
+FacetPositions facet_positions(const mesh::Mesh& mesh, const mesh::Facet& f,
+                               const dofs::DofMap* dofs = nullptr, dofs::FieldId u = {},
+                               const Vector* x = nullptr);
 
 /// The nodal area vectors (a_0, a_1, ...) of the facet of `reference`'s family with nodal
 /// coordinates x and, if `derivative` is given, da_a/dx_b = ∫ N_a [N_b,s2 [x_s1]× − N_b,s1

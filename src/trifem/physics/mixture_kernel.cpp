@@ -1,32 +1,53 @@
 // SPDX-License-Identifier: MIT
 #include "trifem/physics/mixture_kernel.hpp"
 
+#include "trifem/core/error.hpp"
 #include "trifem/physics/solid_kernel.hpp"
 
 #include <cmath>
+#include <span>
 
 namespace trifem::physics {
+
 namespace {
 
-using Grad = Eigen::Matrix<Real, 98, 1>; ///< derivative of a scalar w.r.t. the local unknowns
-using Node3 = Eigen::Matrix<Real, 8, 3>;
+/// Rows: corners; columns: nodes (corners, then the mid-edge nodes of `mids`).
+MixtureFluxMap corner_map(int nodes, int corners, std::span<const mesh::Edge> mids) {
+  MixtureFluxMap P = MixtureFluxMap::Zero(corners, nodes);
+  P.leftCols(corners).setIdentity();
+  for (std::size_t m = 0; m < mids.size(); ++m)
+    for (const int corner : mids[m])
+      P(corner, corners + static_cast<int>(m)) = 0.5;
+  return P;
+}
 
-/// Current-configuration values at one Gauss point.
-struct PointData {
-  fe::HexShape N;
-  Node3 b;         ///< spatial gradients b_a = F^-T Grad N_a
-  Real dv;         ///< J dV
-  Vec3 w, jp, jm;  ///< interpolated fluxes
-  Mat3 Gw, Gp, Gm; ///< flux gradients sum_a x_a (x) b_a
-};
+} // namespace
 
-/// Element integrals in the current configuration (docs/theory/triphasic.md §3, §4).
-struct Integrals {
-  std::array<PointData, 8> qp;
-  Real V = 0.0;
-  Node3 g = Node3::Zero();                                         ///< g_a = int b_a dv
-  Eigen::Matrix<Real, 8, 8> m = Eigen::Matrix<Real, 8, 8>::Zero(); ///< int N_a N_b dv
-};
+const MixtureFluxMap& mixture_flux_map(fe::CellType type) {
+  static const std::array<MixtureFluxMap, 5> maps = [] {
+    std::array<MixtureFluxMap, 5> out;
+    for (const fe::CellType t : {fe::CellType::Hex8, fe::CellType::Tet4, fe::CellType::Tet10,
+                                 fe::CellType::Penta6, fe::CellType::Hex20})
+      out[static_cast<std::size_t>(t)] =
+          corner_map(mesh::num_nodes(t), mesh::num_corners(t), mesh::mid_edges(t));
+    return out;
+  }();
+  return maps[static_cast<std::size_t>(type)];
+}
+
+const MixtureFluxMap& mixture_flux_map(fe::FacetType type) {
+  static const std::array<MixtureFluxMap, 4> maps = [] {
+    std::array<MixtureFluxMap, 4> out;
+    for (const fe::FacetType t :
+         {fe::FacetType::Tri3, fe::FacetType::Tri6, fe::FacetType::Quad4, fe::FacetType::Quad8})
+      out[static_cast<std::size_t>(t)] =
+          corner_map(mesh::num_nodes(t), mesh::num_corners(t), mesh::mid_edges(t));
+    return out;
+  }();
+  return maps[static_cast<std::size_t>(type)];
+}
+
+namespace {
 
 const std::array<fe::HexShape, 8>& shape_at_gauss_points() {
   static const std::array<fe::HexShape, 8> N = [] {
@@ -38,44 +59,173 @@ const std::array<fe::HexShape, 8>& shape_at_gauss_points() {
   return N;
 }
 
-bool integrate(const fe::HexGeometry& geo, const MixtureUnknowns& x, bool ions, bool lumped,
-               Integrals& I) {
-  for (int q = 0; q < 8; ++q) {
-    PointData& d = I.qp[q];
-    const Mat3 F = deformation_gradient(geo.dN_dX[q], x.u);
+/// The hex8 cell's fixed-size types and kernels (its bits stay those of the hex8 element).
+struct Hex8Mixture {
+  using Geometry = fe::HexGeometry;
+  using Node3 = fe::HexCoords;
+  using NodeValues = fe::HexShape;
+  using NodeMatrix = Eigen::Matrix<Real, 8, 8>;
+  using Grad = Eigen::Matrix<Real, 98, 1>;
+  using SolidVector = HexVector;
+  using SolidMatrix = HexMatrix;
+  static constexpr int kMaxPoints = 8;
+  /// The fluxes are interpolated by the displacement's shape functions.
+  static constexpr bool kSameShapes = true;
+
+  static int nodes(const Geometry&) { return 8; }
+  static int flux_nodes(const Geometry&) { return 8; }
+  static int points(const Geometry&) { return 8; }
+  static const NodeValues& shape(const Geometry&, int q) { return shape_at_gauss_points()[q]; }
+  static const fe::HexShapeGrad& grad(const Geometry& geo, int q) { return geo.dN_dX[q]; }
+  static Real volume(const Geometry& geo, int q) { return geo.dV[q]; }
+  static bool solid(const Geometry& geo, const Node3& u, const material::ElasticLaw& law,
+                    SolidVector& f, SolidMatrix* K) {
+    return solid_hex8(geo, u, law, f, K);
+  }
+  static CellStress stress(const Geometry& geo, const Node3& u, const material::ElasticLaw& law) {
+    return solid_hex8_stress(geo, u, law);
+  }
+};
+
+/// A cell of any family (solid_cell.hpp), sized at run time.
+struct AnyCellMixture {
+  using Geometry = CellGeometry;
+  using Node3 = fe::CellNodeCoords;
+  using NodeValues = fe::ShapeValues;
+  using NodeMatrix =
+      Eigen::Matrix<Real, Eigen::Dynamic, Eigen::Dynamic, 0, fe::kMaxCellNodes, fe::kMaxCellNodes>;
+  using Grad = Eigen::Matrix<Real, Eigen::Dynamic, 1, 0, 12 * fe::kMaxCellNodes + 2, 1>;
+  using SolidVector = CellVectorX;
+  using SolidMatrix = CellMatrixX;
+  static constexpr int kMaxPoints = 27; // hex20's 3x3x3 Gauss rule
+  /// The fluxes are interpolated linearly from the corners (mixture_flux_map).
+  static constexpr bool kSameShapes = false;
+
+  static int nodes(const Geometry& geo) { return geo.num_nodes(); }
+  static int flux_nodes(const Geometry& geo) {
+    return static_cast<int>(mixture_flux_map(geo.reference->type()).rows());
+  }
+  static const MixtureFluxMap& flux_map(const Geometry& geo) {
+    return mixture_flux_map(geo.reference->type());
+  }
+  static int points(const Geometry& geo) { return static_cast<int>(geo.dV.size()); }
+  static const NodeValues& shape(const Geometry& geo, int q) {
+    return geo.reference->rule_shapes()[static_cast<std::size_t>(q)];
+  }
+  static const fe::ShapeGrads& grad(const Geometry& geo, int q) {
+    return geo.dN_dX[static_cast<std::size_t>(q)];
+  }
+  static Real volume(const Geometry& geo, int q) { return geo.dV[static_cast<std::size_t>(q)]; }
+  static bool solid(const Geometry& geo, const Node3& u, const material::ElasticLaw& law,
+                    SolidVector& f, SolidMatrix* K) {
+    return solid_cell(geo, u, law, f, K);
+  }
+  static CellStress stress(const Geometry& geo, const Node3& u, const material::ElasticLaw& law) {
+    return solid_cell_stress(geo, u, law);
+  }
+};
+
+/// Current-configuration values at one quadrature point.
+template <class Cell>
+struct PointData {
+  typename Cell::NodeValues N; ///< the fluxes' shape functions N_a
+  typename Cell::Node3 b;      ///< spatial gradients of the displacement's, F^-T Grad N_a
+  typename Cell::Node3 bf;     ///< those of the fluxes' (unless Cell::kSameShapes: then b)
+  Real dv;                     ///< J dV
+  Vec3 w, jp, jm;              ///< interpolated fluxes
+  Mat3 Gw, Gp, Gm;             ///< flux gradients sum_a x_a (x) bf_a
+};
+
+/// The spatial gradients of the fluxes' shape functions at a point.
+template <class Cell>
+const typename Cell::Node3& flux_gradients(const PointData<Cell>& d) {
+  if constexpr (Cell::kSameShapes)
+    return d.b;
+  else
+    return d.bf;
+}
+
+/// Element integrals in the current configuration (docs/theory/triphasic.md §3, §4).
+template <class Cell>
+struct Integrals {
+  using Node3 = typename Cell::Node3;
+  std::array<PointData<Cell>, Cell::kMaxPoints> qp;
+  int num_points = 0;
+  Real V = 0.0;
+  Node3 g;                     ///< g_a = int b_a dv (displacement nodes)
+  Node3 gf;                    ///< int bf_a dv (flux nodes; unless Cell::kSameShapes: then g)
+  typename Cell::NodeMatrix m; ///< int N_a N_b dv (flux nodes)
+  std::span<const PointData<Cell>> points() const {
+    return {qp.data(), static_cast<std::size_t>(num_points)};
+  }
+};
+
+/// The flux nodes' area vectors: the outflow of a nodal flux field j is sum_a gf_a . j_a.
+template <class Cell>
+const typename Cell::Node3& flux_areas(const Integrals<Cell>& I) {
+  if constexpr (Cell::kSameShapes)
+    return I.g;
+  else
+    return I.gf;
+}
+
+template <class Cell>
+bool integrate(const typename Cell::Geometry& geo, const MixtureUnknownsOf<typename Cell::Node3>& x,
+               bool ions, bool lumped, Integrals<Cell>& I) {
+  const int n = Cell::nodes(geo), nf = Cell::flux_nodes(geo);
+  I.num_points = Cell::points(geo);
+  I.g.setZero(n, 3);
+  if constexpr (!Cell::kSameShapes)
+    I.gf.setZero(nf, 3);
+  I.m.setZero(nf, nf);
+  for (int q = 0; q < I.num_points; ++q) {
+    PointData<Cell>& d = I.qp[static_cast<std::size_t>(q)];
+    const auto& dN_dX = Cell::grad(geo, q);
+    const Mat3 F = Mat3::Identity() + x.u.transpose() * dN_dX;
     const Real J = F.determinant();
     if (!(J > 0.0))
       return false;
-    d.N = shape_at_gauss_points()[q];
-    d.b = geo.dN_dX[q] * F.inverse();
-    d.dv = J * geo.dV[q];
+    d.b = dN_dX * F.inverse();
+    if constexpr (Cell::kSameShapes) {
+      d.N = Cell::shape(geo, q);
+    } else {
+      d.N = Cell::flux_map(geo) * Cell::shape(geo, q);
+      d.bf = Cell::flux_map(geo) * d.b;
+    }
+    const typename Cell::Node3& bf = flux_gradients(d);
+    d.dv = J * Cell::volume(geo, q);
     d.w = x.w.transpose() * d.N;
-    d.Gw = x.w.transpose() * d.b;
+    d.Gw = x.w.transpose() * bf;
     if (ions) {
       d.jp = x.jp.transpose() * d.N;
       d.jm = x.jm.transpose() * d.N;
-      d.Gp = x.jp.transpose() * d.b;
-      d.Gm = x.jm.transpose() * d.b;
+      d.Gp = x.jp.transpose() * bf;
+      d.Gm = x.jm.transpose() * bf;
     }
     I.V += d.dv;
     I.g += d.b * d.dv;
+    if constexpr (!Cell::kSameShapes)
+      I.gf += d.bf * d.dv;
     I.m += d.N * d.N.transpose() * d.dv;
   }
   if (lumped) {
-    const Eigen::Matrix<Real, 8, 1> row_sums = I.m.rowwise().sum();
+    const typename Cell::NodeValues row_sums = I.m.rowwise().sum();
     I.m = row_sums.asDiagonal();
   }
   return true;
 }
 
 /// Flux of a nodal field out of the element: sum_a g_a . j_a.
-Real outflow(const Node3& g, const fe::HexCoords& j) {
+template <class Node3>
+Real outflow(const Node3& g, const Node3& j) {
   return (g.array() * j.array()).sum();
 }
 
-MixtureChemistry chemistry(const Integrals& I, const MixtureUnknowns& x, const MixtureHistory& h,
-                           const material::MixtureProperties& mat, const MixtureStep& step,
-                           bool ions) {
+template <class Cell>
+MixtureChemistry chemistry(const Integrals<Cell>& I,
+                           const MixtureUnknownsOf<typename Cell::Node3>& x,
+                           const MixtureHistory& h, const material::MixtureProperties& mat,
+                           const MixtureStep& step, bool ions) {
   MixtureChemistry c;
   c.V = I.V;
   c.Vw = I.V - mat.phi_s0 * h.V0;
@@ -91,8 +241,8 @@ MixtureChemistry chemistry(const Integrals& I, const MixtureUnknowns& x, const M
     return c;
   const material::Electrochemistry& ch = *step.chem;
   const Real RT = ch.RT();
-  const Real N_plus = h.N_plus - step.dt * outflow(I.g, x.jp);
-  const Real N_minus = h.N_minus - step.dt * outflow(I.g, x.jm);
+  const Real N_plus = h.N_plus - step.dt * outflow(flux_areas(I), x.jp);
+  const Real N_minus = h.N_minus - step.dt * outflow(flux_areas(I), x.jm);
   c.admissible = N_plus > 0.0 && N_minus > 0.0;
   if (!c.admissible)
     return c;
@@ -113,40 +263,49 @@ MixtureChemistry chemistry(const Integrals& I, const MixtureUnknowns& x, const M
 }
 
 /// Mass-matrix products W_a = sum_b m_ab x_b (rows = nodes).
-Node3 mass_product(const Integrals& I, const fe::HexCoords& x) {
+template <class Cell>
+typename Cell::Node3 mass_product(const Integrals<Cell>& I, const typename Cell::Node3& x) {
   return I.m * x;
 }
 
-void residual(const Integrals& I, const MixtureChemistry& c, const MixtureUnknowns& x,
-              const MixtureHistory& h, const MixtureStep& step, const MixtureLayout& L,
-              const HexVector& f_int, LocalVector& r) {
+template <class Cell>
+void residual(const Integrals<Cell>& I, const MixtureChemistry& c,
+              const MixtureUnknownsOf<typename Cell::Node3>& x, const MixtureHistory& h,
+              const MixtureStep& step, const MixtureLayout& L,
+              const typename Cell::SolidVector& f_int, LocalVector& r) {
+  using Node3 = typename Cell::Node3;
+  const Node3& gf = flux_areas(I);
   r.setZero(L.size());
   const Node3 W = mass_product(I, x.w);
-  Node3 Rw = c.mu_w * I.g - c.A_ww * W;
-  for (int a = 0; a < 8; ++a)
+  Node3 Rw = c.mu_w * gf - c.A_ww * W;
+  for (int a = 0; a < L.nodes; ++a)
     r.segment<3>(L.u(a, 0)) =
-        f_int.segment<3>(3 * a) - (x.p - step.prestress) * I.g.row(a).transpose();
-  r[L.p()] = (I.V - h.V_old) / step.dt + outflow(I.g, x.w);
+        f_int.template segment<3>(3 * a) - (x.p - step.prestress) * I.g.row(a).transpose();
+  r[L.p()] = (I.V - h.V_old) / step.dt + outflow(gf, x.w);
   if (L.ions) {
     const Node3 P = mass_product(I, x.jp), M = mass_product(I, x.jm);
     Rw += c.A_wp * P + c.A_wm * M;
-    const Node3 Rp = c.mu_plus * I.g + c.A_wp * W - c.A_pp * P;
-    const Node3 Rm = c.mu_minus * I.g + c.A_wm * W - c.A_mm * M;
-    for (int a = 0; a < 8; ++a) {
+    const Node3 Rp = c.mu_plus * gf + c.A_wp * W - c.A_pp * P;
+    const Node3 Rm = c.mu_minus * gf + c.A_wm * W - c.A_mm * M;
+    for (int a = 0; a < L.flux_nodes; ++a) {
       r.segment<3>(L.jp(a, 0)) = Rp.row(a).transpose();
       r.segment<3>(L.jm(a, 0)) = Rm.row(a).transpose();
     }
     r[L.eta()] =
-        outflow(I.g, x.jp) - outflow(I.g, x.jm) - (h.N_plus - h.N_minus - h.N_fixed) / step.dt;
+        outflow(gf, x.jp) - outflow(gf, x.jm) - (h.N_plus - h.N_minus - h.N_fixed) / step.dt;
   }
-  for (int a = 0; a < 8; ++a)
+  for (int a = 0; a < L.flux_nodes; ++a)
     r.segment<3>(L.w(a, 0)) = Rw.row(a).transpose();
 }
 
-/// d(outflow)/du_c = int [(div j) b_c - (grad j)^T b_c] dv  (docs/theory/triphasic.md §4, q_b).
-Node3 outflow_shape_derivative(const Integrals& I, Mat3 PointData::*grad) {
-  Node3 q = Node3::Zero();
-  for (const PointData& d : I.qp) {
+/// d(outflow)/du_c = int [(div j) b_c - (grad j)^T b_c] dv  (docs/theory/triphasic.md §4, q_b;
+/// c runs over the displacement's nodes, grad j is that of the interpolated flux).
+template <class Cell>
+typename Cell::Node3 outflow_shape_derivative(const Integrals<Cell>& I,
+                                              Mat3 PointData<Cell>::*grad) {
+  typename Cell::Node3 q;
+  q.setZero(I.g.rows(), 3);
+  for (const PointData<Cell>& d : I.points()) {
     const Mat3& G = d.*grad;
     q += (G.trace() * d.b - d.b * G) * d.dv;
   }
@@ -154,20 +313,26 @@ Node3 outflow_shape_derivative(const Integrals& I, Mat3 PointData::*grad) {
 }
 
 /// Derivatives of the element-constant chemistry w.r.t. the local unknowns.
+/// (Sized for the cell's triphasic layout; a biphasic one uses the head.)
+template <class Cell>
 struct ChemistryGradients {
+  using Grad = typename Cell::Grad;
   Grad V, mu_w, mu_plus, mu_minus, A_ww, A_wp, A_wm, A_pp, A_mm, Qp, Qm;
 };
 
-ChemistryGradients chemistry_gradients(const Integrals& I, const MixtureChemistry& c,
-                                       const MixtureHistory& h,
-                                       const material::MixtureProperties& mat,
-                                       const MixtureStep& step, const MixtureLayout& L) {
-  ChemistryGradients d;
+template <class Cell>
+ChemistryGradients<Cell> chemistry_gradients(const Integrals<Cell>& I, const MixtureChemistry& c,
+                                             const MixtureHistory& h,
+                                             const material::MixtureProperties& mat,
+                                             const MixtureStep& step, const MixtureLayout& L) {
+  using Grad = typename Cell::Grad;
+  using Node3 = typename Cell::Node3;
+  ChemistryGradients<Cell> d;
   for (Grad* v : {&d.V, &d.mu_w, &d.mu_plus, &d.mu_minus, &d.A_ww, &d.A_wp, &d.A_wm, &d.A_pp,
                   &d.A_mm, &d.Qp, &d.Qm})
-    v->setZero();
-  for (int a = 0; a < 8; ++a)
-    d.V.segment<3>(L.u(a, 0)) = I.g.row(a).transpose();
+    v->setZero(L.size_with_ions());
+  for (int a = 0; a < L.nodes; ++a)
+    d.V.template segment<3>(L.u(a, 0)) = I.g.row(a).transpose();
   d.mu_w[L.p()] = 1.0;
   // 1/kappa(J), J = V/V0 (skipped for a constant permeability: the same arithmetic as before)
   const bool kappa_varies = !mat.permeability_law->is_constant();
@@ -176,13 +341,15 @@ ChemistryGradients chemistry_gradients(const Integrals& I, const MixtureChemistr
   if (!L.ions)
     return d;
   const Real RT = step.chem->RT();
-  const Node3 qp = outflow_shape_derivative(I, &PointData::Gp);
-  const Node3 qm = outflow_shape_derivative(I, &PointData::Gm);
-  for (int a = 0; a < 8; ++a) {
-    d.Qp.segment<3>(L.u(a, 0)) = qp.row(a).transpose();
-    d.Qm.segment<3>(L.u(a, 0)) = qm.row(a).transpose();
-    d.Qp.segment<3>(L.jp(a, 0)) = I.g.row(a).transpose();
-    d.Qm.segment<3>(L.jm(a, 0)) = I.g.row(a).transpose();
+  const Node3 qp = outflow_shape_derivative(I, &PointData<Cell>::Gp);
+  const Node3 qm = outflow_shape_derivative(I, &PointData<Cell>::Gm);
+  for (int a = 0; a < L.nodes; ++a) {
+    d.Qp.template segment<3>(L.u(a, 0)) = qp.row(a).transpose();
+    d.Qm.template segment<3>(L.u(a, 0)) = qm.row(a).transpose();
+  }
+  for (int a = 0; a < L.flux_nodes; ++a) {
+    d.Qp.template segment<3>(L.jp(a, 0)) = flux_areas(I).row(a).transpose();
+    d.Qm.template segment<3>(L.jm(a, 0)) = flux_areas(I).row(a).transpose();
   }
   const Grad dcp = (-step.dt * d.Qp - c.c_plus * d.V) / c.Vw;
   const Grad dcm = (-step.dt * d.Qm - c.c_minus * d.V) / c.Vw;
@@ -215,38 +382,64 @@ ChemistryGradients chemistry_gradients(const Integrals& I, const MixtureChemistr
   return d;
 }
 
-/// Adds s * H_ab (dg_a/du_b) to the u-columns of the 3 rows starting at `row`, for all a, b.
-void add_area_derivative(const Integrals& I, const std::array<Real, 4>& s,
-                         const std::array<int, 4>& row_offset, int rows, LocalMatrix& K) {
-  for (const PointData& d : I.qp)
-    for (int a = 0; a < 8; ++a)
-      for (int b = 0; b < 8; ++b) {
-        if (a == b)
-          continue;
-        const Mat3 H =
-            (d.b.row(a).transpose() * d.b.row(b) - d.b.row(b).transpose() * d.b.row(a)) * d.dv;
-        for (int f = 0; f < rows; ++f)
-          K.block<3, 3>(row_offset[f] + 3 * a, MixtureLayout::u(b, 0)) += s[f] * H;
-      }
+/// dg_a/du_b = int (b_a (x) b_b - b_b (x) b_a) dv for the gradients b_a of node a's shape
+/// function (of the displacement or of the fluxes) and b_b of the displacement's node b.
+inline Mat3 area_derivative(const Eigen::RowVector3d& b_a, const Eigen::RowVector3d& b_b, Real dv) {
+  return (b_a.transpose() * b_b - b_b.transpose() * b_a) * dv;
 }
 
-void tangent(const Integrals& I, const MixtureChemistry& c, const MixtureUnknowns& x,
-             const MixtureHistory& h, const material::MixtureProperties& mat,
-             const MixtureStep& step, const MixtureLayout& L, const HexMatrix& K_solid,
-             LocalMatrix& K) {
+/// Adds s[0] dg_a/du_b to the rows of u_a and s[f] dgf_a/du_b to those of the flux field f
+/// (w, j+, j-) at flux node a, for the first `rows` of them.
+template <class Cell>
+void add_area_derivative(const Integrals<Cell>& I, const MixtureLayout& L,
+                         const std::array<Real, 4>& s, int rows, LocalMatrix& K) {
+  const std::array<int, 4> row_offset = {L.u(0, 0), L.w(0, 0), L.jp(0, 0), L.jm(0, 0)};
+  for (const PointData<Cell>& d : I.points()) {
+    if constexpr (Cell::kSameShapes) { // one H_ab for every field's rows
+      for (int a = 0; a < L.nodes; ++a)
+        for (int b = 0; b < L.nodes; ++b) {
+          if (a == b)
+            continue;
+          const Mat3 H = area_derivative(d.b.row(a), d.b.row(b), d.dv);
+          for (int f = 0; f < rows; ++f)
+            K.block<3, 3>(row_offset[f] + 3 * a, L.u(b, 0)) += s[f] * H;
+        }
+      continue;
+    }
+    for (int a = 0; a < L.nodes; ++a)
+      for (int b = 0; b < L.nodes; ++b)
+        K.block<3, 3>(L.u(a, 0), L.u(b, 0)) += s[0] * area_derivative(d.b.row(a), d.b.row(b), d.dv);
+    for (int a = 0; a < L.flux_nodes; ++a)
+      for (int b = 0; b < L.nodes; ++b) {
+        const Mat3 H = area_derivative(flux_gradients(d).row(a), d.b.row(b), d.dv);
+        for (int f = 1; f < rows; ++f)
+          K.block<3, 3>(row_offset[f] + 3 * a, L.u(b, 0)) += s[f] * H;
+      }
+  }
+}
+
+template <class Cell>
+void tangent(const Integrals<Cell>& I, const MixtureChemistry& c,
+             const MixtureUnknownsOf<typename Cell::Node3>& x, const MixtureHistory& h,
+             const material::MixtureProperties& mat, const MixtureStep& step,
+             const MixtureLayout& L, const typename Cell::SolidMatrix& K_solid, LocalMatrix& K) {
+  using Node3 = typename Cell::Node3;
   const int n = L.size();
   K.setZero(n, n);
-  K.topLeftCorner<24, 24>() = K_solid;
-  const ChemistryGradients d = chemistry_gradients(I, c, h, mat, step, L);
+  K.topLeftCorner(3 * L.nodes, 3 * L.nodes) = K_solid;
+  const ChemistryGradients<Cell> d = chemistry_gradients(I, c, h, mat, step, L);
   const Node3 W = mass_product(I, x.w);
-  const Node3 P = L.ions ? mass_product(I, x.jp) : Node3::Zero();
-  const Node3 M = L.ions ? mass_product(I, x.jm) : Node3::Zero();
-  const Node3 qw = outflow_shape_derivative(I, &PointData::Gw);
-  for (int a = 0; a < 8; ++a) {
+  const Node3 P = L.ions ? mass_product(I, x.jp) : Node3(Node3::Zero(L.flux_nodes, 3));
+  const Node3 M = L.ions ? mass_product(I, x.jm) : Node3(Node3::Zero(L.flux_nodes, 3));
+  const Node3 qw = outflow_shape_derivative(I, &PointData<Cell>::Gw);
+  for (int a = 0; a < L.nodes; ++a) {
     const Vec3 ga = I.g.row(a).transpose();
     K.block<3, 1>(L.u(a, 0), L.p()) = -ga;
-    K.block<1, 3>(L.p(), L.w(a, 0)) = ga.transpose();
     K.block<1, 3>(L.p(), L.u(a, 0)) = ga.transpose() / step.dt + qw.row(a);
+  }
+  for (int a = 0; a < L.flux_nodes; ++a) {
+    const Vec3 ga = flux_areas(I).row(a).transpose();
+    K.block<1, 3>(L.p(), L.w(a, 0)) = ga.transpose();
     // rank-one terms of the element-constant chemistry
     K.block(L.w(a, 0), 0, 3, n) +=
         (ga * d.mu_w.head(n).transpose()) - (W.row(a).transpose() * d.A_ww.head(n).transpose());
@@ -261,7 +454,7 @@ void tangent(const Integrals& I, const MixtureChemistry& c, const MixtureUnknown
                                       M.row(a).transpose() * d.A_mm.head(n).transpose();
     }
     // friction blocks (element-constant coefficients times the current mass matrix)
-    for (int b = 0; b < 8; ++b) {
+    for (int b = 0; b < L.flux_nodes; ++b) {
       const Real mab = I.m(a, b);
       for (int k = 0; k < 3; ++k) {
         K(L.w(a, k), L.w(b, k)) -= c.A_ww * mab;
@@ -278,8 +471,8 @@ void tangent(const Integrals& I, const MixtureChemistry& c, const MixtureUnknown
   }
   // shape derivatives of the mass-matrix products: d(sum_b m_ab x_b)/du_c = int N_a x_h (x) b_c dv
   // (lumped: d(l_a x_a)/du_c = int N_a x_a (x) b_c dv, the nodal values in place of x_h)
-  for (const PointData& q : I.qp)
-    for (int a = 0; a < 8; ++a) {
+  for (const PointData<Cell>& q : I.points())
+    for (int a = 0; a < L.flux_nodes; ++a) {
       const Vec3 w = step.lumped_flux_mass ? Vec3(x.w.row(a).transpose()) : q.w;
       const Vec3 jp = !L.ions                 ? Vec3::Zero()
                       : step.lumped_flux_mass ? Vec3(x.jp.row(a).transpose())
@@ -291,7 +484,7 @@ void tangent(const Integrals& I, const MixtureChemistry& c, const MixtureUnknown
       const Vec3 zp = c.A_wp * w - c.A_pp * jp;
       const Vec3 zm = c.A_wm * w - c.A_mm * jm;
       const Real s = q.N[a] * q.dv;
-      for (int cc = 0; cc < 8; ++cc) {
+      for (int cc = 0; cc < L.nodes; ++cc) {
         const Eigen::RowVector3d bc = q.b.row(cc);
         K.block<3, 3>(L.w(a, 0), L.u(cc, 0)) += s * zw * bc;
         if (L.ions) {
@@ -300,7 +493,7 @@ void tangent(const Integrals& I, const MixtureChemistry& c, const MixtureUnknown
         }
       }
     }
-  add_area_derivative(I, {-(x.p - step.prestress), c.mu_w, c.mu_plus, c.mu_minus}, {0, 24, 48, 72},
+  add_area_derivative(I, L, {-(x.p - step.prestress), c.mu_w, c.mu_plus, c.mu_minus},
                       L.ions ? 4 : 2, K);
   if (L.ions)
     K.row(L.eta()) = (d.Qp - d.Qm).head(n).transpose();
@@ -341,7 +534,7 @@ Mat3 divergence_matrix(const MixtureChemistry& c, const material::MixturePropert
 /// d(coefficient)/d(div j) of a chemistry gradient `d` over the flux columns `column(b, k)` of
 /// one field: their entries are that derivative times g_b[k] (read at the largest |g_b[k]|).
 template <typename Column>
-Real divergence_slope(const Grad& d, const Integrals& I, Column column) {
+Real divergence_slope(const Hex8Mixture::Grad& d, const Integrals<Hex8Mixture>& I, Column column) {
   Eigen::Index b = 0, k = 0;
   const Real g = I.g.cwiseAbs().maxCoeff(&b, &k);
   return g > 0.0 ? d[column(static_cast<int>(b), static_cast<int>(k))] / I.g(b, k) : 0.0;
@@ -350,14 +543,16 @@ Real divergence_slope(const Grad& d, const Integrals& I, Column column) {
 /// MixtureFluxBlock::flux_rate: the tangent's rows W ⊗ dA_ww, P ⊗ dA_wp, … restricted to the ion
 /// flux columns, which are multiples of g_b (the concentrations depend on the ion fluxes through
 /// the cell's outflows; nothing depends on div w).
-Eigen::Matrix<Real, 24, 9> flux_rate(const Integrals& I, const ChemistryGradients& d,
+Eigen::Matrix<Real, 24, 9> flux_rate(const Integrals<Hex8Mixture>& I,
+                                     const ChemistryGradients<Hex8Mixture>& d,
                                      const MixtureUnknowns& x, const MixtureLayout& L) {
+  using Node3 = Hex8Mixture::Node3;
   Eigen::Matrix<Real, 24, 9> rate = Eigen::Matrix<Real, 24, 9>::Zero();
   if (!L.ions)
     return rate;
   const Node3 W = mass_product(I, x.w), P = mass_product(I, x.jp), M = mass_product(I, x.jm);
   for (int j = kCation; j <= kAnion; ++j) {
-    const auto slope = [&](const Grad& g) {
+    const auto slope = [&](const Hex8Mixture::Grad& g) {
       return j == kCation ? divergence_slope(g, I, [&](int b, int k) { return L.jp(b, k); })
                           : divergence_slope(g, I, [&](int b, int k) { return L.jm(b, k); });
     };
@@ -374,21 +569,21 @@ Eigen::Matrix<Real, 24, 9> flux_rate(const Integrals& I, const ChemistryGradient
   return rate;
 }
 
-} // namespace
-
-bool mixture_hex8(const fe::HexGeometry& geo, const MixtureUnknowns& x,
-                  const MixtureHistory& history, const material::MixtureProperties& mat,
-                  const MixtureStep& step, const MixtureLayout& layout, LocalVector& r,
-                  LocalMatrix* K) {
-  Integrals I;
+/// The element's residual and tangent (mixture_hex8, mixture_cell).
+template <class Cell>
+bool evaluate_cell(const typename Cell::Geometry& geo,
+                   const MixtureUnknownsOf<typename Cell::Node3>& x, const MixtureHistory& history,
+                   const material::MixtureProperties& mat, const MixtureStep& step,
+                   const MixtureLayout& layout, LocalVector& r, LocalMatrix* K) {
+  Integrals<Cell> I;
   if (!integrate(geo, x, layout.ions, step.lumped_flux_mass, I))
     return false;
   const MixtureChemistry c = chemistry(I, x, history, mat, step, layout.ions);
   if (!c.admissible)
     return false;
-  HexVector f_int;
-  HexMatrix K_solid;
-  if (!solid_hex8(geo, x.u, *mat.solid, f_int, K ? &K_solid : nullptr))
+  typename Cell::SolidVector f_int;
+  typename Cell::SolidMatrix K_solid;
+  if (!Cell::solid(geo, x.u, *mat.solid, f_int, K ? &K_solid : nullptr))
     return false;
   residual(I, c, x, history, step, layout, f_int, r);
   if (K)
@@ -396,11 +591,53 @@ bool mixture_hex8(const fe::HexGeometry& geo, const MixtureUnknowns& x,
   return true;
 }
 
+/// The element's chemistry, mean fluxes and stress (mixture_hex8_output, mixture_cell_output).
+template <class Cell>
+MixtureCellOutput
+output_of_cell(const typename Cell::Geometry& geo, const MixtureUnknownsOf<typename Cell::Node3>& x,
+               const MixtureHistory& history, const material::MixtureProperties& mat,
+               const MixtureStep& step, bool ions) {
+  MixtureCellOutput out;
+  Integrals<Cell> I;
+  if (!integrate(geo, x, ions, step.lumped_flux_mass, I))
+    return out;
+  out.chem = chemistry(I, x, history, mat, step, ions);
+  for (const PointData<Cell>& d : I.points()) {
+    out.w += d.w * d.dv / I.V;
+    if (ions) {
+      out.j_plus += d.jp * d.dv / I.V;
+      out.j_minus += d.jm * d.dv / I.V;
+    }
+  }
+  const CellStress s = Cell::stress(geo, x.u, *mat.solid);
+  out.solid_stress = s.cauchy;
+  out.J = s.J;
+  return out;
+}
+
+} // namespace
+
+bool mixture_hex8(const fe::HexGeometry& geo, const MixtureUnknowns& x,
+                  const MixtureHistory& history, const material::MixtureProperties& mat,
+                  const MixtureStep& step, const MixtureLayout& layout, LocalVector& r,
+                  LocalMatrix* K) {
+  return evaluate_cell<Hex8Mixture>(geo, x, history, mat, step, layout, r, K);
+}
+
+bool mixture_cell(const CellGeometry& geo, const CellMixtureUnknowns& x,
+                  const MixtureHistory& history, const material::MixtureProperties& mat,
+                  const MixtureStep& step, const MixtureLayout& layout, LocalVector& r,
+                  LocalMatrix* K) {
+  TRIFEM_VERIFY(layout.nodes == geo.num_nodes(), "the mixture layout has {} nodes, the cell {}",
+                layout.nodes, geo.num_nodes());
+  return evaluate_cell<AnyCellMixture>(geo, x, history, mat, step, layout, r, K);
+}
+
 std::optional<MixtureFluxBlock>
 mixture_hex8_flux_block(const fe::HexGeometry& geo, const MixtureUnknowns& x,
                         const MixtureHistory& history, const material::MixtureProperties& mat,
                         const MixtureStep& step, const MixtureLayout& layout) {
-  Integrals I;
+  Integrals<Hex8Mixture> I;
   if (!integrate(geo, x, layout.ions, step.lumped_flux_mass, I))
     return std::nullopt;
   const MixtureChemistry c = chemistry(I, x, history, mat, step, layout.ions);
@@ -425,22 +662,14 @@ MixtureCellOutput mixture_hex8_output(const fe::HexGeometry& geo, const MixtureU
                                       const MixtureHistory& history,
                                       const material::MixtureProperties& mat,
                                       const MixtureStep& step, bool ions) {
-  MixtureCellOutput out;
-  Integrals I;
-  if (!integrate(geo, x, ions, step.lumped_flux_mass, I))
-    return out;
-  out.chem = chemistry(I, x, history, mat, step, ions);
-  for (const PointData& d : I.qp) {
-    out.w += d.w * d.dv / I.V;
-    if (ions) {
-      out.j_plus += d.jp * d.dv / I.V;
-      out.j_minus += d.jm * d.dv / I.V;
-    }
-  }
-  const CellStress s = solid_hex8_stress(geo, x.u, *mat.solid);
-  out.solid_stress = s.cauchy;
-  out.J = s.J;
-  return out;
+  return output_of_cell<Hex8Mixture>(geo, x, history, mat, step, ions);
+}
+
+MixtureCellOutput mixture_cell_output(const CellGeometry& geo, const CellMixtureUnknowns& x,
+                                      const MixtureHistory& history,
+                                      const material::MixtureProperties& mat,
+                                      const MixtureStep& step, bool ions) {
+  return output_of_cell<AnyCellMixture>(geo, x, history, mat, step, ions);
 }
 
 } // namespace trifem::physics

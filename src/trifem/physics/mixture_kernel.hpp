@@ -1,34 +1,60 @@
 // SPDX-License-Identifier: MIT
-// Hex8 element of the triphasic (and biphasic) mixture: residual of the paper's eqs 14-19 with
-// backward Euler and its consistent tangent (docs/theory/triphasic.md §2-§4).
+// Element of the triphasic (and biphasic) mixture on a hex8, and on a cell of any family:
+// residual of the paper's eqs 14-19 with backward Euler and its consistent tangent
+// (docs/theory/triphasic.md §2-§4).
 #pragma once
 
 #include "trifem/fe/hex8.hpp"
 #include "trifem/material/mixture.hpp"
+#include "trifem/physics/solid_cell.hpp"
 #include "trifem/physics/term.hpp"
 
 #include <optional>
 
 namespace trifem::physics {
 
-/// Local DOF layout, field-major: u (24), w (24), [j+ (24), j- (24)], p, [eta].
+/// Local DOF layout of a cell of n displacement nodes and nf flux nodes (the cell's corners:
+/// mixture_flux_map), field-major: u (3n), w (3nf), [j+ (3nf), j- (3nf)], p, [eta]. A hex8's
+/// (n = nf = 8) has 98 unknowns, or 49 without ions.
 struct MixtureLayout {
   bool ions = true;
-  int size() const { return ions ? 98 : 49; }
-  static int u(int a, int k) { return 3 * a + k; }
-  static int w(int a, int k) { return 24 + 3 * a + k; }
-  static int jp(int a, int k) { return 48 + 3 * a + k; }
-  static int jm(int a, int k) { return 72 + 3 * a + k; }
-  int p() const { return ions ? 96 : 48; }
-  static int eta() { return 97; }
+  int nodes = 8;
+  int flux_nodes = 8;
+  int size() const { return ions ? size_with_ions() : 3 * nodes + 3 * flux_nodes + 1; }
+  int size_with_ions() const { return 3 * nodes + 9 * flux_nodes + 2; }
+  int u(int a, int k) const { return 3 * a + k; }
+  int w(int a, int k) const { return 3 * nodes + 3 * a + k; }
+  int jp(int a, int k) const { return 3 * nodes + 3 * flux_nodes + 3 * a + k; }
+  int jm(int a, int k) const { return 3 * nodes + 6 * flux_nodes + 3 * a + k; }
+  int p() const { return ions ? 3 * nodes + 9 * flux_nodes : 3 * nodes + 3 * flux_nodes; }
+  int eta() const { return 3 * nodes + 9 * flux_nodes + 1; }
 };
 
-/// Nodal and element unknowns of one element, in physical units.
-struct MixtureUnknowns {
-  fe::HexCoords u, w, jp, jm; ///< rows = nodes; fluxes are spatial vectors
-  Real p = 0.0;               ///< hydrostatic pressure [MPa]
-  Real eta = 0.0;             ///< Faraday constant x electric potential [mJ/mmol]
+/// Row a = the flux shape function of corner a in terms of the cell's shape functions:
+/// N^f_a = Σ_b P_ab N_b.
+using MixtureFluxMap = Eigen::Matrix<Real, Eigen::Dynamic, Eigen::Dynamic, 0, 8, fe::kMaxCellNodes>;
+
+/// How a cell of `type` interpolates the fluxes w, j±: linearly from its corners, N^f_a = N_a +
+/// ½ Σ N_m over the mid-edge nodes m of the edges at corner a (the tet4 or hex8 function of
+/// the corner on a tet10 or hex20), and by the cell's own functions on a linear cell (identity).
+/// With the potentials constant per cell, quadratic fluxes would leave the flux inside a cell
+/// undriven and the consolidation too fast (docs/theory/elements.md §3).
+const MixtureFluxMap& mixture_flux_map(fe::CellType type);
+
+/// The same for the facets: a tri6's fluxes are the tri3 functions of its corners, a quad8's the
+/// quad4 functions; identity on tri3 and quad4 facets.
+const MixtureFluxMap& mixture_flux_map(fe::FacetType type);
+
+/// Nodal and element unknowns of one cell, in physical units; `Coords` holds one row per node
+/// (fe::HexCoords for a hex8, fe::CellNodeCoords for a cell of any family).
+template <class Coords>
+struct MixtureUnknownsOf {
+  Coords u, w, jp, jm; ///< rows = nodes; fluxes are spatial vectors
+  Real p = 0.0;        ///< hydrostatic pressure [MPa]
+  Real eta = 0.0;      ///< Faraday constant x electric potential [mJ/mmol]
 };
+using MixtureUnknowns = MixtureUnknownsOf<fe::HexCoords>;
+using CellMixtureUnknowns = MixtureUnknownsOf<fe::CellNodeCoords>;
 
 /// Element history and invariant data.
 struct MixtureHistory {
@@ -107,6 +133,21 @@ struct MixtureCellOutput {
   Real J = 1.0;
 };
 MixtureCellOutput mixture_hex8_output(const fe::HexGeometry& geo, const MixtureUnknowns& x,
+                                      const MixtureHistory& history,
+                                      const material::MixtureProperties& mat,
+                                      const MixtureStep& step, bool ions);
+
+/// The same element on a cell of any family (solid_cell.hpp) with its family's rule: u
+/// interpolated by the cell's shape functions, w and j± by mixture_flux_map's, p and η constant
+/// over the cell (docs/theory/elements.md §3); x's flux rows and `layout` are those of the flux
+/// nodes.
+bool mixture_cell(const CellGeometry& geo, const CellMixtureUnknowns& x,
+                  const MixtureHistory& history, const material::MixtureProperties& mat,
+                  const MixtureStep& step, const MixtureLayout& layout, LocalVector& r,
+                  LocalMatrix* K);
+
+/// mixture_hex8_output for a cell of any family.
+MixtureCellOutput mixture_cell_output(const CellGeometry& geo, const CellMixtureUnknowns& x,
                                       const MixtureHistory& history,
                                       const material::MixtureProperties& mat,
                                       const MixtureStep& step, bool ions);

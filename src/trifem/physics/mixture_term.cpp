@@ -27,13 +27,6 @@ Donnan donnan(Real c_fixed, const material::MixtureProperties& m,
   return d;
 }
 
-Real current_volume(const fe::HexGeometry& geo, const fe::HexCoords& u) {
-  Real V = 0.0;
-  for (int q = 0; q < 8; ++q)
-    V += deformation_gradient(geo.dN_dX[q], u).determinant() * geo.dV[q];
-  return V;
-}
-
 /// Row and column factors of the scaled equations (docs/theory/triphasic.md §5); the other rows
 /// and columns keep a factor 1.
 struct Scaling {
@@ -74,44 +67,56 @@ MixtureTerm::MixtureTerm(const mesh::Mesh& mesh, const dofs::DofMap& dofs, Mixtu
   for (std::size_t e = 0; e < cells_.size(); ++e) {
     TRIFEM_CHECK(!props_[e]->charged || has_ions(),
                  "cell {} is triphasic but the model has no ion fields", cells_[e]);
-    const fe::HexCoords X = fe::cell_coordinates(mesh, cells_[e]);
-    auto geo = fe::hex8_geometry(X);
-    TRIFEM_CHECK(geo.has_value(), "cell {} is inverted or degenerate; check its node order",
-                 cells_[e]);
-    geometry_.push_back(*geo);
+    geometry_.push_back(reference_geometry(mesh, cells_[e]));
     MixtureHistory& h = history_[e];
-    for (Real dV : geo->dV)
-      h.V0 += dV;
+    std::visit(
+        [&h](const auto& geo) {
+          for (Real dV : geo.dV)
+            h.V0 += dV;
+        },
+        geometry_.back());
     h.V_old = h.V0;
     h.N_fixed = h.N_fixed_old = props_[e]->fixed_charge * props_[e]->phi_w0() * h.V0;
   }
 }
 
+MixtureLayout MixtureTerm::layout(Index e) const {
+  const mesh::CellType type = mesh_.cell_type(cells_[e]);
+  return {ions(e), mesh::num_nodes(type), static_cast<int>(mixture_flux_map(type).rows())};
+}
+
 void MixtureTerm::element_dofs(Index e, std::vector<Index>& dofs) const {
   const bool charged = ions(e);
   dofs.clear();
-  const auto& nodes = mesh_.cell(cells_[e]);
+  const std::span<const Index> nodes = mesh_.cell_nodes(cells_[e]);
+  const MixtureLayout L = layout(e);
   for (dofs::FieldId f : {fields_.u, fields_.w, fields_.j_plus, fields_.j_minus}) {
     if (!charged && (f == fields_.j_plus || f == fields_.j_minus))
       continue;
-    for (int a = 0; a < 8; ++a)
+    const auto count = static_cast<std::size_t>(f == fields_.u ? L.nodes : L.flux_nodes);
+    for (const Index node : nodes.first(count))
       for (int k = 0; k < 3; ++k)
-        dofs.push_back(dofs_.dof(f, nodes[a], k));
+        dofs.push_back(dofs_.dof(f, node, k));
   }
   dofs.push_back(dofs_.dof(fields_.p, cells_[e], 0));
   if (charged)
     dofs.push_back(dofs_.dof(fields_.eta, cells_[e], 0));
 }
 
-MixtureUnknowns MixtureTerm::unknowns(Index e, const Vector& x) const {
-  MixtureUnknowns v;
-  const auto& nodes = mesh_.cell(cells_[e]);
+template <class Coords>
+void MixtureTerm::gather(Index e, const Vector& x, MixtureUnknownsOf<Coords>& v) const {
+  const std::span<const Index> nodes = mesh_.cell_nodes(cells_[e]);
+  const MixtureLayout L = layout(e);
   const bool charged = ions(e);
-  v.jp.setZero();
-  v.jm.setZero();
-  for (int a = 0; a < 8; ++a)
-    for (int k = 0; k < 3; ++k) {
+  v.u.resize(L.nodes, 3);
+  for (Index a = 0; a < L.nodes; ++a)
+    for (int k = 0; k < 3; ++k)
       v.u(a, k) = x[dofs_.dof(fields_.u, nodes[a], k)];
+  v.w.resize(L.flux_nodes, 3);
+  v.jp.setZero(L.flux_nodes, 3);
+  v.jm.setZero(L.flux_nodes, 3);
+  for (Index a = 0; a < L.flux_nodes; ++a)
+    for (int k = 0; k < 3; ++k) {
       v.w(a, k) = x[dofs_.dof(fields_.w, nodes[a], k)];
       if (charged) {
         v.jp(a, k) = chem_.c_ref * x[dofs_.dof(fields_.j_plus, nodes[a], k)];
@@ -121,7 +126,35 @@ MixtureUnknowns MixtureTerm::unknowns(Index e, const Vector& x) const {
   v.p = x[dofs_.dof(fields_.p, cells_[e], 0)];
   if (charged)
     v.eta = x[dofs_.dof(fields_.eta, cells_[e], 0)] / chem_.c_ref;
-  return v;
+}
+
+Real MixtureTerm::current_volume(Index e, const Vector& x) const {
+  Real V = 0.0;
+  if (const auto* hex = std::get_if<fe::HexGeometry>(&geometry_[e])) {
+    MixtureUnknowns v;
+    gather(e, x, v);
+    for (int q = 0; q < 8; ++q)
+      V += deformation_gradient(hex->dN_dX[q], v.u).determinant() * hex->dV[q];
+    return V;
+  }
+  const auto& geo = std::get<CellGeometry>(geometry_[e]);
+  CellMixtureUnknowns v;
+  gather(e, x, v);
+  for (std::size_t q = 0; q < geo.dV.size(); ++q)
+    V += (Mat3::Identity() + v.u.transpose() * geo.dN_dX[q]).determinant() * geo.dV[q];
+  return V;
+}
+
+MixtureCellOutput MixtureTerm::cell_output(Index e, const Vector& x, const MixtureHistory& h,
+                                           const MixtureStep& s) const {
+  if (const auto* hex = std::get_if<fe::HexGeometry>(&geometry_[e])) {
+    MixtureUnknowns v;
+    gather(e, x, v);
+    return mixture_hex8_output(*hex, v, h, *props_[e], s, ions(e));
+  }
+  CellMixtureUnknowns v;
+  gather(e, x, v);
+  return mixture_cell_output(std::get<CellGeometry>(geometry_[e]), v, h, *props_[e], s, ions(e));
 }
 
 MixtureHistory MixtureTerm::history_at(Index e, Real time) const {
@@ -136,15 +169,15 @@ MixtureStep MixtureTerm::step(Index e, Real dt) const {
 }
 
 void MixtureTerm::scale(Index e, Real dt, LocalVector& r, LocalMatrix* K) const {
-  const MixtureLayout L{ions(e)};
-  const int n = L.size();
+  const MixtureLayout L = layout(e);
+  const int n = L.size(), flux = 3 * L.flux_nodes;
   const Scaling f = scaling(dt, chem_.c_ref);
   Eigen::VectorXd row = Eigen::VectorXd::Ones(n), col = Eigen::VectorXd::Ones(n);
-  row.segment(24, 24).setConstant(f.water_row);
+  row.segment(L.w(0, 0), flux).setConstant(f.water_row);
   row[L.p()] = f.p_row;
   if (L.ions) {
-    row.segment(48, 48).setConstant(f.ion_row);
-    col.segment(48, 48).setConstant(f.ion_column);
+    row.segment(L.jp(0, 0), 2 * flux).setConstant(f.ion_row);
+    col.segment(L.jp(0, 0), 2 * flux).setConstant(f.ion_column);
     row[L.eta()] = f.eta_row;
     col[L.eta()] = f.eta_column;
   }
@@ -155,8 +188,18 @@ void MixtureTerm::scale(Index e, Real dt, LocalVector& r, LocalMatrix* K) const 
 
 bool MixtureTerm::evaluate(Index e, const EvalState& state, LocalVector& r, LocalMatrix* K) const {
   const MixtureStep s = step(e, state.dt);
-  if (!mixture_hex8(geometry_[e], unknowns(e, state.x), history_at(e, state.time), *props_[e], s,
-                    MixtureLayout{ions(e)}, r, K))
+  const MixtureHistory h = history_at(e, state.time);
+  bool ok = false;
+  if (const auto* hex = std::get_if<fe::HexGeometry>(&geometry_[e])) {
+    MixtureUnknowns v;
+    gather(e, state.x, v);
+    ok = mixture_hex8(*hex, v, h, *props_[e], s, layout(e), r, K);
+  } else {
+    CellMixtureUnknowns v;
+    gather(e, state.x, v);
+    ok = mixture_cell(std::get<CellGeometry>(geometry_[e]), v, h, *props_[e], s, layout(e), r, K);
+  }
+  if (!ok)
     return false;
   scale(e, s.dt, r, K);
   return true;
@@ -174,7 +217,7 @@ CellTransport MixtureTerm::cell_transport(Index e, const MixtureFluxBlock& scale
   t.area = scaled_block.area;
   t.lumped_mass = scaled_block.lumped_mass;
   t.flux_dof.setConstant(-1);
-  const auto& nodes = mesh_.cell(cells_[e]);
+  const mesh::Hex8 nodes = mesh_.cell(cells_[e]);
   const std::array<dofs::FieldId, 3> flux = {fields_.w, fields_.j_plus, fields_.j_minus};
   for (int a = 0; a < 8; ++a) {
     t.node[a] = nodes[a];
@@ -188,10 +231,16 @@ CellTransport MixtureTerm::cell_transport(Index e, const MixtureFluxBlock& scale
 void MixtureTerm::transport_cells(const EvalState& state, std::vector<CellTransport>& out) const {
   out.reserve(out.size() + cells_.size());
   for (Index e = 0; e < num_elements(); ++e) {
+    const auto* hex = std::get_if<fe::HexGeometry>(&geometry_[e]);
+    TRIFEM_CHECK(hex != nullptr,
+                 "the drained-Schur preconditioner takes the mixture on hex8 cells only, and "
+                 "cell {} is a {}; use another preconditioner or a direct solver",
+                 cells_[e], mesh::name(mesh_.cell_type(cells_[e])));
     const MixtureStep s = step(e, state.dt);
+    MixtureUnknowns v;
+    gather(e, state.x, v);
     const std::optional<MixtureFluxBlock> block =
-        mixture_hex8_flux_block(geometry_[e], unknowns(e, state.x), history_at(e, state.time),
-                                *props_[e], s, MixtureLayout{ions(e)});
+        mixture_hex8_flux_block(*hex, v, history_at(e, state.time), *props_[e], s, layout(e));
     if (block) // always, at a state the term could evaluate
       out.push_back(cell_transport(e, scaled(*block, s.dt, chem_.c_ref)));
   }
@@ -200,7 +249,7 @@ void MixtureTerm::transport_cells(const EvalState& state, std::vector<CellTransp
 MixtureCellOutput MixtureTerm::output(Index e, const Vector& x) const {
   // dt = 0: concentrations from the committed moles, without a pending flux update
   const MixtureStep s{0.0, prestress_[e], &chem_, lumped_flux_mass_};
-  return mixture_hex8_output(geometry_[e], unknowns(e, x), history_[e], *props_[e], s, ions(e));
+  return cell_output(e, x, history_[e], s);
 }
 
 namespace {
@@ -232,8 +281,7 @@ std::string MixtureTerm::step_rejection(const EvalState& state) const {
 void MixtureTerm::commit(const EvalState& state) {
   for (Index e = 0; e < num_elements(); ++e) {
     const MixtureHistory h = history_at(e, state.time);
-    const MixtureCellOutput out = mixture_hex8_output(geometry_[e], unknowns(e, state.x), h,
-                                                      *props_[e], step(e, state.dt), ions(e));
+    const MixtureCellOutput out = cell_output(e, state.x, h, step(e, state.dt));
     MixtureHistory& next = history_[e];
     next.V_old = out.chem.V;
     if (ions(e)) {
@@ -250,7 +298,7 @@ void MixtureTerm::initialize(InitialState kind, Real time, Vector& x) {
     MixtureHistory& h = history_[e];
     h = history_at(e, time);
     h.N_fixed_old = h.N_fixed;
-    h.V_old = current_volume(geometry_[e], unknowns(e, x).u);
+    h.V_old = current_volume(e, x);
     x[dofs_.dof(fields_.p, cells_[e], 0)] = 0.0;
     prestress_[e] = 0.0;
     if (!ions(e))

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// The biphasic/triphasic mixture over a set of hex8 cells: unknown scaling, history (element
-// volumes and ion moles), initial Donnan states, and per-cell output.
+// The biphasic/triphasic mixture over a set of cells of any family: unknown scaling, history
+// (element volumes and ion moles), initial Donnan states, and per-cell output.
 #pragma once
 
 #include "trifem/dofs/dof_map.hpp"
@@ -72,10 +72,19 @@ public:
   void set_lumped_flux_mass(bool lumped) { lumped_flux_mass_ = lumped; }
 
 private:
-  MixtureUnknowns unknowns(Index e, const Vector& x) const;
+  /// The unknowns of element e in state x, in physical units (rows of `v`'s nodal fields:
+  /// the cell's nodes).
+  template <class Coords>
+  void gather(Index e, const Vector& x, MixtureUnknownsOf<Coords>& v) const;
+  /// The reference volume of element e at the displacements of state x.
+  Real current_volume(Index e, const Vector& x) const;
+  /// Element e's chemistry, fluxes and stresses in state x with history h.
+  MixtureCellOutput cell_output(Index e, const Vector& x, const MixtureHistory& h,
+                                const MixtureStep& s) const;
   MixtureHistory history_at(Index e, Real time) const;
   MixtureStep step(Index e, Real dt) const;
   bool ions(Index e) const { return has_ions() && props_[e]->charged; }
+  MixtureLayout layout(Index e) const;
   void scale(Index e, Real dt, LocalVector& r, LocalMatrix* K) const;
   /// The CellTransport of element e from its scaled flux block.
   CellTransport cell_transport(Index e, const MixtureFluxBlock& scaled_block) const;
@@ -88,7 +97,7 @@ private:
   material::Electrochemistry chem_;
   std::optional<dofs::LoadCurve> fixed_charge_curve_;
   bool lumped_flux_mass_ = false;
-  std::vector<fe::HexGeometry> geometry_;
+  std::vector<AnyCellGeometry> geometry_;
   std::vector<MixtureHistory> history_;
   std::vector<Real> prestress_;
 };

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "trifem/physics/solid_cell.hpp"
 
+#include "trifem/core/error.hpp"
+#include "trifem/fe/hex8.hpp"
 #include "trifem/tensor/kinematics.hpp"
 
 namespace trifem::physics {
@@ -46,6 +48,28 @@ std::optional<CellGeometry> cell_geometry(const fe::ReferenceCell& reference,
     geo.dV.push_back(det * p.weight);
   }
   return geo;
+}
+
+AnyCellGeometry reference_geometry(const mesh::Mesh& mesh, Index c) {
+  const mesh::CellType type = mesh.cell_type(c);
+  if (type == mesh::CellType::Hex8) {
+    const auto geo = fe::hex8_geometry(fe::cell_coordinates(mesh, c));
+    TRIFEM_CHECK(geo.has_value(),
+                 "cell {} is inverted or degenerate (det(dX/dxi) <= 0 at a Gauss point); "
+                 "check its node order",
+                 c);
+    return *geo;
+  }
+  const std::span<const Index> nodes = mesh.cell_nodes(c);
+  fe::CellNodeCoords X(static_cast<Index>(nodes.size()), 3);
+  for (std::size_t a = 0; a < nodes.size(); ++a)
+    X.row(static_cast<Index>(a)) = mesh.node(nodes[a]).transpose();
+  auto geo = cell_geometry(fe::reference_cell(type), X);
+  TRIFEM_CHECK(geo.has_value(),
+               "cell {} ({}) is inverted or degenerate (det(dX/dxi) <= 0 at a quadrature "
+               "point); check its node order and its mid-edge nodes",
+               c, mesh::name(type));
+  return std::move(*geo);
 }
 
 bool solid_cell(const CellGeometry& geo, const fe::CellNodeCoords& u,

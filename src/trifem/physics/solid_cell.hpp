@@ -7,9 +7,11 @@
 
 #include "trifem/fe/reference_element.hpp"
 #include "trifem/material/elastic_law.hpp"
+#include "trifem/mesh/mesh.hpp"
 #include "trifem/physics/solid_kernel.hpp"
 
 #include <optional>
+#include <variant>
 #include <vector>
 
 namespace trifem::physics {
@@ -45,6 +47,14 @@ struct CellGeometry {
 /// node); empty if det(dX/dxi) <= 0 at a point of the rule (an inverted or degenerate cell).
 std::optional<CellGeometry> cell_geometry(const fe::ReferenceCell& reference,
                                           const fe::CellNodeCoords& X);
+
+/// The reference geometry of a mesh cell: a hex8's fixed-size one (fe::hex8_geometry), or that of
+/// its family's element.
+using AnyCellGeometry = std::variant<fe::HexGeometry, CellGeometry>;
+
+/// The reference geometry of cell c of the mesh; InputError naming the cell if it is inverted or
+/// degenerate (det(dX/dxi) <= 0 at a quadrature point).
+AnyCellGeometry reference_geometry(const mesh::Mesh& mesh, Index c);
 
 /// Internal force f_a = ∫ F S ∇N_a dV and, if K is given, the tangent
 /// K_ab = ∫ [(∇N_a · S ∇N_b) I + B_aᵀ D B_b] dV (as solid_hex8), for the nodal displacements

@@ -18,29 +18,8 @@ SolidTerm::SolidTerm(const mesh::Mesh& mesh, const dofs::DofMap& dofs, dofs::Fie
     elements_.assign(cells_.size(), SolidElement::Displacement);
   TRIFEM_VERIFY(elements_.size() == cells_.size(), "one formulation per cell expected");
   geometry_.reserve(cells_.size());
-  for (std::size_t e = 0; e < cells_.size(); ++e) {
-    const Index c = cells_[e];
-    const mesh::CellType type = mesh.cell_type(c);
-    if (type == mesh::CellType::Hex8) {
-      const auto geo = fe::hex8_geometry(fe::cell_coordinates(mesh, c));
-      TRIFEM_CHECK(geo.has_value(),
-                   "cell {} is inverted or degenerate (det(dX/dxi) <= 0 at a Gauss point); "
-                   "check its node order",
-                   c);
-      geometry_.emplace_back(*geo);
-      continue;
-    }
-    const std::span<const Index> nodes = mesh.cell_nodes(c);
-    fe::CellNodeCoords X(static_cast<Index>(nodes.size()), 3);
-    for (std::size_t a = 0; a < nodes.size(); ++a)
-      X.row(static_cast<Index>(a)) = mesh.node(nodes[a]).transpose();
-    auto geo = cell_geometry(fe::reference_cell(type), X);
-    TRIFEM_CHECK(geo.has_value(),
-                 "cell {} ({}) is inverted or degenerate (det(dX/dxi) <= 0 at a quadrature "
-                 "point); check its node order and its mid-edge nodes",
-                 c, mesh::name(type));
-    geometry_.emplace_back(std::move(*geo));
-  }
+  for (const Index c : cells_)
+    geometry_.push_back(reference_geometry(mesh, c));
 }
 
 void SolidTerm::element_dofs(Index e, std::vector<Index>& dofs) const {

@@ -57,7 +57,7 @@ private:
   std::vector<std::shared_ptr<const material::ElasticLaw>> laws_;
   std::vector<SolidElement> elements_;
   /// Per element: the hex8 kernels' geometry, or that of another family.
-  std::vector<std::variant<fe::HexGeometry, CellGeometry>> geometry_;
+  std::vector<AnyCellGeometry> geometry_;
 };
 
 } // namespace trifem::physics

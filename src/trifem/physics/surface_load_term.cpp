@@ -17,18 +17,6 @@ void facet_dofs(const mesh::Facet& f, const dofs::DofMap& map, dofs::FieldId u,
       dofs[static_cast<std::size_t>(3 * a + k)] = map.dof(u, f.node(a), k);
 }
 
-/// The coordinates of a facet's nodes: reference ones plus their displacements in x (none: the
-/// reference configuration).
-FacetPositions facet_positions(const mesh::Mesh& mesh, const mesh::Facet& f,
-                               const dofs::DofMap* dofs = nullptr, dofs::FieldId u = {},
-                               const Vector* x = nullptr) {
-  FacetPositions p(f.num_nodes(), 3);
-  for (int a = 0; a < f.num_nodes(); ++a)
-    for (int k = 0; k < 3; ++k)
-      p(a, k) = mesh.node(f.node(a))[k] + (x ? (*x)[dofs->dof(u, f.node(a), k)] : 0.0);
-  return p;
-}
-
 } // namespace
 
 PressureTerm::PressureTerm(const mesh::Mesh& mesh, const dofs::DofMap& dofs,

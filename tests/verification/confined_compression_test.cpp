@@ -17,20 +17,7 @@ constexpr Real kSigma0 = 1e-4; ///< applied compressive stress [MPa]
 /// Laterally confined, impermeable column of n cells, bottom fixed and impermeable, top
 /// free-draining under a step compressive traction sigma0.
 test::MixtureModel creep_column(int n, material::MixtureProperties props) {
-  mesh::BoxSpec spec;
-  spec.divisions = {1, 1, n};
-  test::MixtureModel m(mesh::make_box(spec), std::move(props));
-  for (int k = 0; k < 2; ++k) {
-    m.fix("box.all", m.f.u, k);
-    m.impermeable("box.all", k); // one cell across: every node is on a lateral face
-  }
-  m.fix("box.zmin", m.f.u, 2);
-  m.impermeable("box.zmin", 2);
-  m.loads.push_back(std::make_unique<physics::TractionTerm>(
-      m.mesh, m.dofs, m.f.u, m.mesh.surface("box.zmax").facets, Vec3(0, 0, -kSigma0),
-      dofs::LoadCurve({{0.0, 0.0}, {1e-9, 1.0}}, dofs::Interpolation::Linear)));
-  m.build();
-  return m;
+  return test::creep_column(n, std::move(props), kSigma0);
 }
 
 Real top_displacement(const test::MixtureModel& m) {

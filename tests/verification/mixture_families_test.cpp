@@ -19,23 +19,8 @@ namespace mixture_families_test {
 constexpr Real kSigma0 = 1e-4; ///< applied compressive stress [MPa]
 const exact::ConfinedLayer kLayer{1.0, 0.3, 1.07e-3};
 
-/// Laterally confined, impermeable column of n box cells turned into `type` cells, bottom fixed
-/// and impermeable, top free-draining under a step compressive traction sigma0.
 test::MixtureModel creep_column(mesh::CellType type, int n) {
-  mesh::BoxSpec spec;
-  spec.divisions = {1, 1, n};
-  test::MixtureModel m(mesh::convert_cells(mesh::make_box(spec), type), test::paper_tissue(false));
-  for (int k = 0; k < 2; ++k) {
-    m.fix("box.all", m.f.u, k);
-    m.impermeable("box.all", k); // one box cell across: every node is on a lateral face
-  }
-  m.fix("box.zmin", m.f.u, 2);
-  m.impermeable("box.zmin", 2);
-  m.loads.push_back(std::make_unique<physics::TractionTerm>(
-      m.mesh, m.dofs, m.f.u, m.mesh.surface("box.zmax").facets, Vec3(0, 0, -kSigma0),
-      dofs::LoadCurve({{0.0, 0.0}, {1e-9, 1.0}}, dofs::Interpolation::Linear)));
-  m.build();
-  return m;
+  return test::creep_column(n, test::paper_tissue(false), kSigma0, type);
 }
 
 /// The top's displacement at t = 400 s (about 0.4 of the consolidation time), steps of dt.

@@ -6,6 +6,7 @@
 #include "trifem/linalg/linear_solver.hpp"
 #include "trifem/material/registry.hpp"
 #include "trifem/mesh/box.hpp"
+#include "trifem/mesh/convert_cells.hpp"
 #include "trifem/physics/mixture_term.hpp"
 #include "trifem/physics/surface_load_term.hpp"
 #include "trifem/solver/newton.hpp"
@@ -153,5 +154,29 @@ struct MixtureModel {
     return problem->state()[dofs.dof(field, entity, k)];
   }
 };
+
+/// Terzaghi's confined creep: a laterally confined, impermeable column of n box cells along z
+/// (1 x 1 x 1 mm) turned into `type` cells, bottom fixed and impermeable, top free-draining under a
+/// step compressive traction sigma0 [MPa]. One box cell across: every corner is on a lateral
+/// face (a tet10's mid-edge nodes inside the column move freely).
+inline MixtureModel creep_column(int n, material::MixtureProperties props, Real sigma0,
+                                 mesh::CellType type = mesh::CellType::Hex8) {
+  mesh::BoxSpec spec;
+  spec.divisions = {1, 1, n};
+  mesh::Mesh box = mesh::make_box(spec);
+  MixtureModel m(type == mesh::CellType::Hex8 ? std::move(box) : mesh::convert_cells(box, type),
+                 std::move(props));
+  for (int k = 0; k < 2; ++k) {
+    m.fix("box.all", m.f.u, k);
+    m.impermeable("box.all", k);
+  }
+  m.fix("box.zmin", m.f.u, 2);
+  m.impermeable("box.zmin", 2);
+  m.loads.push_back(std::make_unique<physics::TractionTerm>(
+      m.mesh, m.dofs, m.f.u, m.mesh.surface("box.zmax").facets, Vec3(0, 0, -sigma0),
+      dofs::LoadCurve({{0.0, 0.0}, {1e-9, 1.0}}, dofs::Interpolation::Linear)));
+  m.build();
+  return m;
+}
 
 } // namespace trifem::test

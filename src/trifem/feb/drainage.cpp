@@ -2,7 +2,6 @@
 // FEBio's natural boundary condition of mixtures written out: a face without a fluid pressure
 // condition is impermeable in FEBio and free-draining in trifem (docs/feb.md).
 #include "trifem/feb/reader.hpp"
-#include "trifem/mesh/hex_faces.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -35,31 +34,6 @@ std::vector<char> mixture_cells(const Reader& r) {
   return mixture;
 }
 
-/// Faces of mixture cells that no other mixture cell shares (the mesh boundary and interfaces
-/// with solid cells), outward-oriented.
-std::vector<mesh::Facet> mixture_boundary(const mesh::Mesh& mesh,
-                                          const std::vector<char>& mixture) {
-  std::map<FaceKey, std::pair<mesh::Facet, int>> faces;
-  for (Index c = 0; c < mesh.num_cells(); ++c) {
-    if (!mixture[c])
-      continue;
-    for (int f = 0; f < 6; ++f) {
-      mesh::Facet facet;
-      facet.cell = c;
-      facet.local_face = f;
-      for (int k = 0; k < 4; ++k)
-        facet.nodes[k] = mesh.cell(c)[mesh::kHexFaces[f][k]];
-      auto [it, inserted] = faces.try_emplace(key_of(facet.nodes), facet, 0);
-      ++it->second.second;
-    }
-  }
-  std::vector<mesh::Facet> boundary;
-  for (const auto& [key, entry] : faces)
-    if (entry.second == 1)
-      boundary.push_back(entry.first);
-  return boundary;
-}
-
 Vec3 unit_normal(const mesh::Mesh& mesh, const mesh::Facet& f) {
   const Vec3 n = (mesh.node(f.nodes[2]) - mesh.node(f.nodes[0]))
                      .cross(mesh.node(f.nodes[3]) - mesh.node(f.nodes[1]));
@@ -90,7 +64,8 @@ std::vector<std::vector<mesh::Facet>> patches(const mesh::Mesh& mesh,
     normals.push_back(unit_normal(mesh, facets[i]));
     for (int k = 0; k < 4; ++k) {
       Index a = facets[i].nodes[k], b = facets[i].nodes[(k + 1) % 4];
-      by_edge[{std::min(a, b), std::max(a, b)}].push_back(i);
+      if (a != b) // (a triangle's fourth corner repeats its third)
+        by_edge[{std::min(a, b), std::max(a, b)}].push_back(i);
     }
   }
   std::vector<int> patch(facets.size(), -1);
@@ -163,7 +138,9 @@ void add_impermeable_faces(Reader& r) {
   for (const std::string& name : r.flux_surfaces)
     for (const mesh::Facet& f : r.mesh.mesh.surface(name).facets)
       open.insert(key_of(f.nodes));
-  const std::vector<mesh::Facet> boundary = mixture_boundary(r.mesh.mesh, mixture);
+  // faces of mixture cells that no other mixture cell shares (the mesh boundary and interfaces
+  // with solid cells), outward-oriented
+  const std::vector<mesh::Facet> boundary = r.mesh.mesh.boundary_facets(mixture);
   add_pressure_baths(r, boundary, open);
   std::vector<mesh::Facet> closed;
   for (const mesh::Facet& f : boundary)

@@ -1,10 +1,14 @@
 // SPDX-License-Identifier: MIT
-// Mesh and MeshDomains sections: nodes, hex8 parts, node sets, surfaces, element sets.
+// Mesh and MeshDomains sections: nodes, solid parts (hex8, tet4, tet10, penta6, hex20), node
+// sets, surfaces, element sets.
 #include "trifem/core/error.hpp"
 #include "trifem/feb/reader.hpp"
+#include "trifem/mesh/cell_checks.hpp"
 
 #include <algorithm>
 #include <fmt/format.h>
+#include <optional>
+#include <span>
 
 namespace trifem::feb::detail {
 namespace {
@@ -59,16 +63,68 @@ void read_shell_part(Reader& r, pugi::xml_node part, const std::string& name,
   r.shell_parts[name] = part;
 }
 
+/// The solid element types FEBio writes that trifem reads, as cell types.
+std::optional<mesh::CellType> solid_type(std::string_view type) {
+  for (const mesh::CellType t : {mesh::CellType::Hex8, mesh::CellType::Tet4, mesh::CellType::Tet10,
+                                 mesh::CellType::Penta6, mesh::CellType::Hex20})
+    if (mesh::name(t) == type)
+      return t;
+  return std::nullopt;
+}
+
+/// For each node of trifem's order (mesh/cell_type.hpp), the position in FEBio's node list.
+/// FEBio's tet10 numbers the mid-edge nodes of the edges (1,3) and (2,3) the other way round;
+/// its hex20 lists the mid-edge nodes bottom ring, top ring, then the vertical edges
+/// (FESolidElementShape's functions); its tet4, penta6 and hex8 are trifem's.
+std::span<const int> febio_order(mesh::CellType type) {
+  static constexpr std::array<int, 10> tet10 = {0, 1, 2, 3, 4, 5, 6, 7, 9, 8};
+  static constexpr std::array<int, 20> hex20 = {0,  1, 2,  3,  4,  5,  6,  7,  8,  11,
+                                                16, 9, 17, 10, 18, 19, 12, 15, 13, 14};
+  static constexpr std::array<int, 8> identity = {0, 1, 2, 3, 4, 5, 6, 7};
+  if (type == mesh::CellType::Tet10)
+    return tet10;
+  if (type == mesh::CellType::Hex20)
+    return hex20;
+  return std::span<const int>(identity).first(static_cast<std::size_t>(mesh::num_nodes(type)));
+}
+
+/// The cell of one <elem> of a solid part of `type`, its nodes in trifem's order.
+Index read_cell(Reader& r, pugi::xml_node e, mesh::CellType type) {
+  const std::vector<long> ids = r.doc.ids(e);
+  const auto count = static_cast<std::size_t>(mesh::num_nodes(type));
+  if (ids.size() != count)
+    r.doc.fail(e, fmt::format("a {} has {} nodes, got {}", mesh::name(type), count, ids.size()));
+  const std::vector<Index> given = r.nodes_of(e, ids);
+  std::vector<Index> nodes(count);
+  const std::span<const int> order = febio_order(type);
+  for (std::size_t a = 0; a < count; ++a)
+    nodes[a] = given[static_cast<std::size_t>(order[a])];
+  if (type == mesh::CellType::Hex8) {
+    mesh::Hex8 hex;
+    std::copy(nodes.begin(), nodes.end(), hex.begin());
+    if (corner_volume(r.mesh.mesh, hex) <= 0.0)
+      r.doc.fail(e, "the element is inverted (negative volume): its node order is not FEBio's "
+                    "hex8 order");
+  } else if (const std::string problem = mesh::cell_shape_problem(r.mesh.mesh, type, nodes);
+             !problem.empty()) {
+    r.doc.fail(e, fmt::format("the {} element {}", mesh::name(type), problem));
+  }
+  return r.mesh.mesh.add_cell(type, nodes);
+}
+
 void read_elements(Reader& r, pugi::xml_node part) {
   const std::string type = r.doc.attribute(part, "type");
-  if (type != "hex8" && type != "quad4" && type != "tri3")
-    r.doc.fail(part, fmt::format("element type '{}' is not supported (trifem has hex8 solids, "
-                                 "and quad4 and tri3 shells as rigid bodies)",
-                                 type));
+  const std::optional<mesh::CellType> cell_type = solid_type(type);
+  if (!cell_type && type != "quad4" && type != "tri3")
+    r.doc.fail(part,
+               fmt::format("element type '{}' is not supported (trifem has hex8, tet4, tet10, "
+                           "penta6 and hex20 solids, and quad4 and tri3 shells as rigid "
+                           "bodies)",
+                           type));
   const std::string name = r.doc.attribute(part, "name");
   if (r.parts.contains(name) || r.shell_parts.contains(name))
     r.doc.fail(part, "name", fmt::format("a second <Elements> part named '{}'", name));
-  if (type == "quad4" || type == "tri3")
+  if (!cell_type)
     return read_shell_part(r, part, name, type);
   r.parts[name] = part;
   std::vector<Index> cells;
@@ -80,16 +136,7 @@ void read_elements(Reader& r, pugi::xml_node part) {
       r.doc.fail(e, "id", "expected a non-negative integer element id");
     if (r.cell_index.contains(id))
       r.doc.fail(e, "id", fmt::format("element id {} is defined twice", id));
-    const std::vector<long> ids = r.doc.ids(e);
-    if (ids.size() != 8)
-      r.doc.fail(e, fmt::format("a hex8 has 8 nodes, got {}", ids.size()));
-    const std::vector<Index> nodes = r.nodes_of(e, ids);
-    mesh::Hex8 hex;
-    std::copy(nodes.begin(), nodes.end(), hex.begin());
-    if (corner_volume(r.mesh.mesh, hex) <= 0.0)
-      r.doc.fail(e, "the element is inverted (negative volume): its node order is not FEBio's "
-                    "hex8 order");
-    const Index c = r.mesh.mesh.add_cell(hex);
+    const Index c = read_cell(r, e, *cell_type);
     r.cell_index[id] = c;
     cells.push_back(c);
   }
@@ -134,29 +181,75 @@ bool on_shells(const Reader& r, const std::vector<std::array<Index, 4>>& quads) 
   });
 }
 
+/// The facet types of <Surface> elements.
+std::optional<mesh::FacetType> facet_type(std::string_view type) {
+  for (const mesh::FacetType t : {mesh::FacetType::Tri3, mesh::FacetType::Tri6,
+                                  mesh::FacetType::Quad4, mesh::FacetType::Quad8})
+    if (mesh::name(t) == type)
+      return t;
+  return std::nullopt;
+}
+
+/// The corners of a surface element of `type` as a quad (a triangle's fourth repeats its third);
+/// its mid-edge nodes, if any, in `mid_edge_nodes`.
+std::array<Index, 4> facet_corners(const Reader& r, pugi::xml_node f, mesh::FacetType type,
+                                   std::vector<Index>& mid_edge_nodes) {
+  const std::vector<long> ids = r.doc.ids(f);
+  const auto count = static_cast<std::size_t>(mesh::num_nodes(type));
+  if (ids.size() != count)
+    r.doc.fail(f, fmt::format("a {} has {} nodes, got {}", mesh::name(type), count, ids.size()));
+  const std::vector<Index> nodes = r.nodes_of(f, ids);
+  const auto corners = static_cast<std::size_t>(mesh::num_corners(type));
+  std::array<Index, 4> quad{};
+  for (std::size_t a = 0; a < 4; ++a)
+    quad[a] = nodes[std::min(a, corners - 1)];
+  mid_edge_nodes.assign(nodes.begin() + static_cast<std::ptrdiff_t>(corners), nodes.end());
+  return quad;
+}
+
+/// Fails at `f` unless the cell face `found` is of the given type with the given mid-edge nodes.
+void check_face(const Reader& r, pugi::xml_node f, mesh::FacetType type,
+                const std::vector<Index>& mid_edge_nodes, const mesh::Facet& found) {
+  if (found.type != type)
+    r.doc.fail(f, fmt::format("this {} is the face of a {} element, whose faces are {} facets",
+                              mesh::name(type), mesh::name(r.mesh.mesh.cell_type(found.cell)),
+                              mesh::name(found.type)));
+  std::vector<Index> given = mid_edge_nodes,
+                     face(found.mid_edge_nodes.begin(),
+                          found.mid_edge_nodes.begin() + (found.num_nodes() - found.num_corners()));
+  std::sort(given.begin(), given.end());
+  std::sort(face.begin(), face.end());
+  if (given != face)
+    r.doc.fail(f, "its mid-edge nodes are not those of the element face with its corners");
+}
+
 void read_surface(Reader& r, pugi::xml_node surface) {
   const std::string name = r.doc.attribute(surface, "name");
   std::vector<std::array<Index, 4>> quads;
   std::vector<pugi::xml_node> elements;
+  std::vector<mesh::FacetType> types;
+  std::vector<std::vector<Index>> mids;
   for (pugi::xml_node f : detail::elements(surface)) {
-    const std::string_view type = f.name();
-    if (type != "quad4" && type != "tri3")
-      r.doc.fail(f, fmt::format("surface facet type '{}' is not supported (trifem has quad4 faces "
-                                "of hex8 cells, and quad4 and tri3 facets of rigid shells)",
-                                type));
-    quads.push_back(free_facet(r, f, type).nodes);
+    const std::optional<mesh::FacetType> type = facet_type(f.name());
+    if (!type)
+      r.doc.fail(f, fmt::format("surface facet type '{}' is not supported (trifem has the tri3, "
+                                "tri6, quad4 and quad8 faces of its cells, and quad4 and tri3 "
+                                "facets of rigid shells)",
+                                f.name()));
+    mids.emplace_back();
+    quads.push_back(facet_corners(r, f, *type, mids.back()));
+    types.push_back(*type);
     elements.push_back(f);
   }
   if (quads.empty())
     r.doc.fail(surface, "the surface has no facets");
   mesh::Surface s;
-  const bool triangles =
-      std::any_of(quads.begin(), quads.end(), [](const auto& q) { return q[3] == q[2]; });
-  if (triangles && !on_shells(r, quads))
-    r.doc.fail(surface, "tri3 facets are supported on rigid shells only (trifem has hex8 cells)");
   if (on_shells(r, quads)) { // a surface of a rigid shell: its quads as given
-    for (const auto& q : quads)
-      s.facets.push_back({.nodes = q, .cell = -1, .local_face = -1});
+    for (std::size_t i = 0; i < quads.size(); ++i) {
+      if (types[i] != mesh::FacetType::Quad4 && types[i] != mesh::FacetType::Tri3)
+        r.doc.fail(elements[i], "the facets of rigid shells are quad4 or tri3");
+      s.facets.push_back({.nodes = quads[i], .cell = -1, .local_face = -1});
+    }
     with_mesh_errors(r, surface, [&] { r.mesh.mesh.add_surface(name, std::move(s)); });
     return;
   }
@@ -167,10 +260,13 @@ void read_surface(Reader& r, pugi::xml_node surface) {
       try {
         r.mesh.mesh.find_facets({quads[i]});
       } catch (const InputError&) {
-        r.doc.fail(elements[i], "this quad4 is not a face of any hex8 element");
+        r.doc.fail(elements[i],
+                   fmt::format("this {} is not a face of any solid element", mesh::name(types[i])));
       }
     throw;
   }
+  for (std::size_t i = 0; i < quads.size(); ++i)
+    check_face(r, elements[i], types[i], mids[i], s.facets[i]);
   with_mesh_errors(r, surface, [&] { r.mesh.mesh.add_surface(name, std::move(s)); });
 }
 
@@ -222,8 +318,9 @@ void read_domains(Reader& r, pugi::xml_node domains) {
       continue;
     }
     if (std::string_view(d.name()) != "SolidDomain")
-      r.doc.fail(
-          d, fmt::format("<{}> is not supported (trifem has solid hex8 domains only)", d.name()));
+      r.doc.fail(d, fmt::format("<{}> is not supported (trifem has solid domains and the shell "
+                                "domains of rigid bodies)",
+                                d.name()));
     const std::string name = r.doc.attribute(d, "name");
     const std::string mat = r.doc.attribute(d, "mat");
     if (!r.parts.contains(name))

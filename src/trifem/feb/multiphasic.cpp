@@ -210,7 +210,7 @@ std::vector<char> mixture_nodes(const Reader& r) {
   for (const auto& [block, material] : r.mesh.materials)
     if (r.spec.materials.at(material).is_mixture())
       for (Index c : r.mesh.mesh.cell_block(block))
-        for (Index n : r.mesh.mesh.cell(c))
+        for (Index n : r.mesh.mesh.cell_nodes(c))
           in[n] = 1;
   return in;
 }

@@ -53,10 +53,13 @@ std::vector<long> item_ids(const Reader& r, pugi::xml_node d, bool nodes) {
   return ids;
 }
 
+/// The mean of the cell's corners.
 Vec3 centroid(const mesh::Mesh& mesh, Index cell) {
   Vec3 c = Vec3::Zero();
-  for (Index n : mesh.cell(cell))
-    c += mesh.node(n) / 8.0;
+  const std::span<const Index> corners = mesh.cell_nodes(cell).first(
+      static_cast<std::size_t>(mesh::num_corners(mesh.cell_type(cell))));
+  for (Index n : corners)
+    c += mesh.node(n) / static_cast<Real>(corners.size());
   return c;
 }
 

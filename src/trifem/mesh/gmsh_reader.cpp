@@ -3,7 +3,7 @@
 #include "trifem/mesh/gmsh_reader.hpp"
 
 #include "trifem/core/error.hpp"
-#include "trifem/mesh/gmsh_cell_checks.hpp"
+#include "trifem/mesh/cell_checks.hpp"
 #include "trifem/mesh/gmsh_element_types.hpp"
 #include "trifem/mesh/gmsh_line_reader.hpp"
 
@@ -321,7 +321,8 @@ void read_cell(LineReader& in, GmshData& d, const ElementHeader& e, CellType typ
   std::array<Index, kMaxCellNodes> nodes{};
   const std::span<Index> cell(nodes.data(), static_cast<std::size_t>(num_nodes(type)));
   read_element_nodes(in, d, e, cell);
-  detail::check_cell_orientation(in, d.mesh, e.tag, type, cell);
+  const std::string problem = cell_shape_problem(d.mesh, type, cell);
+  TRIFEM_CHECK(problem.empty(), "{}: {} element {} {}", in.location(), name(type), e.tag, problem);
   const Index c = d.mesh.add_cell(type, cell);
   d.element_cells[e.tag] = c;
   for (int p : e.physicals) {

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Gmsh MSH 4.1 ASCII writer: the inverse of read_gmsh for trifem's hex8 meshes.
+// Gmsh MSH 4.1 ASCII writer: the inverse of read_gmsh for trifem's meshes of any cell family.
 #include "trifem/mesh/gmsh_writer.hpp"
 
 #include "trifem/core/error.hpp"
@@ -30,12 +30,72 @@ void check_name(std::string_view kind, const std::string& name) {
                kind, name);
 }
 
-/// Consecutive cells in the same cell blocks: one volume entity with those physical tags.
+/// Consecutive cells of one type in the same cell blocks: one volume entity with those physical
+/// tags.
 struct CellRun {
   Index first = 0;
   Index end = 0;
   std::vector<int> physicals;
 };
+
+/// Gmsh's element type of a cell type (its node order is trifem's).
+int gmsh_type(CellType type) {
+  switch (type) {
+  case CellType::Hex8:
+    return kGmshHex8;
+  case CellType::Tet4:
+    return kGmshTet4;
+  case CellType::Tet10:
+    return kGmshTet10;
+  case CellType::Penta6:
+    return kGmshPrism6;
+  case CellType::Hex20:
+    return kGmshHex20;
+  }
+  return kGmshHex8;
+}
+
+/// Gmsh's element type of a facet of a cell (a free facet, cell -1, is written as a quad4 whose
+/// fourth node may repeat its third: a triangle of a surface mesh).
+int gmsh_type(const Facet& f) {
+  if (f.cell < 0)
+    return kGmshQuad4;
+  switch (f.type) {
+  case FacetType::Tri3:
+    return kGmshTri3;
+  case FacetType::Tri6:
+    return kGmshTri6;
+  case FacetType::Quad4:
+    return kGmshQuad4;
+  case FacetType::Quad8:
+    return kGmshQuad8;
+  }
+  return kGmshQuad4;
+}
+
+/// The nodes of facet f as its Gmsh element lists them.
+std::vector<Index> facet_nodes(const Facet& f) {
+  if (f.cell < 0)
+    return {f.nodes.begin(), f.nodes.end()};
+  std::vector<Index> nodes;
+  for (int a = 0; a < f.num_nodes(); ++a)
+    nodes.push_back(f.node(a));
+  return nodes;
+}
+
+/// The facets of a surface grouped by Gmsh element type, in facet order within each type.
+std::vector<std::pair<int, std::vector<const Facet*>>> facet_blocks(const Surface& surface) {
+  std::vector<std::pair<int, std::vector<const Facet*>>> blocks;
+  for (const Facet& f : surface.facets) {
+    const int type = gmsh_type(f);
+    auto it = std::find_if(blocks.begin(), blocks.end(),
+                           [&](const auto& block) { return block.first == type; });
+    if (it == blocks.end())
+      it = blocks.insert(blocks.end(), {type, {}});
+    it->second.push_back(&f);
+  }
+  return blocks;
+}
 
 /// The runs of cells with equal block membership, blocks tagged 1, 2, ... in name order.
 std::vector<CellRun> cell_runs(const Mesh& mesh) {
@@ -60,7 +120,8 @@ std::vector<CellRun> cell_runs(const Mesh& mesh) {
                  c);
     std::sort(p.begin(), p.end());
     p.erase(std::unique(p.begin(), p.end()), p.end());
-    if (runs.empty() || runs.back().physicals != p)
+    if (runs.empty() || runs.back().physicals != p ||
+        mesh.cell_type(runs.back().first) != mesh.cell_type(c))
       runs.push_back({c, c, p});
     runs.back().end = c + 1;
   }
@@ -183,30 +244,38 @@ void write_nodes(const Mesh& mesh, Buffer& b) {
 
 void write_elements(const Mesh& mesh, const Layout& l, Buffer& b) {
   auto out = std::back_inserter(b);
-  std::size_t count = static_cast<std::size_t>(mesh.num_cells());
-  for (const auto& entry : mesh.surfaces())
+  std::size_t count = static_cast<std::size_t>(mesh.num_cells()), blocks = l.runs.size();
+  for (const auto& entry : mesh.surfaces()) {
     count += entry.second.facets.size();
+    blocks += facet_blocks(entry.second).size();
+  }
   for (const NamedNodes& p : l.points)
     count += p.nodes->size();
-  fmt::format_to(out, "$Elements\n{} {} 1 {}\n",
-                 l.runs.size() + mesh.surfaces().size() + l.points.size(), count, count);
+  fmt::format_to(out, "$Elements\n{} {} 1 {}\n", blocks + l.points.size(), count, count);
   std::size_t tag = 0;
   int entity = 0;
   for (const CellRun& run : l.runs) {
-    fmt::format_to(out, "3 {} {} {}\n", ++entity, kGmshHex8, run.end - run.first);
+    fmt::format_to(out, "3 {} {} {}\n", ++entity, gmsh_type(mesh.cell_type(run.first)),
+                   run.end - run.first);
     for (Index c = run.first; c < run.end; ++c) {
       fmt::format_to(out, "{}", ++tag);
-      for (Index node : mesh.cell(c))
+      for (Index node : mesh.cell_nodes(c))
         fmt::format_to(out, " {}", node + 1);
       fmt::format_to(out, "\n");
     }
   }
   entity = 0;
   for (const auto& entry : mesh.surfaces()) {
-    fmt::format_to(out, "2 {} {} {}\n", ++entity, kGmshQuad4, entry.second.facets.size());
-    for (const Facet& f : entry.second.facets)
-      fmt::format_to(out, "{} {} {} {} {}\n", ++tag, f.nodes[0] + 1, f.nodes[1] + 1, f.nodes[2] + 1,
-                     f.nodes[3] + 1);
+    ++entity;
+    for (const auto& [type, facets] : facet_blocks(entry.second)) {
+      fmt::format_to(out, "2 {} {} {}\n", entity, type, facets.size());
+      for (const Facet* f : facets) {
+        fmt::format_to(out, "{}", ++tag);
+        for (Index node : facet_nodes(*f))
+          fmt::format_to(out, " {}", node + 1);
+        fmt::format_to(out, "\n");
+      }
+    }
   }
   entity = 0;
   for (const NamedNodes& p : l.points) {
@@ -221,10 +290,6 @@ void write_elements(const Mesh& mesh, const Layout& l, Buffer& b) {
 
 void write_gmsh(const Mesh& mesh, std::ostream& out) {
   TRIFEM_CHECK(mesh.num_cells() > 0, "the mesh has no cells: nothing to write to a Gmsh file");
-  TRIFEM_CHECK(mesh.all_hex8(),
-               "meshes of hex8 cells only are written to Gmsh files so far (this "
-               "one has {} cells)",
-               name(mesh.cell_type(mesh.first_non_hex8())));
   const Layout layout{cell_runs(mesh), point_groups(mesh)};
   Buffer b;
   fmt::format_to(std::back_inserter(b), "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n");

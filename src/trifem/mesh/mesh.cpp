@@ -325,6 +325,10 @@ std::vector<Facet> Mesh::orient_quads(const std::vector<std::array<Index, 4>>& q
 }
 
 std::vector<Facet> Mesh::boundary_facets() const {
+  return boundary_facets(std::vector<char>(static_cast<std::size_t>(num_cells()), 1));
+}
+
+std::vector<Facet> Mesh::boundary_facets(const std::vector<char>& inside) const {
   struct Face {
     Index cell;
     int local_face;
@@ -332,6 +336,8 @@ std::vector<Facet> Mesh::boundary_facets() const {
   };
   std::unordered_map<FaceKey, Face, FaceKeyHash> faces;
   for_each_face(*this, [&](Index c, int f, const FaceKey& key) {
+    if (!inside[static_cast<std::size_t>(c)])
+      return;
     auto [it, inserted] = faces.try_emplace(key, Face{c, f, 0});
     ++it->second.count;
   });

@@ -148,8 +148,12 @@ public:
   /// meshes.
   std::vector<Facet> orient_quads(const std::vector<std::array<Index, 4>>& quads) const;
 
-  /// Facets of all cell faces that belong to exactly one cell (the mesh boundary).
+  /// Facets of all cell faces that belong to exactly one cell (the mesh boundary), ordered by
+  /// cell and local face.
   std::vector<Facet> boundary_facets() const;
+  /// The same for the region of the cells c with inside[c] != 0: the faces of its cells that no
+  /// other cell of the region shares.
+  std::vector<Facet> boundary_facets(const std::vector<char>& inside) const;
 
 private:
   /// Joins the cell data of `other`, whose cells were appended from `cell_offset` on.

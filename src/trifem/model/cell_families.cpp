@@ -43,8 +43,8 @@ void check_material(const io::CaseSpec& spec, const Model& model, Index c) {
                "cells only, and {} has the mixture material '{}'; use \"selfp\" or a direct "
                "solver",
                where, m.name);
-  TRIFEM_CHECK(!m.rigid(), "{} is a cell of rigid body '{}'; the cells of rigid bodies are hex8 {}",
-               where, m.name, "for now");
+  if (m.rigid())
+    return; // (its nodes follow the body: any family)
   const io::MaterialSpec& given = spec.materials.at(m.name);
   TRIFEM_CHECK(!given.axes, "materials.{}.axes: {} has this material; {}", m.name, where, kSoFar);
   if (type != mesh::CellType::Tet4 && type != mesh::CellType::Penta6)

@@ -9,7 +9,7 @@
 namespace trifem::model {
 
 /// Throws InputError, naming the case key, the cell family and a cell block holding such a
-/// cell, if a cell that is not a hex8 is a rigid body's or has material axes, if a tet4 has a
+/// cell, if a cell that is not a hex8 has material axes, if a tet4 has a
 /// mixture material or a tet10 a triphasic one (singular: docs/theory/elements.md), if a
 /// mixture on such cells meets the drained Schur preconditioner (hex8 only), if a tet4 or a
 /// penta6 has a nearly incompressible law with `element = "auto"` (they lock there with either

@@ -5,6 +5,7 @@
 #include "trifem/model/conditions.hpp"
 #include "trifem/model/rigid_connectors.hpp"
 #include "trifem/physics/rigid_moment_term.hpp"
+#include "trifem/physics/solid_cell.hpp"
 #include "trifem/tensor/rotation.hpp"
 
 #include <set>
@@ -97,6 +98,25 @@ fe::QuadCoords facet_coordinates(const mesh::Mesh& mesh, const mesh::Facet& f) {
   return X;
 }
 
+/// The first moment ∫ X dV and the volume of a cell of any family but hex8, by its family's rule.
+std::pair<Vec3, Real> cell_first_moment(const io::RigidBodySpec& b, const mesh::Mesh& mesh, Index c,
+                                        const std::string& block) {
+  const fe::ReferenceCell& reference = fe::reference_cell(mesh.cell_type(c));
+  const std::span<const Index> nodes = mesh.cell_nodes(c);
+  fe::CellNodeCoords X(static_cast<Index>(nodes.size()), 3);
+  for (std::size_t a = 0; a < nodes.size(); ++a)
+    X.row(static_cast<Index>(a)) = mesh.node(nodes[a]).transpose();
+  const std::optional<physics::CellGeometry> geo = physics::cell_geometry(reference, X);
+  TRIFEM_CHECK(geo.has_value(), "{}.blocks: cell {} of block '{}' is inverted", b.key, c, block);
+  Vec3 moment = Vec3::Zero();
+  Real volume = 0.0;
+  for (std::size_t q = 0; q < geo->dV.size(); ++q) {
+    moment += geo->dV[q] * (X.transpose() * reference.rule_shapes()[q]);
+    volume += geo->dV[q];
+  }
+  return {moment, volume};
+}
+
 /// The center of a rotating body: given; else the centroid of its cells or shells (its center
 /// of mass: they have a uniform density); else the centroid of its nodes.
 Vec3 body_center(const io::RigidBodySpec& b, const Model& model, const std::vector<Index>& nodes) {
@@ -113,6 +133,12 @@ Vec3 body_center(const io::RigidBodySpec& b, const Model& model, const std::vect
     }
   for (const std::string& block : b.blocks)
     for (Index c : model.mesh.cell_block(block)) {
+      if (model.mesh.cell_type(c) != mesh::CellType::Hex8) {
+        const auto [cell_moment, cell_volume] = cell_first_moment(b, model.mesh, c, block);
+        moment += cell_moment;
+        volume += cell_volume;
+        continue;
+      }
       const fe::HexCoords X = fe::cell_coordinates(model.mesh, c);
       const std::optional<fe::HexGeometry> geo = fe::hex8_geometry(X);
       TRIFEM_CHECK(geo.has_value(), "{}.blocks: cell {} of block '{}' is inverted", b.key, c,
@@ -141,7 +167,7 @@ std::vector<Index> body_nodes(const io::RigidBodySpec& b, const Model& model) {
   }
   for (const std::string& block : b.blocks)
     for (Index c : model.mesh.cell_block(block))
-      for (Index n : model.mesh.cell(c))
+      for (Index n : model.mesh.cell_nodes(c))
         nodes.insert(n);
   return {nodes.begin(), nodes.end()};
 }

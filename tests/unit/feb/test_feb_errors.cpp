@@ -73,14 +73,33 @@ TEST(FebErrors, TheValidBaseFileReads) {
   EXPECT_NO_THROW(feb::parse_feb(solid_model_text(kMaterial, kHex, kFixed), "good.feb"));
 }
 
-TEST(FebErrors, Tet4Mesh) {
+TEST(FebErrors, Tet15Mesh) {
   const std::string tet =
-      R"(    <Elements type="tet4" name="P"><elem id="1">1,2,3,5</elem></Elements>)";
-  expect_contains(
-      feb_error(solid_model_text(kMaterial, tet, kFixed)),
-      {"bad.feb:13: febio_spec/Mesh/Elements[@type='tet4'][@name='P']: ",
-       "element type 'tet4' is not supported (trifem has hex8 solids, and quad4 and tri3 "
-       "shells as rigid bodies)"});
+      R"(    <Elements type="tet15" name="P"><elem id="1">1,2,3,5,6,7,8,4,1,2,3,5,6,7,8</elem></Elements>)";
+  expect_contains(feb_error(solid_model_text(kMaterial, tet, kFixed)),
+                  {"bad.feb:13: febio_spec/Mesh/Elements[@type='tet15'][@name='P']: ",
+                   "element type 'tet15' is not supported (trifem has hex8, tet4, tet10, penta6 "
+                   "and hex20 solids, and quad4 and tri3 shells as rigid bodies)"});
+}
+
+// A tet4 and a wedge whose corners are in the inverted order; a tet10 with too few nodes.
+TEST(FebErrors, InvertedOrIncompleteCellsOfTheOtherFamilies) {
+  const std::string tet =
+      R"(    <Elements type="tet4" name="P"><elem id="1">1,3,2,5</elem></Elements>)";
+  expect_contains(feb_error(solid_model_text(kMaterial, tet, kFixed)),
+                  {"bad.feb:13: febio_spec/Mesh/Elements[@type='tet4'][@name='P']/elem[@id='1']: ",
+                   "the tet4 element has negative volume (inverted node order; expected nodes "
+                   "0-2 counter-clockwise seen from node 3)"});
+  const std::string wedge =
+      R"(    <Elements type="penta6" name="P"><elem id="1">1,4,2,5,8,6</elem></Elements>)";
+  expect_contains(feb_error(solid_model_text(kMaterial, wedge, kFixed)),
+                  {"febio_spec/Mesh/Elements[@type='penta6'][@name='P']/elem[@id='1']: ",
+                   "the penta6 element has negative volume"});
+  const std::string tet10 =
+      R"(    <Elements type="tet10" name="P"><elem id="1">1,2,4,5,6,7,8,3</elem></Elements>)";
+  expect_contains(feb_error(solid_model_text(kMaterial, tet10, kFixed)),
+                  {"febio_spec/Mesh/Elements[@type='tet10'][@name='P']/elem[@id='1']: ",
+                   "a tet10 has 10 nodes, got 8"});
 }
 
 TEST(FebErrors, UnknownMaterialType) {

@@ -2,6 +2,7 @@
 // Tests of the Gmsh MSH writer: what read_gmsh reads back is the mesh written.
 #include "trifem/core/error.hpp"
 #include "trifem/mesh/box.hpp"
+#include "trifem/mesh/convert_cells.hpp"
 #include "trifem/mesh/gmsh_reader.hpp"
 #include "trifem/mesh/gmsh_writer.hpp"
 #include "trifem/mesh/hex_faces.hpp"
@@ -10,6 +11,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -45,7 +47,8 @@ bool same_bits(const Vec3& a, const Vec3& b) {
 }
 
 bool same_facet(const Facet& a, const Facet& b) {
-  return a.nodes == b.nodes && a.cell == b.cell && a.local_face == b.local_face;
+  return a.nodes == b.nodes && a.cell == b.cell && a.local_face == b.local_face &&
+         a.type == b.type && a.mid_edge_nodes == b.mid_edge_nodes;
 }
 
 /// Everything of `a` is in `b` identically; `b` may have a node set for each cell block
@@ -107,6 +110,34 @@ TEST(GmshWriter, RoundTripIsTheSameMesh) {
   const Mesh read = round_trip(mesh, "round_trip.msh");
   expect_same_mesh(mesh, read);
   EXPECT_TRUE(read.has_node_set("lower")); // added by the reader for the block
+}
+
+// Boxes of tet4, tet10, penta6 and hex20 cells: the cells, and the surfaces' tri3, tri6, quad4
+// and quad8 facets with their cells, faces and mid-edge nodes, read back as written (a wedge
+// box's side faces are quads and its bottom and top triangles: one element block each, so
+// that the facets of such a surface come back grouped by type).
+TEST(GmshWriter, RoundTripOfEveryCellFamily) {
+  for (const trifem::mesh::CellType type :
+       {trifem::mesh::CellType::Tet4, trifem::mesh::CellType::Tet10, trifem::mesh::CellType::Penta6,
+        trifem::mesh::CellType::Hex20}) {
+    trifem::mesh::BoxSpec spec;
+    spec.divisions = {2, 1, 2};
+    const Mesh mesh = trifem::mesh::convert_cells(trifem::mesh::make_box(spec), type);
+    const Mesh read = round_trip(mesh, "family.msh");
+    ASSERT_EQ(mesh.num_cells(), read.num_cells());
+    for (Index c = 0; c < mesh.num_cells(); ++c) {
+      EXPECT_EQ(mesh.cell_type(c), read.cell_type(c));
+      EXPECT_TRUE(std::ranges::equal(mesh.cell_nodes(c), read.cell_nodes(c)));
+    }
+    for (const auto& [name, surface] : mesh.surfaces()) {
+      const auto& facets = read.surface(name).facets;
+      ASSERT_EQ(surface.facets.size(), facets.size()) << name;
+      for (const Facet& f : surface.facets)
+        EXPECT_TRUE(std::any_of(facets.begin(), facets.end(),
+                                [&](const Facet& g) { return same_facet(f, g); }))
+            << trifem::mesh::name(type) << " " << name;
+    }
+  }
 }
 
 TEST(GmshWriter, InteriorFacetsKeepTheirSide) {

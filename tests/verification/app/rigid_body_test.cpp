@@ -8,6 +8,7 @@
 #include "trifem/model/rigid_bodies.hpp"
 #include "trifem/tensor/rotation.hpp"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <numbers>
@@ -409,6 +410,40 @@ center = [0.5, 0.5, 1.45]
     rigid_error =
         std::max(rigid_error, (position(a, n) - (center + R * (a.mesh.node(n) - center))).norm());
   EXPECT_LT(rigid_error, 1e-14);
+}
+
+// The same bone meshed with tet10 or penta6 cells: its default center is again the centroid of
+// its cells (by their own rules), and it turns the tissue as the hex8 bone does.
+TEST(RigidBody, ABodyOfTetsOrWedgesMovesRigidlyAboutItsCentroid) {
+  const auto bone = [](const char* cell) {
+    return test::run_case_text(turned_top_case(fmt::format(R"(
+[[mesh.box]]
+name = "bone"
+origin = [0.0, 0.0, 1.2]
+size = [1.0, 1.0, 0.5]
+divisions = [2, 2, 1]
+cell = "{}"
+)",
+                                                           cell),
+                                               R"(blocks = ["bone"]
+set = "tissue.zmax"
+)"),
+                               fmt::format("{}.toml", cell));
+  };
+  const test::CaseRun hexes = bone("hex8");
+  ASSERT_TRUE(hexes.report.success) << hexes.report.failure;
+  for (const char* cell : {"tet10", "penta6"}) {
+    const test::CaseRun other = bone(cell);
+    ASSERT_TRUE(other.report.success) << cell << ": " << other.report.failure;
+    const Vec3 center = other.model->problem->rigid_map().bodies().at(0).centre;
+    EXPECT_LT((center - Vec3(0.5, 0.5, 1.45)).norm(), 1e-14) << cell;
+    Real difference = 0.0;
+    const auto tissue = static_cast<Index>(hexes.model->mesh.node_set("tissue.all").size());
+    for (Index n = 0; n < tissue; ++n) // the tissue's nodes come first
+      difference =
+          std::max(difference, (position(*other.model, n) - position(*hexes.model, n)).norm());
+    EXPECT_LT(difference, 1e-12) << cell;
+  }
 }
 
 TEST(RigidBody, CellsWithoutAMaterialOrABodyAreInputErrors) {

@@ -11,6 +11,8 @@
 // 1e-10; the Krylov backend is refused.
 #include "cli_harness.hpp"
 
+#include <fmt/format.h>
+
 #include <cstdlib>
 #include <map>
 #include <regex>
@@ -541,6 +543,68 @@ TEST_F(CliParallel, ATet10BarRestartedOnTwoProcessesContinuesTheOneProcessRun) {
   const History h = expect_a_two_process_restart_to_continue(
       write_file("tet10_bar.toml", tet10_bar_case()), 4, 1, 0.5);
   EXPECT_FALSE(h.columns.empty());
+}
+
+/// A cube of `cell` cells (a box split) of a biphasic or triphasic `material`, fixed on one face,
+/// the opposite face in a bath at 0.01 MPa gauge pressure (and 0.015 M of NaCl for the triphasic
+/// one), with a probe at the free corner.
+std::string mixture_families_case(const char* cell, const char* material) {
+  return fmt::format(R"(
+[[mesh.box]]
+name = "cube"
+size = [1.0, 1.0, 1.0]
+divisions = [3, 3, 2]
+cell = "{}"
+material = "tissue"
+
+[materials.tissue]
+type = "{}"
+phi_s0 = 0.25
+permeability = 1.07e-3
+{}
+[materials.tissue.solid]
+type = "saint-venant-kirchhoff"
+E = 0.3
+nu = 0.0
+
+[curves.ramp]
+points = [[0.0, 0.0], [1.0, 1.0]]
+
+[[boundary.bath]]
+surface = "cube.xmax"
+{}
+pressure = 0.01
+curve = "ramp"
+
+[[boundary.fixed]]
+set = "cube.xmin"
+components = ["x", "y", "z"]
+
+[time]
+end_time = 200.0
+dt = 0.5
+dt_max = 50.0
+
+[[output.probe]]
+name = "corner"
+point = [1.0, 1.0, 1.0]
+)",
+                     cell, material,
+                     std::string(material) == "triphasic"
+                         ? "fixed_charge = 2e-4\nd_plus = 5e-4\nd_minus = 8e-4"
+                         : "",
+                     std::string(material) == "triphasic" ? "concentration = 1.5e-5" : "");
+}
+
+TEST_F(CliParallel, ATriphasicCubeOfWedgesGivesTheOneProcessHistory) {
+  expect_the_one_process_results(
+      write_file("wedges.toml", mixture_families_case("penta6", "triphasic")), 1e-10,
+      {"history.csv"});
+}
+
+TEST_F(CliParallel, ABiphasicCubeOfTet10CellsGivesTheOneProcessHistory) {
+  expect_the_one_process_results(
+      write_file("tet10.toml", mixture_families_case("tet10", "biphasic")), 1e-10, {"history.csv"});
 }
 
 TEST_F(CliParallel, TheKrylovBackendIsRefusedWithOneErrorLine) {

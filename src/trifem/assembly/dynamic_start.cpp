@@ -21,6 +21,11 @@ public:
       : inertia_(inertia), map_(map), frames_(frames), rigid_(rigid), x_(x) {
     inverse_diagonal_ = Vector::Zero(map.num_equations());
     Vector lumped = inertia.lumped_mass(); // isotropic per node: no rotation needed
+    // (the corners of quadratic cells have a negative lumped mass: their mass diagonal there)
+    const Vector diagonal = inertia.diagonal_mass();
+    for (Index dof = 0; dof < lumped.size(); ++dof)
+      if (!(lumped[dof] > 0.0) && diagonal[dof] > 0.0)
+        lumped[dof] = diagonal[dof];
     add_body_diagonal(lumped);
     for (Index dof : inertia.dofs())
       if (const Index eq = map.equation(dof); eq >= 0)
@@ -56,7 +61,8 @@ public:
     return y;
   }
 
-  /// Jacobi preconditioner: the inverse lumped mass (zero on equations without mass).
+  /// Jacobi preconditioner: the inverse lumped mass, or of the mass diagonal where the lumped
+  /// mass is not positive (zero on equations without mass).
   Vector precondition(const Vector& r) const { return inverse_diagonal_.cwiseProduct(r); }
 
 private:

@@ -65,16 +65,20 @@ void check_material(const io::CaseSpec& spec, const Model& model, Index c) {
                m.name, kNearlyIncompressible, where);
 }
 
-void check_analysis(const io::CaseSpec& spec, const std::string& where) {
+void check_analysis(const io::CaseSpec& spec, const mesh::Mesh& mesh, const std::string& where) {
   TRIFEM_CHECK(!spec.is_explicit() && !spec.has_explicit_step(),
                "analysis: dynamic-explicit analyses run on hex8 cells only, and the mesh has {}",
                where);
-  TRIFEM_CHECK(!spec.has_dynamic_step(),
-               "analysis: dynamic analyses (inertia) run on hex8 cells only, and the mesh has {}",
-               where);
-  TRIFEM_CHECK(spec.body_forces.empty(),
-               "{}: body forces act on hex8 cells only, and the mesh has {}",
-               spec.body_forces.empty() ? "" : spec.body_forces.front().key, where);
+  if (!spec.has_dynamic_step() || spec.dynamics.mass != io::MassMatrixSpec::Lumped)
+    return;
+  for (Index c = 0; c < mesh.num_cells(); ++c) {
+    const mesh::CellType type = mesh.cell_type(c);
+    TRIFEM_CHECK(type != mesh::CellType::Tet10 && type != mesh::CellType::Hex20,
+                 "dynamic.mass: a lumped mass matrix has negative masses at the corners of "
+                 "quadratic cells (the row sums of their consistent mass), and the mesh has {}; "
+                 "use mass = \"consistent\"",
+                 describe(mesh, c));
+  }
 }
 
 } // namespace
@@ -83,7 +87,7 @@ void check_cell_families(const io::CaseSpec& spec, const Model& model) {
   const Index first = model.mesh.first_non_hex8();
   if (first < 0)
     return;
-  check_analysis(spec, describe(model.mesh, first));
+  check_analysis(spec, model.mesh, describe(model.mesh, first));
   // one check per material and cell type, at its first cell (the message names it)
   std::set<std::pair<std::string, mesh::CellType>> checked;
   for (Index c = first; c < model.mesh.num_cells(); ++c) {

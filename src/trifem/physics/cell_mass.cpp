@@ -2,6 +2,7 @@
 #include "trifem/physics/cell_mass.hpp"
 
 #include "trifem/core/error.hpp"
+#include "trifem/physics/solid_cell.hpp"
 
 #include <cmath>
 
@@ -20,6 +21,24 @@ std::optional<Eigen::Matrix<Real, 8, 8>> consistent_cell_mass(const fe::HexCoord
   return m;
 }
 
+namespace {
+
+/// The mass element of a cell of a family other than hex8: m_ab = Σ_q ρ N_a N_b dV_q.
+MassElement family_cell_mass(const mesh::Mesh& mesh, Index c, Real density) {
+  const AnyCellGeometry geometry = reference_geometry(mesh, c); // (throws for an inverted cell)
+  const CellGeometry& geo = std::get<CellGeometry>(geometry);
+  const std::span<const Index> nodes = mesh.cell_nodes(c);
+  MassElement e{{nodes.begin(), nodes.end()},
+                Eigen::MatrixXd::Zero(geo.num_nodes(), geo.num_nodes())};
+  for (std::size_t q = 0; q < geo.dV.size(); ++q) {
+    const fe::ShapeValues& N = geo.reference->rule_shapes()[q];
+    e.mass.noalias() += (density * geo.dV[q]) * (N * N.transpose());
+  }
+  return e;
+}
+
+} // namespace
+
 std::vector<MassElement> cell_mass_elements(const mesh::Mesh& mesh, const std::vector<Index>& cells,
                                             const std::vector<Real>& densities) {
   TRIFEM_VERIFY(cells.size() == densities.size(), "one density per cell expected");
@@ -27,6 +46,10 @@ std::vector<MassElement> cell_mass_elements(const mesh::Mesh& mesh, const std::v
   out.reserve(cells.size());
   for (std::size_t i = 0; i < cells.size(); ++i) {
     TRIFEM_VERIFY(densities[i] > 0.0 && std::isfinite(densities[i]), "density must be positive");
+    if (mesh.cell_type(cells[i]) != mesh::CellType::Hex8) {
+      out.push_back(family_cell_mass(mesh, cells[i], densities[i]));
+      continue;
+    }
     const auto m = consistent_cell_mass(fe::cell_coordinates(mesh, cells[i]), densities[i]);
     TRIFEM_CHECK(m.has_value(),
                  "cell {} is inverted or degenerate (det(dX/dxi) <= 0 at a Gauss point); "

@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: MIT
-// Consistent mass matrices of hex8 cells and of quad4 shells, shared by the inertia and the body
-// forces.
+// Consistent mass matrices of cells of every family and of quad4 shells, shared by the inertia
+// and the body forces.
 #pragma once
 
 #include "trifem/fe/hex8.hpp"
+#include "trifem/fe/reference_element.hpp"
+#include "trifem/mesh/mesh.hpp"
 
 #include <optional>
 #include <vector>
@@ -15,22 +17,22 @@ namespace trifem::physics {
 /// inverted or degenerate cell).
 std::optional<Eigen::Matrix<Real, 8, 8>> consistent_cell_mass(const fe::HexCoords& X, Real density);
 
-/// The most nodes of a mass element (a hex8 cell; a quad4 shell has 4).
-inline constexpr int kMaxMassNodes = 8;
-/// A matrix over the nodes of a mass element (at most kMaxMassNodes: no heap allocation).
-using NodalMatrix =
-    Eigen::Matrix<Real, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxMassNodes, kMaxMassNodes>;
-/// A vector per node of a mass element (rows: nodes, columns: x, y, z).
+/// The most nodes of a mass element (a hex20 cell; a hex8 has 8, a quad4 shell 4).
+inline constexpr int kMaxMassNodes = fe::kMaxCellNodes;
+/// A vector per node of a mass element (rows: nodes, columns: x, y, z; no heap allocation).
 using NodalVectors = Eigen::Matrix<Real, Eigen::Dynamic, 3, 0, kMaxMassNodes, 3>;
 
-/// A piece of the model's mass: its nodes and its consistent mass matrix m_ab over them.
+/// A piece of the model's mass: its nodes and its consistent mass matrix m_ab over them (sized
+/// to its nodes).
 struct MassElement {
   std::vector<Index> nodes;
-  NodalMatrix mass;
+  Eigen::MatrixXd mass;
 };
 
-/// The mass elements of hex8 `cells` of the given densities (> 0). Throws InputError naming
-/// the first inverted or degenerate cell.
+/// The mass elements of `cells` (any family: a hex8 by 2x2x2 Gauss points, the others by their
+/// family's rule, exact for an affine cell) of the given densities (> 0). Throws InputError
+/// naming the first inverted or degenerate cell. (The row sums of a tet10's or hex20's consistent
+/// mass are negative at its corners: its lumped mass is no mass matrix.)
 std::vector<MassElement> cell_mass_elements(const mesh::Mesh& mesh, const std::vector<Index>& cells,
                                             const std::vector<Real>& densities);
 

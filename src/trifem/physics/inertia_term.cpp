@@ -81,7 +81,7 @@ bool InertiaTerm::evaluate(Index e, const EvalState& state, LocalVector& r, Loca
       const Real next = acceleration_at(i, state.x[dof], state.x_old[dof], state.dt);
       accel(a, k) = (1.0 - method_.alpha_m) * next + method_.alpha_m * a_[i];
     }
-  const NodalMatrix& m = elements_[e].mass;
+  const Eigen::MatrixXd& m = elements_[e].mass;
   const NodalVectors f = m * accel;
   for (Index a = 0; a < n; ++a)
     for (int k = 0; k < 3; ++k)
@@ -173,6 +173,19 @@ Vector InertiaTerm::lumped_mass() const {
     for (Index a = 0; a < rows.size(); ++a)
       for (int k = 0; k < 3; ++k)
         out[element[3 * a + k]] += rows[a];
+  }
+  return out;
+}
+
+Vector InertiaTerm::diagonal_mass() const {
+  Vector out = Vector::Zero(map_.num_dofs());
+  std::vector<Index> element;
+  for (Index e = 0; e < num_elements(); ++e) {
+    element_dofs(e, element);
+    const Eigen::MatrixXd& m = elements_[e].mass;
+    for (Index a = 0; a < m.rows(); ++a)
+      for (int k = 0; k < 3; ++k)
+        out[element[3 * a + k]] += m(a, a);
   }
   return out;
 }

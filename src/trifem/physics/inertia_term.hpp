@@ -87,6 +87,9 @@ public:
   Vector mass_times(const Vector& u) const;
   /// The row sums of M at every DOF (zero outside dofs()): the lumped mass.
   Vector lumped_mass() const;
+  /// The diagonal Σ m_aa of the consistent mass at every DOF (positive where there is mass; the
+  /// lumped mass is not at the corners of tet10 and hex20 cells).
+  Vector diagonal_mass() const;
 
 private:
   /// The Newmark acceleration a_{n+1} of the entry i of dofs() for the displacements

@@ -59,7 +59,8 @@ const std::array<fe::HexShape, 8>& shape_at_gauss_points() {
   return N;
 }
 
-/// The hex8 cell's fixed-size types and kernels (its bits stay those of the hex8 element).
+/// The hex8 cell's fixed-size types and kernels (the hex8 element's sizes and order of
+/// operations).
 struct Hex8Mixture {
   using Geometry = fe::HexGeometry;
   using Node3 = fe::HexCoords;

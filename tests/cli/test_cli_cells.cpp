@@ -141,9 +141,14 @@ TEST_F(CellsCli, ANearlyIncompressibleLawOnTetsAsksForTheElement) {
   EXPECT_EQ(trifem({"run", file.string(), "-o", output().string()}).exit_code, 0);
 }
 
-// A plate of hex8 cells pressed on the tet faces of the cube: contact takes quad4 facets so far.
-TEST_F(CellsCli, ContactOnTheFacesOfTetsIsRefusedNamingTheSurface) {
-  std::string text = cube_case("cube_tet4_v22.msh", 1.1);
+// A plate of biphasic hex8 cells pressed on the tri6 faces of a biphasic tet10 cube: mixture
+// contact takes linear facets so far (solid contact takes these: the patch test above).
+TEST_F(CellsCli, MixtureContactOnQuadraticFacetsIsRefusedNamingTheSurface) {
+  std::string text = cube_case("cube_tet10_v41.msh", 1.1);
+  text.replace(text.find("type = \"neo-hookean\"\nE = 1.0\nnu = 0.3"),
+               std::string("type = \"neo-hookean\"\nE = 1.0\nnu = 0.3").size(),
+               "type = \"biphasic\"\nphi_s0 = 0.2\npermeability = 1e-2\n"
+               "[materials.tissue.solid]\ntype = \"neo-hookean\"\nE = 1.0\nnu = 0.3");
   text += R"(
 [[mesh.box]]
 name = "plate"
@@ -160,8 +165,8 @@ slave = "zmax"
   const Result r = trifem({"run", file.string(), "-o", output().string()});
   EXPECT_EQ(r.exit_code, kInvalidInput) << r;
   EXPECT_TRUE(contains(r.err, "contact[1].slave")) << r;
-  EXPECT_TRUE(contains(r.err, "the surface 'zmax' has tri3 facets")) << r;
-  EXPECT_TRUE(contains(r.err, "contact takes the quad4 faces of hex8 cells so far")) << r;
+  EXPECT_TRUE(contains(r.err, "the surface 'zmax' has tri6 facets")) << r;
+  EXPECT_TRUE(contains(r.err, "contact of biphasic or triphasic tissue takes linear facets")) << r;
 }
 
 TEST_F(CellsCli, ABoxOfWedgesRunsAndTetsRefuseRefinement) {
@@ -251,6 +256,87 @@ point = [1.0, 1.0, 1.0]
                           "[\"{}\"]\n",
                           set, field, axis);
   return text + extra;
+}
+
+// The contact patch test across cell families through the executable: the Gmsh tet10 cube
+// (tri6 faces) pressed by q = 0.1 MPa onto a box of 3 x 3 hex8 cells (quad4 faces) below it, on
+// rollers. The exact solution is uniform: traction -q at every slave node (corners and
+// mid-edge nodes of the tri6 facets, or the box's nodes), the reaction q times the current
+// (laterally expanded) area.
+TEST_F(CellsCli, AGmshTet10CubePressedOntoAHexBoxPassesTheContactPatchTest) {
+  for (const bool tet_is_slave : {true, false}) {
+    SCOPED_TRACE(tet_is_slave ? "tri6 slave" : "quad4 slave");
+    const fs::path file =
+        write_file("patch.toml", fmt::format(R"(
+[[mesh.gmsh]]
+file = "{}"
+materials = {{ cube = "tissue" }}
+
+[[mesh.box]]
+name = "lower"
+origin = [0.0, 0.0, -1.0]
+size = [1.0, 1.0, 1.0]
+divisions = [3, 3, 1]
+material = "tissue"
+
+[materials.tissue]
+type = "neo-hookean"
+E = 1.0
+nu = 0.3
+
+[curves.ramp]
+points = [[0.0, 0.0], [1.0, 1.0]]
+
+[[boundary.fixed]]
+set = "lower.zmin"
+components = ["z"]
+[[boundary.fixed]]
+set = "lower.xmin"
+components = ["x"]
+[[boundary.fixed]]
+set = "lower.ymin"
+components = ["y"]
+[[boundary.fixed]]
+set = "xmin"
+components = ["x"]
+[[boundary.fixed]]
+set = "ymin"
+components = ["y"]
+
+[[loads.pressure]]
+surface = "zmax"
+value = 0.1
+curve = "ramp"
+
+[time]
+end_time = 1.0
+dt = 0.5
+
+[[output.reaction]]
+set = "lower.zmin"
+
+[[contact]]
+master = "{}"
+slave = "{}"
+)",
+                                             (kMeshes / "cube_tet10_v41.msh").generic_string(),
+                                             tet_is_slave ? "lower.zmax" : "zmin",
+                                             tet_is_slave ? "zmin" : "lower.zmax"));
+    const Result r = trifem({"run", file.string(), "-o", output().string()});
+    ASSERT_EQ(r.exit_code, 0) << r;
+    const History s = read_history(output() / "contact1_surface_0002.csv");
+    const auto& t = s["contact_traction [MPa]"];
+    ASSERT_GE(t.size(), 16u); // 4 x 4 box nodes, or the cube face's corner and mid-edge nodes
+    for (std::size_t k = 0; k < t.size(); ++k)
+      EXPECT_NEAR(t[k], -0.1, 1e-10 * 0.1) << "slave node " << k;
+    // the follower pressure acts on the laterally expanded face, the contact on the equal one
+    const History h = read_history(output() / "history.csv");
+    const double area = h["contact1.area [mm^2]"].back();
+    EXPECT_GT(area, 1.05); // lateral strain ν q / E = 3 %
+    EXPECT_NEAR(h["lower.zmin.Rz [N]"].back(), 0.1 * area, 1e-10 * 0.1);
+    // (the force on the slave body: up on the cube, down on the box)
+    EXPECT_NEAR(h["contact1.Fz [N]"].back(), tet_is_slave ? 0.1 * area : -0.1 * area, 1e-10 * 0.1);
+  }
 }
 
 // A triphasic cube of wedges extruded by Gmsh from an unstructured triangle mesh, moved to a

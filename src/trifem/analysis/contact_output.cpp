@@ -66,17 +66,35 @@ void add_mixture_arrays(const model::Model& model, const std::vector<SlaveNodeSt
       }));
 }
 
-/// The slave surface as VTK quads (points: the slave nodes at their current positions).
+/// VTK cell type of a facet type (VTK's quadratic triangle and quad number their nodes as
+/// tri6 and quad8 do: corners, then mid-edge nodes).
+std::uint8_t vtk_facet_type(mesh::FacetType type) {
+  switch (type) {
+  case mesh::FacetType::Tri3:
+    return io::vtk_cell::kTriangle;
+  case mesh::FacetType::Tri6:
+    return 22; // VTK_QUADRATIC_TRIANGLE
+  case mesh::FacetType::Quad8:
+    return 23; // VTK_QUADRATIC_QUAD
+  case mesh::FacetType::Quad4:
+    break;
+  }
+  return io::vtk_cell::kQuad;
+}
+
+/// The slave surface as VTK cells of its facets' types (points: the slave nodes at their
+/// current positions).
 io::UnstructuredGrid surface_grid(const contact::ContactTerm& pair,
                                   const std::vector<SlaveNodeState>& states) {
   io::UnstructuredGrid grid;
   for (const SlaveNodeState& s : states)
     grid.points.push_back(s.position);
-  for (const mesh::Facet& facet : pair.slave().facets()) {
-    std::array<Index, 4> local{};
-    for (int a = 0; a < 4; ++a)
-      local[a] = pair.slave().local_node(facet.nodes[a]);
-    grid.add_cell(io::vtk_cell::kQuad, local);
+  const contact::ContactSurface& slave = pair.slave();
+  for (Index f = 0; f < slave.num_facets(); ++f) {
+    std::vector<Index> local;
+    for (const Index node : slave.facet_nodes(f))
+      local.push_back(slave.local_node(node));
+    grid.add_cell(vtk_facet_type(slave.facet_type(f)), local);
   }
   return grid;
 }

@@ -17,11 +17,13 @@ BucketSearch::BucketSearch(const ContactSurface& surface, const NodePositions& x
   Real extent = 0;
   Eigen::AlignedBox3d all;
   for (Index f = 0; f < n; ++f) {
-    Eigen::AlignedBox3d box;
-    for (Index node : surface.facet(f).nodes)
-      box.extend(x(node));
-    box.min().array() -= radius;
-    box.max().array() += radius;
+    // (a quadratic facet lies within twice its bulge of the box of its nodes)
+    const FacetCoords X = surface.coords(f, x);
+    Eigen::AlignedBox3d box(X.x.colwise().minCoeff().transpose(),
+                            X.x.colwise().maxCoeff().transpose());
+    const Real grow = radius + 2 * facet_bulge(X);
+    box.min().array() -= grow;
+    box.max().array() += grow;
     boxes_[f] = box;
     extent += box.sizes().maxCoeff();
     all.extend(box);

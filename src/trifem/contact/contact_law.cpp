@@ -15,7 +15,7 @@ void FrictionlessLaw::active_rows(const SlaveNodeRows& node, LocalSystem& out) c
   out.r()[row] += node.weight * node.projection->gap;
   if (!out.with_jacobian())
     return;
-  for (int j = 0; j < 5; ++j)
+  for (int j = 0; j < node.nodes.size; ++j)
     for (int i = 0; i < 3; ++i)
       out.K()(row, node.x_at[j] + i) += node.weight * node.derivatives->dgap(3 * j + i);
 }

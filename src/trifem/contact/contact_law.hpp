@@ -21,10 +21,11 @@ namespace trifem::contact {
 /// be read from `state` and located with LocalSystem::at(dofs->dof(field, node, i)).
 struct SlaveNodeRows {
   Index slave = -1;                                   ///< k: index into the slave surface's nodes
-  std::array<Index, 5> nodes{-1, -1, -1, -1, -1};     ///< mesh nodes (x_s, master facet nodes)
+  StencilNodes nodes;                                 ///< mesh nodes (x_s, master facet nodes)
   const physics::EvalState* state = nullptr;          ///< the evaluated state (all DOFs)
   const dofs::DofMap* dofs = nullptr;                 ///< DOF numbering of `state`
   const Projection* projection = nullptr;             ///< onto the master surface (null: none)
+  const fe::ReferenceFacet* facet = nullptr;          ///< of the master facet projected onto
   const ProjectionDerivatives* derivatives = nullptr; ///< of *projection (null: none)
   Real weight = 0;      ///< A_k = ∫_slave M_k dA (reference tributary area; a fixed row weight)
   Real scale = 1;       ///< c_N > 0 [stress/length]: the complementarity scaling
@@ -33,8 +34,14 @@ struct SlaveNodeRows {
   bool wetted = false;  ///< in contact with a wetted interface (NodeContact::Wetted)
   Index lambda_at = -1; ///< local position of λ_k component 0 (components are contiguous)
   /// Local position of coordinate component 0 of stencil point j (j = 0: the slave node,
-  /// 1 + a: master facet node a; -1 when there is no projection).
-  std::array<Index, 5> x_at{-1, -1, -1, -1, -1};
+  /// 1 + a: master facet node a; -1 when there is no projection), j < nodes.size.
+  std::array<Index, kMaxStencilPoints> x_at = no_positions();
+
+  static std::array<Index, kMaxStencilPoints> no_positions() {
+    std::array<Index, kMaxStencilPoints> a;
+    a.fill(-1);
+    return a;
+  }
 };
 
 /// A contact law: the meaning of the multiplier components and their constraint rows.

@@ -2,19 +2,21 @@
 // Interface measures of a contact pair for output and input checks: per-slave-node gap,
 // normals, area vectors and multipliers in a given state, and the current contact area.
 #include "trifem/contact/contact_term.hpp"
-#include "trifem/physics/facet_area.hpp"
+#include "trifem/physics/facet_area_any.hpp"
 
 namespace trifem::contact {
 namespace {
 
 /// a_k = ∫ M_k n da of every node k of `surface` (index into surface.nodes()) in the
-/// configuration x, exact by 2x2 Gauss on each facet.
+/// configuration x, by each facet's rule (exact for flat facets).
 std::vector<Vec3> nodal_area_vectors(const ContactSurface& surface, const NodePositions& x) {
   std::vector<Vec3> a(surface.num_nodes(), Vec3::Zero());
   for (Index f = 0; f < surface.num_facets(); ++f) {
-    const physics::FacetVector A = physics::facet_area_vectors(surface.coords(f, x));
-    for (int i = 0; i < 4; ++i)
-      a[surface.local_node(surface.facet(f).nodes[i])] += A.segment<3>(3 * i);
+    const FacetCoords X = surface.coords(f, x);
+    const physics::FacetVectorX A = physics::facet_area_vectors(*X.reference, X.x);
+    const auto nodes = surface.facet_nodes(f);
+    for (std::size_t i = 0; i < nodes.size(); ++i)
+      a[surface.local_node(nodes[i])] += A.segment<3>(3 * static_cast<Index>(i));
   }
   return a;
 }

@@ -8,6 +8,12 @@ namespace trifem::contact {
 
 ContactSurface::ContactSurface(const mesh::Surface& surface)
     : facets_(surface.facets), nodes_(mesh::surface_nodes(surface)) {
+  for (const mesh::Facet& facet : facets_) {
+    for (int a = 0; a < facet.num_nodes(); ++a)
+      facet_node_list_.push_back(facet.node(a));
+    facet_offsets_.push_back(static_cast<Index>(facet_node_list_.size()));
+    max_facet_nodes_ = std::max(max_facet_nodes_, facet.num_nodes());
+  }
   build_adjacency();
 }
 
@@ -33,33 +39,38 @@ void ContactSurface::build_adjacency() {
 void ContactSurface::build_node_facets() {
   // CSR; facets are ascending because they are visited in order. A degenerate facet may repeat
   // a node: only its first occurrence counts.
-  const auto first = [](const mesh::Facet& facet, int a) {
-    return std::find(facet.nodes.begin(), facet.nodes.begin() + a, facet.nodes[a]) ==
-           facet.nodes.begin() + a;
+  const auto first = [](std::span<const Index> nodes, std::size_t a) {
+    return std::find(nodes.begin(), nodes.begin() + a, nodes[a]) == nodes.begin() + a;
   };
   node_facet_offsets_.assign(nodes_.size() + 1, 0);
-  for (const mesh::Facet& facet : facets_)
-    for (int a = 0; a < 4; ++a)
-      node_facet_offsets_[local_node(facet.nodes[a]) + 1] += first(facet, a) ? 1 : 0;
+  for (Index f = 0; f < num_facets(); ++f) {
+    const auto nodes = facet_nodes(f);
+    for (std::size_t a = 0; a < nodes.size(); ++a)
+      node_facet_offsets_[local_node(nodes[a]) + 1] += first(nodes, a) ? 1 : 0;
+  }
   for (std::size_t k = 0; k < nodes_.size(); ++k)
     node_facet_offsets_[k + 1] += node_facet_offsets_[k];
   node_facet_list_.resize(node_facet_offsets_.back());
   std::vector<Index> fill(node_facet_offsets_.begin(), node_facet_offsets_.end() - 1);
-  for (Index f = 0; f < num_facets(); ++f)
-    for (int a = 0; a < 4; ++a)
-      if (first(facets_[f], a))
-        node_facet_list_[fill[local_node(facets_[f].nodes[a])]++] = f;
+  for (Index f = 0; f < num_facets(); ++f) {
+    const auto nodes = facet_nodes(f);
+    for (std::size_t a = 0; a < nodes.size(); ++a)
+      if (first(nodes, a))
+        node_facet_list_[fill[local_node(nodes[a])]++] = f;
+  }
 }
 
 void ContactSurface::build_edge_neighbours() {
   // Sort (min node, max node, 4 facet + edge) and pair equal node pairs.
   std::vector<std::tuple<Index, Index, Index>> edges;
   edges.reserve(4 * facets_.size());
-  for (Index f = 0; f < num_facets(); ++f)
-    for (int e = 0; e < 4; ++e) {
-      const Index a = facets_[f].nodes[e], b = facets_[f].nodes[(e + 1) % 4];
+  for (Index f = 0; f < num_facets(); ++f) {
+    const int corners = facets_[f].num_corners();
+    for (int e = 0; e < corners; ++e) {
+      const Index a = facets_[f].nodes[e], b = facets_[f].nodes[(e + 1) % corners];
       edges.emplace_back(std::min(a, b), std::max(a, b), 4 * f + e);
     }
+  }
   std::sort(edges.begin(), edges.end());
   edge_neighbours_.assign(4 * facets_.size(), -1);
   for (std::size_t i = 0; i < edges.size();) {
@@ -76,21 +87,19 @@ void ContactSurface::build_edge_neighbours() {
   }
 }
 
-bool ContactSurface::on_free_boundary(Index f, const Vec2& xi_c,
-                                      const std::array<bool, 2>& fixed) const {
-  bool free = false;
-  if (fixed[1])
-    free = free || edge_neighbour(f, xi_c[1] < 0 ? 0 : 2) < 0;
-  if (fixed[0])
-    free = free || edge_neighbour(f, xi_c[0] > 0 ? 1 : 3) < 0;
-  return free;
+bool ContactSurface::on_free_boundary(Index f, int edge, int corner) const {
+  if (corner < 0)
+    return edge_neighbour(f, edge) < 0;
+  const int corners = facets_[f].num_corners();
+  return edge_neighbour(f, corner) < 0 || edge_neighbour(f, (corner + corners - 1) % corners) < 0;
 }
 
-fe::QuadCoords ContactSurface::coords(Index f, const NodePositions& x) const {
-  fe::QuadCoords X;
-  for (int a = 0; a < 4; ++a)
-    X.row(a) = x(facets_[f].nodes[a]).transpose();
-  return X;
+FacetCoords ContactSurface::coords(Index f, const NodePositions& x) const {
+  const auto nodes = facet_nodes(f);
+  FacetNodePositions X(static_cast<Index>(nodes.size()), 3);
+  for (std::size_t a = 0; a < nodes.size(); ++a)
+    X.row(static_cast<Index>(a)) = x(nodes[a]).transpose();
+  return {facets_[f].type, X};
 }
 
 } // namespace trifem::contact

@@ -29,10 +29,10 @@ private:
   std::function<Vec3(Index)> fn_;
 };
 
-/// Facets of one contact surface with topology. Built once (topology is fixed); geometry is
-/// always evaluated from a NodePositions, so one object serves every Newton iteration.
-/// Facet edge e (e = 0..3) joins facet nodes e and (e+1) mod 4: e = 0 is η = -1, 1 is ξ = +1,
-/// 2 is η = +1 and 3 is ξ = -1.
+/// Facets (tri3, tri6, quad4, quad8; mixed if need be) of one contact surface with topology.
+/// Built once (topology is fixed); geometry is always evaluated from a NodePositions, so one
+/// object serves every Newton iteration. Facet edge e joins corners e and (e+1) mod corners
+/// (quad: e = 0 is η = -1, 1 is ξ = +1, 2 is η = +1 and 3 is ξ = -1) and holds mid-edge node e.
 class ContactSurface {
 public:
   /// Takes the facets of `surface` (copied). Facet node indices are mesh node indices.
@@ -44,7 +44,17 @@ public:
   const mesh::Facet& facet(Index f) const { return facets_[f]; }
   const std::vector<mesh::Facet>& facets() const { return facets_; }
 
-  /// Sorted unique mesh node indices of the surface.
+  /// Type of facet f.
+  mesh::FacetType facet_type(Index f) const { return facets_[f].type; }
+  /// Mesh nodes of facet f in the order of its type: corners, then mid-edge nodes.
+  std::span<const Index> facet_nodes(Index f) const {
+    return {facet_node_list_.data() + facet_offsets_[f],
+            static_cast<std::size_t>(facet_offsets_[f + 1] - facet_offsets_[f])};
+  }
+  /// Most nodes of a facet of this surface.
+  int max_facet_nodes() const { return max_facet_nodes_; }
+
+  /// Sorted unique mesh node indices of the surface (corners and mid-edge nodes).
   const std::vector<Index>& nodes() const { return nodes_; }
   Index num_nodes() const { return static_cast<Index>(nodes_.size()); }
   /// Position of mesh node `mesh_node` in nodes(), or -1 if it is not on this surface.
@@ -55,12 +65,12 @@ public:
   /// The facet sharing edge e of facet f, or -1 on the free boundary of the surface (or if more
   /// than two facets share the edge).
   Index edge_neighbour(Index f, int e) const { return edge_neighbours_[4 * f + e]; }
-  /// True if the point ξ_c of facet f lies on a free boundary edge: an edge with no neighbour
-  /// (fixed[α] tells which ξ components sit on ±1; a corner is free if either edge is).
-  bool on_free_boundary(Index f, const Vec2& xi_c, const std::array<bool, 2>& fixed) const;
+  /// True if a boundary point of facet f lies on a free boundary edge, one with no neighbour:
+  /// `edge` if `corner` < 0, else either edge at `corner` (Projection::edge, ::corner).
+  bool on_free_boundary(Index f, int edge, int corner) const;
 
   /// Current nodal coordinates of facet f (row a = x of facet node a).
-  fe::QuadCoords coords(Index f, const NodePositions& x) const;
+  FacetCoords coords(Index f, const NodePositions& x) const;
   /// Geometry of facet f at ξ in the configuration x.
   FacetPoint evaluate(Index f, const Vec2& xi, const NodePositions& x) const {
     return evaluate_facet(coords(f, x), xi);
@@ -72,6 +82,9 @@ private:
   void build_edge_neighbours();
 
   std::vector<mesh::Facet> facets_;
+  std::vector<Index> facet_offsets_ = {0}; ///< facet f's nodes: facet_node_list_[offsets f..f+1)
+  std::vector<Index> facet_node_list_;
+  int max_facet_nodes_ = 0;
   std::vector<Index> nodes_;
   std::vector<Index> node_facet_offsets_; ///< CSR offsets into node_facet_list_
   std::vector<Index> node_facet_list_;

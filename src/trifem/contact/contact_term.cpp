@@ -8,14 +8,22 @@
 namespace trifem::contact {
 namespace {
 
-/// ∫ N_a dA over facet X (reference), exact by 2x2 Gauss.
-fe::QuadShape nodal_areas(const fe::QuadCoords& X) {
-  fe::QuadShape w = fe::QuadShape::Zero();
-  for (const auto& qp : fe::quad_gauss_2x2()) {
+/// Row weights of the nodes of facet X (reference; tributary_area()): ∫ N_a dA on linear
+/// facets, the facet area shared in proportion to ∫ N_a² dA on quadratic ones.
+fe::FacetShapeValues nodal_areas(const FacetCoords& X) {
+  const Index n = X.num_nodes();
+  fe::FacetShapeValues w = fe::FacetShapeValues::Zero(n), w2 = fe::FacetShapeValues::Zero(n);
+  Real area = 0;
+  for (const auto& qp : X.reference->rule().points) {
     const FacetPoint fp = evaluate_facet(X, qp.xi);
-    w += fp.N * fp.jacobian * qp.weight;
+    const Real da = fp.jacobian * qp.weight;
+    w += fp.N * da;
+    w2 += fp.N.cwiseAbs2() * da;
+    area += da;
   }
-  return w;
+  if (X.reference->order() == 1)
+    return w;
+  return w2 * (area / w2.sum());
 }
 
 void check_disjoint(const ContactSurface& master, const ContactSurface& slave) {
@@ -55,12 +63,13 @@ ContactTerm::ContactTerm(const mesh::Mesh& mesh, const dofs::DofMap& dofs,
       paired_.push_back(law_->paired_field(c));
   area_.assign(slave_.num_nodes(), 0.0);
   for (Index f = 0; f < slave_.num_facets(); ++f) {
-    const auto& nodes = slave_.facet(f).nodes;
-    const fe::QuadShape w = nodal_areas(slave_.coords(f, mesh.nodes()));
-    std::array<Index, 4> k{};
-    for (int a = 0; a < 4; ++a) {
+    const auto nodes = slave_.facet_nodes(f);
+    const fe::FacetShapeValues w = nodal_areas(slave_.coords(f, mesh.nodes()));
+    std::array<Index, fe::kMaxFacetNodes> k{};
+    k.fill(-1);
+    for (std::size_t a = 0; a < nodes.size(); ++a) {
       k[a] = slave_.local_node(nodes[a]);
-      area_[k[a]] += w[a];
+      area_[k[a]] += w[static_cast<Index>(a)];
     }
     slave_facet_k_.push_back(k);
   }
@@ -105,20 +114,17 @@ Vec3 ContactTerm::position(Index node, const Vector& x) const {
   return mesh_.node(node) + Vec3(x[u_dof(node, 0)], x[u_dof(node, 1)], x[u_dof(node, 2)]);
 }
 
-fe::QuadCoords ContactTerm::coords(const std::array<Index, 4>& nodes, const Vector& x) const {
-  fe::QuadCoords X;
-  for (int a = 0; a < 4; ++a)
-    X.row(a) = position(nodes[a], x).transpose();
-  return X;
+FacetCoords ContactTerm::coords(const ContactSurface& surface, Index f, const Vector& x) const {
+  return surface.coords(f, NodePositions([this, &x](Index n) { return position(n, x); }));
 }
 
-Eigen::Matrix<Real, 4, Eigen::Dynamic> ContactTerm::facet_multipliers(Index f,
-                                                                      const Vector& x) const {
+FacetMultipliers ContactTerm::facet_multipliers(Index f, const Vector& x) const {
   const int C = law_->num_components();
-  Eigen::Matrix<Real, 4, Eigen::Dynamic> lam(4, C);
-  for (int a = 0; a < 4; ++a)
+  const auto n = static_cast<Index>(slave_.facet_nodes(f).size());
+  FacetMultipliers lam(n, C);
+  for (Index a = 0; a < n; ++a)
     for (int c = 0; c < C; ++c)
-      lam(a, c) = x[multiplier_dof(slave_facet_k_[f][a], c)];
+      lam(a, c) = x[multiplier_dof(slave_facet_k_[f][static_cast<std::size_t>(a)], c)];
   return lam;
 }
 
@@ -259,31 +265,34 @@ void ContactTerm::stencil_of(Kind kind, Index i, std::vector<Index>& dofs) const
   };
   dofs.clear();
   if (kind == Kind::SlaveFacet) {
-    for (int a = 0; a < 4; ++a) {
-      add_node_dofs(slave_.facet(i).nodes[a], true, dofs);
+    const auto facet_nodes = slave_.facet_nodes(i);
+    for (std::size_t a = 0; a < facet_nodes.size(); ++a) {
+      add_node_dofs(facet_nodes[a], true, dofs);
       add_lambda(slave_facet_k_[i][a]);
       const auto& pr = slave_proj_[slave_facet_k_[i][a]];
       if (settings_.integration == Integration::SlaveNodes && pr)
-        for (Index q : master_.facet(pr->facet).nodes)
+        for (Index q : master_.facet_nodes(pr->facet))
           add_node_dofs(q, true, dofs);
     }
   } else if (kind == Kind::MasterFacet) {
-    for (Index m : master_.facet(i).nodes) {
+    for (Index m : master_.facet_nodes(i)) {
       add_node_dofs(m, true, dofs);
       const auto& pr = master_proj_[master_.local_node(m)];
       if (!pr)
         continue;
-      for (int b = 0; b < 4; ++b) {
-        add_node_dofs(slave_.facet(pr->facet).nodes[b], false, dofs);
+      const auto slave_nodes = slave_.facet_nodes(pr->facet);
+      for (std::size_t b = 0; b < slave_nodes.size(); ++b) {
+        add_node_dofs(slave_nodes[b], false, dofs);
         add_lambda(slave_facet_k_[pr->facet][b]);
       }
     }
   } else {
     add_lambda(i);
     std::vector<Index> nodes{slave_.nodes()[i]};
-    if (const auto& pr = slave_proj_[i])
-      nodes.insert(nodes.end(), master_.facet(pr->facet).nodes.begin(),
-                   master_.facet(pr->facet).nodes.end());
+    if (const auto& pr = slave_proj_[i]) {
+      const auto master_nodes = master_.facet_nodes(pr->facet);
+      nodes.insert(nodes.end(), master_nodes.begin(), master_nodes.end());
+    }
     for (Index n : nodes) {
       add_node_dofs(n, false, dofs);
       for (dofs::FieldId f : law_->constraint_fields())
@@ -333,7 +342,6 @@ void ContactTerm::slave_node_rows(Index k, const physics::EvalState& state,
                                   LocalSystem& out) const {
   SlaveNodeRows node;
   node.slave = k;
-  node.nodes[0] = slave_.nodes()[k];
   node.state = &state;
   node.dofs = &dofs_;
   node.weight = area_[k];
@@ -348,14 +356,17 @@ void ContactTerm::slave_node_rows(Index k, const physics::EvalState& state,
   ProjectionDerivatives d;
   if (pr) {
     node.nodes = stencil_nodes(slave_.nodes()[k], master_, pr->facet);
-    for (int j = 0; j < 5; ++j)
+    for (int j = 0; j < node.nodes.size; ++j)
       node.x_at[j] = out.at(u_dof(node.nodes[j], 0));
     node.projection = &*pr;
+    node.facet = &fe::reference_facet(master_.facet_type(pr->facet));
   } else {
+    node.nodes.nodes[0] = slave_.nodes()[k];
+    node.nodes.size = 1;
     node.x_at[0] = out.at(u_dof(slave_.nodes()[k], 0));
   }
   if (active_.active(k) && pr && !pr->on_free_boundary) {
-    d = projection_derivatives(*pr, coords(master_.facet(pr->facet).nodes, state.x));
+    d = projection_derivatives(*pr, coords(master_, pr->facet, state.x));
     node.derivatives = &d;
     law_->active_rows(node, out);
   } else {
@@ -366,9 +377,9 @@ void ContactTerm::slave_node_rows(Index k, const physics::EvalState& state,
 Vec3 ContactTerm::slave_force(const Vector& x) const {
   Vec3 f = Vec3::Zero();
   for (Index s = 0; s < slave_.num_facets(); ++s) {
-    const fe::QuadCoords X = coords(slave_.facet(s).nodes, x);
-    const Eigen::Matrix<Real, 4, 1> lam = facet_multipliers(s, x).col(0);
-    for (const auto& qp : fe::quad_gauss_2x2()) {
+    const FacetCoords X = coords(slave_, s, x);
+    const fe::FacetShapeValues lam = facet_multipliers(s, x).col(0);
+    for (const auto& qp : X.reference->rule().points) {
       const FacetPoint fp = evaluate_facet(X, qp.xi);
       const Vec3 r = fp.t[0].cross(fp.t[1]) * qp.weight;
       f += fp.N.dot(lam) * r; // = Σ_a λ_a a_a as well (lumped forces have the same sum)

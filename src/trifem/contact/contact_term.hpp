@@ -13,6 +13,10 @@
 
 namespace trifem::contact {
 
+/// Multipliers of the nodes of a facet (row a, column = component; at most 4 components).
+using FacetMultipliers =
+    Eigen::Matrix<Real, Eigen::Dynamic, Eigen::Dynamic, 0, fe::kMaxFacetNodes, 4>;
+
 /// How the interface work of the multipliers is integrated (docs/theory/contact.md §4).
 enum class Integration {
   /// The paper's scheme: slave facets with λ^s(ξ) = Σ_k M_k(ξ) λ_k, master facets with
@@ -77,8 +81,9 @@ struct SlaveNodeState {
 ///   slave facets:   R_{F_c,a} -= λ_{a,c} a_a,  R_{F_c,q} += λ_{a,c} N_q(ξ_a) a_a   (SlaveNodes)
 ///   slave node k:   rows G_k of the law (active or inactive) on the λ_k DOFs
 /// with s_c = ContactLaw::work_factor(c, Δt) (the row scaling of the field paired with c; the
-/// SlaveNodes terms carry it as well) and n da = (t_1 × t_2) dξ in the current configuration, 2×2
-/// Gauss (exact) on each facet. The consistent tangent includes the area-vector derivatives, the
+/// SlaveNodes terms carry it as well) and n da = (t_1 × t_2) dξ in the current configuration, by
+/// the facet type's rule (exact for flat facets: 2×2 Gauss on quad4). Facets may be tri3, tri6,
+/// quad4 or quad8, on either side. The consistent tangent includes the area-vector derivatives, the
 /// multiplier columns, the derivative of L_ik = M_k(ζ_i) through the projection of master node i,
 /// and of N_q(ξ_k).
 ///
@@ -134,7 +139,9 @@ public:
   const std::optional<Projection>& slave_projection(Index k) const { return slave_proj_[k]; }
   /// Projection of master node i (index into master().nodes()) onto the slave surface.
   const std::optional<Projection>& master_projection(Index i) const { return master_proj_[i]; }
-  /// A_k = ∫ M_k dA over the reference slave surface.
+  /// A_k = ∫ M_k dA over the reference slave surface; on quadratic facets, whose corner
+  /// functions integrate to zero (tri6) or less (quad8), the facet area shared in proportion
+  /// to ∫ M_k² dA (HRZ lumping), so that every row weight is positive.
   Real tributary_area(Index k) const { return area_[k]; }
   /// DOF of component c of λ_k.
   Index multiplier_dof(Index k, int c) const { return dofs_.dof(lambda_, k, c); }
@@ -160,10 +167,11 @@ private:
   enum class Kind { SlaveFacet, MasterFacet, SlaveNode };
   std::pair<Kind, Index> locate(Index e) const;
   Vec3 position(Index node, const Vector& x) const;
-  fe::QuadCoords coords(const std::array<Index, 4>& nodes, const Vector& x) const;
+  /// Current coordinates of facet f of `surface` (master_ or slave_) in the state x.
+  FacetCoords coords(const ContactSurface& surface, Index f, const Vector& x) const;
   Index u_dof(Index node, int i) const { return dofs_.dof(u_, node, i); }
-  /// λ of the four nodes of slave facet f (row a, column c).
-  Eigen::Matrix<Real, 4, Eigen::Dynamic> facet_multipliers(Index f, const Vector& x) const;
+  /// λ of the nodes of slave facet f (row a, column c).
+  FacetMultipliers facet_multipliers(Index f, const Vector& x) const;
 
   void resolve_defaults();
   void project_all(const Vector& x);
@@ -198,9 +206,10 @@ private:
   std::shared_ptr<const ContactLaw> law_;
   ContactSettings settings_;
   std::vector<dofs::FieldId> paired_; ///< unique fields paired with the components (rows)
-  std::vector<std::array<Index, 4>> slave_facet_k_; ///< slave-node index of each facet node
-  std::vector<Real> area_;                          ///< A_k
-  Real h_ = 0;                                      ///< mean reference facet size
+  /// Slave-node index of each node of each slave facet (facet f's in facet_nodes(f) order).
+  std::vector<std::array<Index, fe::kMaxFacetNodes>> slave_facet_k_;
+  std::vector<Real> area_; ///< A_k
+  Real h_ = 0;             ///< mean reference facet size
   ActiveSet active_;
   std::vector<std::optional<Projection>> slave_proj_, master_proj_;
   std::vector<std::vector<Index>> stencils_;

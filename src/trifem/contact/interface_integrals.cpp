@@ -2,12 +2,12 @@
 // Element kernels of ContactTerm: the interface work of the multipliers on the slave and master
 // facets (docs/theory/contact.md §4) and its consistent tangent (§6 there, K_c1 and K_c2).
 #include "trifem/contact/contact_term.hpp"
-#include "trifem/physics/facet_area.hpp"
+#include "trifem/physics/facet_area_any.hpp"
 
 namespace trifem::contact {
 namespace {
 
-using MultiplierRows = Eigen::Matrix<Real, Eigen::Dynamic, kStencil>;
+using MultiplierRows = Eigen::Matrix<Real, Eigen::Dynamic, Eigen::Dynamic, 0, 4, kMaxStencil>;
 
 Mat3 skew(const Vec3& v) {
   Mat3 S;
@@ -17,7 +17,7 @@ Mat3 skew(const Vec3& v) {
 
 /// ∂r/∂x_b of the weighted area vector r = w t_1 × t_2 at a point of a facet:
 /// w (N_{b,2} [t_1]_× - N_{b,1} [t_2]_×).
-Mat3 area_derivative(const FacetPoint& fp, int b, Real w) {
+Mat3 area_derivative(const FacetPoint& fp, Index b, Real w) {
   return w * (fp.dN(b, 1) * skew(fp.t[0]) - fp.dN(b, 0) * skew(fp.t[1]));
 }
 
@@ -26,36 +26,38 @@ Mat3 area_derivative(const FacetPoint& fp, int b, Real w) {
 /// coordinates (x_i, slave facet nodes): Σ_b λ_{k_b} M_{b,β}(ζ_i) ∂ζ_i^β/∂x.
 struct MasterLink {
   bool linked = false;
-  fe::QuadShape M;                 ///< M_b(ζ_i) = L_{i k_b}
-  Vector lambda;                   ///< λ^m_i (per component)
-  MultiplierRows dlambda;          ///< ∂λ^m_i/∂(x_i, x_{s,0..3}) through ζ_i
-  std::array<Index, 5> x_at{};     ///< local position of x of the stencil points
-  Eigen::Matrix<Index, 4, 1> l_at; ///< local position of λ component 0 of the facet nodes
+  fe::FacetShapeValues M;                       ///< M_b(ζ_i) = L_{i k_b}
+  Vector lambda;                                ///< λ^m_i (per component)
+  MultiplierRows dlambda;                       ///< ∂λ^m_i/∂(x_i, x_{s,b}) through ζ_i
+  std::array<Index, kMaxStencilPoints> x_at{};  ///< local position of x of the stencil points
+  std::array<Index, fe::kMaxFacetNodes> l_at{}; ///< local position of λ component 0, node b
+  int points = 0;                               ///< stencil points (1 + slave facet nodes)
 };
 
 } // namespace
 
 void ContactTerm::slave_facet_work(Index f, const Vector& x, Real dt, LocalSystem& out) const {
-  const auto& nodes = slave_.facet(f).nodes;
-  const fe::QuadCoords X = coords(nodes, x);
-  const Eigen::Matrix<Real, 4, Eigen::Dynamic> lam = facet_multipliers(f, x);
-  std::array<Index, 4> x_at{}, l_at{};
-  for (int a = 0; a < 4; ++a) {
+  const auto nodes = slave_.facet_nodes(f);
+  const FacetCoords X = coords(slave_, f, x);
+  const FacetMultipliers lam = facet_multipliers(f, x);
+  const Index n = X.num_nodes();
+  std::array<Index, fe::kMaxFacetNodes> x_at{}, l_at{};
+  for (Index a = 0; a < n; ++a) {
     x_at[a] = out.at(u_dof(nodes[a], 0));
     l_at[a] = out.at(multiplier_dof(slave_facet_k_[f][a], 0));
   }
-  for (const auto& qp : fe::quad_gauss_2x2()) {
+  for (const auto& qp : X.reference->rule().points) {
     const FacetPoint fp = evaluate_facet(X, qp.xi);
     for (int c = 0; c < lam.cols(); ++c) {
       const Real wc = law_->work_factor(c, dt) * qp.weight;
       const Vec3 r = wc * fp.t[0].cross(fp.t[1]);
       const Real lc = fp.N.dot(lam.col(c));
-      for (int a = 0; a < 4; ++a) {
+      for (Index a = 0; a < n; ++a) {
         const Index row = out.at(dofs_.dof(law_->paired_field(c), nodes[a], 0));
         out.r().segment<3>(row) -= fp.N[a] * lc * r;
         if (!out.with_jacobian())
           continue;
-        for (int b = 0; b < 4; ++b) {
+        for (Index b = 0; b < n; ++b) {
           out.K().block<3, 3>(row, x_at[b]) -= fp.N[a] * lc * area_derivative(fp, b, wc);
           out.K().block<3, 1>(row, l_at[b] + c) -= fp.N[a] * fp.N[b] * r;
         }
@@ -65,57 +67,59 @@ void ContactTerm::slave_facet_work(Index f, const Vector& x, Real dt, LocalSyste
 }
 
 void ContactTerm::master_facet_work(Index f, const Vector& x, Real dt, LocalSystem& out) const {
-  const auto& nodes = master_.facet(f).nodes;
-  const fe::QuadCoords X = coords(nodes, x);
+  const auto nodes = master_.facet_nodes(f);
+  const FacetCoords X = coords(master_, f, x);
+  const Index n = X.num_nodes();
   const int C = law_->num_components();
-  std::array<MasterLink, 4> link;
-  std::array<Index, 4> x_at{};
-  for (int i = 0; i < 4; ++i) {
+  std::array<MasterLink, fe::kMaxFacetNodes> link;
+  std::array<Index, fe::kMaxFacetNodes> x_at{};
+  for (Index i = 0; i < n; ++i) {
     x_at[i] = out.at(u_dof(nodes[i], 0));
     const auto& pr = master_proj_[master_.local_node(nodes[i])];
     if (!pr || pr->on_free_boundary)
       continue; // exposed master node: λ^m_i = 0
     MasterLink& l = link[i];
     l.linked = true;
-    const auto lam = facet_multipliers(pr->facet, x);
-    l.M = fe::quad4_shape(pr->xi);
+    const FacetMultipliers lam = facet_multipliers(pr->facet, x);
+    const fe::ReferenceFacet& zeta_facet = fe::reference_facet(slave_.facet_type(pr->facet));
+    l.M = zeta_facet.shape(pr->xi);
     l.lambda = lam.transpose() * l.M;
-    const auto stencil = stencil_nodes(nodes[i], slave_, pr->facet);
-    for (int j = 0; j < 5; ++j)
+    const StencilNodes stencil = stencil_nodes(nodes[i], slave_, pr->facet);
+    l.points = stencil.size;
+    for (int j = 0; j < stencil.size; ++j)
       l.x_at[j] = out.at(u_dof(stencil[j], 0));
-    for (int b = 0; b < 4; ++b)
+    for (Index b = 0; b < lam.rows(); ++b)
       l.l_at[b] = out.at(multiplier_dof(slave_facet_k_[pr->facet][b], 0));
     if (out.with_jacobian()) {
-      const ProjectionDerivatives d =
-          projection_derivatives(*pr, coords(slave_.facet(pr->facet).nodes, x));
-      l.dlambda = lam.transpose() * fe::quad4_shape_grad(pr->xi) * d.dxi;
+      const ProjectionDerivatives d = projection_derivatives(*pr, coords(slave_, pr->facet, x));
+      l.dlambda = lam.transpose() * zeta_facet.shape_grad(pr->xi) * d.dxi;
     }
   }
-  for (const auto& qp : fe::quad_gauss_2x2()) {
+  for (const auto& qp : X.reference->rule().points) {
     const FacetPoint fp = evaluate_facet(X, qp.xi);
     Vector lm = Vector::Zero(C); // λ^m(ξ) = Σ_i N_i(ξ) λ^m_i
-    for (int i = 0; i < 4; ++i)
+    for (Index i = 0; i < n; ++i)
       if (link[i].linked)
         lm += fp.N[i] * link[i].lambda;
     for (int c = 0; c < C; ++c) {
       const Real wc = law_->work_factor(c, dt) * qp.weight;
       const Vec3 r = wc * fp.t[0].cross(fp.t[1]);
-      for (int a = 0; a < 4; ++a) {
+      for (Index a = 0; a < n; ++a) {
         const Index row = out.at(dofs_.dof(law_->paired_field(c), nodes[a], 0));
         out.r().segment<3>(row) -= fp.N[a] * lm[c] * r;
         if (!out.with_jacobian())
           continue;
-        for (int b = 0; b < 4; ++b)
+        for (Index b = 0; b < n; ++b)
           out.K().block<3, 3>(row, x_at[b]) -= fp.N[a] * lm[c] * area_derivative(fp, b, wc);
-        for (int i = 0; i < 4; ++i) {
-          if (!link[i].linked)
+        for (Index i = 0; i < n; ++i) {
+          const MasterLink& l = link[i];
+          if (!l.linked)
             continue;
           const Vec3 coef = -fp.N[a] * fp.N[i] * r; // ∂R_a/∂λ^m_i
-          for (int b = 0; b < 4; ++b)
-            out.K().block<3, 1>(row, link[i].l_at[b] + c) += coef * link[i].M[b];
-          for (int j = 0; j < 5; ++j)
-            out.K().block<3, 3>(row, link[i].x_at[j]) +=
-                coef * link[i].dlambda.row(c).segment<3>(3 * j);
+          for (Index b = 0; b < l.M.size(); ++b)
+            out.K().block<3, 1>(row, l.l_at[b] + c) += coef * l.M[b];
+          for (int j = 0; j < l.points; ++j)
+            out.K().block<3, 3>(row, l.x_at[j]) += coef * l.dlambda.row(c).segment<3>(3 * j);
         }
       }
     }
@@ -123,29 +127,34 @@ void ContactTerm::master_facet_work(Index f, const Vector& x, Real dt, LocalSyst
 }
 
 void ContactTerm::slave_point_forces(Index f, const Vector& x, Real dt, LocalSystem& out) const {
-  const auto& nodes = slave_.facet(f).nodes;
-  physics::FacetMatrix dA;
-  const physics::FacetVector A =
-      physics::facet_area_vectors(coords(nodes, x), out.with_jacobian() ? &dA : nullptr);
-  const Eigen::Matrix<Real, 4, Eigen::Dynamic> lam = facet_multipliers(f, x);
-  std::array<Index, 4> x_at{};
-  for (int a = 0; a < 4; ++a)
+  const auto nodes = slave_.facet_nodes(f);
+  const FacetCoords X = coords(slave_, f, x);
+  const Index n = X.num_nodes();
+  physics::FacetMatrixX dA;
+  const physics::FacetVectorX A =
+      physics::facet_area_vectors(*X.reference, X.x, out.with_jacobian() ? &dA : nullptr);
+  const FacetMultipliers lam = facet_multipliers(f, x);
+  std::array<Index, fe::kMaxFacetNodes> x_at{};
+  for (Index a = 0; a < n; ++a)
     x_at[a] = out.at(u_dof(nodes[a], 0));
-  for (int a = 0; a < 4; ++a) {
+  for (Index a = 0; a < n; ++a) {
     const Index l_at = out.at(multiplier_dof(slave_facet_k_[f][a], 0));
     const auto& pr = slave_proj_[slave_facet_k_[f][a]];
     const bool transfer = pr && !pr->on_free_boundary;
-    fe::QuadShape Nq;
-    Eigen::Matrix<Real, 4, kStencil> dNq; // ∂N_q(ξ_a)/∂(x_a, master facet nodes)
-    std::array<Index, 5> q_at{};
+    fe::FacetShapeValues Nq;
+    // ∂N_q(ξ_a)/∂(x_a, master facet nodes)
+    Eigen::Matrix<Real, Eigen::Dynamic, Eigen::Dynamic, 0, fe::kMaxFacetNodes, kMaxStencil> dNq;
+    std::array<Index, kMaxStencilPoints> q_at{};
+    StencilNodes stencil;
     if (transfer) {
-      const auto& q = master_.facet(pr->facet).nodes;
-      Nq = fe::quad4_shape(pr->xi);
-      const auto stencil = stencil_nodes(nodes[a], master_, pr->facet);
-      for (int j = 0; j < 5; ++j)
+      const fe::ReferenceFacet& master_facet = fe::reference_facet(master_.facet_type(pr->facet));
+      Nq = master_facet.shape(pr->xi);
+      stencil = stencil_nodes(nodes[a], master_, pr->facet);
+      for (int j = 0; j < stencil.size; ++j)
         q_at[j] = out.at(u_dof(stencil[j], 0));
       if (out.with_jacobian())
-        dNq = fe::quad4_shape_grad(pr->xi) * projection_derivatives(*pr, coords(q, x)).dxi;
+        dNq = master_facet.shape_grad(pr->xi) *
+              projection_derivatives(*pr, coords(master_, pr->facet, x)).dxi;
     }
     for (int c = 0; c < lam.cols(); ++c) {
       const dofs::FieldId F = law_->paired_field(c);
@@ -155,21 +164,21 @@ void ContactTerm::slave_point_forces(Index f, const Vector& x, Real dt, LocalSys
       out.r().segment<3>(row) -= lam(a, c) * a_a;
       if (out.with_jacobian()) {
         out.K().block<3, 1>(row, l_at + c) -= a_a;
-        for (int b = 0; b < 4; ++b)
+        for (Index b = 0; b < n; ++b)
           out.K().block<3, 3>(row, x_at[b]) -= sc * lam(a, c) * dA.block<3, 3>(3 * a, 3 * b);
       }
       if (!transfer)
         continue;
-      for (int qn = 0; qn < 4; ++qn) {
-        const Index qrow = out.at(dofs_.dof(F, master_.facet(pr->facet).nodes[qn], 0));
+      for (Index qn = 0; qn < Nq.size(); ++qn) {
+        const Index qrow = out.at(dofs_.dof(F, stencil[static_cast<int>(qn) + 1], 0));
         out.r().segment<3>(qrow) += lam(a, c) * Nq[qn] * a_a;
         if (!out.with_jacobian())
           continue;
         out.K().block<3, 1>(qrow, l_at + c) += Nq[qn] * a_a;
-        for (int b = 0; b < 4; ++b)
+        for (Index b = 0; b < n; ++b)
           out.K().block<3, 3>(qrow, x_at[b]) +=
               sc * lam(a, c) * Nq[qn] * dA.block<3, 3>(3 * a, 3 * b);
-        for (int j = 0; j < 5; ++j)
+        for (int j = 0; j < stencil.size; ++j)
           out.K().block<3, 3>(qrow, q_at[j]) += lam(a, c) * a_a * dNq.row(qn).segment<3>(3 * j);
       }
     }
@@ -180,8 +189,9 @@ Vec3 ContactTerm::master_force(const Vector& x) const {
   Vec3 f = Vec3::Zero();
   if (settings_.integration == Integration::SlaveNodes) {
     for (Index s = 0; s < slave_.num_facets(); ++s) {
-      const physics::FacetVector A = physics::facet_area_vectors(coords(slave_.facet(s).nodes, x));
-      for (int a = 0; a < 4; ++a) {
+      const FacetCoords X = coords(slave_, s, x);
+      const physics::FacetVectorX A = physics::facet_area_vectors(*X.reference, X.x);
+      for (Index a = 0; a < X.num_nodes(); ++a) {
         const Index k = slave_facet_k_[s][a];
         if (slave_proj_[k] && !slave_proj_[k]->on_free_boundary)
           f -= x[multiplier_dof(k, 0)] * A.segment<3>(3 * a);
@@ -190,15 +200,17 @@ Vec3 ContactTerm::master_force(const Vector& x) const {
     return f;
   }
   for (Index m = 0; m < master_.num_facets(); ++m) {
-    const auto& nodes = master_.facet(m).nodes;
-    fe::QuadShape lm = fe::QuadShape::Zero(); // λ^m_i of the facet nodes
-    for (int i = 0; i < 4; ++i) {
+    const auto nodes = master_.facet_nodes(m);
+    const FacetCoords X = coords(master_, m, x);
+    fe::FacetShapeValues lm = fe::FacetShapeValues::Zero(X.num_nodes()); // λ^m_i of the nodes
+    for (Index i = 0; i < X.num_nodes(); ++i) {
       const auto& pr = master_proj_[master_.local_node(nodes[i])];
       if (pr && !pr->on_free_boundary)
-        lm[i] = facet_multipliers(pr->facet, x).col(0).dot(fe::quad4_shape(pr->xi));
+        lm[i] = facet_multipliers(pr->facet, x)
+                    .col(0)
+                    .dot(fe::reference_facet(slave_.facet_type(pr->facet)).shape(pr->xi));
     }
-    const fe::QuadCoords X = coords(nodes, x);
-    for (const auto& qp : fe::quad_gauss_2x2()) {
+    for (const auto& qp : X.reference->rule().points) {
       const FacetPoint fp = evaluate_facet(X, qp.xi);
       f += fp.N.dot(lm) * qp.weight * fp.t[0].cross(fp.t[1]);
     }

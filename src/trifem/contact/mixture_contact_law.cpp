@@ -39,30 +39,32 @@ void MixtureContactLaw::flux_row(const SlaveNodeRows& node, int c, dofs::FieldId
   const ProjectionDerivatives& d = *node.derivatives;
   const Vector& x = node.state->x;
   const auto dof = [&](int j, int i) { return node.dofs->dof(F, node.nodes[j], i); };
-  Eigen::Matrix<Real, 4, 3> fm; // nodal values on the master facet
+  const int n = node.nodes.size - 1; // master facet nodes
+  const fe::ReferenceFacet& facet = *node.facet;
+  FacetNodeValues<3> fm(n, 3); // nodal values on the master facet
   Vec3 fs;
   for (int i = 0; i < 3; ++i) {
     fs[i] = x[dof(0, i)];
-    for (int a = 0; a < 4; ++a)
+    for (int a = 0; a < n; ++a)
       fm(a, i) = x[dof(1 + a, i)];
   }
-  const Vec3 jump = interpolate<3>(fm, pr.xi) - fs;
+  const Vec3 jump = interpolate<3>(facet, fm, pr.xi) - fs;
   const Real weight = node.dt * node.weight;
   const Index row = node.lambda_at + c;
   out.r()[row] += weight * jump.dot(pr.normal);
   if (!out.with_jacobian())
     return;
-  const fe::QuadShape N = fe::quad4_shape(pr.xi);
+  const fe::FacetShapeValues N = facet.shape(pr.xi);
   for (int i = 0; i < 3; ++i) {
     out.K()(row, out.at(dof(0, i))) -= weight * pr.normal[i];
-    for (int a = 0; a < 4; ++a)
+    for (int a = 0; a < n; ++a)
       out.K()(row, out.at(dof(1 + a, i))) += weight * N[a] * pr.normal[i];
   }
   // through ξ and n: n·(Σ_a f_a N_{a,α}) ∂ξ^α/∂x + (f^m - f_s)·∂n/∂x
-  const Eigen::Matrix<Real, 1, kStencil> dx =
-      pr.normal.transpose() * interpolation_derivative<3>(fm, pr.xi, d) +
+  const StencilRows<1> dx =
+      pr.normal.transpose() * interpolation_derivative<3>(facet, fm, pr.xi, d) +
       jump.transpose() * d.dnormal;
-  for (int j = 0; j < 5; ++j)
+  for (int j = 0; j <= n; ++j)
     for (int i = 0; i < 3; ++i)
       out.K()(row, node.x_at[j] + i) += weight * dx(3 * j + i);
 }

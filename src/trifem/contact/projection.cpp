@@ -15,14 +15,16 @@ struct NewtonResult {
 };
 
 constexpr Real kMaxStep = 0.5; ///< largest Newton step in ξ (a quarter of the facet)
-constexpr Real kOutside = 2.5; ///< |ξ|∞ beyond which the iterate has clearly left the facet
+/// Distance outside the reference facet (reference units) beyond which the iterate has left it.
+constexpr Real kOutside = 1.5;
 constexpr Real kEps = std::numeric_limits<Real>::epsilon();
 
-/// Full Hessian of ½|p - x(ξ)|²: H_αβ = a_αβ - d·x_{,αβ}, d = p - x (only x_{,12} ≠ 0).
+/// Full Hessian of ½|p - x(ξ)|²: H_αβ = a_αβ - d·x_{,αβ}, d = p - x.
 Mat2 distance_hessian(const FacetPoint& fp, const Vec3& d) {
   Mat2 H = fp.metric();
-  H(0, 1) -= d.dot(fp.x12);
-  H(1, 0) = H(0, 1);
+  for (int alpha = 0; alpha < 2; ++alpha)
+    for (int beta = 0; beta < 2; ++beta)
+      H(alpha, beta) -= d.dot(fp.second(alpha, beta));
   return H;
 }
 
@@ -43,21 +45,24 @@ bool newton_direction(const Vec3& p, const FacetPoint& fp, Vec2& step) {
   return step.allFinite();
 }
 
+Vec3 position_at(const FacetCoords& X, const Vec2& xi) {
+  return X.x.transpose() * X.reference->shape(xi);
+}
+
 /// Backtracks a long step until ½|p - x|² does not increase (at most 20 halvings).
-Vec2 backtrack(const Vec3& p, const fe::QuadCoords& X, const Vec2& xi, Real f0, Vec2 step) {
+Vec2 backtrack(const Vec3& p, const FacetCoords& X, const Vec2& xi, Real f0, Vec2 step) {
   for (int k = 0; k < 20; ++k) {
-    const Vec3 x = X.transpose() * fe::quad4_shape(xi + step);
-    if (0.5 * (p - x).squaredNorm() <= f0)
+    if (0.5 * (p - position_at(X, xi + step)).squaredNorm() <= f0)
       break;
     step *= 0.5;
   }
   return step;
 }
 
-/// Stationary point of ½|p - x(ξ)|² on the bilinear extension of the facet, from xi0.
-NewtonResult newton_closest_point(const Vec3& p, const fe::QuadCoords& X, Vec2 xi, Real h,
+/// Stationary point of ½|p - x(ξ)|² on the polynomial extension of the facet, from xi0.
+NewtonResult newton_closest_point(const Vec3& p, const FacetCoords& X, Vec2 xi, Real h,
                                   int max_iterations) {
-  const Real scale = p.lpNorm<Eigen::Infinity>() + X.lpNorm<Eigen::Infinity>();
+  const Real scale = p.lpNorm<Eigen::Infinity>() + X.x.lpNorm<Eigen::Infinity>();
   const Real step_tol = std::max(1e-12, 64 * kEps * scale / h);
   for (int it = 0; it < max_iterations; ++it) {
     const FacetPoint fp = evaluate_facet(X, xi);
@@ -70,7 +75,7 @@ NewtonResult newton_closest_point(const Vec3& p, const fe::QuadCoords& X, Vec2 x
     if (size > 1e-6)
       step = backtrack(p, X, xi, 0.5 * (p - fp.x).squaredNorm(), step);
     xi += step;
-    if (xi.lpNorm<Eigen::Infinity>() > kOutside)
+    if (outside_distance(X.type(), xi) > kOutside)
       return {NewtonStatus::Outside, xi};
     if (size <= step_tol) // the last (quadratically convergent) step has been applied
       return {NewtonStatus::Converged, xi};
@@ -78,22 +83,26 @@ NewtonResult newton_closest_point(const Vec3& p, const fe::QuadCoords& X, Vec2 x
   return {NewtonStatus::Failed, xi};
 }
 
-int nearest_corner(const Vec3& p, const fe::QuadCoords& X) {
+int nearest_corner(const Vec3& p, const FacetCoords& X) {
   int best = 0;
-  for (int a = 1; a < 4; ++a)
-    if ((p - X.row(a).transpose()).norm() < (p - X.row(best).transpose()).norm())
+  for (int a = 1; a < X.num_corners(); ++a)
+    if ((p - X.node(a)).norm() < (p - X.node(best)).norm())
       best = a;
   return best;
 }
 
-/// Nearest of the 5 x 5 equally spaced samples ξ ∈ {-1, -0.5, 0, 0.5, 1}².
-Vec2 coarse_sample(const Vec3& p, const fe::QuadCoords& X) {
-  Vec2 best = Vec2::Zero();
+/// Nearest of equally spaced samples of the reference facet: ξ ∈ {-1, -0.5, 0, 0.5, 1}² on
+/// quads, ξ ∈ {0, ¼, ½, ¾, 1}² with ξ^1 + ξ^2 ≤ 1 on triangles.
+Vec2 coarse_sample(const Vec3& p, const FacetCoords& X) {
+  const bool triangle = is_triangle(X.type());
+  Vec2 best = facet_centre(X.type());
   Real best_distance = std::numeric_limits<Real>::infinity();
   for (int i = 0; i < 5; ++i)
     for (int j = 0; j < 5; ++j) {
-      const Vec2 xi(-1 + 0.5 * i, -1 + 0.5 * j);
-      const Real d = (p - X.transpose() * fe::quad4_shape(xi)).norm();
+      if (triangle && i + j > 4)
+        continue;
+      const Vec2 xi = triangle ? Vec2(0.25 * i, 0.25 * j) : Vec2(-1 + 0.5 * i, -1 + 0.5 * j);
+      const Real d = (p - position_at(X, xi)).norm();
       if (d < best_distance) {
         best_distance = d;
         best = xi;
@@ -102,7 +111,7 @@ Vec2 coarse_sample(const Vec3& p, const fe::QuadCoords& X) {
   return best;
 }
 
-Projection interior_projection(const Vec3& p, const fe::QuadCoords& X, const Vec2& xi) {
+Projection interior_projection(const Vec3& p, const FacetCoords& X, const Vec2& xi) {
   const FacetPoint fp = evaluate_facet(X, xi);
   Projection pr;
   pr.xi = xi;
@@ -112,29 +121,82 @@ Projection interior_projection(const Vec3& p, const fe::QuadCoords& X, const Vec
   return pr;
 }
 
-/// Nearest point on the four (straight) facet edges: edge e runs from corner e to corner e+1.
-Projection boundary_projection(const Vec3& p, const fe::QuadCoords& X, Real h) {
+/// The edge curve x(u), u ∈ [0, 1], of edge e: straight between its corners A and B, or the
+/// parabola through A, its mid-edge node M (u = ½) and B.
+struct EdgeCurve {
+  Vec3 A, B, M;
+  bool curved = false;
+
+  Vec3 at(Real u) const {
+    return curved ? Vec3(A * (1 - u) * (1 - 2 * u) + 4 * u * (1 - u) * M + u * (2 * u - 1) * B)
+                  : Vec3(A + u * (B - A));
+  }
+  Vec3 tangent(Real u) const {
+    return curved ? Vec3(A * (4 * u - 3) + M * (4 - 8 * u) + B * (4 * u - 1)) : Vec3(B - A);
+  }
+  Vec3 second() const { return curved ? Vec3(4 * A - 8 * M + 4 * B) : Vec3::Zero(); }
+};
+
+EdgeCurve edge_curve(const FacetCoords& X, int e) {
+  const int corners = X.num_corners();
+  EdgeCurve c{X.node(e), X.node((e + 1) % corners), Vec3::Zero(), X.num_nodes() > corners};
+  if (c.curved)
+    c.M = X.node(corners + e);
+  return c;
+}
+
+/// Parameter u ∈ [0, 1] of the point of the edge curve nearest to p: closed form on a straight
+/// edge; on a curved one Newton on (p - x(u))·x_u = 0, clamped to [0, 1], from the nearest of
+/// nine samples.
+Real nearest_on_edge(const Vec3& p, const EdgeCurve& c) {
+  if (!c.curved) {
+    const Real len2 = (c.B - c.A).squaredNorm();
+    return len2 > 0 ? std::clamp((p - c.A).dot(c.B - c.A) / len2, 0.0, 1.0) : 0.0;
+  }
+  Real u = 0, best = std::numeric_limits<Real>::infinity();
+  for (int i = 0; i <= 8; ++i)
+    if (const Real d = (p - c.at(i / 8.0)).squaredNorm(); d < best) {
+      best = d;
+      u = i / 8.0;
+    }
+  for (int it = 0; it < 30; ++it) {
+    const Vec3 d = p - c.at(u), xu = c.tangent(u);
+    const Real g = -d.dot(xu), tt = xu.squaredNorm();
+    if (!(tt > 0))
+      break;
+    const Real H = tt - d.dot(c.second());
+    const Real next = std::clamp(u - g / (H > 0 ? H : tt), 0.0, 1.0);
+    const Real step = std::abs(next - u);
+    u = next;
+    if (step <= 1e-14)
+      break;
+  }
+  return u;
+}
+
+/// Nearest point on the edges of the facet.
+Projection boundary_projection(const Vec3& p, const FacetCoords& X, Real h) {
+  const mesh::FacetType type = X.type();
+  const int corners = X.num_corners();
   int best_edge = 0;
   Real best_u = 0, best_dist = std::numeric_limits<Real>::infinity();
-  for (int e = 0; e < 4; ++e) {
-    const Vec3 A = X.row(e).transpose(), B = X.row((e + 1) % 4).transpose();
-    const Real len2 = (B - A).squaredNorm();
-    const Real u = len2 > 0 ? std::clamp((p - A).dot(B - A) / len2, 0.0, 1.0) : 0.0;
-    const Real dist = (p - A - u * (B - A)).norm();
+  for (int e = 0; e < corners; ++e) {
+    const EdgeCurve c = edge_curve(X, e);
+    const Real u = nearest_on_edge(p, c);
+    const Real dist = (p - c.at(u)).norm();
     if (dist < best_dist) {
       best_dist = dist;
       best_edge = e;
       best_u = u;
     }
   }
-  const int free_dir = best_edge % 2 == 0 ? 0 : 1; // edges 0, 2 run along ξ^1; 1, 3 along ξ^2
-  const Vec2 c0 = facet_corner(best_edge), c1 = facet_corner((best_edge + 1) % 4);
   Projection pr;
   pr.on_boundary = true;
-  pr.xi = c0;
-  pr.xi[free_dir] = c0[free_dir] + best_u * (c1[free_dir] - c0[free_dir]);
-  pr.fixed[1 - free_dir] = true;
-  pr.fixed[free_dir] = best_u == 0.0 || best_u == 1.0;
+  pr.edge = best_edge;
+  pr.corner = best_u == 0.0 ? best_edge : best_u == 1.0 ? (best_edge + 1) % corners : -1;
+  pr.xi = pr.corner >= 0
+              ? facet_corner(type, pr.corner)
+              : Vec2(facet_corner(type, best_edge) + best_u * edge_direction(type, best_edge));
   const FacetPoint fp = evaluate_facet(X, pr.xi);
   const Vec3 d = p - fp.x;
   const Real dist = d.norm();
@@ -151,7 +213,7 @@ Projection boundary_projection(const Vec3& p, const fe::QuadCoords& X, Real h) {
 
 } // namespace
 
-std::optional<Projection> project_onto_facet(const Vec3& p, const fe::QuadCoords& X,
+std::optional<Projection> project_onto_facet(const Vec3& p, const FacetCoords& X,
                                              const ProjectionOptions& options) {
   const Real h = facet_size(X);
   if (!(h > 0) || !p.allFinite())
@@ -161,30 +223,35 @@ std::optional<Projection> project_onto_facet(const Vec3& p, const fe::QuadCoords
   Projection best = boundary_projection(p, X, h);
   const auto consider = [&](const NewtonResult& res) {
     if (res.status != NewtonStatus::Converged ||
-        res.xi.lpNorm<Eigen::Infinity>() > 1 + options.xi_tolerance)
+        !inside_facet(X.type(), res.xi, options.xi_tolerance))
       return;
     const Projection pr = interior_projection(p, X, res.xi);
     if (std::abs(pr.gap) <= std::abs(best.gap) + 1e-10 * h)
       best = pr;
   };
-  NewtonResult res = newton_closest_point(p, X, Vec2::Zero(), h, options.max_iterations);
+  NewtonResult res = newton_closest_point(p, X, facet_centre(X.type()), h, options.max_iterations);
   if (res.status == NewtonStatus::Failed)
-    res = newton_closest_point(p, X, facet_corner(nearest_corner(p, X)), h, options.max_iterations);
+    res = newton_closest_point(p, X, facet_corner(X.type(), nearest_corner(p, X)), h,
+                               options.max_iterations);
   consider(res);
   // Safeguard for strongly twisted facets (several stationary points): Newton again from the
   // nearest coarse sample unless it lies in the basin of the interior point already found.
   const Vec2 seed = coarse_sample(p, X);
-  if (best.on_boundary || (seed - best.xi).lpNorm<Eigen::Infinity>() > 0.5)
+  const Real basin = is_triangle(X.type()) ? 0.25 : 0.5; // an eighth of the facet
+  if (best.on_boundary || (seed - best.xi).lpNorm<Eigen::Infinity>() > basin)
     consider(newton_closest_point(p, X, seed, h, options.max_iterations));
   return best;
 }
 
 namespace {
 
-/// Lower bound of the distance from p to facet f: the distance to the box of its nodes (the
-/// bilinear patch lies in their convex hull).
-Real distance_bound(const Vec3& p, const fe::QuadCoords& X) {
-  const Vec3 lo = X.colwise().minCoeff().transpose(), hi = X.colwise().maxCoeff().transpose();
+/// Lower bound of the distance from p to facet f: the distance to the box of its nodes grown
+/// by twice its bulge (a linear or bilinear patch lies in the convex hull of its corners, a
+/// quadratic one within twice its largest mid-edge offset of the bilinear or linear patch).
+Real distance_bound(const Vec3& p, const FacetCoords& X) {
+  const Real grow = 2 * facet_bulge(X);
+  const Vec3 lo = X.x.colwise().minCoeff().transpose().array() - grow;
+  const Vec3 hi = X.x.colwise().maxCoeff().transpose().array() + grow;
   return (p - p.cwiseMax(lo).cwiseMin(hi)).norm();
 }
 
@@ -210,7 +277,7 @@ std::optional<Projection> select(const Vec3& p, const ContactSurface& surface,
   std::sort(order.begin(), order.end());
   std::optional<Projection> best;
   for (const auto& [bound, f] : order) {
-    const fe::QuadCoords X = surface.coords(f, x);
+    const FacetCoords X = surface.coords(f, x);
     const Real tie = 1e-10 * facet_size(X);
     if (bound > options.search_distance || (best && bound > std::abs(best->gap) + tie))
       break;
@@ -219,7 +286,7 @@ std::optional<Projection> select(const Vec3& p, const ContactSurface& surface,
       continue;
     pr->facet = f;
     if (pr->on_boundary)
-      pr->on_free_boundary = surface.on_free_boundary(f, pr->xi, pr->fixed);
+      pr->on_free_boundary = surface.on_free_boundary(f, pr->edge, pr->corner);
     if (!best || better(*pr, *best, tie))
       best = pr;
   }

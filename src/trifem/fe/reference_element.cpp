@@ -393,6 +393,65 @@ FacetShapeGrads ReferenceFacet::shape_grad(const Vec2& s) const {
   unknown_type(static_cast<int>(type_));
 }
 
+namespace {
+
+/// Second derivatives of the quadratic triangle: 4 dL_i (x) dL_i at the corners and
+/// 4 (dL_i (x) dL_j + dL_j (x) dL_i) at the midpoint of edge (i, j).
+FacetShapeHessians tri6_hessian() {
+  const auto dL = barycentric_grad<2>();
+  const auto row = [&](int i, int j) {
+    return Eigen::RowVector3d(2 * dL(i, 0) * dL(j, 0), 2 * dL(i, 1) * dL(j, 1),
+                              dL(i, 0) * dL(j, 1) + dL(j, 0) * dL(i, 1));
+  };
+  FacetShapeHessians H(6, 3);
+  for (int i = 0; i < 3; ++i)
+    H.row(i) = 2.0 * row(i, i);
+  const auto edges = mesh::mid_edges(FacetType::Tri6);
+  for (std::size_t e = 0; e < edges.size(); ++e)
+    H.row(3 + static_cast<Index>(e)) = 4.0 * row(edges[e][0], edges[e][1]);
+  return H;
+}
+
+/// Second derivatives of the serendipity square (corners first), f_m = 1 + s_m r_m: at corner
+/// r, (f_2/2, f_1/2, r_1 r_2 (s.r - 1 + f_1 + f_2)/4); at the mid-edge node with r_k = 0,
+/// N = (1 - s_k^2) f_o/2: N_,kk = -f_o, N_,oo = 0, N_,ko = -s_k r_o.
+FacetShapeHessians quad8_hessian(const Vec2& s, const FacetNodeCoords& nodes) {
+  FacetShapeHessians H(8, 3);
+  for (Index a = 0; a < 8; ++a) {
+    const Vec2 r = nodes.row(a).transpose();
+    const Vec2 f = Vec2::Ones() + s.cwiseProduct(r);
+    if (a < 4) {
+      H.row(a) << 0.5 * f[1], 0.5 * f[0], 0.25 * r[0] * r[1] * (s.dot(r) - 1 + f[0] + f[1]);
+      continue;
+    }
+    const int k = r[0] == 0.0 ? 0 : 1, o = 1 - k;
+    H.row(a).setZero();
+    H(a, k) = -f[o];
+    H(a, 2) = -s[k] * r[o];
+  }
+  return H;
+}
+
+} // namespace
+
+FacetShapeHessians ReferenceFacet::shape_hessian(const Vec2& s) const {
+  switch (type_) {
+  case FacetType::Tri3:
+    return FacetShapeHessians::Zero(3, 3);
+  case FacetType::Tri6:
+    return tri6_hessian();
+  case FacetType::Quad4: {
+    FacetShapeHessians H = FacetShapeHessians::Zero(4, 3);
+    for (Index a = 0; a < 4; ++a)
+      H(a, 2) = 0.25 * nodes_(a, 0) * nodes_(a, 1);
+    return H;
+  }
+  case FacetType::Quad8:
+    return quad8_hessian(s, nodes_);
+  }
+  unknown_type(static_cast<int>(type_));
+}
+
 const ReferenceCell& reference_cell(CellType type) {
   // in the order of the enumerators
   static const std::array<ReferenceCell, 5> cells = {

@@ -56,6 +56,8 @@ using CellNodeCoords = Eigen::Matrix<Real, Eigen::Dynamic, 3, 0, kMaxCellNodes, 
 using FacetShapeValues = Eigen::Matrix<Real, Eigen::Dynamic, 1, 0, kMaxFacetNodes, 1>;
 /// Row a = dN_a/ds.
 using FacetShapeGrads = Eigen::Matrix<Real, Eigen::Dynamic, 2, 0, kMaxFacetNodes, 2>;
+/// Row a = (d²N_a/ds1², d²N_a/ds2², d²N_a/ds1 ds2).
+using FacetShapeHessians = Eigen::Matrix<Real, Eigen::Dynamic, 3, 0, kMaxFacetNodes, 3>;
 /// Row a = coordinates of node a.
 using FacetNodeCoords = Eigen::Matrix<Real, Eigen::Dynamic, 2, 0, kMaxFacetNodes, 2>;
 
@@ -121,6 +123,9 @@ public:
   FacetShapeValues shape(const Vec2& s) const;
   /// Row a = dN_a/ds.
   FacetShapeGrads shape_grad(const Vec2& s) const;
+  /// Row a = (N_a,11, N_a,22, N_a,12): zero for tri3, N_a,12 only for quad4 (what the
+  /// curvature of a contact facet and its closest-point projection need).
+  FacetShapeHessians shape_hessian(const Vec2& s) const;
   /// The default rule, exact to degree 2 x order: tri3 3 points, tri6 6 points of degree 4,
   /// quad4 2x2 Gauss, quad8 3x3 Gauss.
   const FacetRule& rule() const { return rule_; }

@@ -21,6 +21,17 @@ std::shared_ptr<const contact::ContactLaw> law(const Model& model) {
       contact::MixtureContactFields{f.u, f.w, f.j_plus, f.j_minus});
 }
 
+/// The surface `name` of a contact pair: any facets for solids; linear ones for mixtures (on
+/// tet10 and hex20 cells the fluxes are linear from the corners, and the flux continuity of
+/// the contact does not map its work onto them yet).
+const mesh::Surface& contact_surface(const Model& model, const std::string& name) {
+  if (!model.fields.w.valid())
+    return model.mesh.surface(name);
+  return linear_surface(model.mesh, name, "contact of biphasic or triphasic tissue",
+                        "the corner fluxes of quadratic cells do not carry the contact's flux "
+                        "continuity yet; contact of solids takes tri6 and quad8 facets");
+}
+
 /// A slave surface whose facets are this much larger than the master's is warned about.
 constexpr Real kCoarseSlave = 1.2;
 
@@ -124,7 +135,7 @@ void add_contact_fields(const io::CaseSpec& spec, Model& model) {
   for (std::size_t i = 0; i < spec.contacts.size(); ++i) {
     const io::ContactSpec& c = spec.contacts[i];
     const auto& slave = with_context(c.key + ".slave", [&]() -> const mesh::Surface& {
-      return quad4_surface(model.mesh, c.slave, "contact");
+      return contact_surface(model, c.slave);
     });
     const auto nodes = static_cast<Index>(mesh::surface_nodes(slave).size());
     // components: contact pressure [+ water potential [+ c_ref x ion potentials]]
@@ -139,7 +150,7 @@ std::vector<std::unique_ptr<physics::Term>> contact_terms(const io::CaseSpec& sp
   for (std::size_t i = 0; i < spec.contacts.size(); ++i) {
     const io::ContactSpec& c = spec.contacts[i];
     const mesh::Surface& master = with_context(c.key + ".master", [&]() -> const mesh::Surface& {
-      return quad4_surface(model.mesh, c.master, "contact");
+      return contact_surface(model, c.master);
     });
     const mesh::Surface& slave = model.mesh.surface(c.slave);
     contact::ContactSettings settings;

@@ -25,10 +25,10 @@ TEST(ContactSurface, NodesAndAdjacency) {
   EXPECT_EQ(s.edge_neighbour(0, 2), 3);
   EXPECT_EQ(s.edge_neighbour(0, 3), -1);
   EXPECT_EQ(s.edge_neighbour(4, 3), 3);
-  EXPECT_TRUE(s.on_free_boundary(0, Vec2(0.2, -1), {false, true}));
-  EXPECT_FALSE(s.on_free_boundary(0, Vec2(1, 0.2), {true, false}));
-  EXPECT_FALSE(s.on_free_boundary(4, Vec2(-1, -1), {true, true}));
-  EXPECT_TRUE(s.on_free_boundary(0, Vec2(1, -1), {true, true}));
+  EXPECT_TRUE(s.on_free_boundary(0, 0, -1));  // on edge 0
+  EXPECT_FALSE(s.on_free_boundary(0, 1, -1)); // on edge 1
+  EXPECT_FALSE(s.on_free_boundary(4, 0, 0));  // at corner 0 (edges 3 and 0)
+  EXPECT_TRUE(s.on_free_boundary(0, 0, 1));   // at corner 1 (edges 0 and 1)
 }
 
 TEST(ContactSurface, PositionsFromArrayOrCallable) {
@@ -38,34 +38,49 @@ TEST(ContactSurface, PositionsFromArrayOrCallable) {
   const NodePositions from_array(g.x);
   const NodePositions from_fn([&g](Index i) { return Vec3(g.x[i] + Vec3(1, 2, 3)); });
   for (Index f = 0; f < s.num_facets(); ++f) {
-    const fe::QuadCoords diff = s.coords(f, from_fn) - s.coords(f, from_array);
+    const FacetNodePositions diff = s.coords(f, from_fn).x - s.coords(f, from_array).x;
+    ASSERT_EQ(diff.rows(), 4);
     for (int a = 0; a < 4; ++a)
       EXPECT_LE((diff.row(a).transpose() - Vec3(1, 2, 3)).norm(), 1e-14);
   }
 }
 
-TEST(FacetGeometry, TangentsTwistAndNormalMatchDifferences) {
+/// Tangents, second derivatives and normal of random facets of `type` against differences.
+void expect_geometry_matches_differences(mesh::FacetType type, const Vec2& xi) {
   std::mt19937 rng(3);
   for (int k = 0; k < 10; ++k) {
-    const fe::QuadCoords X = test::warped_quad(rng);
-    const Vec2 xi(0.3, -0.6);
+    const FacetCoords X =
+        type == mesh::FacetType::Quad4 ? test::warped_quad(rng) : test::random_facet(type, rng);
     const FacetPoint p = evaluate_facet(X, xi);
     const Real h = 1e-5;
     for (int a = 0; a < 2; ++a) {
       const Vec2 e = h * Vec2::Unit(a);
       const Vec3 fd = (evaluate_facet(X, xi + e).x - evaluate_facet(X, xi - e).x) / (2 * h);
       EXPECT_LE((fd - p.t[a]).norm(), 1e-9);
+      for (int b = 0; b < 2; ++b) {
+        const Vec3 fd2 =
+            (evaluate_facet(X, xi + e).t[b] - evaluate_facet(X, xi - e).t[b]) / (2 * h);
+        EXPECT_LE((fd2 - p.second(a, b)).norm(), 1e-8) << mesh::name(type) << " " << a << b;
+      }
     }
-    const Vec2 e1 = h * Vec2::Unit(0);
-    const Vec3 fd12 = (evaluate_facet(X, xi + e1).t[1] - evaluate_facet(X, xi - e1).t[1]) / (2 * h);
-    EXPECT_LE((fd12 - p.x12).norm(), 1e-9);
     EXPECT_NEAR(p.normal.norm(), 1.0, 1e-14);
     EXPECT_NEAR(p.normal.dot(p.t[0]), 0.0, 1e-14);
     EXPECT_NEAR(p.normal.dot(p.t[1]), 0.0, 1e-14);
   }
+}
+
+TEST(FacetGeometry, TangentsSecondDerivativesAndNormalMatchDifferences) {
+  expect_geometry_matches_differences(mesh::FacetType::Quad4, Vec2(0.3, -0.6));
+  expect_geometry_matches_differences(mesh::FacetType::Quad8, Vec2(0.3, -0.6));
+  expect_geometry_matches_differences(mesh::FacetType::Tri3, Vec2(0.2, 0.5));
+  expect_geometry_matches_differences(mesh::FacetType::Tri6, Vec2(0.2, 0.5));
+}
+
+TEST(FacetGeometry, FlatFacetsHaveTheirNormalAndArea) {
   // Counter-clockwise flat square: outward normal +z.
-  fe::QuadCoords S;
-  S << 0, 0, 0, 2, 0, 0, 2, 2, 0, 0, 2, 0;
+  FacetNodePositions sq(4, 3);
+  sq << 0, 0, 0, 2, 0, 0, 2, 2, 0, 0, 2, 0;
+  const FacetCoords S(mesh::FacetType::Quad4, sq);
   EXPECT_LE((evaluate_facet(S, Vec2(0.1, 0.2)).normal - Vec3::UnitZ()).norm(), 1e-15);
   EXPECT_NEAR(evaluate_facet(S, Vec2::Zero()).jacobian, 1.0, 1e-15);
 }

@@ -16,8 +16,8 @@ TEST(Projection, RecoversXiAndGapOnWarpedQuads) {
   std::uniform_real_distribution<Real> u(-0.9, 0.9), g(0.005, 0.2);
   Real err_xi = 0, err_gap = 0, err_normal = 0, residual = 0;
   for (int q = 0; q < 50; ++q) {
-    const fe::QuadCoords X = test::warped_quad(rng);
-    ASSERT_GT(evaluate_facet(X, Vec2::Zero()).x12.norm(), 0.02); // really twisted
+    const FacetCoords X = test::warped_quad(rng);
+    ASSERT_GT(evaluate_facet(X, Vec2::Zero()).x2[2].norm(), 0.02); // really twisted
     for (int k = 0; k < 40; ++k) {
       const Vec2 xi0(u(rng), u(rng));
       const Real g0 = (k % 2 ? 1 : -1) * g(rng);
@@ -43,13 +43,50 @@ TEST(Projection, RecoversXiAndGapOnWarpedQuads) {
   EXPECT_LE(residual, 1e-13);
 }
 
-TEST(Projection, NeverFartherThanDenseSamplingIncludingOutsidePoints) {
+TEST(Projection, RecoversXiAndGapOnCurvedFacetsOfEveryType) {
+  for (const auto type : {mesh::FacetType::Tri3, mesh::FacetType::Tri6, mesh::FacetType::Quad8}) {
+    std::mt19937 rng(17);
+    std::uniform_real_distribution<Real> u(0.05, 0.9), g(0.005, 0.1);
+    Real err_xi = 0, err_gap = 0, residual = 0;
+    for (int q = 0; q < 30; ++q) {
+      const FacetCoords X = test::random_facet(type, rng);
+      for (int k = 0; k < 20; ++k) {
+        Vec2 xi0(u(rng), u(rng));
+        if (is_triangle(type) && xi0.sum() > 0.95)
+          xi0 *= 0.9 / xi0.sum();
+        if (!is_triangle(type))
+          xi0 = 2 * xi0 - Vec2::Ones();
+        const Real g0 = (k % 2 ? 1 : -1) * g(rng);
+        const FacetPoint fp = evaluate_facet(X, xi0);
+        const auto pr = project_onto_facet(fp.x + g0 * fp.normal, X);
+        ASSERT_TRUE(pr);
+        ASSERT_FALSE(pr->on_boundary) << mesh::name(type);
+        const FacetPoint at = evaluate_facet(X, pr->xi);
+        err_xi = std::max(err_xi, (pr->xi - xi0).lpNorm<Eigen::Infinity>());
+        err_gap = std::max(err_gap, std::abs(pr->gap - g0));
+        const Vec3 d = fp.x + g0 * fp.normal - at.x;
+        residual = std::max({residual, std::abs(d.dot(at.t[0])), std::abs(d.dot(at.t[1]))});
+      }
+    }
+    std::printf("[ projection ] %s: max |xi - xi0| %.2e, max |g - g0| %.2e, max |r| %.2e\n",
+                std::string(mesh::name(type)).c_str(), err_xi, err_gap, residual);
+    EXPECT_LE(err_xi, 1e-11) << mesh::name(type);
+    EXPECT_LE(err_gap, 1e-12) << mesh::name(type);
+    EXPECT_LE(residual, 1e-13) << mesh::name(type);
+  }
+}
+
+/// Projections onto random facets of `type` from points all around them (most beyond its
+/// edges): never farther than a dense sampling of the facet, and on it.
+void expect_never_farther_than_sampling(mesh::FacetType type) {
   std::mt19937 rng(12);
   std::uniform_real_distribution<Real> u(-1.2, 1.2);
   int boundary = 0;
   for (int q = 0; q < 40; ++q) {
-    const fe::QuadCoords X = test::warped_quad(rng, q % 2 ? 0.4 : 0.2);
-    const Vec3 c = evaluate_facet(X, Vec2::Zero()).x;
+    const FacetCoords X = type == mesh::FacetType::Quad4
+                              ? test::warped_quad(rng, q % 2 ? 0.4 : 0.2)
+                              : test::random_facet(type, rng, q % 2 ? 0.3 : 0.15);
+    const Vec3 c = evaluate_facet(X, facet_centre(type)).x;
     for (int k = 0; k < 25; ++k) {
       const Vec3 p = c + Vec3(u(rng), u(rng), u(rng));
       const auto pr = project_onto_facet(p, X);
@@ -59,10 +96,18 @@ TEST(Projection, NeverFartherThanDenseSamplingIncludingOutsidePoints) {
       EXPECT_LE(std::abs(pr->gap), ref + 1e-12);
       EXPECT_GE(std::abs(pr->gap), ref - 1e-6);
       EXPECT_LE((p - pr->point - pr->gap * pr->normal).norm(), 1e-12);
-      EXPECT_LE(pr->xi.lpNorm<Eigen::Infinity>(), 1 + 1e-6);
+      EXPECT_TRUE(inside_facet(type, pr->xi, 1e-6));
     }
   }
-  EXPECT_GT(boundary, 200); // most of these points lie outside the facet's normal prism
+  EXPECT_GT(boundary, 200) << mesh::name(type); // most points lie outside the normal prism
+}
+
+TEST(Projection, NeverFartherThanDenseSamplingIncludingOutsidePoints) {
+  for (const auto type : {mesh::FacetType::Quad4, mesh::FacetType::Tri3, mesh::FacetType::Tri6,
+                          mesh::FacetType::Quad8}) {
+    SCOPED_TRACE(mesh::name(type));
+    expect_never_farther_than_sampling(type);
+  }
 }
 
 namespace {
@@ -157,7 +202,7 @@ TEST(Projection, ConvexCornerOfABoxGivesTheCornerNode) {
   const auto pr = project(p, s, x, search);
   ASSERT_TRUE(pr);
   EXPECT_TRUE(pr->on_boundary);
-  EXPECT_TRUE(pr->fixed[0] && pr->fixed[1]);
+  EXPECT_GE(pr->corner, 0);
   EXPECT_FALSE(pr->on_free_boundary);
   EXPECT_LE((pr->point - Vec3::Ones()).norm(), 1e-15);
   EXPECT_NEAR(pr->gap, std::sqrt(0.01 + 0.04 + 0.09), 1e-15);

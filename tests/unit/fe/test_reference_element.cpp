@@ -603,6 +603,27 @@ TEST(ReferenceCell, ShapeFunctionsInterpolateLinearFieldsExactly) {
   for_every_cell([](const auto& cell) { expect_linear_fields_interpolated_exactly(cell); });
 }
 
+TEST(ReferenceFacet, ShapeHessiansMatchCentralDifferencesOfTheGradients) {
+  constexpr Real h = 1e-6;
+  UniformSource random(21);
+  for_every_facet([&](const fe::ReferenceFacet& facet) {
+    for (int i = 0; i < 20; ++i) {
+      const Vec2 s = random_point<2>(domain_of(facet), random);
+      const fe::FacetShapeHessians H = facet.shape_hessian(s);
+      ASSERT_EQ(H.rows(), facet.num_nodes());
+      for (int d = 0; d < 2; ++d) {
+        const Vec2 step = h * Vec2::Unit(d);
+        const Eigen::MatrixXd dG =
+            (facet.shape_grad(s + step) - facet.shape_grad(s - step)) / (2 * h);
+        // column d of dG: N_,0d and N_,1d; H holds (N_,00, N_,11, N_,01)
+        EXPECT_LE((dG.col(d) - H.col(d)).cwiseAbs().maxCoeff(), 1e-8) << mesh::name(facet.type());
+        EXPECT_LE((dG.col(1 - d) - H.col(2)).cwiseAbs().maxCoeff(), 1e-8)
+            << mesh::name(facet.type());
+      }
+    }
+  });
+}
+
 TEST(ReferenceFacet, ShapeFunctionsInterpolateLinearFieldsExactly) {
   for_every_facet([](const auto& facet) { expect_linear_fields_interpolated_exactly(facet); });
 }

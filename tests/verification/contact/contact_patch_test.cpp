@@ -6,6 +6,7 @@
 // both bodies, and every contact pressure t_k = -q. The both-surface integration reproduces it
 // to round-off; the conventional slave-node point-force NTS does not (negative control).
 #include "contact_model.hpp"
+#include "trifem/mesh/convert_cells.hpp"
 #include "trifem/physics/surface_load_term.hpp"
 
 #include <gtest/gtest.h>
@@ -22,6 +23,8 @@ struct PatchCase {
   bool upper_is_slave = true;
   Real offset = 0; ///< the upper mesh is slid by this fraction of an element
   contact::Integration integration = contact::Integration::BothSurfaces;
+  /// Cells of the lower and upper blocks (tet4: tri3 facets, tet10: tri6, hex20: quad8).
+  mesh::CellType lower_cells = mesh::CellType::Hex8, upper_cells = mesh::CellType::Hex8;
 };
 
 struct PatchResult {
@@ -33,21 +36,25 @@ struct PatchResult {
 };
 
 std::string describe(const PatchCase& c) {
-  return fmt::format("{} {} on {}{}, {} slave, offset {}",
-                     c.integration == contact::Integration::BothSurfaces ? "both-surfaces"
-                                                                         : "slave-nodes",
-                     c.upper, c.lower, c.three_d ? " (3-D)" : " (2-D)",
-                     c.upper_is_slave ? "upper" : "lower", c.offset);
+  return fmt::format(
+      "{} {} {} on {} {}{}, {} slave, offset {}",
+      c.integration == contact::Integration::BothSurfaces ? "both-surfaces" : "slave-nodes",
+      c.upper, mesh::name(c.upper_cells), c.lower, mesh::name(c.lower_cells),
+      c.three_d ? " (3-D)" : " (2-D)", c.upper_is_slave ? "upper" : "lower", c.offset);
 }
 
 mesh::Mesh patch_mesh(const PatchCase& c) {
   const auto lateral = [&](int n, Real offset) {
     return c.three_d ? test::shifted_coordinates(0, 1, n, offset) : std::vector<Real>{0, 1};
   };
-  mesh::Mesh mesh = test::make_block("lower", test::shifted_coordinates(0, 1, c.lower), {0, 0.5, 1},
-                                     lateral(c.lower, 0));
-  mesh.append(test::make_block("upper", test::shifted_coordinates(0, 1, c.upper, c.offset),
-                               {1, 1.5, 2}, lateral(c.upper, 0.6 * c.offset)));
+  mesh::Mesh mesh =
+      mesh::convert_cells(test::make_block("lower", test::shifted_coordinates(0, 1, c.lower),
+                                           {0, 0.5, 1}, lateral(c.lower, 0)),
+                          c.lower_cells);
+  mesh.append(mesh::convert_cells(
+      test::make_block("upper", test::shifted_coordinates(0, 1, c.upper, c.offset), {1, 1.5, 2},
+                       lateral(c.upper, 0.6 * c.offset)),
+      c.upper_cells));
   return mesh;
 }
 
@@ -161,4 +168,23 @@ TEST(ContactPatch, SlaveNodesFails2D4on7) {
 }
 TEST(ContactPatch, SlaveNodesFails3D3x3on4x4) {
   expect_failure({.lower = 4, .upper = 3, .three_d = true});
+}
+
+// The cell families (issue 37): tri3 (tet4), tri6 (tet10) and quad8 (hex20) facets on either
+// side, against quad4 or each other; 3-D, both master/slave choices, matching and slid meshes.
+TEST(ContactPatch, BothSurfacesTri3FacetsOnQuad4) {
+  expect_exact({.lower = 4, .upper = 3, .three_d = true, .upper_cells = mesh::CellType::Tet4});
+}
+TEST(ContactPatch, BothSurfacesQuad4OnTri6Facets) {
+  expect_exact({.lower = 3, .upper = 4, .three_d = true, .lower_cells = mesh::CellType::Tet10});
+}
+TEST(ContactPatch, BothSurfacesQuad8FacetsOnTri6) {
+  expect_exact({.lower = 3,
+                .upper = 2,
+                .three_d = true,
+                .lower_cells = mesh::CellType::Tet10,
+                .upper_cells = mesh::CellType::Hex20});
+}
+TEST(ContactPatch, BothSurfacesQuad8FacetsOnQuad4In2D) {
+  expect_exact({.lower = 4, .upper = 3, .upper_cells = mesh::CellType::Hex20});
 }

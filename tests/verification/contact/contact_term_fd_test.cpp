@@ -9,6 +9,7 @@
 #include "contact_model.hpp"
 
 #include "dense_assembly.hpp"
+#include "trifem/mesh/convert_cells.hpp"
 
 #include <gtest/gtest.h>
 
@@ -23,6 +24,7 @@ struct Layout {
   const char* name;
   std::vector<Real> master; ///< x (= z) node coordinates of the master block
   std::vector<Real> slave;  ///< x (= z) node coordinates of the slave block
+  mesh::CellType master_cells = mesh::CellType::Hex8, slave_cells = mesh::CellType::Hex8;
 };
 
 struct Setup {
@@ -36,8 +38,10 @@ struct Setup {
 std::unique_ptr<Setup> make_setup(const Layout& layout, contact::Integration integration,
                                   unsigned seed) {
   auto s = std::make_unique<Setup>();
-  s->mesh = test::make_block("master", layout.master, {-0.5, 0.0}, layout.master);
-  s->mesh.append(test::make_block("slave", layout.slave, {0.0, 0.5}, layout.slave));
+  s->mesh = mesh::convert_cells(
+      test::make_block("master", layout.master, {-0.5, 0.0}, layout.master), layout.master_cells);
+  s->mesh.append(mesh::convert_cells(
+      test::make_block("slave", layout.slave, {0.0, 0.5}, layout.slave), layout.slave_cells));
   s->u = s->dofs.add_field("displacement", FieldRole::displacement, s->mesh.num_nodes(), 3);
   const auto ns = static_cast<Index>(s->mesh.node_set("slave.ymin").size());
   s->lambda = s->dofs.add_field("contact_pressure", FieldRole::multiplier, ns, 1);
@@ -70,17 +74,23 @@ bool assemble(contact::ContactTerm& term, const Vector& x, Vector& R, Eigen::Mat
   return test::assemble_dense(term, x, 1.0, R, K);
 }
 
-/// Smallest distance of a projection's ξ to the facet edges (±1), over all projections.
+/// Smallest distance of an interior projection's ξ to the edges of its reference facet, over
+/// all projections.
 Real edge_margin(const contact::ContactTerm& term) {
   Real margin = 1;
-  const auto visit = [&](const std::optional<contact::Projection>& pr) {
-    if (pr && !pr->on_boundary)
-      margin = std::min(margin, 1 - pr->xi.cwiseAbs().maxCoeff());
+  const auto visit = [&](const std::optional<contact::Projection>& pr,
+                         const contact::ContactSurface& onto) {
+    if (!pr || pr->on_boundary)
+      return;
+    const Vec2& xi = pr->xi;
+    margin = std::min(margin, contact::is_triangle(onto.facet_type(pr->facet))
+                                  ? std::min({xi[0], xi[1], 1 - xi.sum()})
+                                  : 1 - xi.cwiseAbs().maxCoeff());
   };
   for (Index k = 0; k < term.slave().num_nodes(); ++k)
-    visit(term.slave_projection(k));
+    visit(term.slave_projection(k), term.master());
   for (Index i = 0; i < term.master().num_nodes(); ++i)
-    visit(term.master_projection(i));
+    visit(term.master_projection(i), term.slave());
   return margin;
 }
 
@@ -91,7 +101,7 @@ void check(const Layout& layout, contact::Integration integration, const char* o
   assemble(*s->term, s->x, R, &K);
   for (Index k = 0; k < s->term->slave().num_nodes(); ++k) {
     const auto& pr = s->term->slave_projection(k);
-    ASSERT_TRUE(pr && !pr->on_boundary) << "slave node " << k << " must project inside";
+    ASSERT_TRUE(pr && !pr->on_free_boundary) << "slave node " << k << " must project onto it";
   }
   std::set<Index> master_targets; // slave facets that interior master nodes project onto
   for (Index i = 0; i < s->term->master().num_nodes(); ++i) {
@@ -125,6 +135,23 @@ void check(const Layout& layout, contact::Integration integration, const char* o
 
 const Layout kInterior{"interior", {-0.25, 0.25, 0.75, 1.25}, {0.0, 0.5, 1.0}};
 const Layout kNearEdges{"near-edges", {-0.25, 0.25, 0.75, 1.25}, {0.0, 0.24, 0.5, 0.77, 1.0}};
+// The cell families: curved tri6 slave facets on quad8 master facets, tri3 on tri6, quad8 on
+// tri3.
+const Layout kTri6OnQuad8{"tri6/quad8",
+                          {-0.25, 0.25, 0.75, 1.25},
+                          {0.0, 0.5, 1.0},
+                          mesh::CellType::Hex20,
+                          mesh::CellType::Tet10};
+const Layout kTri3OnTri6{"tri3/tri6",
+                         {-0.25, 0.25, 0.75, 1.25},
+                         {0.0, 0.5, 1.0},
+                         mesh::CellType::Tet10,
+                         mesh::CellType::Tet4};
+const Layout kQuad8OnTri3{"quad8/tri3",
+                          {-0.25, 0.25, 0.75, 1.25},
+                          {0.0, 0.5, 1.0},
+                          mesh::CellType::Tet4,
+                          mesh::CellType::Hex20};
 
 } // namespace
 
@@ -139,4 +166,16 @@ TEST(ContactTermTangent, SlaveNodesInterior) {
 }
 TEST(ContactTermTangent, SlaveNodesNearFacetEdges) {
   check(kNearEdges, contact::Integration::SlaveNodes, "slave-nodes");
+}
+TEST(ContactTermTangent, BothSurfacesTri6SlaveOnQuad8Master) {
+  check(kTri6OnQuad8, contact::Integration::BothSurfaces, "both");
+}
+TEST(ContactTermTangent, BothSurfacesTri3SlaveOnTri6Master) {
+  check(kTri3OnTri6, contact::Integration::BothSurfaces, "both");
+}
+TEST(ContactTermTangent, BothSurfacesQuad8SlaveOnTri3Master) {
+  check(kQuad8OnTri3, contact::Integration::BothSurfaces, "both");
+}
+TEST(ContactTermTangent, SlaveNodesTri6SlaveOnQuad8Master) {
+  check(kTri6OnQuad8, contact::Integration::SlaveNodes, "slave-nodes");
 }

@@ -7,6 +7,7 @@
 #include "trifem/contact/mixture_contact_law.hpp"
 
 #include "dense_assembly.hpp"
+#include "trifem/mesh/convert_cells.hpp"
 
 #include <gtest/gtest.h>
 
@@ -28,10 +29,11 @@ struct Setup {
 };
 
 std::unique_ptr<Setup> make_setup(const std::vector<Real>& master, const std::vector<Real>& slave,
-                                  bool ions, contact::Integration integration) {
+                                  bool ions, contact::Integration integration,
+                                  mesh::CellType cells) {
   auto s = std::make_unique<Setup>();
-  s->mesh = test::make_block("master", master, {-0.5, 0.0}, master);
-  s->mesh.append(test::make_block("slave", slave, {0.0, 0.5}, slave));
+  s->mesh = mesh::convert_cells(test::make_block("master", master, {-0.5, 0.0}, master), cells);
+  s->mesh.append(mesh::convert_cells(test::make_block("slave", slave, {0.0, 0.5}, slave), cells));
   const Index nn = s->mesh.num_nodes();
   s->f.u = s->dofs.add_field("displacement", FieldRole::displacement, nn, 3);
   s->f.w = s->dofs.add_field("fluid_flux", FieldRole::flux, nn, 3);
@@ -76,8 +78,9 @@ bool assemble(contact::ContactTerm& term, const Vector& x, Vector& R, Eigen::Mat
 }
 
 void check(const char* name, const std::vector<Real>& master, const std::vector<Real>& slave,
-           bool ions, contact::Integration integration = contact::Integration::BothSurfaces) {
-  auto s = make_setup(master, slave, ions, integration);
+           bool ions, contact::Integration integration = contact::Integration::BothSurfaces,
+           mesh::CellType cells = mesh::CellType::Hex8) {
+  auto s = make_setup(master, slave, ions, integration, cells);
   Vector R, Rp, Rm;
   Eigen::MatrixXd K;
   assemble(*s->term, s->x, R, &K);
@@ -124,4 +127,13 @@ TEST(MixtureContactTangent, TriphasicNearFacetEdges) {
 }
 TEST(MixtureContactTangent, TriphasicSlaveNodes) {
   check("slave-nodes", kMaster, kSlave, true, contact::Integration::SlaveNodes);
+}
+// tri3 facets (the faces of tet4 cells; at the model level those of penta6 cells carry
+// mixture contact) on both sides.
+TEST(MixtureContactTangent, TriphasicOnTri3Facets) {
+  check("tri3", kMaster, kSlave, true, contact::Integration::BothSurfaces, mesh::CellType::Tet4);
+}
+TEST(MixtureContactTangent, BiphasicOnTri3FacetsNearEdges) {
+  check("tri3 edges", kMaster, kSlaveNearEdges, false, contact::Integration::BothSurfaces,
+        mesh::CellType::Tet4);
 }

@@ -30,9 +30,14 @@ io::DataArray scalar_array(std::string name, const std::vector<SlaveNodeState>& 
 Real normal_component(const model::Model& model, dofs::FieldId f, const SlaveNodeState& s,
                       Real scale) {
   const Vector& x = model.problem->state();
-  Vec3 v;
-  for (int k = 0; k < 3; ++k)
-    v[k] = x[model.dofs.dof(f, s.node, k)];
+  const auto value = [&](Index node) {
+    return Vec3(x[model.dofs.dof(f, node, 0)], x[model.dofs.dof(f, node, 1)],
+                x[model.dofs.dof(f, node, 2)]);
+  };
+  // (the fluxes of quadratic cells are linear from the corners: at a mid-edge node, their mean)
+  const Vec3 v = s.edge_corners[0] >= 0
+                     ? Vec3(0.5 * (value(s.edge_corners[0]) + value(s.edge_corners[1])))
+                     : value(s.node);
   return scale * v.dot(s.normal);
 }
 

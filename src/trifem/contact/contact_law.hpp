@@ -20,12 +20,15 @@ namespace trifem::contact {
 /// ContactLaw::constraint_fields(); their DOFs at `nodes` are then part of the stencil and can
 /// be read from `state` and located with LocalSystem::at(dofs->dof(field, node, i)).
 struct SlaveNodeRows {
-  Index slave = -1;                                   ///< k: index into the slave surface's nodes
-  StencilNodes nodes;                                 ///< mesh nodes (x_s, master facet nodes)
-  const physics::EvalState* state = nullptr;          ///< the evaluated state (all DOFs)
-  const dofs::DofMap* dofs = nullptr;                 ///< DOF numbering of `state`
-  const Projection* projection = nullptr;             ///< onto the master surface (null: none)
-  const fe::ReferenceFacet* facet = nullptr;          ///< of the master facet projected onto
+  Index slave = -1;                                    ///< k: index into the slave surface's nodes
+  StencilNodes nodes;                                  ///< mesh nodes (x_s, master facet nodes)
+  const physics::EvalState* state = nullptr;           ///< the evaluated state (all DOFs)
+  const dofs::DofMap* dofs = nullptr;                  ///< DOF numbering of `state`
+  const Projection* projection = nullptr;              ///< onto the master surface (null: none)
+  mesh::FacetType facet_type = mesh::FacetType::Quad4; ///< of the master facet projected onto
+  /// A mid-edge node of a quadratic slave surface: the components interpolated from the
+  /// corners (ContactLaw::corner_interpolated) have no constraint there (their rows hold λ = 0).
+  bool mid_edge = false;
   const ProjectionDerivatives* derivatives = nullptr; ///< of *projection (null: none)
   Real weight = 0;      ///< A_k = ∫_slave M_k dA (reference tributary area; a fixed row weight)
   Real scale = 1;       ///< c_N > 0 [stress/length]: the complementarity scaling
@@ -61,6 +64,10 @@ public:
   /// of the term that owns those rows (1 for momentum rows; -Δt for the -Δt-scaled mixture flux
   /// rows, so that R_{F_c,a} += Δt ∫ N_a λ_c n da there). `dt` is the step size.
   virtual Real work_factor(int /*c*/, Real /*dt*/) const { return 1; }
+  /// Whether component c and its paired field are interpolated linearly from the corners on
+  /// quadratic facets (the fluxes of tet10 and hex20 cells): its multiplier then lives on the
+  /// corner slave nodes only, and its interface work acts through the corners' linear functions.
+  virtual bool corner_interpolated(int /*c*/) const { return false; }
   /// Further nodal vector fields the constraint rows depend on at the slave node and the
   /// master facet nodes (positions are always available).
   virtual std::vector<dofs::FieldId> constraint_fields() const { return {}; }

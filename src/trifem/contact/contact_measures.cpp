@@ -53,8 +53,13 @@ std::vector<SlaveNodeState> ContactTerm::slave_states(const Vector& x) const {
     s.active = active_.active(k);
     set_projection(projections[k], s);
     s.multiplier.resize(law_->num_components());
+    const std::array<Index, 2> ends = slave_.edge_corners(k);
     for (int c = 0; c < law_->num_components(); ++c)
-      s.multiplier[c] = x[multiplier_dof(k, c)];
+      s.multiplier[c] = ends[0] >= 0 && law_->corner_interpolated(c)
+                            ? 0.5 * (x[multiplier_dof(ends[0], c)] + x[multiplier_dof(ends[1], c)])
+                            : x[multiplier_dof(k, c)];
+    if (ends[0] >= 0)
+      s.edge_corners = {slave_.nodes()[ends[0]], slave_.nodes()[ends[1]]};
   }
   return states;
 }

@@ -34,6 +34,19 @@ std::span<const Index> ContactSurface::node_facets(Index k) const {
 void ContactSurface::build_adjacency() {
   build_node_facets();
   build_edge_neighbours();
+  build_edge_corners();
+}
+
+void ContactSurface::build_edge_corners() {
+  edge_corners_.assign(nodes_.size(), {-1, -1});
+  for (Index f = 0; f < num_facets(); ++f) {
+    const mesh::Facet& facet = facets_[f];
+    const int corners = facet.num_corners();
+    has_quadratic_facets_ = has_quadratic_facets_ || facet.num_nodes() > corners;
+    for (int e = 0; e < facet.num_nodes() - corners; ++e)
+      edge_corners_[local_node(facet.node(corners + e))] = {
+          local_node(facet.nodes[e]), local_node(facet.nodes[(e + 1) % corners])};
+  }
 }
 
 void ContactSurface::build_node_facets() {

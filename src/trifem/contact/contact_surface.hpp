@@ -57,6 +57,13 @@ public:
   /// Sorted unique mesh node indices of the surface (corners and mid-edge nodes).
   const std::vector<Index>& nodes() const { return nodes_; }
   Index num_nodes() const { return static_cast<Index>(nodes_.size()); }
+  /// The two corners (indices into nodes()) of the facet edge whose mid-edge node is surface
+  /// node k, or {-1, -1} if k is a corner (of every facet it belongs to).
+  std::array<Index, 2> edge_corners(Index k) const { return edge_corners_[k]; }
+  bool is_mid_edge_node(Index k) const { return edge_corners_[k][0] >= 0; }
+  /// True if a facet of the surface is quadratic (tri6, quad8).
+  bool has_quadratic_facets() const { return has_quadratic_facets_; }
+
   /// Position of mesh node `mesh_node` in nodes(), or -1 if it is not on this surface.
   Index local_node(Index mesh_node) const;
   /// Facets incident to surface node k (k indexes nodes()), ascending.
@@ -80,6 +87,7 @@ private:
   void build_adjacency();
   void build_node_facets();
   void build_edge_neighbours();
+  void build_edge_corners();
 
   std::vector<mesh::Facet> facets_;
   std::vector<Index> facet_offsets_ = {0}; ///< facet f's nodes: facet_node_list_[offsets f..f+1)
@@ -88,7 +96,9 @@ private:
   std::vector<Index> nodes_;
   std::vector<Index> node_facet_offsets_; ///< CSR offsets into node_facet_list_
   std::vector<Index> node_facet_list_;
-  std::vector<Index> edge_neighbours_; ///< 4 per facet
+  std::vector<Index> edge_neighbours_;             ///< 4 per facet
+  std::vector<std::array<Index, 2>> edge_corners_; ///< per surface node
+  bool has_quadratic_facets_ = false;
 };
 
 } // namespace trifem::contact

@@ -58,6 +58,14 @@ ContactTerm::ContactTerm(const mesh::Mesh& mesh, const dofs::DofMap& dofs,
                info.components);
   TRIFEM_CHECK(settings_.scale > 0, "contact: the scale c_N = {} must be > 0 (≈ E/h)",
                settings_.scale);
+  bool corner_fields = false;
+  for (int c = 0; c < law_->num_components(); ++c)
+    corner_fields = corner_fields || law_->corner_interpolated(c);
+  TRIFEM_CHECK(!(corner_fields && settings_.integration == Integration::SlaveNodes &&
+                 (master_.has_quadratic_facets() || slave_.has_quadratic_facets())),
+               "contact: the slave-node integration of the {} law takes linear facets only "
+               "(its fields are linear from the corners of quadratic facets)",
+               law_->name());
   for (int c = 0; c < law_->num_components(); ++c)
     if (std::find(paired_.begin(), paired_.end(), law_->paired_field(c)) == paired_.end())
       paired_.push_back(law_->paired_field(c));
@@ -352,6 +360,7 @@ void ContactTerm::slave_node_rows(Index k, const physics::EvalState& state,
     node.multiplier[c] = state.x[multiplier_dof(k, c)];
   node.lambda_at = out.at(multiplier_dof(k, 0));
   node.wetted = active_.wetted(k);
+  node.mid_edge = slave_.is_mid_edge_node(k);
   const auto& pr = slave_proj_[k];
   ProjectionDerivatives d;
   if (pr) {
@@ -359,7 +368,7 @@ void ContactTerm::slave_node_rows(Index k, const physics::EvalState& state,
     for (int j = 0; j < node.nodes.size; ++j)
       node.x_at[j] = out.at(u_dof(node.nodes[j], 0));
     node.projection = &*pr;
-    node.facet = &fe::reference_facet(master_.facet_type(pr->facet));
+    node.facet_type = master_.facet_type(pr->facet);
   } else {
     node.nodes.nodes[0] = slave_.nodes()[k];
     node.nodes.size = 1;

@@ -68,7 +68,12 @@ struct SlaveNodeState {
   bool active = false;             ///< in the active set (of the last prepare())
   Real gap = 0;                    ///< g = (x - x^m(ξ))·n^m(ξ) [length]: ≥ 0 separated
   Vec3 master_normal = Vec3::Zero(); ///< n^m(ξ) at the projection (outward from the master)
-  Vector multiplier;                 ///< λ_k as stored (components and units: the ContactLaw)
+  Vector multiplier; ///< λ_k as stored (components and units: the ContactLaw); at a mid-edge
+                     ///< node the components interpolated from the corners (corner_interpolated)
+                     ///< hold the mean of the edge's corners
+  /// Mesh nodes of the corners of the edge whose mid-edge node this is ({-1, -1} at a corner):
+  /// a field interpolated from the corners takes there the mean of these.
+  std::array<Index, 2> edge_corners{-1, -1};
 };
 
 /// Contact of a master and a slave surface (fixed for the run: one pass), frictionless or

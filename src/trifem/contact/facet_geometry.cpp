@@ -59,6 +59,29 @@ Vec2 edge_direction(mesh::FacetType type, int e) {
   return facet_corner(type, (e + 1) % corners) - facet_corner(type, e);
 }
 
+mesh::FacetType corner_facet_type(mesh::FacetType type) {
+  switch (type) {
+  case mesh::FacetType::Tri6:
+    return mesh::FacetType::Tri3;
+  case mesh::FacetType::Quad8:
+    return mesh::FacetType::Quad4;
+  default:
+    return type;
+  }
+}
+
+fe::FacetShapeValues corner_shape(mesh::FacetType type, const Vec2& xi) {
+  fe::FacetShapeValues N = fe::FacetShapeValues::Zero(mesh::num_nodes(type));
+  N.head(mesh::num_corners(type)) = fe::reference_facet(corner_facet_type(type)).shape(xi);
+  return N;
+}
+
+fe::FacetShapeGrads corner_shape_grad(mesh::FacetType type, const Vec2& xi) {
+  fe::FacetShapeGrads G = fe::FacetShapeGrads::Zero(mesh::num_nodes(type), 2);
+  G.topRows(mesh::num_corners(type)) = fe::reference_facet(corner_facet_type(type)).shape_grad(xi);
+  return G;
+}
+
 Real facet_size(const FacetCoords& X) {
   Real h = 0;
   const int corners = X.num_corners();

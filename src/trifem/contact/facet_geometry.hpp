@@ -76,6 +76,18 @@ Real outside_distance(mesh::FacetType type, const Vec2& xi);
 /// u ∈ [0, 1], d_e = c_(e+1) - c_e (its mid-edge node, if any, at u = ½).
 Vec2 edge_direction(mesh::FacetType type, int e);
 
+/// The linear facet type of a facet's corners: tri3 for tri6, quad4 for quad8 (else itself).
+mesh::FacetType corner_facet_type(mesh::FacetType type);
+
+/// The corners' linear shape functions of a facet of `type` at ξ, as a vector over all its
+/// nodes (zero at the mid-edge nodes): how a field interpolated linearly from the corners (the
+/// fluxes of tet10 and hex20 cells) varies over a quadratic facet. The facet's own N_a on
+/// linear facets.
+fe::FacetShapeValues corner_shape(mesh::FacetType type, const Vec2& xi);
+
+/// Their gradients (row a = dL_a/dξ, zero rows at the mid-edge nodes).
+fe::FacetShapeGrads corner_shape_grad(mesh::FacetType type, const Vec2& xi);
+
 /// Diameter of the facet's corners: the longest distance between two of them (length unit).
 Real facet_size(const FacetCoords& X);
 

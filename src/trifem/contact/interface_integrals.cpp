@@ -26,12 +26,18 @@ Mat3 area_derivative(const FacetPoint& fp, Index b, Real w) {
 /// coordinates (x_i, slave facet nodes): Σ_b λ_{k_b} M_{b,β}(ζ_i) ∂ζ_i^β/∂x.
 struct MasterLink {
   bool linked = false;
-  fe::FacetShapeValues M;                       ///< M_b(ζ_i) = L_{i k_b}
-  Vector lambda;                                ///< λ^m_i (per component)
-  MultiplierRows dlambda;                       ///< ∂λ^m_i/∂(x_i, x_{s,b}) through ζ_i
+  fe::FacetShapeValues M;  ///< M_b(ζ_i) = L_{i k_b}
+  fe::FacetShapeValues Mc; ///< the same of the corner-interpolated components (corner_shape)
+  Vector lambda;           ///< λ^m_i (per component)
+  MultiplierRows dlambda;  ///< ∂λ^m_i/∂(x_i, x_{s,b}) through ζ_i
   std::array<Index, kMaxStencilPoints> x_at{};  ///< local position of x of the stencil points
   std::array<Index, fe::kMaxFacetNodes> l_at{}; ///< local position of λ component 0, node b
   int points = 0;                               ///< stencil points (1 + slave facet nodes)
+
+  /// M_b of component c.
+  const fe::FacetShapeValues& of(const ContactLaw& law, int c) const {
+    return law.corner_interpolated(c) ? Mc : M;
+  }
 };
 
 } // namespace
@@ -48,18 +54,22 @@ void ContactTerm::slave_facet_work(Index f, const Vector& x, Real dt, LocalSyste
   }
   for (const auto& qp : X.reference->rule().points) {
     const FacetPoint fp = evaluate_facet(X, qp.xi);
+    const fe::FacetShapeValues L = corner_shape(X.type(), qp.xi);
     for (int c = 0; c < lam.cols(); ++c) {
+      const fe::FacetShapeValues& S = law_->corner_interpolated(c) ? L : fp.N;
       const Real wc = law_->work_factor(c, dt) * qp.weight;
       const Vec3 r = wc * fp.t[0].cross(fp.t[1]);
-      const Real lc = fp.N.dot(lam.col(c));
+      const Real lc = S.dot(lam.col(c));
       for (Index a = 0; a < n; ++a) {
+        if (S[a] == 0.0)
+          continue; // a mid-edge node of a corner-interpolated field
         const Index row = out.at(dofs_.dof(law_->paired_field(c), nodes[a], 0));
-        out.r().segment<3>(row) -= fp.N[a] * lc * r;
+        out.r().segment<3>(row) -= S[a] * lc * r;
         if (!out.with_jacobian())
           continue;
         for (Index b = 0; b < n; ++b) {
-          out.K().block<3, 3>(row, x_at[b]) -= fp.N[a] * lc * area_derivative(fp, b, wc);
-          out.K().block<3, 1>(row, l_at[b] + c) -= fp.N[a] * fp.N[b] * r;
+          out.K().block<3, 3>(row, x_at[b]) -= S[a] * lc * area_derivative(fp, b, wc);
+          out.K().block<3, 1>(row, l_at[b] + c) -= S[a] * S[b] * r;
         }
       }
     }
@@ -81,9 +91,13 @@ void ContactTerm::master_facet_work(Index f, const Vector& x, Real dt, LocalSyst
     MasterLink& l = link[i];
     l.linked = true;
     const FacetMultipliers lam = facet_multipliers(pr->facet, x);
-    const fe::ReferenceFacet& zeta_facet = fe::reference_facet(slave_.facet_type(pr->facet));
+    const mesh::FacetType zeta_type = slave_.facet_type(pr->facet);
+    const fe::ReferenceFacet& zeta_facet = fe::reference_facet(zeta_type);
     l.M = zeta_facet.shape(pr->xi);
-    l.lambda = lam.transpose() * l.M;
+    l.Mc = corner_shape(zeta_type, pr->xi);
+    l.lambda.resize(C);
+    for (int c = 0; c < C; ++c)
+      l.lambda[c] = lam.col(c).dot(l.of(*law_, c));
     const StencilNodes stencil = stencil_nodes(nodes[i], slave_, pr->facet);
     l.points = stencil.size;
     for (int j = 0; j < stencil.size; ++j)
@@ -92,32 +106,41 @@ void ContactTerm::master_facet_work(Index f, const Vector& x, Real dt, LocalSyst
       l.l_at[b] = out.at(multiplier_dof(slave_facet_k_[pr->facet][b], 0));
     if (out.with_jacobian()) {
       const ProjectionDerivatives d = projection_derivatives(*pr, coords(slave_, pr->facet, x));
-      l.dlambda = lam.transpose() * zeta_facet.shape_grad(pr->xi) * d.dxi;
+      const fe::FacetShapeGrads G = zeta_facet.shape_grad(pr->xi);
+      const fe::FacetShapeGrads Gc = corner_shape_grad(zeta_type, pr->xi);
+      l.dlambda.resize(C, d.dxi.cols());
+      for (int c = 0; c < C; ++c)
+        l.dlambda.row(c) = lam.col(c).transpose() * (law_->corner_interpolated(c) ? Gc : G) * d.dxi;
     }
   }
   for (const auto& qp : X.reference->rule().points) {
     const FacetPoint fp = evaluate_facet(X, qp.xi);
-    Vector lm = Vector::Zero(C); // λ^m(ξ) = Σ_i N_i(ξ) λ^m_i
-    for (Index i = 0; i < n; ++i)
-      if (link[i].linked)
-        lm += fp.N[i] * link[i].lambda;
+    const fe::FacetShapeValues L = corner_shape(X.type(), qp.xi);
     for (int c = 0; c < C; ++c) {
+      const fe::FacetShapeValues& S = law_->corner_interpolated(c) ? L : fp.N;
+      Real lm = 0; // λ^m(ξ) = Σ_i S_i(ξ) λ^m_i
+      for (Index i = 0; i < n; ++i)
+        if (link[i].linked)
+          lm += S[i] * link[i].lambda[c];
       const Real wc = law_->work_factor(c, dt) * qp.weight;
       const Vec3 r = wc * fp.t[0].cross(fp.t[1]);
       for (Index a = 0; a < n; ++a) {
+        if (S[a] == 0.0)
+          continue; // a mid-edge node of a corner-interpolated field
         const Index row = out.at(dofs_.dof(law_->paired_field(c), nodes[a], 0));
-        out.r().segment<3>(row) -= fp.N[a] * lm[c] * r;
+        out.r().segment<3>(row) -= S[a] * lm * r;
         if (!out.with_jacobian())
           continue;
         for (Index b = 0; b < n; ++b)
-          out.K().block<3, 3>(row, x_at[b]) -= fp.N[a] * lm[c] * area_derivative(fp, b, wc);
+          out.K().block<3, 3>(row, x_at[b]) -= S[a] * lm * area_derivative(fp, b, wc);
         for (Index i = 0; i < n; ++i) {
           const MasterLink& l = link[i];
           if (!l.linked)
             continue;
-          const Vec3 coef = -fp.N[a] * fp.N[i] * r; // ∂R_a/∂λ^m_i
-          for (Index b = 0; b < l.M.size(); ++b)
-            out.K().block<3, 1>(row, l.l_at[b] + c) += coef * l.M[b];
+          const Vec3 coef = -S[a] * S[i] * r; // ∂R_a/∂λ^m_i
+          const fe::FacetShapeValues& M = l.of(*law_, c);
+          for (Index b = 0; b < M.size(); ++b)
+            out.K().block<3, 1>(row, l.l_at[b] + c) += coef * M[b];
           for (int j = 0; j < l.points; ++j)
             out.K().block<3, 3>(row, l.x_at[j]) += coef * l.dlambda.row(c).segment<3>(3 * j);
         }

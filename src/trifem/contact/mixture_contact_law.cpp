@@ -40,21 +40,21 @@ void MixtureContactLaw::flux_row(const SlaveNodeRows& node, int c, dofs::FieldId
   const Vector& x = node.state->x;
   const auto dof = [&](int j, int i) { return node.dofs->dof(F, node.nodes[j], i); };
   const int n = node.nodes.size - 1; // master facet nodes
-  const fe::ReferenceFacet& facet = *node.facet;
-  FacetNodeValues<3> fm(n, 3); // nodal values on the master facet
+  FacetNodeValues<3> fm(n, 3);       // nodal values on the master facet
   Vec3 fs;
   for (int i = 0; i < 3; ++i) {
     fs[i] = x[dof(0, i)];
     for (int a = 0; a < n; ++a)
       fm(a, i) = x[dof(1 + a, i)];
   }
-  const Vec3 jump = interpolate<3>(facet, fm, pr.xi) - fs;
+  // the fluxes are linear from the corners (quadratic facets: zero weight at mid-edge nodes)
+  const fe::FacetShapeValues N = corner_shape(node.facet_type, pr.xi);
+  const Vec3 jump = fm.transpose() * N - fs;
   const Real weight = node.dt * node.weight;
   const Index row = node.lambda_at + c;
   out.r()[row] += weight * jump.dot(pr.normal);
   if (!out.with_jacobian())
     return;
-  const fe::FacetShapeValues N = facet.shape(pr.xi);
   for (int i = 0; i < 3; ++i) {
     out.K()(row, out.at(dof(0, i))) -= weight * pr.normal[i];
     for (int a = 0; a < n; ++a)
@@ -62,7 +62,7 @@ void MixtureContactLaw::flux_row(const SlaveNodeRows& node, int c, dofs::FieldId
   }
   // through ξ and n: n·(Σ_a f_a N_{a,α}) ∂ξ^α/∂x + (f^m - f_s)·∂n/∂x
   const StencilRows<1> dx =
-      pr.normal.transpose() * interpolation_derivative<3>(facet, fm, pr.xi, d) +
+      pr.normal.transpose() * (fm.transpose() * corner_shape_grad(node.facet_type, pr.xi) * d.dxi) +
       jump.transpose() * d.dnormal;
   for (int j = 0; j <= n; ++j)
     for (int i = 0; i < 3; ++i)
@@ -71,7 +71,7 @@ void MixtureContactLaw::flux_row(const SlaveNodeRows& node, int c, dofs::FieldId
 
 void MixtureContactLaw::active_rows(const SlaveNodeRows& node, LocalSystem& out) const {
   normal_.active_rows(node, out);
-  if (node.wetted) {
+  if (node.wetted || node.mid_edge) { // (no flux unknowns at a mid-edge node: λ = 0 there)
     bath_rows(node, 1, out);
     return;
   }

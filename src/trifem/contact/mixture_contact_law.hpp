@@ -38,6 +38,8 @@ public:
   int num_components() const override { return triphasic() ? 4 : 2; }
   dofs::FieldId paired_field(int c) const override;
   Real work_factor(int c, Real dt) const override { return c == 0 ? 1.0 : -dt; }
+  /// The potentials' multipliers and the fluxes (c ≥ 1): linear from the corners.
+  bool corner_interpolated(int c) const override { return c >= 1; }
   std::vector<dofs::FieldId> constraint_fields() const override;
   Real indicator(const SlaveNodeRows& node) const override;
   bool wettable() const override { return true; }
@@ -47,7 +49,8 @@ public:
   bool triphasic() const { return f_.j_plus.valid(); }
 
 private:
-  /// G_c = Δt A_k (f^m(ξ_k) - f_s)·n of the flux field F on the λ component c.
+  /// G_c = Δt A_k (f^m(ξ_k) - f_s)·n of the flux field F on the λ component c, f^m
+  /// interpolated linearly from the master facet's corners.
   void flux_row(const SlaveNodeRows& node, int c, dofs::FieldId F, LocalSystem& out) const;
   /// (A_k / c_N) λ_k,c = 0 for the components c ≥ first.
   void bath_rows(const SlaveNodeRows& node, int first, LocalSystem& out) const;

@@ -109,17 +109,6 @@ const mesh::Surface& quad4_surface(const mesh::Mesh& mesh, const std::string& na
   return surface;
 }
 
-const mesh::Surface& linear_surface(const mesh::Mesh& mesh, const std::string& name,
-                                    std::string_view use, std::string_view why) {
-  const mesh::Surface& surface = mesh.surface(name);
-  for (const mesh::Facet& f : surface.facets)
-    TRIFEM_CHECK(f.type == mesh::FacetType::Quad4 || f.type == mesh::FacetType::Tri3,
-                 "the surface '{}' has {} facets (faces of {}): {} takes linear facets (tri3, "
-                 "quad4) so far ({})",
-                 name, mesh::name(f.type), describe(mesh, f.cell), use, why);
-  return surface;
-}
-
 physics::SolidElement cell_element(const Model& model, Index c) {
   // (a tet4 has one strain: its mean-dilatation element is its displacement element)
   return model.mesh.cell_type(c) == mesh::CellType::Tet4

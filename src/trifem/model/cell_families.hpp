@@ -24,12 +24,6 @@ void check_cell_families(const io::CaseSpec& spec, const Model& model);
 const mesh::Surface& quad4_surface(const mesh::Mesh& mesh, const std::string& name,
                                    std::string_view use);
 
-/// The surface `name` of the mesh for `use`, whose kernels take linear facets (tri3, quad4) so
-/// far: InputError if one of its facets is a tri6 or quad8 (the face of a tet10 or hex20 cell),
-/// naming the reason `why`.
-const mesh::Surface& linear_surface(const mesh::Mesh& mesh, const std::string& name,
-                                    std::string_view use, std::string_view why);
-
 /// The element of cell c: that of its material, but the displacement element on a tet4.
 physics::SolidElement cell_element(const Model& model, Index c);
 

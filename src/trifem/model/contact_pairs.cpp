@@ -4,7 +4,6 @@
 #include "trifem/contact/contact_law.hpp"
 #include "trifem/contact/mixture_contact_law.hpp"
 #include "trifem/core/log.hpp"
-#include "trifem/model/cell_families.hpp"
 #include "trifem/model/conditions.hpp"
 
 #include <cmath>
@@ -19,17 +18,6 @@ std::shared_ptr<const contact::ContactLaw> law(const Model& model) {
   const physics::MixtureFields& f = model.fields;
   return std::make_shared<contact::MixtureContactLaw>(
       contact::MixtureContactFields{f.u, f.w, f.j_plus, f.j_minus});
-}
-
-/// The surface `name` of a contact pair: any facets for solids; linear ones for mixtures (on
-/// tet10 and hex20 cells the fluxes are linear from the corners, and the flux continuity of
-/// the contact does not map its work onto them yet).
-const mesh::Surface& contact_surface(const Model& model, const std::string& name) {
-  if (!model.fields.w.valid())
-    return model.mesh.surface(name);
-  return linear_surface(model.mesh, name, "contact of biphasic or triphasic tissue",
-                        "the corner fluxes of quadratic cells do not carry the contact's flux "
-                        "continuity yet; contact of solids takes tri6 and quad8 facets");
 }
 
 /// A slave surface whose facets are this much larger than the master's is warned about.
@@ -134,9 +122,8 @@ void check_initial_geometry(const io::ContactSpec& c, const contact::ContactTerm
 void add_contact_fields(const io::CaseSpec& spec, Model& model) {
   for (std::size_t i = 0; i < spec.contacts.size(); ++i) {
     const io::ContactSpec& c = spec.contacts[i];
-    const auto& slave = with_context(c.key + ".slave", [&]() -> const mesh::Surface& {
-      return contact_surface(model, c.slave);
-    });
+    const auto& slave = with_context(
+        c.key + ".slave", [&]() -> const mesh::Surface& { return model.mesh.surface(c.slave); });
     const auto nodes = static_cast<Index>(mesh::surface_nodes(slave).size());
     // components: contact pressure [+ water potential [+ c_ref x ion potentials]]
     const int components = model.fields.j_plus.valid() ? 4 : model.fields.w.valid() ? 2 : 1;
@@ -149,9 +136,8 @@ std::vector<std::unique_ptr<physics::Term>> contact_terms(const io::CaseSpec& sp
   std::vector<std::unique_ptr<physics::Term>> terms;
   for (std::size_t i = 0; i < spec.contacts.size(); ++i) {
     const io::ContactSpec& c = spec.contacts[i];
-    const mesh::Surface& master = with_context(c.key + ".master", [&]() -> const mesh::Surface& {
-      return contact_surface(model, c.master);
-    });
+    const mesh::Surface& master = with_context(
+        c.key + ".master", [&]() -> const mesh::Surface& { return model.mesh.surface(c.master); });
     const mesh::Surface& slave = model.mesh.surface(c.slave);
     contact::ContactSettings settings;
     settings.integration =

@@ -38,11 +38,12 @@ dofs::LoadCurve platen_ramp() {
   return dofs::LoadCurve({{0.0, 0.0}, {50.0, 1.0}}, dofs::Interpolation::Linear);
 }
 
-/// The whole model of tests/verification/paper_column_test.cpp.
-std::unique_ptr<test::MixtureModel> whole_column() {
+/// The whole model of tests/verification/paper_column_test.cpp, of hex8 or hex20 cells.
+std::unique_ptr<test::MixtureModel> whole_column(mesh::CellType cells = mesh::CellType::Hex8) {
   mesh::BoxSpec spec;
   spec.divisions = {1, 1, 10};
-  auto m = std::make_unique<test::MixtureModel>(mesh::make_box(spec), test::paper_tissue(true));
+  auto m = std::make_unique<test::MixtureModel>(mesh::convert_cells(mesh::make_box(spec), cells),
+                                                test::paper_tissue(true));
   for (int k = 0; k < 2; ++k) {
     m->fix("box.all", m->f.u, k);
     m->impermeable("box.all", k);
@@ -94,6 +95,7 @@ struct SplitColumn {
 
   /// As MixtureModel::build, with the contact term and its multiplier scale added.
   void build(std::shared_ptr<const contact::ContactLaw> law) {
+    m->fix_mid_edge_fluxes();
     dofs::constrain_all(m->conditions, m->dofs);
     m->dofs.finalize();
     std::vector<Index> cells(m->mesh.num_cells());
@@ -125,12 +127,14 @@ struct SplitColumn {
     m->problem->set_state(x);
   }
 
-  /// Component c of every slave multiplier in physical units (mū_± in mJ/mmol).
+  /// Component c of every slave multiplier in physical units (mū_± in mJ/mmol); the potentials'
+  /// at the corner slave nodes (on quadratic facets they are linear from the corners).
   std::vector<Real> multipliers(int c) const {
     std::vector<Real> v;
     for (Index k = 0; k < contact->slave().num_nodes(); ++k)
-      v.push_back(m->problem->state()[contact->multiplier_dof(k, c)] /
-                  (c >= 2 ? m->chem.c_ref : 1.0));
+      if (c == 0 || !contact->slave().is_mid_edge_node(k))
+        v.push_back(m->problem->state()[contact->multiplier_dof(k, c)] /
+                    (c >= 2 ? m->chem.c_ref : 1.0));
     return v;
   }
 };
@@ -165,7 +169,14 @@ Real cell_mean(const test::MixtureModel& m, Real z0, Real z1, F&& value) {
 std::pair<Real, Real> flux_range(const test::MixtureModel& m, dofs::FieldId F,
                                  const std::string& set) {
   Real lo = INFINITY, hi = -INFINITY;
+  std::vector<char> corner(static_cast<std::size_t>(m.mesh.num_nodes()), 0);
+  for (Index c = 0; c < m.mesh.num_cells(); ++c) // (the fluxes live at the corners)
+    for (Index n : m.mesh.cell_nodes(c).first(
+             static_cast<std::size_t>(mesh::num_corners(m.mesh.cell_type(c)))))
+      corner[static_cast<std::size_t>(n)] = 1;
   for (Index n : m.mesh.node_set(set)) {
+    if (!corner[static_cast<std::size_t>(n)])
+      continue;
     const Real v = m.problem->state()[m.dofs.dof(F, n, 2)];
     lo = std::min(lo, v);
     hi = std::max(hi, v);
@@ -199,10 +210,11 @@ InterfaceState whole_interface(const test::MixtureModel& w) {
   s.multipliers[2] = 0.5 * (chem(4).mu_plus + chem(5).mu_plus);
   s.multipliers[3] = 0.5 * (chem(4).mu_minus + chem(5).mu_minus);
   const dofs::FieldId F[3] = {w.f.w, w.f.j_plus, w.f.j_minus};
-  for (Index n = 0; n < w.mesh.num_nodes(); ++n)
-    if (std::abs(w.mesh.node(n)[2] - 0.5) < 1e-12)
-      for (int i = 0; i < 3; ++i)
-        s.flux[i] = w.problem->state()[w.dofs.dof(F[i], n, 2)];
+  for (Index c = 0; c < w.mesh.num_cells(); ++c) // (the corners: the fluxes' nodes)
+    for (Index n : w.mesh.cell_nodes(c).first(8))
+      if (std::abs(w.mesh.node(n)[2] - 0.5) < 1e-12)
+        for (int i = 0; i < 3; ++i)
+          s.flux[i] = w.problem->state()[w.dofs.dof(F[i], n, 2)];
   return s;
 }
 
@@ -213,8 +225,9 @@ struct Deviation {
 
 /// Steps both models to 50 s in lockstep; returns the largest deviations over the steps and
 /// checks platen stress, p and eta of the bottom cell at t = 5, 25, 50 to `whole_tolerance`.
-Deviation run_and_compare(SplitColumn& split, Real whole_tolerance) {
-  auto whole = whole_column();
+Deviation run_and_compare(SplitColumn& split, Real whole_tolerance,
+                          mesh::CellType whole_cells = mesh::CellType::Hex8) {
+  auto whole = whole_column(whole_cells);
   test::MixtureModel& m = *split.m;
   Deviation dev;
   const char* names[4] = {"t", "mu_w", "mu_+", "mu_-"};
@@ -309,6 +322,19 @@ TEST(MixtureColumnContact, NonMatchingTri3InterfaceOfWedgesEqualsWholeModel) {
   ASSERT_EQ(split.contact->master().facet_type(0), mesh::FacetType::Tri3);
   const Deviation d = run_and_compare(split, 1e-8);
   report("non-matching wedges (2x2 vs 3x3, tri3)", d);
+  EXPECT_LE(d.uniform, 1e-8);
+  EXPECT_LE(d.flux_sides, 1e-8);
+  EXPECT_LE(d.flux_whole, 1e-8);
+}
+
+// The same with both blocks of hex20 cells (issue 37): quad8 facets on both sides, the fluxes
+// and the potentials' multipliers linear from the corners, the pressure multiplier at every
+// node of the quadratic interface.
+TEST(MixtureColumnContact, NonMatchingQuad8InterfaceOfHex20EqualsWholeModel) {
+  SplitColumn split(1, 2, mesh::CellType::Hex20);
+  ASSERT_EQ(split.contact->slave().facet_type(0), mesh::FacetType::Quad8);
+  const Deviation d = run_and_compare(split, 1e-8, mesh::CellType::Hex20);
+  report("non-matching hex20 (1x1 vs 2x2, quad8)", d);
   EXPECT_LE(d.uniform, 1e-8);
   EXPECT_LE(d.flux_sides, 1e-8);
   EXPECT_LE(d.flux_whole, 1e-8);

@@ -137,3 +137,12 @@ TEST(MixtureContactTangent, BiphasicOnTri3FacetsNearEdges) {
   check("tri3 edges", kMaster, kSlaveNearEdges, false, contact::Integration::BothSurfaces,
         mesh::CellType::Tet4);
 }
+// Quadratic facets (tet10: tri6, hex20: quad8): the pressure multiplier at every node, the
+// potentials' multipliers and the fluxes linear from the corners.
+TEST(MixtureContactTangent, TriphasicOnTri6Facets) {
+  check("tri6", kMaster, kSlave, true, contact::Integration::BothSurfaces, mesh::CellType::Tet10);
+}
+TEST(MixtureContactTangent, TriphasicOnQuad8FacetsNearEdges) {
+  check("quad8 edges", kMaster, kSlaveNearEdges, true, contact::Integration::BothSurfaces,
+        mesh::CellType::Hex20);
+}

@@ -112,6 +112,17 @@ int num_nodes(FacetType type) {
   unknown_type(static_cast<int>(type));
 }
 
+CellType linear_type(CellType type) {
+  switch (type) {
+  case CellType::Tet10:
+    return CellType::Tet4;
+  case CellType::Hex20:
+    return CellType::Hex8;
+  default:
+    return type;
+  }
+}
+
 int num_corners(CellType type) {
   switch (type) {
   case CellType::Hex8:

@@ -33,6 +33,8 @@ int num_nodes(CellType type);
 int num_nodes(FacetType type);
 /// The number of corner (vertex) nodes; they come first.
 int num_corners(CellType type);
+/// The type of a cell's corners: tet4 for tet10, hex8 for hex20, else the type itself.
+CellType linear_type(CellType type);
 int num_corners(FacetType type);
 /// Lower-case name as in input files: "hex8", "tet4", "tet10", "penta6", "hex20".
 std::string_view name(CellType type);

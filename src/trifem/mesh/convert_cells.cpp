@@ -24,17 +24,6 @@ const std::vector<std::vector<int>> kHexTets = {
 const std::vector<std::vector<int>> kHexWedges = {{0, 1, 2, 4, 5, 6}, {0, 2, 3, 4, 6, 7}};
 const std::vector<std::vector<int>> kHexItself = {{0, 1, 2, 3, 4, 5, 6, 7}};
 
-CellType linear_type(CellType type) {
-  switch (type) {
-  case CellType::Tet10:
-    return CellType::Tet4;
-  case CellType::Hex20:
-    return CellType::Hex8;
-  default:
-    return type;
-  }
-}
-
 /// The linear cells each hex becomes, as lists of its local nodes.
 const std::vector<std::vector<int>>& pieces(CellType linear) {
   switch (linear) {

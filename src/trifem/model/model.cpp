@@ -3,9 +3,9 @@
 
 #include "trifem/core/error.hpp"
 #include "trifem/core/log.hpp"
+#include "trifem/fe/refine_cells.hpp"
 #include "trifem/material/registry.hpp"
 #include "trifem/mesh/gmsh_reader.hpp"
-#include "trifem/mesh/refine.hpp"
 #include "trifem/model/averages.hpp"
 #include "trifem/model/cell_axes.hpp"
 #include "trifem/model/cell_families.hpp"
@@ -323,7 +323,7 @@ mesh::Mesh build_mesh(const io::CaseSpec& spec, std::map<std::string, std::strin
   TRIFEM_CHECK(mesh.num_cells() > 0 || !spec.rigid_bodies.empty(),
                "mesh: the model has no cells (and no rigid body its surface meshes could make)");
   if (spec.mesh_refinement > 0) // [mesh] refine: the refined mesh replaces the given one
-    mesh = mesh::refine_uniformly(mesh, spec.mesh_refinement);
+    mesh = fe::refine_uniformly(mesh, spec.mesh_refinement);
   return mesh;
 }
 

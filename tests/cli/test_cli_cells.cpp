@@ -141,6 +141,24 @@ TEST_F(CellsCli, ANearlyIncompressibleLawOnTetsAsksForTheElement) {
   EXPECT_EQ(trifem({"run", file.string(), "-o", output().string()}).exit_code, 0);
 }
 
+/// The Gmsh tet10 cube (tri6 faces) standing on a box "lower" of 3 x 3 x 1 hex8 cells below it,
+/// both of the material "tissue".
+std::string tet10_cube_on_a_hex_box() {
+  return fmt::format(R"(
+[[mesh.gmsh]]
+file = "{}"
+materials = {{ cube = "tissue" }}
+
+[[mesh.box]]
+name = "lower"
+origin = [0.0, 0.0, -1.0]
+size = [1.0, 1.0, 1.0]
+divisions = [3, 3, 1]
+material = "tissue"
+)",
+                     (kMeshes / "cube_tet10_v41.msh").generic_string());
+}
+
 // Mixture contact on quadratic facets through the executable: the Gmsh tet10 cube (tri6 faces)
 // of biphasic tissue on a biphasic box of 3 x 3 hex8 cells, both confined laterally with
 // impermeable sides and bottom, pressed by q = 0.1 MPa on the free-draining top: Terzaghi's
@@ -152,18 +170,7 @@ TEST_F(CellsCli, ANearlyIncompressibleLawOnTetsAsksForTheElement) {
 // cells. That error is the cells' own: the same cube alone, confined and drained, keeps cell
 // pressures of up to 1.4e-3 q (first order, docs/theory/elements.md); here 1.3e-3 q.
 TEST_F(CellsCli, ABiphasicTet10CubeConsolidatesThroughContactWithAHexBoxToTheDrainedState) {
-  std::string text = fmt::format(R"(
-[[mesh.gmsh]]
-file = "{}"
-materials = {{ cube = "tissue" }}
-
-[[mesh.box]]
-name = "lower"
-origin = [0.0, 0.0, -1.0]
-size = [1.0, 1.0, 1.0]
-divisions = [3, 3, 1]
-material = "tissue"
-
+  std::string text = tet10_cube_on_a_hex_box() + R"(
 [materials.tissue]
 type = "biphasic"
 phi_s0 = 0.2
@@ -189,8 +196,7 @@ dt_max = 2000.0
 [[contact]]
 master = "lower.zmax"
 slave = "zmin"
-)",
-                                 (kMeshes / "cube_tet10_v41.msh").generic_string());
+)";
   const auto hold = [&](const std::string& set, const char* axis) {
     for (const char* field : {"displacement", "fluid_flux"})
       text += fmt::format("[[boundary.fixed]]\nset = \"{}\"\nfield = \"{}\"\ncomponents = "
@@ -322,18 +328,8 @@ TEST_F(CellsCli, AGmshTet10CubePressedOntoAHexBoxPassesTheContactPatchTest) {
   for (const bool tet_is_slave : {true, false}) {
     SCOPED_TRACE(tet_is_slave ? "tri6 slave" : "quad4 slave");
     const fs::path file =
-        write_file("patch.toml", fmt::format(R"(
-[[mesh.gmsh]]
-file = "{}"
-materials = {{ cube = "tissue" }}
-
-[[mesh.box]]
-name = "lower"
-origin = [0.0, 0.0, -1.0]
-size = [1.0, 1.0, 1.0]
-divisions = [3, 3, 1]
-material = "tissue"
-
+        write_file("patch.toml",
+                   tet10_cube_on_a_hex_box() + fmt::format(R"(
 [materials.tissue]
 type = "neo-hookean"
 E = 1.0
@@ -374,9 +370,8 @@ set = "lower.zmin"
 master = "{}"
 slave = "{}"
 )",
-                                             (kMeshes / "cube_tet10_v41.msh").generic_string(),
-                                             tet_is_slave ? "lower.zmax" : "zmin",
-                                             tet_is_slave ? "zmin" : "lower.zmax"));
+                                                           tet_is_slave ? "lower.zmax" : "zmin",
+                                                           tet_is_slave ? "zmin" : "lower.zmax"));
     const Result r = trifem({"run", file.string(), "-o", output().string()});
     ASSERT_EQ(r.exit_code, 0) << r;
     const History s = read_history(output() / "contact1_surface_0002.csv");

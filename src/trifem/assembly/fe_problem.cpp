@@ -163,6 +163,18 @@ std::vector<FieldRole> FeProblem::field_roles() const {
   return roles;
 }
 
+std::string FeProblem::equation_name(Index eq) const {
+  const Index dof = map_.dof_of_equation(eq);
+  const dofs::FieldInfo& f = map_.field(map_.field_of(dof));
+  const Index local = dof - f.offset;
+  const char* entity = f.role == FieldRole::potential      ? "cell"
+                       : f.role == FieldRole::multiplier   ? "slave node"
+                       : f.role == FieldRole::rigid_motion ? "body"
+                                                           : "node";
+  return fmt::format("component {} of {} {} (0-based, in trifem's order) of the field '{}'",
+                     local % f.components, entity, local / f.components, f.name);
+}
+
 void FeProblem::reset_system() {
   system_ = AssembledSystem{Vector::Zero(map_.num_dofs()), {}, {}};
   pattern_pending_ = true;

@@ -98,6 +98,8 @@ public:
   // NonlinearProblem
   Index num_equations() const override { return map_.num_equations(); }
   const std::vector<int>& equation_fields() const override { return equation_fields_; }
+  /// "field 'displacement', entity (node) 12, component 1" of the equation's leader DOF.
+  std::string equation_name(Index eq) const override;
   const std::vector<solver::FieldScale>& field_scales() const override { return scales_; }
   std::vector<FieldRole> field_roles() const override;
   int pattern_id() const override { return pattern_id_; }

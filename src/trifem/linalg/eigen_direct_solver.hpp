@@ -5,6 +5,7 @@
 #include "trifem/linalg/linear_solver.hpp"
 
 #include <cstdint>
+#include <string>
 
 namespace trifem::linalg {
 
@@ -27,6 +28,7 @@ public:
     if (lu_.info() == Eigen::Success)
       return true;
     failure_.reason = name_ + ": " + message();
+    failure_.equation = empty_column(A);
     return false;
   }
   bool solve(const Vector& b, Vector& x) override {

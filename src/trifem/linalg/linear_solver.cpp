@@ -16,6 +16,17 @@ void LinearSolver::set_hints(const SystemHints& hints) {
     throw InputError(fmt::format("the linear solver '{}' runs on one process only", name()));
 }
 
+Index empty_column(const SparseMatrix& A) {
+  for (Index c = 0; c < A.outerSize(); ++c) {
+    bool nonzero = false;
+    for (SparseMatrix::InnerIterator it(A, c); it && !nonzero; ++it)
+      nonzero = it.value() != 0.0;
+    if (!nonzero)
+      return c;
+  }
+  return -1;
+}
+
 std::unique_ptr<LinearSolver> make_linear_solver(const LinearSolverChoice& c) {
   using enum LinearSolverKind;
   if (parallel::active()) { // on several processes MUMPS stands in for every direct backend

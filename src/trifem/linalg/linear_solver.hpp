@@ -35,6 +35,7 @@ struct SystemHints {
 struct LinearSolverFailure {
   std::string reason;     ///< what failed, in words ("" after a success)
   bool permanent = false; ///< a smaller time step cannot cure it (out of memory, size limits)
+  Index equation = -1;    ///< an equation whose column of the matrix is empty (-1: none found)
 };
 
 /// A linear solver for general (unsymmetric) sparse matrices.
@@ -74,6 +75,11 @@ public:
   /// Why the last operation failed (empty reason if it succeeded).
   virtual LinearSolverFailure failure() const { return {}; }
 };
+
+/// The first equation whose column of A holds no non-zero value (no term couples that unknown
+/// to any equation), -1 if every column has one: the usual cause of a singular matrix at the
+/// first iteration, which the backends' own messages do not name (LinearSolverFailure::equation).
+Index empty_column(const SparseMatrix& A);
 
 /// Creates the backend of `choice`. `petsc_options` are passed to the PETSc backends
 /// (InputError when PETSc does not use one of them); `reuse_factorization` lets one MUMPS

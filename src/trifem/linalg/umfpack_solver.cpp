@@ -55,6 +55,7 @@ public:
     if (status == UMFPACK_OK)
       return true;
     fail("numeric factorization", status);
+    failure_.equation = empty_column(A);
     return false;
   }
 

@@ -337,6 +337,9 @@ NewtonReport NewtonSolver::solve(NonlinearProblem& problem, const std::vector<Re
       const std::string why = linear_->failure().reason;
       report.failure_reason = "the linear solve failed: " +
                               (why.empty() ? std::string("the Jacobian is singular") : why);
+      if (const Index eq = linear_->failure().equation; eq >= 0 && eq < problem.num_equations())
+        if (const std::string name = problem.equation_name(eq); !name.empty())
+          report.failure_reason += fmt::format("; that equation is {}", name);
       // a singular first matrix (not an iterative solve that ran out of iterations)
       if (solved == SolveStatus::FactorizationFailed && k == 0 && linear_iterations_ == 0)
         report.failure_reason +=

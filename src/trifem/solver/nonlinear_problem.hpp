@@ -54,6 +54,9 @@ public:
   virtual const std::vector<int>& equation_fields() const = 0;
   virtual const std::vector<FieldScale>& field_scales() const = 0;
   virtual std::vector<FieldRole> field_roles() const { return {}; }
+  /// What equation `eq` is, in the user's terms (field, node or entity, component), for
+  /// messages; empty if the problem cannot say.
+  virtual std::string equation_name(Index /*eq*/) const { return {}; }
   /// Changes whenever the sparsity pattern of the Jacobian changes (symbolic re-analysis).
   virtual int pattern_id() const = 0;
   /// On several processes: the process that owns each equation (the linear solver's rows);

@@ -74,8 +74,9 @@ Errors check_derivatives(const Vec3& p, const FacetCoords& X) {
     const Projection a = project_coords(cp, X.type()), b = project_coords(cm, X.type());
     EXPECT_EQ(a.on_boundary, pr.on_boundary);
     EXPECT_EQ(b.corner, pr.corner);
-    if (pr.corner < 0)
+    if (pr.corner < 0) {
       EXPECT_EQ(b.edge, pr.edge);
+    }
     fd_xi.col(j) = (a.xi - b.xi) / (2 * h);
     fd_gap(0, j) = (a.gap - b.gap) / (2 * h);
     fd_normal.col(j) = (a.normal - b.normal) / (2 * h);

@@ -405,3 +405,24 @@ TEST(LinearSolver, UnusedPetscOptionIsAnInputErrorNamingIt) {
   EXPECT_NO_THROW(linalg::make_linear_solver(
       {.kind = LinearSolverKind::mumps, .petsc_options = "-mat_mumps_icntl_14 60"})); // cleared
 }
+
+// A singular matrix with an empty column: the direct solvers' failure names its equation, which
+// Newton's message then describes in the user's terms (field, node, component).
+TEST(LinearSolver, DirectSolversNameTheEquationOfAnEmptyColumn) {
+  const SparseMatrix S = saddle_point(60, 3);
+  for (const Index empty : {Index{0}, Index{17}, Index{41}, Index{61}}) {
+    std::vector<Eigen::Triplet<Real>> kept;
+    for (Index c = 0; c < S.outerSize(); ++c)
+      for (SparseMatrix::InnerIterator it(S, c); it; ++it)
+        if (it.col() != empty)
+          kept.emplace_back(it.row(), it.col(), it.value());
+    SparseMatrix A(S.rows(), S.cols());
+    A.setFromTriplets(kept.begin(), kept.end());
+    for (const auto kind : {LinearSolverKind::sparselu, LinearSolverKind::umfpack}) {
+      auto solver = linalg::make_linear_solver({kind});
+      solver->analyze_pattern(A);
+      EXPECT_FALSE(solver->factorize(A));
+      EXPECT_EQ(solver->failure().equation, empty) << solver->failure().reason;
+    }
+  }
+}

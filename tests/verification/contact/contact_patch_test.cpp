@@ -188,3 +188,19 @@ TEST(ContactPatch, BothSurfacesQuad8FacetsOnTri6) {
 TEST(ContactPatch, BothSurfacesQuad8FacetsOnQuad4In2D) {
   expect_exact({.lower = 4, .upper = 3, .upper_cells = mesh::CellType::Hex20});
 }
+
+// The names the solver's messages give equations (a singular matrix names its empty column's).
+TEST(ContactPatch, EquationsAreNamedByFieldEntityAndComponent) {
+  test::ContactModel m(patch_mesh({}), "neo-hookean", {{"E", 1.0}, {"nu", 0.3}}, "lower.ymax",
+                       "upper.ymin");
+  m.prescribe(m.mesh.node_set("lower.ymin"), 1);
+  contact::ContactSettings settings;
+  settings.scale = 4.0;
+  m.build(settings);
+  const Index u = m.dofs.equation(m.dofs.dof(m.u, 7, 2));
+  EXPECT_EQ(m.problem->equation_name(u),
+            "component 2 of node 7 (0-based, in trifem's order) of the field 'displacement'");
+  const Index lambda = m.dofs.equation(m.contact->multiplier_dof(3, 0));
+  EXPECT_EQ(m.problem->equation_name(lambda), "component 0 of slave node 3 (0-based, in "
+                                              "trifem's order) of the field 'contact_pressure'");
+}

@@ -68,6 +68,16 @@ double uniaxial_force(double l) {
   return (mu * (l * l - 1) + lambda * std::log(J)) / l;
 }
 
+/// The relative mass balance errors of `species` in a run's summary.json (the whole model's, then
+/// each body's; docs/cli.md): every number after "species": in the file.
+std::vector<double> balance_errors(const fs::path& summary, const std::string& species) {
+  const std::string json = read_text(summary), tag = "\"" + species + "\": ";
+  std::vector<double> errors;
+  for (auto at = json.find(tag); at != std::string::npos; at = json.find(tag, at + 1))
+    errors.push_back(std::strtod(json.c_str() + at + tag.size(), nullptr));
+  return errors;
+}
+
 class CellsCli : public Cli {};
 
 TEST_F(CellsCli, AGmshTet10CubeStretchedGivesTheClosedFormReactionAndProbes) {
@@ -229,6 +239,11 @@ slave = "zmin"
   }
   const History h = read_history(output() / "history.csv");
   EXPECT_NEAR(h["contact1.Fz [N]"].back(), 0.1, 1e-10 * 0.1); // on the slave body, up
+  // the water of each body and of both: change = outflow through the tri6 and quad4 faces
+  const std::vector<double> water = balance_errors(output() / "summary.json", "water");
+  ASSERT_EQ(water.size(), 3u); // the model, the cube, the box
+  for (const double e : water)
+    EXPECT_LT(e, 1e-12);
   // the box carries the master-side resultant (the both-surface scheme balances the two only
   // for a uniform traction, docs/theory/contact.md §4.1): 8e-5 q apart here
   EXPECT_NEAR(h["lower.zmin.Rz [N]"].back(), -h["contact1.master_Fz [N]"].back(), 1e-10 * 0.1);
@@ -399,6 +414,13 @@ TEST_F(CellsCli, ATriphasicGmshCubeOfWedgesSwellsInADiluteBathToTheClosedForm) {
   const History h = read_history(output() / "history.csv");
   for (const char* u : {"corner.ux [mm]", "corner.uy [mm]", "corner.uz [mm]"})
     EXPECT_NEAR(1.0 + h[u].back(), 1.38074, 1e-5) << u;
+  // water and ions conserved through the tri3 and quad4 faces: content change = outflow
+  for (const char* species : {"water", "cation", "anion"}) {
+    const std::vector<double> errors = balance_errors(output() / "summary.json", species);
+    ASSERT_FALSE(errors.empty()) << species;
+    for (const double e : errors)
+      EXPECT_LT(e, 1e-12) << species;
+  }
 }
 
 // The Gmsh tet10 cube as a biphasic tissue stretched by 20 % in 1 s and held: the fluid first

@@ -249,6 +249,27 @@ slave = "zmin"
   EXPECT_NEAR(h["lower.zmin.Rz [N]"].back(), -h["contact1.master_Fz [N]"].back(), 1e-10 * 0.1);
 }
 
+// [[constraint]]s on the tri6 faces of the Gmsh tet10 cube: symmetry planes on xmin and ymin and
+// a normal-displacement constraint on zmin (whose mid-edge nodes take the facets' own normals)
+// hold the cube as the fixed components do: the closed-form uniaxial reaction.
+TEST_F(CellsCli, ConstraintsOnTheFacesOfTet10CellsGiveTheClosedFormStretch) {
+  std::string text = cube_case("cube_tet10_v41.msh", 1.2);
+  const std::string fixed = "[[boundary.fixed]]\nset = \"xmin\"\ncomponents = [\"x\"]\n"
+                            "[[boundary.fixed]]\nset = \"ymin\"\ncomponents = [\"y\"]\n"
+                            "[[boundary.fixed]]\nset = \"zmin\"\ncomponents = [\"z\"]\n";
+  const auto at = text.find(fixed);
+  ASSERT_NE(at, std::string::npos) << text;
+  text.replace(at, fixed.size(),
+               "[[constraint]]\ntype = \"symmetry-plane\"\nsurface = \"xmin\"\n"
+               "[[constraint]]\ntype = \"symmetry-plane\"\nsurface = \"ymin\"\n"
+               "[[constraint]]\ntype = \"normal-displacement\"\nsurface = \"zmin\"\n");
+  const fs::path file = write_file("cube.toml", text);
+  const Result r = trifem({"run", file.string(), "-o", output().string()});
+  ASSERT_EQ(r.exit_code, 0) << r;
+  const History h = read_history(output() / "history.csv");
+  EXPECT_NEAR(h["xmax.Rx [N]"].back(), uniaxial_force(1.2), 1e-8 * uniaxial_force(1.2));
+}
+
 // `--refine-mesh` on every family: the Gmsh cubes of tet4, tet10, penta6 and hex20 cells refined
 // once (each cell into eight of its own type, on the parent's own map) keep the closed-form
 // uniaxial stretch, and the refined mesh's cells are eight times the given ones.

@@ -98,17 +98,6 @@ void check_cell_families(const io::CaseSpec& spec, const Model& model) {
   }
 }
 
-const mesh::Surface& quad4_surface(const mesh::Mesh& mesh, const std::string& name,
-                                   std::string_view use) {
-  const mesh::Surface& surface = mesh.surface(name);
-  for (const mesh::Facet& f : surface.facets)
-    TRIFEM_CHECK(f.is_quad4(),
-                 "the surface '{}' has {} facets (faces of {}): {} takes the quad4 faces of hex8 "
-                 "cells so far (surface loads and the conditions on a surface's nodes take any)",
-                 name, mesh::name(f.type), describe(mesh, f.cell), use);
-  return surface;
-}
-
 physics::SolidElement cell_element(const Model& model, Index c) {
   // (a tet4 has one strain: its mean-dilatation element is its displacement element)
   return model.mesh.cell_type(c) == mesh::CellType::Tet4

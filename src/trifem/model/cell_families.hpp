@@ -18,12 +18,6 @@ namespace trifem::model {
 /// cells (negative at their corners).
 void check_cell_families(const io::CaseSpec& spec, const Model& model);
 
-/// The surface `name` of the mesh for `use` (contact, a bath, ...), whose kernels take quad4
-/// facets so far: InputError if one of its facets is a tri3, tri6 or quad8 (the face of a tet,
-/// wedge or hex20 cell; surface loads take those).
-const mesh::Surface& quad4_surface(const mesh::Mesh& mesh, const std::string& name,
-                                   std::string_view use);
-
 /// The element of cell c: that of its material, but the displacement element on a tet4.
 physics::SolidElement cell_element(const Model& model, Index c);
 

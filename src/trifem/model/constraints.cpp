@@ -3,7 +3,7 @@
 
 #include "trifem/contact/rigid_wall_term.hpp"
 #include "trifem/core/log.hpp"
-#include "trifem/model/cell_families.hpp"
+#include "trifem/fe/reference_element.hpp"
 #include "trifem/model/conditions.hpp"
 #include "trifem/physics/linear_constraint_term.hpp"
 
@@ -33,24 +33,43 @@ Vec3 plane_normal(const mesh::Mesh& mesh, const mesh::Surface& surface) {
   for (const mesh::Facet& f : surface.facets) {
     const Vec3 nf = mesh::facet_area_vector(mesh, f).normalized();
     TRIFEM_CHECK(nf.cross(n).norm() <= kFlatness && nf.dot(n) > 0.0,
-                 "a symmetry plane must be flat: the facet of nodes {}, {}, {}, {} has the normal "
+                 "a symmetry plane must be flat: the facet of nodes {}, {}, {}{} has the normal "
                  "({:.6g}, {:.6g}, {:.6g}), the surface's mean normal is ({:.6g}, {:.6g}, {:.6g}) "
                  "(use type = \"normal-displacement\" on a curved surface)",
-                 f.nodes[0], f.nodes[1], f.nodes[2], f.nodes[3], nf.x(), nf.y(), nf.z(), n.x(),
-                 n.y(), n.z());
+                 f.nodes[0], f.nodes[1], f.nodes[2],
+                 f.num_corners() == 4 ? fmt::format(", {}", f.nodes[3]) : std::string(), nf.x(),
+                 nf.y(), nf.z(), n.x(), n.y(), n.z());
   }
   return n;
 }
 
-/// The area-weighted unit normal N_a of each node of a surface (reference configuration).
+/// The unit normal at the reference point s of facet f (its own map: curved if quadratic).
+Vec3 facet_normal_at(const mesh::Mesh& mesh, const mesh::Facet& f, const Vec2& s) {
+  const fe::FacetShapeGrads G = fe::reference_facet(f.type).shape_grad(s);
+  Vec3 t1 = Vec3::Zero(), t2 = Vec3::Zero();
+  for (int a = 0; a < f.num_nodes(); ++a) {
+    t1 += mesh.node(f.node(a)) * G(a, 0);
+    t2 += mesh.node(f.node(a)) * G(a, 1);
+  }
+  return t1.cross(t2).normalized();
+}
+
+/// The area-weighted unit normal N_a of each node of a surface (reference configuration): the
+/// facets' corner area vectors summed at their corners, and at a mid-edge node the facet's own
+/// normal there times the area.
 std::map<Index, Vec3> nodal_normals(const mesh::Mesh& mesh, const mesh::Surface& surface) {
   std::map<Index, Vec3> normals;
   for (const mesh::Facet& f : surface.facets) {
     const Vec3 a = mesh::facet_area_vector(mesh, f);
-    std::set<Index> nodes(f.nodes.begin(), f.nodes.end());
+    std::set<Index> nodes(f.nodes.begin(), f.nodes.begin() + f.num_corners());
     for (Index n : nodes) {
       auto [it, added] = normals.try_emplace(n, Vec3::Zero());
       it->second += a;
+    }
+    const fe::ReferenceFacet& ref = fe::reference_facet(f.type);
+    for (int m = f.num_corners(); m < f.num_nodes(); ++m) {
+      auto [it, added] = normals.try_emplace(f.node(m), Vec3::Zero());
+      it->second += a.norm() * facet_normal_at(mesh, f, ref.nodes().row(m).transpose());
     }
   }
   for (auto& [node, n] : normals) {
@@ -149,7 +168,7 @@ void check_not_rigid(const std::set<Index>& rigid, Index node) {
 
 void surface_equations(const io::ConstraintSpec& c, const Model& model,
                        const std::set<Index>& rigid, HeldDirections& held, Equations& out) {
-  const mesh::Surface& surface = quad4_surface(model.mesh, c.surface, "a constraint");
+  const mesh::Surface& surface = model.mesh.surface(c.surface);
   if (c.kind == ConstraintKind::SymmetryPlane) {
     const Vec3 n = plane_normal(model.mesh, surface);
     for (Index node : mesh::surface_nodes(surface)) {
@@ -202,7 +221,7 @@ std::vector<Index> wall_nodes(const Model& model, const mesh::Surface& surface, 
 
 std::unique_ptr<physics::Term> rigid_wall(const io::CaseSpec& spec, const io::ConstraintSpec& c,
                                           Model& model, const std::set<Index>& fixed) {
-  const mesh::Surface& surface = quad4_surface(model.mesh, c.surface, "a constraint");
+  const mesh::Surface& surface = model.mesh.surface(c.surface);
   std::vector<Index> nodes = wall_nodes(model, surface, c.normal, fixed);
   const auto all = static_cast<Index>(mesh::surface_nodes(surface).size());
   TRIFEM_CHECK(!nodes.empty(),

@@ -152,6 +152,7 @@ public:
   }
 
   Mesh& fine() { return fine_; }
+  const Mesh& fine() const { return fine_; }
   /// The coarse corners node n of the fine mesh is built from (itself for a coarse corner, its
   /// edge's two for a coarse mid-edge node).
   std::vector<Index> parents(Index n) const {
@@ -215,7 +216,7 @@ private:
 /// corners only), as quads (a triangle's fourth corner repeating its third).
 void add_child_faces(const FamilyRefiner& r, const Facet& f,
                      std::vector<std::array<Index, 4>>& quads) {
-  const Mesh& fine = const_cast<FamilyRefiner&>(r).fine();
+  const Mesh& fine = r.fine();
   const auto on_f = [&](Index n) {
     const std::vector<Index> p = r.parents(n);
     return std::ranges::all_of(p, [&](Index m) {

@@ -78,9 +78,9 @@ std::uint8_t vtk_facet_type(mesh::FacetType type) {
   case mesh::FacetType::Tri3:
     return io::vtk_cell::kTriangle;
   case mesh::FacetType::Tri6:
-    return 22; // VTK_QUADRATIC_TRIANGLE
+    return io::vtk_cell::kQuadraticTriangle;
   case mesh::FacetType::Quad8:
-    return 23; // VTK_QUADRATIC_QUAD
+    return io::vtk_cell::kQuadraticQuad;
   case mesh::FacetType::Quad4:
     break;
   }

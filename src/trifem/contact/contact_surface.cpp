@@ -12,7 +12,6 @@ ContactSurface::ContactSurface(const mesh::Surface& surface)
     for (int a = 0; a < facet.num_nodes(); ++a)
       facet_node_list_.push_back(facet.node(a));
     facet_offsets_.push_back(static_cast<Index>(facet_node_list_.size()));
-    max_facet_nodes_ = std::max(max_facet_nodes_, facet.num_nodes());
   }
   build_adjacency();
 }

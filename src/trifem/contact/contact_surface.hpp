@@ -51,8 +51,6 @@ public:
     return {facet_node_list_.data() + facet_offsets_[f],
             static_cast<std::size_t>(facet_offsets_[f + 1] - facet_offsets_[f])};
   }
-  /// Most nodes of a facet of this surface.
-  int max_facet_nodes() const { return max_facet_nodes_; }
 
   /// Sorted unique mesh node indices of the surface (corners and mid-edge nodes).
   const std::vector<Index>& nodes() const { return nodes_; }
@@ -92,7 +90,6 @@ private:
   std::vector<mesh::Facet> facets_;
   std::vector<Index> facet_offsets_ = {0}; ///< facet f's nodes: facet_node_list_[offsets f..f+1)
   std::vector<Index> facet_node_list_;
-  int max_facet_nodes_ = 0;
   std::vector<Index> nodes_;
   std::vector<Index> node_facet_offsets_; ///< CSR offsets into node_facet_list_
   std::vector<Index> node_facet_list_;

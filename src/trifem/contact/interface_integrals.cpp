@@ -47,6 +47,7 @@ void ContactTerm::slave_facet_work(Index f, const Vector& x, Real dt, LocalSyste
   const FacetCoords X = coords(slave_, f, x);
   const FacetMultipliers lam = facet_multipliers(f, x);
   const Index n = X.num_nodes();
+  const bool quadratic = n > X.num_corners();
   std::array<Index, fe::kMaxFacetNodes> x_at{}, l_at{};
   for (Index a = 0; a < n; ++a) {
     x_at[a] = out.at(u_dof(nodes[a], 0));
@@ -54,7 +55,8 @@ void ContactTerm::slave_facet_work(Index f, const Vector& x, Real dt, LocalSyste
   }
   for (const auto& qp : X.reference->rule().points) {
     const FacetPoint fp = evaluate_facet(X, qp.xi);
-    const fe::FacetShapeValues L = corner_shape(X.type(), qp.xi);
+    // the corners' linear functions, where they differ from N (quadratic facets)
+    const fe::FacetShapeValues L = quadratic ? corner_shape(X.type(), qp.xi) : fp.N;
     for (int c = 0; c < lam.cols(); ++c) {
       const fe::FacetShapeValues& S = law_->corner_interpolated(c) ? L : fp.N;
       const Real wc = law_->work_factor(c, dt) * qp.weight;
@@ -80,6 +82,7 @@ void ContactTerm::master_facet_work(Index f, const Vector& x, Real dt, LocalSyst
   const auto nodes = master_.facet_nodes(f);
   const FacetCoords X = coords(master_, f, x);
   const Index n = X.num_nodes();
+  const bool quadratic = n > X.num_corners();
   const int C = law_->num_components();
   std::array<MasterLink, fe::kMaxFacetNodes> link;
   std::array<Index, fe::kMaxFacetNodes> x_at{};
@@ -115,7 +118,8 @@ void ContactTerm::master_facet_work(Index f, const Vector& x, Real dt, LocalSyst
   }
   for (const auto& qp : X.reference->rule().points) {
     const FacetPoint fp = evaluate_facet(X, qp.xi);
-    const fe::FacetShapeValues L = corner_shape(X.type(), qp.xi);
+    // the corners' linear functions, where they differ from N (quadratic facets)
+    const fe::FacetShapeValues L = quadratic ? corner_shape(X.type(), qp.xi) : fp.N;
     for (int c = 0; c < C; ++c) {
       const fe::FacetShapeValues& S = law_->corner_interpolated(c) ? L : fp.N;
       Real lm = 0; // λ^m(ξ) = Σ_i S_i(ξ) λ^m_i

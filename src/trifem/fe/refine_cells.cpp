@@ -256,48 +256,20 @@ Mesh refine_uniformly(const Mesh& mesh) {
   r.split_cells();
   Mesh& fine = r.fine();
   for (const auto& [name, surface] : mesh.surfaces()) {
+    mesh::check_refinable_surface(name, surface);
     std::vector<std::array<Index, 4>> quads;
-    for (const Facet& f : surface.facets) {
-      TRIFEM_CHECK(f.bounds_cell(),
-                   "the surface '{}' is a surface mesh that bounds no cell: refining the mesh "
-                   "splits cells and their faces only (refine the surface mesh itself instead)",
-                   name);
+    for (const Facet& f : surface.facets)
       add_child_faces(r, f, quads);
-    }
     Surface s;
     s.facets = fine.orient_quads(quads);
     fine.add_surface(name, std::move(s)); // also its node set
   }
-  for (const auto& [name, set] : mesh.node_sets()) {
-    if (mesh.has_surface(name))
-      continue;
-    std::vector<char> in(static_cast<std::size_t>(mesh.num_nodes()), 0);
-    for (Index n : set)
-      in[static_cast<std::size_t>(n)] = 1;
-    std::vector<Index> nodes = set;
-    for (Index n = mesh.num_nodes(); n < fine.num_nodes(); ++n)
-      if (std::ranges::all_of(r.parents(n),
-                              [&](Index m) { return in[static_cast<std::size_t>(m)]; }))
-        nodes.push_back(n);
-    fine.add_node_set(name, std::move(nodes));
-  }
-  for (const auto& [name, cells] : mesh.cell_blocks()) {
-    std::vector<Index> children;
-    for (Index c : cells)
-      for (Index k = 0; k < 8; ++k)
-        children.push_back(8 * c + k);
-    fine.add_cell_block(name, std::move(children));
-  }
-  for (const auto& [name, data] : mesh.cell_data()) {
-    mesh::CellData children{.components = data.components, .values = {}};
-    const auto width = static_cast<std::size_t>(data.components);
-    for (std::size_t start = 0; start < data.values.size(); start += width)
-      for (int k = 0; k < 8; ++k)
-        children.values.insert(children.values.end(),
-                               data.values.begin() + static_cast<long>(start),
-                               data.values.begin() + static_cast<long>(start + width));
-    fine.add_cell_data(name, std::move(children));
-  }
+  const auto parents = [&r](Index n) { return r.parents(n); };
+  for (const auto& [name, set] : mesh.node_sets())
+    if (!mesh.has_surface(name))
+      fine.add_node_set(name,
+                        mesh::refined_node_set(set, mesh.num_nodes(), fine.num_nodes(), parents));
+  mesh::add_refined_cell_sets(mesh, fine);
   return std::move(fine);
 }
 

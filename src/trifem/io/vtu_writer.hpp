@@ -28,6 +28,8 @@ struct DataArray {
 namespace vtk_cell {
 inline constexpr std::uint8_t kTriangle = 5;
 inline constexpr std::uint8_t kQuad = 9;
+inline constexpr std::uint8_t kQuadraticTriangle = 22; ///< corners, then mid-edge nodes (as tri6)
+inline constexpr std::uint8_t kQuadraticQuad = 23;     ///< corners, then mid-edge nodes (as quad8)
 inline constexpr std::uint8_t kHexahedron = 12;
 } // namespace vtk_cell
 

@@ -153,40 +153,6 @@ Surface refine_surface(const Mesh& fine, const Surface& coarse) {
   return s;
 }
 
-std::vector<Index> refine_node_set(const Refiner& r, Index coarse_nodes, Index fine_nodes,
-                                   const std::vector<Index>& set) {
-  std::vector<char> in(static_cast<std::size_t>(coarse_nodes), 0);
-  for (Index n : set)
-    in[static_cast<std::size_t>(n)] = 1;
-  std::vector<Index> fine = set;
-  for (Index n = coarse_nodes; n < fine_nodes; ++n) {
-    const auto& p = r.parents(n);
-    if (std::all_of(p.begin(), p.end(), [&](Index m) { return in[static_cast<std::size_t>(m)]; }))
-      fine.push_back(n);
-  }
-  return fine;
-}
-
-std::vector<Index> refine_cell_block(const std::vector<Index>& cells) {
-  std::vector<Index> fine;
-  fine.reserve(cells.size() * 8);
-  for (Index c : cells)
-    for (int k = 0; k < 8; ++k)
-      fine.push_back(8 * c + k);
-  return fine;
-}
-
-CellData refine_cell_data(const CellData& coarse) {
-  CellData fine{.components = coarse.components, .values = {}};
-  const auto width = static_cast<std::size_t>(coarse.components);
-  fine.values.reserve(coarse.values.size() * 8);
-  for (std::size_t start = 0; start < coarse.values.size(); start += width)
-    for (int k = 0; k < 8; ++k)
-      fine.values.insert(fine.values.end(), coarse.values.begin() + static_cast<long>(start),
-                         coarse.values.begin() + static_cast<long>(start + width));
-  return fine;
-}
-
 void check_size(const Mesh& mesh) {
   constexpr long long kMax = std::numeric_limits<Index>::max();
   const long long cells = 8LL * mesh.num_cells();
@@ -204,21 +170,58 @@ Mesh refine_uniformly(const Mesh& mesh) {
   r.split_cells();
   Mesh& fine = r.fine();
   for (const auto& [name, surface] : mesh.surfaces()) {
-    TRIFEM_CHECK(std::all_of(surface.facets.begin(), surface.facets.end(),
-                             [](const Facet& f) { return f.bounds_cell(); }),
-                 "the surface '{}' is a surface mesh that bounds no cell: refining the mesh "
-                 "splits cells and their faces only (refine the surface mesh itself instead)",
-                 name);
+    check_refinable_surface(name, surface);
     fine.add_surface(name, refine_surface(fine, surface)); // also its node set
   }
+  const auto parents = [&r](Index n) { return r.parents(n); };
   for (const auto& [name, set] : mesh.node_sets())
     if (!mesh.has_surface(name))
-      fine.add_node_set(name, refine_node_set(r, mesh.num_nodes(), fine.num_nodes(), set));
-  for (const auto& [name, cells] : mesh.cell_blocks())
-    fine.add_cell_block(name, refine_cell_block(cells));
-  for (const auto& [name, data] : mesh.cell_data())
-    fine.add_cell_data(name, refine_cell_data(data));
+      fine.add_node_set(name, refined_node_set(set, mesh.num_nodes(), fine.num_nodes(), parents));
+  add_refined_cell_sets(mesh, fine);
   return r.take();
+}
+
+void add_refined_cell_sets(const Mesh& coarse, Mesh& fine) {
+  for (const auto& [name, cells] : coarse.cell_blocks()) {
+    std::vector<Index> children;
+    children.reserve(cells.size() * 8);
+    for (Index c : cells)
+      for (int k = 0; k < 8; ++k)
+        children.push_back(8 * c + k);
+    fine.add_cell_block(name, std::move(children));
+  }
+  for (const auto& [name, data] : coarse.cell_data()) {
+    CellData children{.components = data.components, .values = {}};
+    const auto width = static_cast<std::size_t>(data.components);
+    children.values.reserve(data.values.size() * 8);
+    for (std::size_t start = 0; start < data.values.size(); start += width)
+      for (int k = 0; k < 8; ++k)
+        children.values.insert(children.values.end(),
+                               data.values.begin() + static_cast<long>(start),
+                               data.values.begin() + static_cast<long>(start + width));
+    fine.add_cell_data(name, std::move(children));
+  }
+}
+
+std::vector<Index> refined_node_set(const std::vector<Index>& set, Index coarse_nodes,
+                                    Index fine_nodes,
+                                    const std::function<std::vector<Index>(Index)>& parents) {
+  std::vector<char> in(static_cast<std::size_t>(coarse_nodes), 0);
+  for (Index n : set)
+    in[static_cast<std::size_t>(n)] = 1;
+  std::vector<Index> fine = set;
+  for (Index n = coarse_nodes; n < fine_nodes; ++n)
+    if (std::ranges::all_of(parents(n), [&](Index m) { return in[static_cast<std::size_t>(m)]; }))
+      fine.push_back(n);
+  return fine;
+}
+
+void check_refinable_surface(const std::string& name, const Surface& surface) {
+  TRIFEM_CHECK(std::all_of(surface.facets.begin(), surface.facets.end(),
+                           [](const Facet& f) { return f.bounds_cell(); }),
+               "the surface '{}' is a surface mesh that bounds no cell: refining the mesh "
+               "splits cells and their faces only (refine the surface mesh itself instead)",
+               name);
 }
 
 Mesh refine_uniformly(const Mesh& mesh, int levels) {

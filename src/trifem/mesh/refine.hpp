@@ -4,6 +4,8 @@
 
 #include "trifem/mesh/mesh.hpp"
 
+#include <functional>
+
 namespace trifem::mesh {
 
 /// The mesh with every hex8 split into eight by its edge midpoints, face centres and centre,
@@ -20,5 +22,22 @@ Mesh refine_uniformly(const Mesh& mesh);
 
 /// `mesh` refined `levels` times (levels >= 0; each level multiplies the cells by eight).
 Mesh refine_uniformly(const Mesh& mesh, int levels);
+
+// Building blocks shared with the refinement of the other families (fe::refine_uniformly),
+// where coarse cell c has the children 8c, ..., 8c + 7 as here.
+
+/// Adds the cell blocks and cell data of `coarse` to `fine`, each cell's going to its children.
+void add_refined_cell_sets(const Mesh& coarse, Mesh& fine);
+
+/// The node set `set` of the coarse mesh in the fine one: its own nodes, and each new node n
+/// (coarse_nodes <= n < fine_nodes) all of whose `parents(n)` (the coarse nodes it is built
+/// from) belong to it.
+std::vector<Index> refined_node_set(const std::vector<Index>& set, Index coarse_nodes,
+                                    Index fine_nodes,
+                                    const std::function<std::vector<Index>(Index)>& parents);
+
+/// InputError unless every facet of the surface `name` bounds a cell (a surface mesh cannot be
+/// refined with the cells).
+void check_refinable_surface(const std::string& name, const Surface& surface);
 
 } // namespace trifem::mesh

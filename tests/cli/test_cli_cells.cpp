@@ -176,9 +176,9 @@ material = "tissue"
 // tet10 upper body, biphasic). At 20000 s (67 consolidation times L²/(H_A k)) the interface
 // is drained and carries the load: contact force q to round-off, water potential ~0, and the
 // traction -q at every slave node (the tri6 faces' mid-edge nodes included: their potentials'
-// multipliers are linear from the corners) within the steady-state error of biphasic tet10
-// cells. That error is the cells' own: the same cube alone, confined and drained, keeps cell
-// pressures of up to 1.4e-3 q (first order, docs/theory/elements.md); here 1.3e-3 q.
+// multipliers are linear from the corners). With one pressure per tet the drained state kept
+// an error of 1.3e-3 q; with the pressure linear from the corners it is exact
+// (docs/theory/elements.md).
 TEST_F(CellsCli, ABiphasicTet10CubeConsolidatesThroughContactWithAHexBoxToTheDrainedState) {
   std::string text = tet10_cube_on_a_hex_box() + R"(
 [materials.tissue]
@@ -233,17 +233,22 @@ slave = "zmin"
   const auto& t = s["contact_traction [MPa]"];
   const auto& mu = s["fluid_chemical_potential [MPa]"];
   ASSERT_GT(t.size(), 16u); // the corners and mid-edge nodes of the cube's bottom face
+  double worst = 0.0;
   for (std::size_t k = 0; k < t.size(); ++k) {
-    EXPECT_NEAR(t[k], -0.1, 2e-3 * 0.1) << "slave node " << k;
+    worst = std::max(worst, std::abs(t[k] + 0.1));
+    EXPECT_NEAR(t[k], -0.1, 1e-10 * 0.1) << "slave node " << k;
     EXPECT_LE(std::abs(mu[k]), 1e-6 * 0.1) << "slave node " << k;
   }
+  std::cout << "largest |traction + q| / q = " << worst / 0.1 << "\n";
   const History h = read_history(output() / "history.csv");
   EXPECT_NEAR(h["contact1.Fz [N]"].back(), 0.1, 1e-10 * 0.1); // on the slave body, up
-  // the water of each body and of both: change = outflow through the tri6 and quad4 faces
+  // the water of each body and of both: change = outflow through the tri6 and quad4 faces (a
+  // tet's water balance holds in its corners' sums, so the sum over its cells is exact to
+  // Newton's residual tolerance, not cell by cell: docs/theory/elements.md)
   const std::vector<double> water = balance_errors(output() / "summary.json", "water");
   ASSERT_EQ(water.size(), 3u); // the model, the cube, the box
   for (const double e : water)
-    EXPECT_LT(e, 1e-12);
+    EXPECT_LT(e, 1e-10);
   // the box carries the master-side resultant (the both-surface scheme balances the two only
   // for a uniform traction, docs/theory/contact.md §4.1): 8e-5 q apart here
   EXPECT_NEAR(h["lower.zmin.Rz [N]"].back(), -h["contact1.master_Fz [N]"].back(), 1e-10 * 0.1);

@@ -105,6 +105,50 @@ linear_solver = "sparselu"
   check_restart(file, [](const auto& files) { return files[(files.size() - 1) / 2]; });
 }
 
+/// Biphasic tet10 cells, whose pressure is linear from their corners (the corners' volumes of
+/// the last step are part of the state): a column of Kuhn's tets consolidating under a ramped
+/// load, continued from the middle.
+TEST_F(CliRestart, ContinuedWhileBiphasicTet10CellsConsolidate) {
+  const fs::path file = write_file("tet10_column.toml", R"(
+[[mesh.box]]
+name = "column"
+size = [1.0, 1.0, 2.0]
+divisions = [1, 1, 4]
+cell = "tet10"
+material = "tissue"
+[materials.tissue]
+type = "biphasic"
+phi_s0 = 0.2
+permeability = 1e-2
+[materials.tissue.solid]
+type = "neo-hookean"
+E = 1.0
+nu = 0.3
+[curves.ramp]
+points = [[0.0, 0.0], [1.0, 1.0]]
+[[loads.pressure]]
+surface = "column.zmax"
+value = 0.1
+curve = "ramp"
+[[boundary.fixed]]
+set = "column.zmin"
+[[boundary.fixed]]
+set = "column.xmin"
+field = "displacement"
+components = ["x"]
+[[boundary.fixed]]
+set = "column.ymin"
+field = "displacement"
+components = ["y"]
+[time]
+end_time = 4.0
+dt = 0.5
+[solver]
+linear_solver = "sparselu"
+)");
+  check_restart(file, [](const auto& files) { return files[(files.size() - 1) / 2]; });
+}
+
 TEST_F(CliRestart, ContinuedWhileAJointTurnsABonePastHalfATurn) {
   // a hinge driven through 1.5 turns (the bone's rotation vector is carried below π on the
   // way), a damper and a cable on the bone: the restarted run repeats the history

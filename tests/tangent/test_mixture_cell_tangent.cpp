@@ -232,3 +232,134 @@ TEST(MixtureCell, TangentWithStrainDependentTransportLawsMatchesFiniteDifference
     check_tangent(type, true, "saint-venant-kirchhoff", test::kMackieMeares);
   }
 }
+
+namespace mixture_cell_test {
+
+/// Field of local unknown i of a tet with corner potentials: 0 u, 1 w, 2 j+, 3 j-, 4 p, 5 eta.
+int corner_field_of(const physics::MixtureLayout& L, int i) {
+  if (i >= L.p())
+    return i < L.p() + 4 ? 4 : 5;
+  return i < 3 * L.nodes ? 0 : 1 + (i - 3 * L.nodes) / (3 * L.flux_nodes);
+}
+
+/// A tet's state with corner potentials that differ by corner (p varies by 10 %).
+struct CornerSetup {
+  CellSetup cell;
+  physics::CornerPotentials corners;
+};
+
+CornerSetup make_corner_setup(fe::CellType type, bool ions, const std::string& solid,
+                              const material::ParameterValues& laws = {}) {
+  CornerSetup s{make_cell_setup(type, ions, solid, laws), {}};
+  test::Noise noise(9);
+  // the last step's corner volumes: those at a displacement 0.9 times the current one
+  s.corners.volume_old = physics::corner_volumes(s.cell.geo, 0.9 * s.cell.x.u);
+  for (std::size_t b = 0; b < 4; ++b) {
+    s.corners.p[b] = s.cell.x.p * (1.0 + 0.1 * noise.next());
+    s.corners.eta[b] = s.cell.x.eta * (1.0 + 0.1 * noise.next());
+  }
+  return s;
+}
+
+bool evaluate_corners(const CornerSetup& s, const physics::CellMixtureUnknowns& x,
+                      const physics::CornerPotentials& corners, LocalVector& r, LocalMatrix* K) {
+  return physics::mixture_tet(s.cell.geo, x, corners, s.cell.base.h, s.cell.base.mat,
+                              s.cell.base.step, s.cell.layout, r, K);
+}
+
+/// The tangent of mixture_tet against central differences, block by block as check_tangent.
+void check_corner_tangent(fe::CellType type, bool ions, const std::string& solid,
+                          const material::ParameterValues& laws = {}) {
+  const CornerSetup s = make_corner_setup(type, ions, solid, laws);
+  const physics::MixtureLayout& L = s.cell.layout;
+  LocalVector r, r_only;
+  LocalMatrix K;
+  ASSERT_TRUE(evaluate_corners(s, s.cell.x, s.corners, r, &K));
+  ASSERT_TRUE(evaluate_corners(s, s.cell.x, s.corners, r_only, nullptr));
+  EXPECT_LE((r - r_only).norm(), 1e-14 * r.norm());
+  const int n = physics::corner_layout_size(L);
+  ASSERT_EQ(r.size(), n);
+  constexpr Real scale[6] = {kU, kW, kJ, kJ, kP, kEta};
+  LocalMatrix K_fd(n, n);
+  for (int j = 0; j < n; ++j) {
+    const int f = corner_field_of(L, j);
+    const Real h = 1e-4 * scale[f];
+    physics::CellMixtureUnknowns xp = s.cell.x, xm = s.cell.x;
+    physics::CornerPotentials cp = s.corners, cm = s.corners;
+    if (f == 4 || f == 5) {
+      auto& values_p = f == 4 ? cp.p : cp.eta;
+      auto& values_m = f == 4 ? cm.p : cm.eta;
+      const auto b = static_cast<std::size_t>((j - L.p()) % 4);
+      values_p[b] += h;
+      values_m[b] -= h;
+    } else {
+      unknown(xp, L, j) += h;
+      unknown(xm, L, j) -= h;
+    }
+    LocalVector rp, rm;
+    ASSERT_TRUE(evaluate_corners(s, xp, cp, rp, nullptr));
+    ASSERT_TRUE(evaluate_corners(s, xm, cm, rm, nullptr));
+    K_fd.col(j) = (rp - rm) / (2 * h);
+  }
+  const char* names[6] = {"u", "w", "j+", "j-", "p", "eta"};
+  Real worst = 0.0;
+  for (int fr = 0; fr < 6; ++fr)
+    for (int fc = 0; fc < 6; ++fc) {
+      Real num = 0.0, den = 0.0, row_scale = 0.0;
+      for (int i = 0; i < n; ++i)
+        if (corner_field_of(L, i) == fr)
+          row_scale = std::max(row_scale, K.row(i).cwiseAbs().maxCoeff());
+      for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j)
+          if (corner_field_of(L, i) == fr && corner_field_of(L, j) == fc) {
+            const Real t = scale[fc];
+            num += std::pow((K(i, j) - K_fd(i, j)) * t, 2);
+            den += std::pow(K(i, j) * t, 2);
+          }
+      if (den == 0.0 && num == 0.0)
+        continue;
+      const Real rel = std::sqrt(num) / std::max(std::sqrt(den), 1e-8 * row_scale * kU);
+      worst = std::max(worst, rel);
+      EXPECT_LE(rel, 1e-6) << mesh::name(type) << (ions ? " triphasic " : " biphasic ") << solid
+                           << " block d" << names[fr] << "/d" << names[fc];
+    }
+  std::cout << mesh::name(type) << (ions ? " triphasic" : " biphasic")
+            << " with corner potentials: worst block relative error " << worst << "\n";
+}
+
+} // namespace mixture_cell_test
+
+TEST(MixtureCell, CornerPotentialTangentMatchesFiniteDifferencesOnTets) {
+  for (fe::CellType type : {fe::CellType::Tet10, fe::CellType::Tet4}) {
+    check_corner_tangent(type, true, "neo-hookean");
+    check_corner_tangent(type, false, "saint-venant-kirchhoff");
+  }
+  check_corner_tangent(fe::CellType::Tet10, false, "neo-hookean", test::kHolmesMow);
+  check_corner_tangent(fe::CellType::Tet10, true, "saint-venant-kirchhoff", test::kMackieMeares);
+}
+
+/// With the same potential at every corner, mixture_tet is mixture_cell with that potential
+/// (its rows of p and η summed over the corners, each a quarter) and the corners' volumes of
+/// the last step at V_old / 4 each: the element of the other families.
+TEST(MixtureCell, EqualCornerPotentialsGiveTheCellElementOnAStraightTet) {
+  for (bool ions : {true, false}) {
+    CellSetup s = make_cell_setup(fe::CellType::Tet4, ions, "neo-hookean");
+    physics::CornerPotentials corners;
+    corners.p.fill(s.x.p);
+    corners.eta.fill(s.x.eta);
+    corners.volume_old.fill(0.25 * s.base.h.V_old);
+    LocalVector r_cell, r_tet;
+    ASSERT_TRUE(evaluate(s, s.x, r_cell, nullptr));
+    ASSERT_TRUE(physics::mixture_tet(s.geo, s.x, corners, s.base.h, s.base.mat, s.base.step,
+                                     s.layout, r_tet, nullptr));
+    const physics::MixtureLayout& L = s.layout;
+    const int head = L.p();
+    EXPECT_LE((r_tet.head(head) - r_cell.head(head)).cwiseAbs().maxCoeff(),
+              1e-13 * r_cell.head(head).cwiseAbs().maxCoeff());
+    for (int b = 0; b < 4; ++b) {
+      EXPECT_NEAR(r_tet[head + b], 0.25 * r_cell[L.p()], 1e-13 * std::abs(r_cell[L.p()]));
+      if (ions)
+        EXPECT_NEAR(r_tet[head + 4 + b], 0.25 * r_cell[L.eta()], 1e-13 * std::abs(r_cell[L.eta()]));
+    }
+  }
+}

@@ -55,6 +55,15 @@ struct MixtureModel {
     f.p = dofs.add_field("pressure", FieldRole::potential, mesh.num_cells(), 1);
     if (props->charged)
       f.eta = dofs.add_field("potential", FieldRole::potential, mesh.num_cells(), 1);
+    bool tets = false;
+    for (Index c = 0; c < mesh.num_cells(); ++c)
+      tets = tets || mesh::linear_type(mesh.cell_type(c)) == mesh::CellType::Tet4;
+    if (tets) {
+      f.p_corner = dofs.add_field("pressure_corner", FieldRole::potential, mesh.num_nodes(), 1);
+      if (props->charged)
+        f.eta_corner =
+            dofs.add_field("potential_corner", FieldRole::potential, mesh.num_nodes(), 1);
+    }
   }
 
   /// Fixes component k of `field` on a node set to value * curve(t).
@@ -75,6 +84,14 @@ struct MixtureModel {
   /// Fixes the fluxes of the nodes that are no cell's corner (the mid-edge nodes of tet10 and
   /// hex20 cells): the fluxes are interpolated from the corners (physics::mixture_flux_map), so
   /// no element uses them (the models fix every unused DOF so).
+  bool tet_corner(Index n) const {
+    for (Index c = 0; c < mesh.num_cells(); ++c)
+      if (mesh::linear_type(mesh.cell_type(c)) == mesh::CellType::Tet4)
+        for (Index m : mesh.cell_nodes(c).first(4))
+          if (m == n)
+            return true;
+    return false;
+  }
   void fix_mid_edge_fluxes() {
     std::vector<char> corner(static_cast<std::size_t>(mesh.num_nodes()), 0);
     for (Index c = 0; c < mesh.num_cells(); ++c)
@@ -87,6 +104,16 @@ struct MixtureModel {
         for (dofs::FieldId fl : {f.w, f.j_plus, f.j_minus})
           for (int k = 0; k < 3 && fl.valid(); ++k)
             c.dofs.push_back(dofs.dof(fl, n, k));
+    for (Index n = 0; n < mesh.num_nodes(); ++n) // the corner potentials but at tets' corners
+      if (!corner[static_cast<std::size_t>(n)] || !tet_corner(n))
+        for (dofs::FieldId fl : {f.p_corner, f.eta_corner})
+          if (fl.valid())
+            c.dofs.push_back(dofs.dof(fl, n, 0));
+    for (Index cell = 0; cell < mesh.num_cells(); ++cell) // tets' cell potentials
+      if (f.p_corner.valid() && mesh::linear_type(mesh.cell_type(cell)) == mesh::CellType::Tet4)
+        for (dofs::FieldId fl : {f.p, f.eta})
+          if (fl.valid())
+            c.dofs.push_back(dofs.dof(fl, cell, 0));
     if (!c.dofs.empty())
       conditions.push_back(std::move(c));
   }
@@ -130,6 +157,8 @@ struct MixtureModel {
     set(f.j_minus, flux);
     set(f.p, M);
     set(f.eta, M);
+    set(f.p_corner, M);
+    set(f.eta_corner, M);
     return s;
   }
 

@@ -11,7 +11,8 @@ constexpr Real kPerLitre = 1e6;
 
 void add_mixture_values(const model::Model& model, const physics::MixtureCellOutput& o, Index c,
                         const Vector& x, CellValues& v) {
-  v.fluid_pressure = x[model.dofs.dof(model.fields.p, c, 0)];
+  const auto [pressure, eta] = physics::cell_potentials(model.mesh, model.dofs, model.fields, x, c);
+  v.fluid_pressure = pressure;
   v.solid_stress = o.solid_stress;
   v.stress = o.solid_stress - v.fluid_pressure * Mat3::Identity();
   v.relative_volume = o.J;
@@ -20,8 +21,7 @@ void add_mixture_values(const model::Model& model, const physics::MixtureCellOut
   v.fluid_flux = o.w;
   if (!model.mixture->has_ions())
     return;
-  v.electric_potential =
-      x[model.dofs.dof(model.fields.eta, c, 0)] / model.chem.c_ref / model.chem.faraday;
+  v.electric_potential = eta / model.chem.c_ref / model.chem.faraday;
   v.cation_concentration = o.chem.c_plus * kPerLitre;
   v.anion_concentration = o.chem.c_minus * kPerLitre;
   v.fixed_charge_density = o.chem.c_fixed * kPerLitre;

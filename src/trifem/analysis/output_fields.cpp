@@ -87,10 +87,10 @@ std::vector<io::DataArray> point_fields(const model::Model& model, const Vector&
   io::DataArray p = array("p", 1, model.mesh.num_cells()), psi = p;
   for (Index e = 0; e < model.mixture->num_elements(); ++e) {
     const Index c = model.mixture->cell(e);
-    p.values[c] = x[model.dofs.dof(model.fields.p, c, 0)];
-    if (model.fields.eta.valid())
-      psi.values[c] =
-          x[model.dofs.dof(model.fields.eta, c, 0)] / model.chem.c_ref / model.chem.faraday;
+    const auto [pressure, eta] =
+        physics::cell_potentials(model.mesh, model.dofs, model.fields, x, c);
+    p.values[c] = pressure;
+    psi.values[c] = eta / model.chem.c_ref / model.chem.faraday;
   }
   out.push_back(nodal_average(model, p, "fluid_pressure [MPa]"));
   if (model.fields.eta.valid())

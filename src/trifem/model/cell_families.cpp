@@ -25,18 +25,17 @@ void check_material(const io::CaseSpec& spec, const Model& model, Index c) {
   const std::string where = describe(model.mesh, c);
   const mesh::CellType type = model.mesh.cell_type(c);
   TRIFEM_CHECK(!m.mixture || type != mesh::CellType::Tet4,
-               "materials.{}: {} has this mixture material, and tet4 cells cannot carry it: their "
-               "fluxes are linear and the pressure is one per cell, and a tet mesh has about six "
-               "cells per node against three flux unknowns per node, so that the equations are "
-               "singular (docs/theory/elements.md). Mesh the tissue with tet10 cells (Gmsh: "
-               "-order 2), or with penta6, hex8 or hex20 cells",
+               "materials.{}: {} has this mixture material, and tet4 cells cannot carry it: "
+               "their displacement, fluxes and potentials would all be linear, and that pair "
+               "locks or oscillates in the undrained limit (docs/theory/elements.md). Mesh the "
+               "tissue with tet10 cells (Gmsh: -order 2), or with penta6, hex8 or hex20 cells",
                m.name, where);
   TRIFEM_CHECK(!m.mixture || !m.mixture->charged || type != mesh::CellType::Tet10,
                "materials.{}: {} has this triphasic material, and tet10 cells carry biphasic "
-               "materials only so far: the electric potential, one per cell, is balanced by the "
-               "ion fluxes alone, linear on a tet, too few for about six cells per node, and the "
-               "equations are singular (docs/theory/elements.md). Mesh the tissue with penta6 "
-               "(wedge layers), hex8 or hex20 cells",
+               "materials only so far: their ion contents, one per cell, change only by the "
+               "outflows of the corners' fluxes, too few on a tet to reach a uniform state, and "
+               "steady states come out wrong by up to 0.3 % (docs/theory/elements.md). Mesh the "
+               "tissue with penta6 (wedge layers), hex8 or hex20 cells",
                m.name, where);
   TRIFEM_CHECK(!m.mixture || spec.solver.linear_solver.schur != SchurApproximation::drained,
                "solver.schur_approximation: the drained Schur complement takes the mixture on hex8 "

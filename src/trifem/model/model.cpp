@@ -84,11 +84,14 @@ std::vector<CellMaterial> cell_materials(const io::CaseSpec& spec, const mesh::M
 }
 
 void add_fields(const std::vector<CellMaterial>& materials, Model& model) {
-  bool mixture = false, ions = false;
+  bool mixture = false, ions = false, tets = false;
   for (const auto& m : materials) {
     mixture = mixture || m.mixture;
     ions = ions || (m.mixture && m.mixture->charged);
   }
+  for (Index c = 0; c < model.mesh.num_cells(); ++c)
+    tets = tets || (materials[static_cast<std::size_t>(c)].mixture &&
+                    mesh::linear_type(model.mesh.cell_type(c)) == mesh::CellType::Tet4);
   const Index nodes = model.mesh.num_nodes(), cells = model.mesh.num_cells();
   physics::MixtureFields& f = model.fields;
   f.u = model.dofs.add_field("displacement", FieldRole::displacement, nodes, 3);
@@ -102,6 +105,11 @@ void add_fields(const std::vector<CellMaterial>& materials, Model& model) {
     f.p = model.dofs.add_field("pressure", FieldRole::potential, cells, 1);
   if (ions)
     f.eta = model.dofs.add_field("electric_potential", FieldRole::potential, cells, 1);
+  if (tets) // (the potentials of tets are linear from their corners)
+    f.p_corner = model.dofs.add_field("corner_pressure", FieldRole::potential, nodes, 1);
+  if (tets && ions)
+    f.eta_corner =
+        model.dofs.add_field("corner_electric_potential", FieldRole::potential, nodes, 1);
 }
 
 /// Bulk terms: a solid term for pure-solid cells, a mixture term for mixture cells.
@@ -255,8 +263,14 @@ std::vector<solver::FieldScale> field_scales(const Model& model) {
   const Real flux = M * model.permeability_scale / L, energy = M * L * L * L;
   std::vector<solver::FieldScale> s(model.dofs.num_fields());
   const physics::MixtureFields& f = model.fields;
-  for (auto [id, size] :
-       {std::pair{f.u, L}, {f.w, flux}, {f.j_plus, flux}, {f.j_minus, flux}, {f.p, M}, {f.eta, M}})
+  for (auto [id, size] : {std::pair{f.u, L},
+                          {f.w, flux},
+                          {f.j_plus, flux},
+                          {f.j_minus, flux},
+                          {f.p, M},
+                          {f.eta, M},
+                          {f.p_corner, M},
+                          {f.eta_corner, M}})
     if (id.valid())
       s[id.index] = {model.dofs.field(id).name, energy / size, size};
   // rotating rigid bodies: their center moves like the tissue, their rotation is of order 1 rad;

@@ -592,6 +592,48 @@ bool evaluate_cell(const typename Cell::Geometry& geo,
   return true;
 }
 
+/// The potentials of a tet cell linear from its corners (mixture_tet): reduces the rows and
+/// columns of its constant p and η to those of the corners' values (R' = Eᵀ R, K' = Eᵀ K E with
+/// p̄ = Σ_b p_b / 4), then adds what p(x) − p̄ does to the momentum and what the corners' volumes
+/// V_b − V/4 do to the water balances.
+void to_corner_potentials(const Integrals<AnyCellMixture>& I, const CornerPotentials& corners,
+                          const MixtureHistory& h, const MixtureStep& step, const MixtureLayout& L,
+                          LocalVector& r, LocalMatrix* K) {
+  const int head = L.p(), potentials = L.ions ? 2 : 1;
+  Eigen::MatrixXd E = Eigen::MatrixXd::Zero(L.size(), head + 4 * potentials);
+  E.topLeftCorner(head, head).setIdentity();
+  for (int i = 0; i < potentials; ++i)
+    E.block(head + i, head + 4 * i, 1, 4).setConstant(0.25);
+  r = E.transpose() * r;
+  if (K)
+    *K = E.transpose() * (*K) * E;
+  const Real p_mean = 0.25 * (corners.p[0] + corners.p[1] + corners.p[2] + corners.p[3]);
+  for (const PointData<AnyCellMixture>& d : I.points()) {
+    Real p_point = 0.0;
+    for (int b = 0; b < 4; ++b)
+      p_point += d.N[b] * corners.p[static_cast<std::size_t>(b)];
+    for (int b = 0; b < 4; ++b) {
+      const Real weight = (d.N[b] - 0.25) * d.dv; // of G_ab − g_a/4 and V_b − V/4
+      r[head + b] += weight / step.dt;
+      for (int a = 0; a < L.nodes; ++a) {
+        const Vec3 G = d.b.row(a).transpose() * weight;
+        r.segment<3>(L.u(a, 0)) -= corners.p[static_cast<std::size_t>(b)] * G;
+        if (!K)
+          continue;
+        K->block<3, 1>(L.u(a, 0), head + b) -= G;
+        K->block<1, 3>(head + b, L.u(a, 0)) += G.transpose() / step.dt;
+      }
+    }
+    if (K)
+      for (int a = 0; a < L.nodes; ++a)
+        for (int c = 0; c < L.nodes; ++c)
+          K->block<3, 3>(L.u(a, 0), L.u(c, 0)) -=
+              (p_point - p_mean) * area_derivative(d.b.row(a), d.b.row(c), d.dv);
+  }
+  for (int b = 0; b < 4; ++b) // the old volumes: V_b^n − V^n/4
+    r[head + b] -= (corners.volume_old[static_cast<std::size_t>(b)] - 0.25 * h.V_old) / step.dt;
+}
+
 /// The element's chemistry, mean fluxes and stress (mixture_hex8_output, mixture_cell_output).
 template <class Cell>
 MixtureCellOutput
@@ -632,6 +674,50 @@ bool mixture_cell(const CellGeometry& geo, const CellMixtureUnknowns& x,
   TRIFEM_VERIFY(layout.nodes == geo.num_nodes(), "the mixture layout has {} nodes, the cell {}",
                 layout.nodes, geo.num_nodes());
   return evaluate_cell<AnyCellMixture>(geo, x, history, mat, step, layout, r, K);
+}
+
+std::array<Real, 4> corner_volumes(const CellGeometry& geo, const fe::CellNodeCoords& u) {
+  TRIFEM_VERIFY(mesh::linear_type(geo.reference->type()) == fe::CellType::Tet4,
+                "corner potentials on a {} cell", mesh::name(geo.reference->type()));
+  const MixtureFluxMap& P = mixture_flux_map(geo.reference->type());
+  std::array<Real, 4> V{};
+  for (std::size_t q = 0; q < geo.dV.size(); ++q) {
+    const Real dv = (Mat3::Identity() + u.transpose() * geo.dN_dX[q]).determinant() * geo.dV[q];
+    const fe::ShapeValues N = P * geo.reference->rule_shapes()[q];
+    for (int b = 0; b < 4; ++b)
+      V[static_cast<std::size_t>(b)] += N[b] * dv;
+  }
+  return V;
+}
+
+bool mixture_tet(const CellGeometry& geo, const CellMixtureUnknowns& x,
+                 const CornerPotentials& corners, const MixtureHistory& history,
+                 const material::MixtureProperties& mat, const MixtureStep& step,
+                 const MixtureLayout& layout, LocalVector& r, LocalMatrix* K) {
+  TRIFEM_VERIFY(layout.nodes == geo.num_nodes() && layout.flux_nodes == 4 &&
+                    mesh::linear_type(geo.reference->type()) == fe::CellType::Tet4,
+                "corner potentials on a {} cell", mesh::name(geo.reference->type()));
+  CellMixtureUnknowns mean = x;
+  mean.p = mean.eta = 0.0;
+  for (std::size_t b = 0; b < 4; ++b) {
+    mean.p += 0.25 * corners.p[b];
+    mean.eta += 0.25 * corners.eta[b];
+  }
+  Integrals<AnyCellMixture> I;
+  if (!integrate(geo, mean, layout.ions, step.lumped_flux_mass, I))
+    return false;
+  const MixtureChemistry c = chemistry(I, mean, history, mat, step, layout.ions);
+  if (!c.admissible)
+    return false;
+  CellVectorX f_int;
+  CellMatrixX K_solid;
+  if (!solid_cell(geo, mean.u, *mat.solid, f_int, K ? &K_solid : nullptr))
+    return false;
+  residual(I, c, mean, history, step, layout, f_int, r);
+  if (K)
+    tangent(I, c, mean, history, mat, step, layout, K_solid, *K);
+  to_corner_potentials(I, corners, history, step, layout, r, K);
+  return true;
 }
 
 std::optional<MixtureFluxBlock>

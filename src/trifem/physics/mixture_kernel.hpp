@@ -9,6 +9,7 @@
 #include "trifem/physics/solid_cell.hpp"
 #include "trifem/physics/term.hpp"
 
+#include <array>
 #include <optional>
 
 namespace trifem::physics {
@@ -145,6 +146,34 @@ bool mixture_cell(const CellGeometry& geo, const CellMixtureUnknowns& x,
                   const MixtureHistory& history, const material::MixtureProperties& mat,
                   const MixtureStep& step, const MixtureLayout& layout, LocalVector& r,
                   LocalMatrix* K);
+
+/// The potentials of a tet cell, continuous and linear from its four corners
+/// (docs/theory/elements.md): their values there and, for the water balance tested with the
+/// corners' functions, the volumes those functions weigh at the last converged step.
+struct CornerPotentials {
+  std::array<Real, 4> p{};          ///< hydrostatic pressure at the corners [MPa]
+  std::array<Real, 4> eta{};        ///< Faraday constant x electric potential [mJ/mmol]
+  std::array<Real, 4> volume_old{}; ///< V_b = ∫ N_b J dV at the last converged step [mm^3]
+};
+
+/// The local layout of a cell with corner potentials: `layout`'s up to the fluxes, then p at
+/// the four corners, then η at the four corners (with ions).
+inline int corner_layout_size(const MixtureLayout& layout) {
+  return layout.p() + (layout.ions ? 8 : 4);
+}
+
+/// V_b = ∫ N_b J dV for the corners b of a tet4 or tet10 cell at the displacement u [mm^3].
+std::array<Real, 4> corner_volumes(const CellGeometry& geo, const fe::CellNodeCoords& u);
+
+/// mixture_cell on a tet4 or tet10 with the potentials of `corners` (x.p and x.eta are not
+/// read): the fluxes see their means (the divergence of the linear fluxes is constant per
+/// cell, so ∫ p div(N_a) dv = p̄ ∫ div N_a dv), the momentum sees p(x) at every point, and the
+/// water balance is tested with the corners' functions. Rows and columns in
+/// corner_layout_size's layout.
+bool mixture_tet(const CellGeometry& geo, const CellMixtureUnknowns& x,
+                 const CornerPotentials& corners, const MixtureHistory& history,
+                 const material::MixtureProperties& mat, const MixtureStep& step,
+                 const MixtureLayout& layout, LocalVector& r, LocalMatrix* K);
 
 /// mixture_hex8_output for a cell of any family.
 MixtureCellOutput mixture_cell_output(const CellGeometry& geo, const CellMixtureUnknowns& x,

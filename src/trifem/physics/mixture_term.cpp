@@ -63,6 +63,7 @@ MixtureTerm::MixtureTerm(const mesh::Mesh& mesh, const dofs::DofMap& dofs, Mixtu
   TRIFEM_VERIFY(cells_.size() == props_.size(), "one mixture per cell expected");
   geometry_.reserve(cells_.size());
   history_.resize(cells_.size());
+  corner_volume_old_.resize(cells_.size());
   prestress_.assign(cells_.size(), 0.0);
   for (std::size_t e = 0; e < cells_.size(); ++e) {
     TRIFEM_CHECK(!props_[e]->charged || has_ions(),
@@ -76,6 +77,10 @@ MixtureTerm::MixtureTerm(const mesh::Mesh& mesh, const dofs::DofMap& dofs, Mixtu
         },
         geometry_.back());
     h.V_old = h.V0;
+    if (corner_potentials(static_cast<Index>(e)))
+      corner_volume_old_[e] =
+          corner_volumes(std::get<CellGeometry>(geometry_.back()),
+                         fe::CellNodeCoords::Zero(mesh::num_nodes(mesh_.cell_type(cells_[e])), 3));
     h.N_fixed = h.N_fixed_old = props_[e]->fixed_charge * props_[e]->phi_w0() * h.V0;
   }
 }
@@ -98,9 +103,37 @@ void MixtureTerm::element_dofs(Index e, std::vector<Index>& dofs) const {
       for (int k = 0; k < 3; ++k)
         dofs.push_back(dofs_.dof(f, node, k));
   }
+  if (corner_potentials(e)) {
+    for (const dofs::FieldId f : {fields_.p_corner, fields_.eta_corner})
+      if (f == fields_.p_corner || charged)
+        for (const Index node : nodes.first(4))
+          dofs.push_back(dofs_.dof(f, node, 0));
+    return;
+  }
   dofs.push_back(dofs_.dof(fields_.p, cells_[e], 0));
   if (charged)
     dofs.push_back(dofs_.dof(fields_.eta, cells_[e], 0));
+}
+
+bool MixtureTerm::corner_potentials(Index e) const {
+  return has_corner_potentials(fields_, mesh_.cell_type(cells_[e]));
+}
+
+bool has_corner_potentials(const MixtureFields& fields, mesh::CellType type) {
+  return fields.p_corner.valid() && mesh::linear_type(type) == mesh::CellType::Tet4;
+}
+
+std::pair<Real, Real> cell_potentials(const mesh::Mesh& mesh, const dofs::DofMap& dofs,
+                                      const MixtureFields& fields, const Vector& x, Index c) {
+  if (!has_corner_potentials(fields, mesh.cell_type(c)))
+    return {x[dofs.dof(fields.p, c, 0)], fields.eta.valid() ? x[dofs.dof(fields.eta, c, 0)] : 0.0};
+  Real p = 0.0, eta = 0.0;
+  for (const Index node : mesh.cell_nodes(c).first(4)) {
+    p += 0.25 * x[dofs.dof(fields.p_corner, node, 0)];
+    if (fields.eta_corner.valid())
+      eta += 0.25 * x[dofs.dof(fields.eta_corner, node, 0)];
+  }
+  return {p, eta};
 }
 
 template <class Coords>
@@ -123,9 +156,9 @@ void MixtureTerm::gather(Index e, const Vector& x, MixtureUnknownsOf<Coords>& v)
         v.jm(a, k) = chem_.c_ref * x[dofs_.dof(fields_.j_minus, nodes[a], k)];
       }
     }
-  v.p = x[dofs_.dof(fields_.p, cells_[e], 0)];
-  if (charged)
-    v.eta = x[dofs_.dof(fields_.eta, cells_[e], 0)] / chem_.c_ref;
+  const auto [p, eta] = cell_potentials(mesh_, dofs_, fields_, x, cells_[e]);
+  v.p = p;
+  v.eta = charged ? eta / chem_.c_ref : 0.0;
 }
 
 Real MixtureTerm::current_volume(Index e, const Vector& x) const {
@@ -170,20 +203,40 @@ MixtureStep MixtureTerm::step(Index e, Real dt) const {
 
 void MixtureTerm::scale(Index e, Real dt, LocalVector& r, LocalMatrix* K) const {
   const MixtureLayout L = layout(e);
-  const int n = L.size(), flux = 3 * L.flux_nodes;
+  const bool at_corners = corner_potentials(e);
+  const int n = at_corners ? corner_layout_size(L) : L.size(), flux = 3 * L.flux_nodes;
+  const int potentials = at_corners ? 4 : 1; // values of p and of η
   const Scaling f = scaling(dt, chem_.c_ref);
   Eigen::VectorXd row = Eigen::VectorXd::Ones(n), col = Eigen::VectorXd::Ones(n);
   row.segment(L.w(0, 0), flux).setConstant(f.water_row);
-  row[L.p()] = f.p_row;
+  row.segment(L.p(), potentials).setConstant(f.p_row);
   if (L.ions) {
     row.segment(L.jp(0, 0), 2 * flux).setConstant(f.ion_row);
     col.segment(L.jp(0, 0), 2 * flux).setConstant(f.ion_column);
-    row[L.eta()] = f.eta_row;
-    col[L.eta()] = f.eta_column;
+    row.segment(L.p() + potentials, potentials).setConstant(f.eta_row);
+    col.segment(L.p() + potentials, potentials).setConstant(f.eta_column);
   }
   r.array() *= row.array();
   if (K)
     *K = row.asDiagonal() * (*K) * col.asDiagonal();
+}
+
+CornerPotentials MixtureTerm::corners(Index e, const Vector& x) const {
+  CornerPotentials c;
+  c.volume_old = corner_volume_old_[static_cast<std::size_t>(e)];
+  const std::span<const Index> nodes = mesh_.cell_nodes(cells_[e]);
+  for (std::size_t b = 0; b < 4; ++b) {
+    c.p[b] = x[dofs_.dof(fields_.p_corner, nodes[b], 0)];
+    if (ions(e))
+      c.eta[b] = x[dofs_.dof(fields_.eta_corner, nodes[b], 0)] / chem_.c_ref;
+  }
+  return c;
+}
+
+std::array<Real, 4> MixtureTerm::corner_volumes_at(Index e, const Vector& x) const {
+  CellMixtureUnknowns v;
+  gather(e, x, v);
+  return corner_volumes(std::get<CellGeometry>(geometry_[e]), v.u);
 }
 
 bool MixtureTerm::evaluate(Index e, const EvalState& state, LocalVector& r, LocalMatrix* K) const {
@@ -194,6 +247,11 @@ bool MixtureTerm::evaluate(Index e, const EvalState& state, LocalVector& r, Loca
     MixtureUnknowns v;
     gather(e, state.x, v);
     ok = mixture_hex8(*hex, v, h, *props_[e], s, layout(e), r, K);
+  } else if (corner_potentials(e)) {
+    CellMixtureUnknowns v;
+    gather(e, state.x, v);
+    ok = mixture_tet(std::get<CellGeometry>(geometry_[e]), v, corners(e, state.x), h, *props_[e], s,
+                     layout(e), r, K);
   } else {
     CellMixtureUnknowns v;
     gather(e, state.x, v);
@@ -261,17 +319,25 @@ std::vector<double> MixtureTerm::history() const {
   out.reserve(kHistoryValues * history_.size());
   for (const MixtureHistory& h : history_)
     out.insert(out.end(), {h.V0, h.V_old, h.N_plus, h.N_minus, h.N_fixed, h.N_fixed_old});
+  if (fields_.p_corner.valid()) // the corners' volumes after every element's history
+    for (const std::array<Real, 4>& v : corner_volume_old_)
+      out.insert(out.end(), v.begin(), v.end());
   return out;
 }
 
 void MixtureTerm::restore_history(const std::vector<double>& values) {
-  TRIFEM_CHECK(values.size() == kHistoryValues * history_.size(),
+  const std::size_t corner_values = fields_.p_corner.valid() ? 4 * history_.size() : 0;
+  TRIFEM_CHECK(values.size() == kHistoryValues * history_.size() + corner_values,
                "the restart file holds {} mixture history values, this model needs {}",
-               values.size(), kHistoryValues * history_.size());
+               values.size(), kHistoryValues * history_.size() + corner_values);
   for (std::size_t e = 0; e < history_.size(); ++e) {
     const double* v = values.data() + kHistoryValues * e;
     history_[e] = {v[0], v[1], v[2], v[3], v[4], v[5]};
   }
+  const double* v = values.data() + kHistoryValues * history_.size();
+  for (std::size_t e = 0; e < history_.size() && corner_values > 0; ++e)
+    for (std::size_t b = 0; b < 4; ++b)
+      corner_volume_old_[e][b] = v[4 * e + b];
 }
 
 std::string MixtureTerm::step_rejection(const EvalState& state) const {
@@ -284,6 +350,8 @@ void MixtureTerm::commit(const EvalState& state) {
     const MixtureCellOutput out = cell_output(e, state.x, h, step(e, state.dt));
     MixtureHistory& next = history_[e];
     next.V_old = out.chem.V;
+    if (corner_potentials(e))
+      corner_volume_old_[static_cast<std::size_t>(e)] = corner_volumes_at(e, state.x);
     if (ions(e)) {
       next.N_plus = out.chem.c_plus * out.chem.Vw;
       next.N_minus = out.chem.c_minus * out.chem.Vw;
@@ -293,26 +361,53 @@ void MixtureTerm::commit(const EvalState& state) {
 }
 
 void MixtureTerm::initialize(InitialState kind, Real time, Vector& x) {
+  // the corner potentials: the volume-weighted mean of the cells' Donnan values at the node
+  std::vector<Real> weight, p_sum, eta_sum;
+  if (fields_.p_corner.valid()) {
+    weight.assign(static_cast<std::size_t>(mesh_.num_nodes()), 0.0);
+    p_sum = eta_sum = weight;
+  }
   for (Index e = 0; e < num_elements(); ++e) {
     const material::MixtureProperties& m = *props_[e];
     MixtureHistory& h = history_[e];
     h = history_at(e, time);
     h.N_fixed_old = h.N_fixed;
     h.V_old = current_volume(e, x);
-    x[dofs_.dof(fields_.p, cells_[e], 0)] = 0.0;
+    if (corner_potentials(e))
+      corner_volume_old_[static_cast<std::size_t>(e)] = corner_volumes_at(e, x);
+    Real pressure = 0.0, eta = 0.0;
     prestress_[e] = 0.0;
-    if (!ions(e))
+    if (ions(e)) {
+      const Real Vw = h.V_old - m.phi_s0 * h.V0;
+      TRIFEM_CHECK(Vw > 0.0, "cell {}: the initial state has no water volume (J <= phi_s0)",
+                   cells_[e]);
+      const Donnan d = donnan(h.N_fixed / Vw, m, chem_, chem_.c_ref);
+      h.N_plus = d.c_plus * Vw;
+      h.N_minus = d.c_minus * Vw;
+      pressure = d.pressure;
+      eta = chem_.c_ref * d.eta;
+      if (kind == InitialState::DonnanPrestressed)
+        prestress_[e] = d.pressure;
+    }
+    if (!corner_potentials(e)) {
+      x[dofs_.dof(fields_.p, cells_[e], 0)] = pressure;
+      if (ions(e))
+        x[dofs_.dof(fields_.eta, cells_[e], 0)] = eta;
       continue;
-    const Real Vw = h.V_old - m.phi_s0 * h.V0;
-    TRIFEM_CHECK(Vw > 0.0, "cell {}: the initial state has no water volume (J <= phi_s0)",
-                 cells_[e]);
-    const Donnan d = donnan(h.N_fixed / Vw, m, chem_, chem_.c_ref);
-    h.N_plus = d.c_plus * Vw;
-    h.N_minus = d.c_minus * Vw;
-    x[dofs_.dof(fields_.p, cells_[e], 0)] = d.pressure;
-    x[dofs_.dof(fields_.eta, cells_[e], 0)] = chem_.c_ref * d.eta;
-    if (kind == InitialState::DonnanPrestressed)
-      prestress_[e] = d.pressure;
+    }
+    for (const Index node : mesh_.cell_nodes(cells_[e]).first(4)) {
+      const auto a = static_cast<std::size_t>(node);
+      weight[a] += h.V_old;
+      p_sum[a] += h.V_old * pressure;
+      eta_sum[a] += h.V_old * eta;
+    }
+  }
+  for (std::size_t a = 0; a < weight.size(); ++a) {
+    if (weight[a] == 0.0)
+      continue;
+    x[dofs_.dof(fields_.p_corner, static_cast<Index>(a), 0)] = p_sum[a] / weight[a];
+    if (fields_.eta_corner.valid())
+      x[dofs_.dof(fields_.eta_corner, static_cast<Index>(a), 0)] = eta_sum[a] / weight[a];
   }
 }
 

@@ -10,15 +10,29 @@
 
 #include <memory>
 #include <optional>
+#include <utility>
 
 namespace trifem::physics {
 
 /// The fields of a mixture model. Ion fields are invalid in biphasic-only models.
 /// Stored unknowns are scaled for conditioning (docs/theory/triphasic.md §5): the ion flux DOFs
 /// hold j / c_ref [mm/s] and the potential DOF holds c_ref eta [MPa].
+/// `p_corner`, `eta_corner` (nodal, one component; valid in models with mixture tets): the
+/// potentials of tet cells, continuous and linear from their corners (docs/theory/elements.md);
+/// the cell fields `p`, `eta` hold those of the other cells.
 struct MixtureFields {
   dofs::FieldId u, w, j_plus, j_minus, p, eta;
+  dofs::FieldId p_corner, eta_corner;
 };
+
+/// Whether mixture cells of `type` take potentials linear from their corners in a model with
+/// `fields` (tets, when the model has the corner fields).
+bool has_corner_potentials(const MixtureFields& fields, mesh::CellType type);
+
+/// The stored pressure p [MPa] and potential c_ref η [MPa] of mixture cell c in state x: its
+/// cell unknowns, or the means of its corners' (has_corner_potentials); η is 0 without ions.
+std::pair<Real, Real> cell_potentials(const mesh::Mesh& mesh, const dofs::DofMap& dofs,
+                                      const MixtureFields& fields, const Vector& x, Index c);
 
 /// How the initial state is set (docs/theory/triphasic.md §6).
 enum class InitialState {
@@ -85,6 +99,12 @@ private:
   MixtureStep step(Index e, Real dt) const;
   bool ions(Index e) const { return has_ions() && props_[e]->charged; }
   MixtureLayout layout(Index e) const;
+  /// Whether cell e's potentials are linear from its corners (a tet with p_corner valid).
+  bool corner_potentials(Index e) const;
+  /// The corner potentials of cell e in state x (physical units) with its committed volumes.
+  CornerPotentials corners(Index e, const Vector& x) const;
+  /// The corner volumes of cell e at the displacement of state x.
+  std::array<Real, 4> corner_volumes_at(Index e, const Vector& x) const;
   void scale(Index e, Real dt, LocalVector& r, LocalMatrix* K) const;
   /// The CellTransport of element e from its scaled flux block.
   CellTransport cell_transport(Index e, const MixtureFluxBlock& scaled_block) const;
@@ -100,6 +120,8 @@ private:
   std::vector<AnyCellGeometry> geometry_;
   std::vector<MixtureHistory> history_;
   std::vector<Real> prestress_;
+  /// Per element: V_b of the corners at the last converged step (cells with corner potentials).
+  std::vector<std::array<Real, 4>> corner_volume_old_;
 };
 
 } // namespace trifem::physics

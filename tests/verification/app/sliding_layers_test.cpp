@@ -88,7 +88,10 @@ TEST(SlidingLayers, NewtonIsQuadraticAndForceAndMassBalancesHoldWhileSliding) {
   ASSERT_TRUE(run.report.success) << run.report.failure;
   ASSERT_GE(sliding_steps, 5);
   ASSERT_GE(measured_steps, 3) << "too few iterations in the asymptotic range to judge";
-  EXPECT_LT(worst_constant, 10.0) << "Newton is not quadratic while sliding";
+  // measured 4.2 to 10.1 by CPU and thread count (the state of a step differs at round-off, and
+  // with it the step that sets the largest constant); linear convergence at rate 0.1 would give
+  // 0.1 / r_k > 100 at the residuals below 1e-3 every sliding step reaches
+  EXPECT_LT(worst_constant, 50.0) << "Newton is not quadratic while sliding";
   EXPECT_LT(worst_force, 1e-8) << "contact force != applied load";
   for (const analysis::BalanceRegion& r : balance->regions())
     for (int q = 0; q < 3; ++q)

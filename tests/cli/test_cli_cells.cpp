@@ -497,5 +497,51 @@ TEST_F(CellsCli, MixturesOnTet4AndTriphasicOnTet10AreRefusedNamingTheMaterial) {
   }
 }
 
+/// The unit cube of `mesh` in a dynamic-explicit analysis: the multiplier's law (μ = 1/2,
+/// penalty 1000 μ), the face xmax moved to the stretch 1.2 over 5 s and held, damped to rest.
+std::string explicit_cube_case(const std::string& mesh) {
+  std::string text = cube_case(mesh, 1.2);
+  text.replace(text.find("nu = 0.3"), 8, "nu = 0.0\ndensity = 1.0");
+  text.replace(text.find("points = [[0.0, 0.0], [1.0, 1.0]]"), 33,
+               "interpolation = \"smooth\"\npoints = [[0.0, 0.0], [5.0, 1.0]]");
+  text.replace(text.find("end_time = 1.0\ndt = 0.25"), 24, "end_time = 40.0");
+  return text + R"(
+[analysis]
+type = "dynamic-explicit"
+[explicit]
+penalty = 500.0
+damping = 1.0
+[output]
+interval = 5.0
+)";
+}
+
+TEST_F(CellsCli, AnExplicitAnalysisOfTheGmshTet10CubeComesToRestAtTheClosedFormStretch) {
+  // homogeneous uniaxial stress of W = μ/2 (I1 − 3) − μ ln J with λ = α (J − 1): the lateral
+  // stretch b of μ (1 − 1/b²) + α a (a b² − 1) = 0 and the force P = μ (a − 1/a) + λ J / a on
+  // the unit face (tests/verification/explicit/exact_uniaxial.hpp)
+  const fs::path file = write_file("explicit.toml", explicit_cube_case("cube_tet10_v41.msh"));
+  const Result r = trifem({"run", file.string(), "-o", output().string()});
+  ASSERT_EQ(r.exit_code, 0) << r;
+  const double mu = 0.5, alpha = 1000.0 * mu, a = 1.2;
+  double b = 1.0 / std::sqrt(a);
+  for (int it = 0; it < 50; ++it)
+    b -= (mu * (1.0 - 1.0 / (b * b)) + alpha * a * (a * b * b - 1.0)) /
+         (2.0 * mu / (b * b * b) + 2.0 * alpha * a * a * b);
+  const double J = a * b * b, force = mu * (a - 1.0 / a) + alpha * (J - 1.0) * J / a;
+  const History h = read_history(output() / "history.csv");
+  ASSERT_GT(h["xmax.Rx [N]"].size(), 5u);
+  EXPECT_NEAR(h["xmax.Rx [N]"].back(), force, 1e-6 * force);
+}
+
+TEST_F(CellsCli, AnExplicitAnalysisRefusesTet4CellsNamingTheLocking) {
+  const fs::path file = write_file("explicit.toml", explicit_cube_case("cube_tet4_v22.msh"));
+  const Result r = trifem({"run", file.string(), "-o", output().string()});
+  EXPECT_EQ(r.exit_code, kInvalidInput) << r;
+  EXPECT_TRUE(contains(r.err, "dynamic-explicit")) << r;
+  EXPECT_TRUE(contains(r.err, "tet4")) << r;
+  EXPECT_TRUE(contains(r.err, "lock")) << r;
+}
+
 } // namespace
 } // namespace trifem::cli_test

@@ -545,6 +545,19 @@ TEST_F(CliParallel, ATet10BarRestartedOnTwoProcessesContinuesTheOneProcessRun) {
   EXPECT_FALSE(h.columns.empty());
 }
 
+TEST_F(CliParallel, AnExplicitTet10BarGivesTheOneProcessHistory) {
+  // the tet10 bar in a dynamic-explicit analysis: its cells' multipliers solved by MUMPS on the
+  // processes, the loads on its tri6 faces and probes (2 ms, loaded within 1 ms)
+  std::string text = tet10_bar_case();
+  text.erase(text.find("[[output.average]]"));
+  text.replace(text.find("nu = 0.3"), 8, "nu = 0.3\ndensity = 1e-9");
+  text.replace(text.find("[[0.0, 0.0], [1.0, 1.0]]"), 24, "[[0.0, 0.0], [1e-3, 1.0]]");
+  text.replace(text.find("end_time = 1.0\ndt = 0.25"), 24,
+               "end_time = 2e-3\n[analysis]\ntype = \"dynamic-explicit\"");
+  text.replace(text.find("interval = 0.25"), 15, "interval = 2.5e-4");
+  expect_the_one_process_results(write_file("tet10_explicit.toml", text), 1e-10, {"history.csv"});
+}
+
 /// A cube of `cell` cells (a box split) of a biphasic or triphasic `material`, fixed on one face,
 /// the opposite face in a bath at 0.01 MPa gauge pressure (and 0.015 M of NaCl for the triphasic
 /// one), with a probe at the free corner.

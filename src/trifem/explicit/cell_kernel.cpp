@@ -10,7 +10,10 @@
 namespace trifem::explicit_dynamics {
 namespace {
 
-using RowMajor83 = Eigen::Matrix<Real, 8, 3, Eigen::RowMajor>;
+/// The nodal values of a cell as rows, over its slice of a CellVectors (Nodes = 8 for a hex8,
+/// Eigen::Dynamic for the other families).
+template <int Nodes>
+using NodeRows = Eigen::Map<Eigen::Matrix<Real, Nodes, 3, Eigen::RowMajor>>;
 
 /// Quantity codes of a failed cell (index into kQuantities).
 enum Quantity : int { kOk = 0, kDetF, kDisplacement, kInternal, kGradient, kPsi, kEnergy };
@@ -22,13 +25,16 @@ constexpr const char* kQuantities[] = {"",
                                        "constraint integral Psi",
                                        "strain energy"};
 
-/// One cell; returns a Quantity code (kOk on success).
-int evaluate_cell(const fe::HexGeometry& geo, const fe::HexCoords& u,
-                  const material::ElasticLaw& law, Constraint constraint, const CellRequest& req,
-                  CellVector& q, CellVector& h, Real& psi, Real& W, Real& dJ, Real& dev) {
+/// One cell of geometry `geo` (fe::HexGeometry with Nodes = 8, or physics::CellGeometry) at the
+/// nodal displacements u, its vectors written to q and h (3 values per node); returns a
+/// Quantity code (kOk on success).
+template <int Nodes, class Geometry, class Coords>
+int evaluate_cell(const Geometry& geo, const Coords& u, const material::ElasticLaw& law,
+                  Constraint constraint, const CellRequest& req, Real* q, Real* h, Real& psi,
+                  Real& W, Real& dJ, Real& dev) {
   if (!u.allFinite())
     return kDisplacement;
-  Eigen::Map<RowMajor83> qm(q.data()), hm(h.data());
+  NodeRows<Nodes> qm(q, u.rows(), 3), hm(h, u.rows(), 3);
   if (req.internal)
     qm.setZero();
   if (req.gradient)
@@ -37,8 +43,8 @@ int evaluate_cell(const fe::HexGeometry& geo, const fe::HexCoords& u,
     psi = 0.0;
   W = dJ = dev = 0.0;
   Real volume = 0.0;
-  for (int q_point = 0; q_point < 8; ++q_point) {
-    const fe::HexShapeGrad& g = geo.dN_dX[q_point];
+  for (std::size_t q_point = 0; q_point < geo.dV.size(); ++q_point) {
+    const auto& g = geo.dN_dX[q_point];
     const Real dV = geo.dV[q_point];
     const Mat3 F = Mat3::Identity() + u.transpose() * g;
     const Real J = F.determinant();
@@ -61,15 +67,28 @@ int evaluate_cell(const fe::HexGeometry& geo, const fe::HexCoords& u,
       psi += (jm1 ? J - 1.0 : std::log(J)) * dV;
   }
   dJ /= volume;
-  if (req.internal && !q.allFinite())
+  if (req.internal && !qm.allFinite())
     return kInternal;
-  if (req.gradient && !h.allFinite())
+  if (req.gradient && !hm.allFinite())
     return kGradient;
   if (req.psi && !std::isfinite(psi))
     return kPsi;
   if (req.energy && !std::isfinite(W))
     return kEnergy;
   return kOk;
+}
+
+/// evaluate_cell on cell c of `model` at the displacement U.
+int evaluate_cell(const ExplicitModel& model, Index c, Constraint constraint, const Vector& U,
+                  const CellRequest& req, Real* q, Real* h, Real& psi, Real& W, Real& dJ,
+                  Real& dev) {
+  const material::ElasticLaw& law = model.law(c);
+  if (const auto* hex = std::get_if<fe::HexGeometry>(&model.geometry()[c]))
+    return evaluate_cell<8>(*hex, model.hex8_values(c, U), law, constraint, req, q, h, psi, W, dJ,
+                            dev);
+  return evaluate_cell<Eigen::Dynamic>(std::get<physics::CellGeometry>(model.geometry()[c]),
+                                       model.node_values(c, U), law, constraint, req, q, h, psi, W,
+                                       dJ, dev);
 }
 
 /// The cell scalars of evaluate_cells whole on every process: each process's own cells, the
@@ -92,9 +111,10 @@ void sum_cell_scalars(const ExplicitModel& model, const CellRequest& request, Ce
 
 } // namespace
 
-void CellFields::resize(Index n) {
-  internal.resize(n);
-  gradient.resize(n);
+void CellFields::resize(const ExplicitModel& model) {
+  const Index n = model.num_cells();
+  internal.resize(model.cell_offsets().back());
+  gradient.resize(model.cell_offsets().back());
   psi.resize(n);
   energy.resize(n);
   volume_change.resize(n);
@@ -104,23 +124,25 @@ void CellFields::resize(Index n) {
 CellStatus evaluate_cells(const ExplicitModel& model, Constraint constraint, const Vector& U,
                           const CellRequest& request, CellFields& out) {
   const Index n = model.num_cells();
-  if (static_cast<Index>(out.internal.size()) != n)
-    out.resize(n);
+  if (out.internal.size() != model.cell_offsets().back() || out.psi.size() != n)
+    out.resize(model);
+  const std::vector<Index>& offsets = model.cell_offsets();
   Index first_bad = n; // none
 #pragma omp parallel for schedule(static) reduction(min : first_bad) if (n >= kMinParallelLoop)
   for (Index c = 0; c < n; ++c) {
     if (!model.evaluates(c))
       continue;
+    const Index begin = offsets[c], size = offsets[c + 1] - begin;
     if (!model.deformable(c)) { // moves rigidly: no forces, no strain
-      out.internal[c].setZero();
-      out.gradient[c].setZero();
+      out.internal.segment(begin, size).setZero();
+      out.gradient.segment(begin, size).setZero();
       out.psi[c] = out.energy[c] = out.volume_change[c] = out.gauss_volume_change[c] = 0.0;
       continue;
     }
     Real W = 0.0;
-    const int code = evaluate_cell(model.geometry()[c], model.cell_values(c, U), model.law(c),
-                                   constraint, request, out.internal[c], out.gradient[c],
-                                   out.psi[c], W, out.volume_change[c], out.gauss_volume_change[c]);
+    const int code =
+        evaluate_cell(model, c, constraint, U, request, &out.internal[begin], &out.gradient[begin],
+                      out.psi[c], W, out.volume_change[c], out.gauss_volume_change[c]);
     if (request.energy)
       out.energy[c] = W;
     if (code != kOk)
@@ -135,18 +157,18 @@ CellStatus evaluate_cells(const ExplicitModel& model, Constraint constraint, con
     return {};
   // Re-evaluate the first failing cell serially to name the quantity (deterministic; every
   // process holds every cell).
-  CellVector q, h;
+  physics::CellVectorX q(offsets[first_bad + 1] - offsets[first_bad]), h(q.size());
   Real psi = 0.0, W = 0.0, dJ = 0.0, dev = 0.0;
-  const int code = evaluate_cell(model.geometry()[first_bad], model.cell_values(first_bad, U),
-                                 model.law(first_bad), constraint, request, q, h, psi, W, dJ, dev);
+  const int code =
+      evaluate_cell(model, first_bad, constraint, U, request, q.data(), h.data(), psi, W, dJ, dev);
   const CellFailure failure =
       code == kDetF ? CellFailure::NegativeJacobian : CellFailure::NonFinite;
   return {failure, first_bad, kQuantities[code]};
 }
 
-void gather(const ExplicitModel& model, const std::vector<CellVector>& v, const Vector* weights,
-            Vector& y) {
+void gather(const ExplicitModel& model, const CellVectors& v, const Vector* weights, Vector& y) {
   const NodeIncidence& inc = model.incidence();
+  const std::vector<Index>& offsets = model.cell_offsets();
   const Index nn = model.mesh().num_nodes();
   y.resize(3 * nn);
 #pragma omp parallel for schedule(static) if (nn >= kMinParallelLoop)
@@ -158,7 +180,7 @@ void gather(const ExplicitModel& model, const std::vector<CellVector>& v, const 
     Vec3 sum = Vec3::Zero();
     for (Index i = inc.offsets[a]; i < inc.offsets[a + 1]; ++i) {
       const auto [c, l] = inc.entries[i];
-      sum += (weights ? (*weights)[c] : 1.0) * v[c].segment<3>(3 * l);
+      sum += (weights ? (*weights)[c] : 1.0) * v.segment<3>(offsets[c] + 3 * l);
     }
     y.segment<3>(3 * a) = sum;
   }
@@ -166,17 +188,17 @@ void gather(const ExplicitModel& model, const std::vector<CellVector>& v, const 
     parallel::sum(y);
 }
 
-void cell_dot(const ExplicitModel& model, const std::vector<CellVector>& v, const Vector& x,
-              Vector& z) {
+void cell_dot(const ExplicitModel& model, const CellVectors& v, const Vector& x, Vector& z) {
   const Index n = model.num_cells();
+  const std::vector<Index>& offsets = model.cell_offsets();
   z.resize(n);
 #pragma omp parallel for schedule(static) if (n >= kMinParallelLoop)
   for (Index c = 0; c < n; ++c) {
-    const mesh::Hex8& nodes = model.mesh().cell(c);
+    const std::span<const Index> nodes = model.mesh().cell_nodes(c);
     Real s = 0.0;
     if (model.owns_cell(c))
-      for (int a = 0; a < 8; ++a)
-        s += v[c].segment<3>(3 * a).dot(x.segment<3>(3 * nodes[a]));
+      for (std::size_t a = 0; a < nodes.size(); ++a)
+        s += v.segment<3>(offsets[c] + 3 * static_cast<Index>(a)).dot(x.segment<3>(3 * nodes[a]));
     z[c] = s;
   }
   if (model.distributed())

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Cell loop of the explicit scheme: internal force Q_V (A2.10), constraint gradient H (A2.11),
-// constraint integral Ψ (A2.14) and strain energy of every hex8, OpenMP-parallel, no assembly.
+// constraint integral Ψ (A2.14) and strain energy of every cell (hex8, tet10, hex20),
+// OpenMP-parallel, no assembly.
 #pragma once
 
 #include "trifem/explicit/explicit_model.hpp"
@@ -11,8 +12,9 @@
 
 namespace trifem::explicit_dynamics {
 
-/// 24 nodal values of one hex8 cell, node-major (a_0x, a_0y, a_0z, a_1x, ...).
-using CellVector = Eigen::Matrix<Real, 24, 1>;
+/// The nodal vectors of every cell one after another: cell c's 3 values per node, node-major
+/// (a_0x, a_0y, a_0z, a_1x, ...), from ExplicitModel::cell_offsets()[c].
+using CellVectors = Vector;
 
 /// Which quantities evaluate_cells computes.
 struct CellRequest {
@@ -24,14 +26,15 @@ struct CellRequest {
 
 /// Per-cell results (struct of arrays, indexed by cell).
 struct CellFields {
-  std::vector<CellVector> internal; ///< q_e,a = ∫ F S ∇N_a dV, S = 2 ∂W/∂C [N]
-  std::vector<CellVector> gradient; ///< h_e,a = ∫ F D_C ∇N_a dV = ∫ ∂Ψ/∂F ∇N_a dV [mm²]
-  Vector psi;                       ///< Ψ_e = ∫ Ψ(C) dV [mm³]
-  Vector energy;                    ///< ∫ W(C) dV [mJ]
-  Vector volume_change;             ///< cell mean J̄ − 1 = ∫ (J − 1) dV / V_e [-]
-  Vector gauss_volume_change;       ///< max over the Gauss points of |J − 1| [-]
+  CellVectors internal;       ///< q_e,a = ∫ F S ∇N_a dV, S = 2 ∂W/∂C [N]
+  CellVectors gradient;       ///< h_e,a = ∫ F D_C ∇N_a dV = ∫ ∂Ψ/∂F ∇N_a dV [mm²]
+  Vector psi;                 ///< Ψ_e = ∫ Ψ(C) dV [mm³]
+  Vector energy;              ///< ∫ W(C) dV [mJ]
+  Vector volume_change;       ///< cell mean J̄ − 1 = ∫ (J − 1) dV / V_e [-]
+  Vector gauss_volume_change; ///< max over the Gauss points of |J − 1| [-]
 
-  void resize(Index num_cells);
+  /// Sized to the cells of `model`.
+  void resize(const ExplicitModel& model);
 };
 
 /// Why a cell evaluation failed.
@@ -59,12 +62,10 @@ CellStatus evaluate_cells(const ExplicitModel& model, Constraint constraint, con
 /// y_{3a+k} = Σ_{(e,l) incident to a} w_e v_e[3l+k] with w_e = weights[e] (or 1 if empty):
 /// the nodal assembly of cell vectors, as a gather (deterministic, no atomics; OpenMP over nodes).
 /// On several processes each gathers its own nodes and the parts are summed (collective).
-void gather(const ExplicitModel& model, const std::vector<CellVector>& v, const Vector* weights,
-            Vector& y);
+void gather(const ExplicitModel& model, const CellVectors& v, const Vector* weights, Vector& y);
 
 /// z_e = Σ_a Σ_k v_e[3a+k] x_{3 node(e,a) + k}: the transpose of gather, per cell (H^T x); on
 /// several processes, each of its own cells, summed (collective).
-void cell_dot(const ExplicitModel& model, const std::vector<CellVector>& v, const Vector& x,
-              Vector& z);
+void cell_dot(const ExplicitModel& model, const CellVectors& v, const Vector& x, Vector& z);
 
 } // namespace trifem::explicit_dynamics

@@ -156,7 +156,7 @@ Real ExplicitModel::density(Index c) const {
   return model_.materials[c].density;
 }
 
-fe::HexCoords ExplicitModel::cell_values(Index c, const Vector& U) const {
+fe::HexCoords ExplicitModel::hex8_values(Index c, const Vector& U) const {
   const mesh::Hex8& nodes = mesh_.cell(c);
   fe::HexCoords u;
   for (int a = 0; a < 8; ++a)
@@ -164,26 +164,58 @@ fe::HexCoords ExplicitModel::cell_values(Index c, const Vector& U) const {
   return u;
 }
 
+fe::CellNodeCoords ExplicitModel::node_values(Index c, const Vector& U) const {
+  const std::span<const Index> nodes = mesh_.cell_nodes(c);
+  fe::CellNodeCoords u(static_cast<Index>(nodes.size()), 3);
+  for (std::size_t a = 0; a < nodes.size(); ++a)
+    u.row(static_cast<Index>(a)) = U.segment<3>(3 * nodes[a]).transpose();
+  return u;
+}
+
+namespace {
+
+/// The largest area of a face of cell c, each face taken as the flat face through its corners
+/// (a triangle's, or a quadrilateral's by its diagonals).
+Real largest_face_area(const mesh::Mesh& mesh, Index c) {
+  const std::span<const Index> nodes = mesh.cell_nodes(c);
+  const auto X = [&](int a) -> Vec3 { return mesh.node(nodes[static_cast<std::size_t>(a)]); };
+  Real largest = 0.0;
+  for (const mesh::CellFace& face : mesh::cell_faces(mesh.cell_type(c))) {
+    const std::vector<int>& f = face.nodes;
+    const Vec3 normal = mesh::num_corners(face.type) == 3
+                            ? Vec3((X(f[1]) - X(f[0])).cross(X(f[2]) - X(f[0])))
+                            : Vec3((X(f[2]) - X(f[0])).cross(X(f[3]) - X(f[1])));
+    largest = std::max(largest, 0.5 * normal.norm());
+  }
+  return largest;
+}
+
+} // namespace
+
 void ExplicitModel::build_geometry() {
   const Index n = mesh_.num_cells();
-  geometry_.resize(n);
+  geometry_.clear();
+  geometry_.reserve(static_cast<std::size_t>(n));
   volumes_.resize(n);
   lengths_.resize(n);
+  cell_offsets_.assign(1, 0);
   for (Index c = 0; c < n; ++c) {
-    const fe::HexCoords X = fe::cell_coordinates(mesh_, c);
-    auto geo = fe::hex8_geometry(X);
-    TRIFEM_CHECK(geo.has_value(), "explicit model: cell {} is inverted or degenerate", c);
-    geometry_[c] = *geo;
-    Real volume = 0.0;
-    for (Real dV : geo->dV)
-      volume += dV;
-    Real max_area = 0.0;
-    for (const auto& face : mesh::kHexFaces) {
-      const Vec3 d1 = X.row(face[2]) - X.row(face[0]), d2 = X.row(face[3]) - X.row(face[1]);
-      max_area = std::max(max_area, 0.5 * d1.cross(d2).norm());
+    try {
+      geometry_.push_back(physics::reference_geometry(mesh_, c));
+    } catch (const InputError&) {
+      throw InputError(fmt::format("explicit model: cell {} is inverted or degenerate", c));
     }
+    Real volume = 0.0;
+    std::visit(
+        [&](const auto& geo) {
+          for (Real dV : geo.dV)
+            volume += dV;
+        },
+        geometry_.back());
     volumes_[c] = volume;
-    lengths_[c] = volume / max_area;
+    lengths_[c] = volume / largest_face_area(mesh_, c);
+    cell_offsets_.push_back(cell_offsets_.back() +
+                            3 * static_cast<Index>(mesh_.cell_nodes(c).size()));
   }
 }
 
@@ -192,11 +224,19 @@ void ExplicitModel::build_mass() {
   Vector nodal = Vector::Zero(mesh_.num_nodes());
   for (Index c = 0; c < mesh_.num_cells(); ++c) {
     const Real rho = density(c);
-    for (int q = 0; q < 8; ++q) {
-      const fe::HexShape N = fe::hex8_shape(rule[q].xi);
-      for (int a = 0; a < 8; ++a)
-        nodal[mesh_.cell(c)[a]] += rho * N[a] * geometry_[c].dV[q];
+    if (const auto* hex = std::get_if<fe::HexGeometry>(&geometry_[c])) {
+      for (int q = 0; q < 8; ++q) {
+        const fe::HexShape N = fe::hex8_shape(rule[q].xi);
+        for (int a = 0; a < 8; ++a)
+          nodal[mesh_.cell(c)[a]] += rho * N[a] * hex->dV[q];
+      }
+      continue;
     }
+    const Eigen::VectorXd m = physics::lumped_mass(
+        physics::consistent_cell_mass(std::get<physics::CellGeometry>(geometry_[c]), rho));
+    const std::span<const Index> nodes = mesh_.cell_nodes(c);
+    for (std::size_t a = 0; a < nodes.size(); ++a)
+      nodal[nodes[a]] += m[static_cast<Index>(a)];
   }
   mass_.resize(num_dofs());
   for (Index a = 0; a < mesh_.num_nodes(); ++a)
@@ -214,7 +254,7 @@ void ExplicitModel::build_partition() {
     for (Index a = 0; a < nn; ++a) {
       const auto first = static_cast<std::ptrdiff_t>(column.size());
       for (Index i = incidence_.offsets[a]; i < incidence_.offsets[a + 1]; ++i)
-        for (Index b : mesh_.cell(incidence_.entries[i].first))
+        for (Index b : mesh_.cell_nodes(incidence_.entries[i].first))
           column.push_back(b);
       std::sort(column.begin() + first, column.end());
       column.erase(std::unique(column.begin() + first, column.end()), column.end());
@@ -227,8 +267,8 @@ void ExplicitModel::build_partition() {
   cell_owner_.resize(n);
   evaluated_.assign(n, 0);
   for (Index c = 0; c < n; ++c) {
-    cell_owner_[c] = node_owner_[mesh_.cell(c)[0]];
-    for (Index a : mesh_.cell(c))
+    cell_owner_[c] = node_owner_[mesh_.cell_nodes(c)[0]];
+    for (Index a : mesh_.cell_nodes(c))
       evaluated_[c] = evaluated_[c] || node_owner_[a] == rank_;
   }
 }
@@ -237,15 +277,17 @@ void ExplicitModel::build_incidence() {
   const Index nn = mesh_.num_nodes();
   incidence_.offsets.assign(nn + 1, 0);
   for (Index c = 0; c < mesh_.num_cells(); ++c)
-    for (Index a : mesh_.cell(c))
+    for (Index a : mesh_.cell_nodes(c))
       ++incidence_.offsets[a + 1];
   for (Index a = 0; a < nn; ++a)
     incidence_.offsets[a + 1] += incidence_.offsets[a];
   incidence_.entries.resize(incidence_.offsets[nn]);
   std::vector<Index> next(incidence_.offsets.begin(), incidence_.offsets.end() - 1);
-  for (Index c = 0; c < mesh_.num_cells(); ++c) // increasing c: entries sorted by cell
-    for (int l = 0; l < 8; ++l)
-      incidence_.entries[next[mesh_.cell(c)[l]]++] = {c, l};
+  for (Index c = 0; c < mesh_.num_cells(); ++c) { // increasing c: entries sorted by cell
+    const std::span<const Index> nodes = mesh_.cell_nodes(c);
+    for (std::size_t l = 0; l < nodes.size(); ++l)
+      incidence_.entries[next[nodes[l]]++] = {c, static_cast<int>(l)};
+  }
 }
 
 } // namespace trifem::explicit_dynamics
@@ -403,7 +445,7 @@ void ExplicitModel::set_mass_properties(ExplicitBody& body, bool center_is_pivot
 void ExplicitModel::set_deformable() {
   deformable_.assign(static_cast<std::size_t>(mesh_.num_cells()), 0);
   for (Index c = 0; c < mesh_.num_cells(); ++c) {
-    const mesh::Hex8& nodes = mesh_.cell(c);
+    const std::span<const Index> nodes = mesh_.cell_nodes(c);
     const Index carrier = carrier_[nodes[0]];
     const bool carried = carrier >= 0 && std::all_of(nodes.begin(), nodes.end(), [&](Index a) {
                            return carrier_[a] == carrier;

@@ -8,6 +8,7 @@
 #include "trifem/material/elastic_law.hpp"
 #include "trifem/mesh/mesh.hpp"
 #include "trifem/physics/cell_mass.hpp"
+#include "trifem/physics/solid_cell.hpp"
 
 #include <utility>
 #include <vector>
@@ -22,12 +23,13 @@ namespace trifem::explicit_dynamics {
 /// CSR list of the (cell, local node) pairs incident to every node.
 struct NodeIncidence {
   std::vector<Index> offsets;                 ///< size num_nodes + 1
-  std::vector<std::pair<Index, int>> entries; ///< (cell, local node 0..7), sorted by cell
+  std::vector<std::pair<Index, int>> entries; ///< (cell, local node), sorted by cell
 };
 
-/// The explicit view of a model::Model in its current step. Vectors are indexed 3 a + k for
-/// node a, component k (mapped to the model's DOFs where loads are evaluated). The model must
-/// outlive the view.
+/// The explicit view of a model::Model in its current step. Its cells are hex8, tet10 or hex20
+/// (tet4 and penta6 cells lock under the volume constraint: the model refuses them). Vectors are
+/// indexed 3 a + k for node a, component k (mapped to the model's DOFs where loads are evaluated).
+/// The model must outlive the view.
 class ExplicitModel {
 public:
   /// The solid cells (laws, densities) of `model`; the DOFs it constrains in its current step
@@ -51,8 +53,12 @@ public:
   Index num_cells() const { return mesh_.num_cells(); }
   Index num_dofs() const { return 3 * mesh_.num_nodes(); }
 
-  /// Reference gradients and dV at the 2x2x2 Gauss points of every cell.
-  const std::vector<fe::HexGeometry>& geometry() const { return geometry_; }
+  /// Reference gradients and dV of every cell: a hex8's at its 2x2x2 Gauss points, a cell of
+  /// another family (tet10, hex20) at the points of its family's rule.
+  const std::vector<physics::AnyCellGeometry>& geometry() const { return geometry_; }
+  /// Where the nodal values of cell c lie in a vector of cell vectors (3 per node, node-major,
+  /// the cells one after another): from cell_offsets()[c] to cell_offsets()[c + 1].
+  const std::vector<Index>& cell_offsets() const { return cell_offsets_; }
   /// Reference cell volumes V_e = Γ_ee [mm³].
   const Vector& volumes() const { return volumes_; }
   /// Characteristic lengths h_e = V_e / (largest face area) [mm].
@@ -127,8 +133,10 @@ public:
   /// The displacement entries of the model's DOF vector x, 3 a + k.
   Vector gather(const Vector& x) const;
 
-  /// The 8 x 3 nodal displacements of cell c taken from the global vector U.
-  fe::HexCoords cell_values(Index c, const Vector& U) const;
+  /// The 8 x 3 nodal displacements of hex8 cell c taken from the global vector U.
+  fe::HexCoords hex8_values(Index c, const Vector& U) const;
+  /// The nodal displacements of cell c of any family (one row per node) taken from U.
+  fe::CellNodeCoords node_values(Index c, const Vector& U) const;
 
 private:
   void build_geometry();
@@ -149,7 +157,8 @@ private:
   const mesh::Mesh& mesh_;
   std::vector<Index> dofs_;  ///< the model's DOF of 3 a + k
   std::vector<Index> local_; ///< 3 a + k of the model's displacement DOFs (−1: other fields)
-  std::vector<fe::HexGeometry> geometry_;
+  std::vector<physics::AnyCellGeometry> geometry_;
+  std::vector<Index> cell_offsets_;
   Vector volumes_, lengths_, mass_, free_mass_, inverse_mass_, kinetic_mass_;
   Vector frequency_inverse_mass_;
   std::vector<char> fixed_, deformable_;

@@ -49,9 +49,10 @@ void LambdaSystem::build_part_pattern() {
   }
 }
 
-void LambdaSystem::assemble_part(const std::vector<CellVector>& h, const Vector& inverse_mass,
-                                 Real h2, const Vector& diagonal) {
+void LambdaSystem::assemble_part(const CellVectors& h, const Vector& inverse_mass, Real h2,
+                                 const Vector& diagonal) {
   const NodeIncidence& inc = model_.incidence();
+  const std::vector<Index>& offsets = model_.cell_offsets();
   Real* values = A_.valuePtr();
   std::fill(values, values + A_.nonZeros(), 0.0);
   std::size_t s = 0;
@@ -63,10 +64,11 @@ void LambdaSystem::assemble_part(const std::vector<CellVector>& h, const Vector&
       continue;
     for (Index i = inc.offsets[a]; i < inc.offsets[a + 1]; ++i) {
       const auto [e, le] = inc.entries[i];
-      const Vec3 w = h2 * inverse_mass.segment<3>(3 * a).cwiseProduct(h[e].segment<3>(3 * le));
+      const Vec3 w =
+          h2 * inverse_mass.segment<3>(3 * a).cwiseProduct(h.segment<3>(offsets[e] + 3 * le));
       for (Index j = inc.offsets[a]; j < inc.offsets[a + 1]; ++j) {
         const auto [f, lf] = inc.entries[j];
-        values[slots_[s++]] += w.dot(h[f].segment<3>(3 * lf));
+        values[slots_[s++]] += w.dot(h.segment<3>(offsets[f] + 3 * lf));
       }
     }
   }
@@ -79,7 +81,7 @@ void LambdaSystem::build_pattern() {
   std::vector<Index> column;
   for (Index f = 0; f < n; ++f) { // rows e >= f of column f, sorted: (f, f) comes first
     column.clear();
-    for (Index a : model_.mesh().cell(f))
+    for (Index a : model_.mesh().cell_nodes(f))
       for (Index i = inc.offsets[a]; i < inc.offsets[a + 1]; ++i)
         if (inc.entries[i].first >= f)
           column.push_back(inc.entries[i].first);
@@ -99,7 +101,7 @@ void LambdaSystem::build_pattern() {
   for (Index f = 0; f < n; ++f) {
     const Index* begin = A_.innerIndexPtr() + col_ptr[f];
     const Index* end = A_.innerIndexPtr() + col_ptr[f + 1];
-    for (Index a : model_.mesh().cell(f))
+    for (Index a : model_.mesh().cell_nodes(f))
       for (Index i = inc.offsets[a]; i < inc.offsets[a + 1]; ++i)
         if (inc.entries[i].first >= f)
           slots_.push_back(static_cast<Index>(std::lower_bound(begin, end, inc.entries[i].first) -
@@ -108,10 +110,11 @@ void LambdaSystem::build_pattern() {
   }
 }
 
-void LambdaSystem::assemble(const std::vector<CellVector>& h, const Vector& inverse_mass, Real h2,
+void LambdaSystem::assemble(const CellVectors& h, const Vector& inverse_mass, Real h2,
                             const Vector& diagonal) {
   const Index n = model_.num_cells();
   const NodeIncidence& inc = model_.incidence();
+  const std::vector<Index>& offsets = model_.cell_offsets();
   Real* values = A_.valuePtr();
 #pragma omp parallel for schedule(static) if (n >= kMinParallelLoop)
   for (Index f = 0; f < n; ++f) {
@@ -119,20 +122,21 @@ void LambdaSystem::assemble(const std::vector<CellVector>& h, const Vector& inve
       values[k] = 0.0;
     values[A_.outerIndexPtr()[f]] = diagonal[f];
     Index s = slot_offsets_[f];
-    const mesh::Hex8& nodes = model_.mesh().cell(f);
-    for (int lf = 0; lf < 8; ++lf) {
+    const std::span<const Index> nodes = model_.mesh().cell_nodes(f);
+    for (std::size_t lf = 0; lf < nodes.size(); ++lf) {
       const Index a = nodes[lf];
-      const Vec3 w = h2 * inverse_mass.segment<3>(3 * a).cwiseProduct(h[f].segment<3>(3 * lf));
+      const Vec3 w = h2 * inverse_mass.segment<3>(3 * a).cwiseProduct(
+                              h.segment<3>(offsets[f] + 3 * static_cast<Index>(lf)));
       for (Index i = inc.offsets[a]; i < inc.offsets[a + 1]; ++i) {
         const auto [e, le] = inc.entries[i];
         if (e >= f)
-          values[slots_[s++]] += w.dot(h[e].segment<3>(3 * le));
+          values[slots_[s++]] += w.dot(h.segment<3>(offsets[e] + 3 * le));
       }
     }
   }
 }
 
-bool LambdaSystem::factorize(const std::vector<CellVector>& h, const Vector& inverse_mass, Real h2,
+bool LambdaSystem::factorize(const CellVectors& h, const Vector& inverse_mass, Real h2,
                              const Vector& diagonal) {
   {
     ScopedTimer timer(timings_.assemble);

@@ -33,8 +33,7 @@ public:
 
   /// Assembles A with scale h² [s²/... as in A2.21] and diagonal shift `diagonal` (V_e/α per
   /// cell, size num_cells) and factorizes it. Returns false if A is not positive definite.
-  bool factorize(const std::vector<CellVector>& h, const Vector& inverse_mass, Real h2,
-                 const Vector& diagonal);
+  bool factorize(const CellVectors& h, const Vector& inverse_mass, Real h2, const Vector& diagonal);
   /// Solves A x = b with the last factorization.
   void solve(const Vector& b, Vector& x);
   const LambdaTimings& timings() const { return timings_; }
@@ -42,10 +41,9 @@ public:
 private:
   void build_pattern();
   void build_part_pattern();
-  void assemble_part(const std::vector<CellVector>& h, const Vector& inverse_mass, Real h2,
+  void assemble_part(const CellVectors& h, const Vector& inverse_mass, Real h2,
                      const Vector& diagonal);
-  void assemble(const std::vector<CellVector>& h, const Vector& inverse_mass, Real h2,
-                const Vector& diagonal);
+  void assemble(const CellVectors& h, const Vector& inverse_mass, Real h2, const Vector& diagonal);
 
   const ExplicitModel& model_;
   SparseMatrix A_;                  ///< lower triangle, compressed

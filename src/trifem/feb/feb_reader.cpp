@@ -77,13 +77,14 @@ void check_sections(const Reader& r, pugi::xml_node root) {
   for (pugi::xml_node s : detail::elements(root)) {
     const std::string_view name = s.name();
     static constexpr std::string_view known[] = {
-        "Module",      "Globals",     "Control",  "Material", "Mesh",
-        "MeshDomains", "Boundary",    "Initial",  "Rigid",    "Contact",
-        "Loads",       "Constraints", "LoadData", "Output",   "Step"};
+        "Module",   "Globals", "Control", "Material", "Mesh",  "MeshDomains",
+        "Boundary", "Initial", "Rigid",   "Contact",  "Loads", "Constraints",
+        "LoadData", "Output",  "Step",    "MeshData"};
     if (std::find(std::begin(known), std::end(known), name) == std::end(known))
       r.doc.fail(s, fmt::format("the section <{}> is not supported (trifem reads Module, Globals, "
-                                "Control, Material, Mesh, MeshDomains, Boundary, Initial, "
-                                "Rigid, Contact, Loads, Constraints, LoadData, Output and Step)",
+                                "Control, Material, Mesh, MeshDomains, MeshData, Boundary, "
+                                "Initial, Rigid, Contact, Loads, Constraints, LoadData, Output "
+                                "and Step)",
                                 name));
   }
 }
@@ -93,7 +94,7 @@ void check_sections(const Reader& r, pugi::xml_node root) {
 /// define the model once are refused when repeated, rather than one of them being ignored.
 void check_single_sections(const Reader& r, pugi::xml_node root) {
   for (const char* name : {"Module", "Globals", "Control", "Material", "Mesh", "MeshDomains",
-                           "Rigid", "Initial", "LoadData", "Output"}) {
+                           "MeshData", "Rigid", "Initial", "LoadData", "Output"}) {
     const pugi::xml_node first = root.child(name);
     if (const pugi::xml_node second = first.next_sibling(name))
       r.doc.fail(second, fmt::format("a second <{}> section (the first is at line {}): trifem "
@@ -124,6 +125,8 @@ void read_sections(Reader& r) {
   detail::read_mesh(r, r.doc.child(root, "Mesh"), root.child("MeshDomains"));
   if (r.version == Version::V4 && !root.child("MeshDomains"))
     r.doc.fail(root, "the element <MeshDomains> is required");
+  if (const pugi::xml_node data = root.child("MeshData"))
+    detail::read_mesh_data(r, data);
   if (const pugi::xml_node data = root.child("LoadData"))
     detail::read_load_data(r, data);
   detail::map_fixed_charges(r);

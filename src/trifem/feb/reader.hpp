@@ -54,6 +54,8 @@ struct EffectiveCondition {
 struct RigidBodyInput {
   pugi::xml_node material;
   pugi::xml_node attachment;
+  /// <MeshData><ElementData type="shell thickness"> of its shell part (one value, checked)
+  pugi::xml_node shell_thickness;
   std::string set;                 ///< the attached node set
   std::vector<std::string> blocks; ///< the parts (solid domains) of the body
   bool shell = false; ///< made of a shell part (a surface mesh): `set` is its nodes; it rotates
@@ -163,6 +165,8 @@ void read_materials(Reader& r, pugi::xml_node section);
 void map_fixed_charges(Reader& r);
 /// Mesh (Nodes, Elements, NodeSet, Surface, ElementSet) and MeshDomains.
 void read_mesh(Reader& r, pugi::xml_node mesh, pugi::xml_node domains);
+/// MeshData: the shell thickness of the rigid bodies' shell parts (after read_mesh).
+void read_mesh_data(Reader& r, pugi::xml_node section);
 /// LoadData: the load controllers as curves.
 void read_load_data(Reader& r, pugi::xml_node section);
 /// The conditions of a Boundary section into `fixed` and `prescribed`; zero fluid pressure

@@ -13,9 +13,9 @@ namespace trifem::model {
 /// mixture material or a tet10 a triphasic one (singular: docs/theory/elements.md), if a
 /// mixture on such cells meets the drained Schur preconditioner (hex8 only), if a tet4 or a
 /// penta6 has a nearly incompressible law with `element = "auto"` (they lock there with either
-/// element, so the element must be asked for) or a tet4 the mean-dilatation element, if the
-/// case has an explicit analysis or step, or if a dynamic one lumps the mass of tet10 or hex20
-/// cells (negative at their corners).
+/// element, so the element must be asked for) or a tet4 the mean-dilatation element, or if a
+/// tet4 or a penta6 that is not rigid is in a case with an explicit analysis or step (they lock
+/// under its one volume multiplier per cell).
 void check_cell_families(const io::CaseSpec& spec, const Model& model);
 
 /// The element of cell c: that of its material, but the displacement element on a tet4.

@@ -21,20 +21,31 @@ std::optional<Eigen::Matrix<Real, 8, 8>> consistent_cell_mass(const fe::HexCoord
   return m;
 }
 
-namespace {
-
-/// The mass element of a cell of a family other than hex8: m_ab = Σ_q ρ N_a N_b dV_q.
-MassElement family_cell_mass(const mesh::Mesh& mesh, Index c, Real density) {
-  const AnyCellGeometry geometry = reference_geometry(mesh, c); // (throws for an inverted cell)
-  const CellGeometry& geo = std::get<CellGeometry>(geometry);
-  const std::span<const Index> nodes = mesh.cell_nodes(c);
-  MassElement e{{nodes.begin(), nodes.end()},
-                Eigen::MatrixXd::Zero(geo.num_nodes(), geo.num_nodes())};
+Eigen::MatrixXd consistent_cell_mass(const CellGeometry& geo, Real density) {
+  Eigen::MatrixXd m = Eigen::MatrixXd::Zero(geo.num_nodes(), geo.num_nodes());
   for (std::size_t q = 0; q < geo.dV.size(); ++q) {
     const fe::ShapeValues& N = geo.reference->rule_shapes()[q];
-    e.mass.noalias() += (density * geo.dV[q]) * (N * N.transpose());
+    m.noalias() += (density * geo.dV[q]) * (N * N.transpose());
   }
-  return e;
+  return m;
+}
+
+Eigen::VectorXd lumped_mass(const Eigen::MatrixXd& m) {
+  Eigen::VectorXd rows = m.rowwise().sum();
+  if ((rows.array() > 0.0).all())
+    return rows;
+  const Eigen::VectorXd diagonal = m.diagonal();
+  return (rows.sum() / diagonal.sum()) * diagonal;
+}
+
+namespace {
+
+/// The mass element of a cell of a family other than hex8.
+MassElement family_cell_mass(const mesh::Mesh& mesh, Index c, Real density) {
+  const AnyCellGeometry geometry = reference_geometry(mesh, c); // (throws for an inverted cell)
+  const std::span<const Index> nodes = mesh.cell_nodes(c);
+  return {{nodes.begin(), nodes.end()},
+          consistent_cell_mass(std::get<CellGeometry>(geometry), density)};
 }
 
 } // namespace

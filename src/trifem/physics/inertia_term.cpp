@@ -25,8 +25,9 @@ InertiaTerm::InertiaTerm(const dofs::DofMap& dofs, dofs::FieldId displacement,
       dofs_(std::move(massless)) {
   if (mass == MassMatrix::Lumped)
     for (MassElement& e : elements_) {
-      const Eigen::VectorXd rows = e.mass.rowwise().sum(); // evaluated before the matrix changes
-      e.mass = rows.asDiagonal();
+      const Eigen::VectorXd lumped =
+          physics::lumped_mass(e.mass); // evaluated before the matrix changes
+      e.mass = lumped.asDiagonal();
     }
   std::vector<Index> element;
   for (Index e = 0; e < num_elements(); ++e) {

@@ -38,7 +38,7 @@ struct GeneralizedAlpha {
 /// How the mass of a cell is distributed to its nodes.
 enum class MassMatrix {
   Consistent, ///< m_ab = ∫ ρ N_a N_b dV
-  Lumped      ///< diag(Σ_b m_ab) (row sums)
+  Lumped      ///< the row sums, or the scaled diagonal of quadratic cells (lumped_mass())
 };
 
 /// The inertia forces M a_{n+1-α_m} of mass elements (hex8 cells of reference density ρ, quad4
@@ -85,7 +85,8 @@ public:
   void set_residual_history(Vector g);
   /// M u at every DOF for u given at every DOF (zero outside dofs()).
   Vector mass_times(const Vector& u) const;
-  /// The row sums of M at every DOF (zero outside dofs()): the lumped mass.
+  /// The row sums of M at every DOF (zero outside dofs()): the lumped mass (negative at the
+  /// corners of tet10 and hex20 cells of a consistent M).
   Vector lumped_mass() const;
   /// The diagonal Σ m_aa of the consistent mass at every DOF (positive where there is mass; the
   /// lumped mass is not at the corners of tet10 and hex20 cells).

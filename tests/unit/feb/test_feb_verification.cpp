@@ -587,6 +587,76 @@ TEST(FebRigidShell, AHeldShellBodyCarriesTheWeightOfItsShells) {
   EXPECT_LE(moment.norm(), 1e-12 * weight) << moment.transpose();
 }
 
+namespace {
+
+/// The held plate of the test above with its shell thickness in a <MeshData> section: `data`
+/// is the section's content.
+std::string plate_with_mesh_data(const std::string& data) {
+  return R"(<?xml version="1.0"?>
+<febio_spec version="4.0">
+  <Module type="solid"/>
+  <Control><analysis>STATIC</analysis><time_steps>1</time_steps><step_size>1</step_size></Control>
+  <Material>
+    <material id="1" name="plate" type="rigid body"><density>2</density></material>
+  </Material>
+  <Mesh>
+    <Nodes name="all">
+      <node id="1">-0.5,-0.5,1</node><node id="2">1.5,-0.5,1</node><node id="3">1.5,1.5,1</node><node id="4">-0.5,1.5,1</node>
+      <node id="5">3.5,-0.5,1</node><node id="6">3.5,1.5,1</node>
+    </Nodes>
+    <Elements type="quad4" name="Plate"><elem id="1">1,2,3,4</elem><elem id="2">2,5,6,3</elem></Elements>
+  </Mesh>
+  <MeshDomains><ShellDomain name="Plate" mat="plate"/></MeshDomains>
+  <MeshData>)" +
+         data + R"(</MeshData>
+  <Rigid>
+    <rigid_bc type="rigid_fixed"><rb>plate</rb><Rx_dof>1</Rx_dof><Ry_dof>1</Ry_dof><Rz_dof>1</Rz_dof><Ru_dof>1</Ru_dof><Rv_dof>1</Rv_dof><Rw_dof>1</Rw_dof></rigid_bc>
+  </Rigid>
+  <Loads><body_load type="const"><z>9.81</z></body_load></Loads>
+</febio_spec>
+)";
+}
+
+} // namespace
+
+// FEBio Studio writes the thickness of shells as element data (<MeshData>): the plate then
+// weighs what it weighs with the thickness on its domain.
+TEST(FebRigidShell, AShellThicknessFromMeshDataGivesTheBodyItsWeight) {
+  const std::string text = plate_with_mesh_data(
+      R"(<ElementData type="shell thickness" elem_set="Plate"><e lid="1">0.01,0.01,0.01,0.01</e><e lid="2">0.01,0.01,0.01,0.01</e></ElementData>)");
+  FebRun run = test::run_feb_case(feb::parse_feb(text, "shell_weight.feb"));
+  ASSERT_TRUE(run.report.success) << run.report.failure;
+  ASSERT_EQ(run.spec.rigid_bodies.size(), 1u);
+  EXPECT_EQ(run.spec.rigid_bodies[0].shell_thickness, 0.01);
+  const model::Model& m = *run.model;
+  const Real weight = 2.0 * 0.01 * 8.0 * 9.81;
+  const Vec3 force = model::rigid_body_force(m, m.rigid_bodies.at(0), 1.0);
+  EXPECT_LE((force - Vec3(0, 0, weight)).norm(), 1e-12 * weight) << force.transpose();
+}
+
+TEST(FebRigidShell, MeshDataTrifemCannotUseIsRefusedNamingIt) {
+  const std::pair<std::string, std::string> cases[] = {
+      {R"(<ElementData type="shell thickness" elem_set="Plate"><e lid="1">0.01,0.01,0.01,0.01</e><e lid="2">0.02,0.02,0.02,0.02</e></ElementData>)",
+       "varies from 0.01 to 0.02"},
+      {R"(<ElementData type="shell thickness" elem_set="Plate"><e lid="1">-1,-1,-1,-1</e></ElementData>)",
+       "must not be negative"},
+      {R"(<ElementData type="shell thickness" elem_set="Other"><e lid="1">1,1,1,1</e></ElementData>)",
+       "no quad4 or tri3 part is named 'Other'"},
+      {R"(<ElementData type="mat_axis" elem_set="Plate"><e lid="1"><a>1,0,0</a><d>0,1,0</d></e></ElementData>)",
+       "element data of type 'mat_axis' is not supported"},
+      {R"(<SurfaceData name="inlet" data_type="scalar" surface="Plate"><face lid="1">1</face></SurfaceData>)",
+       "<SurfaceData> is not supported"}};
+  for (const auto& [data, message] : cases) {
+    try {
+      (void)feb::parse_feb(plate_with_mesh_data(data), "shell_data.feb");
+      ADD_FAILURE() << "accepted: " << data;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("shell_data.feb:"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << e.what();
+    }
+  }
+}
+
 // FEBio ignores the fixed and prescribed displacements of the nodes a rigid body carries: the
 // lid with every node's z also "fixed" turns as it did.
 TEST(FebRigid, ConditionsOnTheNodesOfARigidBodyAreIgnoredAsFebioDoes) {

@@ -3,6 +3,7 @@
 #include "mixture_setup.hpp"
 #include "trifem/material/registry.hpp"
 #include "trifem/mesh/box.hpp"
+#include "trifem/mesh/convert_cells.hpp"
 #include "trifem/physics/mean_dilatation_kernel.hpp"
 #include "trifem/physics/solid_kernel.hpp"
 #include "trifem/physics/surface_load_term.hpp"
@@ -188,4 +189,55 @@ TEST(PressureLoad, FollowerTangentMatchesFiniteDifferences) {
     total += r.segment<3>(3 * a);
   const Real pA = 0.7 * 1.0;              // p times the unit facet area
   EXPECT_NEAR(total.z(), pA, 1e-14 * pA); // R = -f_ext, f_ext = -p n A with n = +z
+}
+
+// A traction per current area in a fixed direction, f_a = t int N_a |x_s1 x x_s2| ds, on the
+// top facets of every family (quad4, tri3, tri6, quad8) at a random deformed state: its tangent
+// is that of central differences, and on the undeformed flat face the total force is t times the
+// face's area.
+TEST(TractionPerCurrentArea, TangentMatchesFiniteDifferencesOnEveryFacetFamily) {
+  const Vec3 t(0.3, -0.2, 0.7);
+  for (const mesh::CellType type :
+       {mesh::CellType::Hex8, mesh::CellType::Tet4, mesh::CellType::Tet10, mesh::CellType::Hex20}) {
+    mesh::BoxSpec spec;
+    spec.divisions = {1, 1, 1};
+    const mesh::Mesh mesh = mesh::convert_cells(mesh::make_box(spec), type);
+    dofs::DofMap map;
+    const auto u = map.add_field("displacement", FieldRole::displacement, mesh.num_nodes(), 3);
+    map.finalize();
+    const auto& facets = mesh.surface("box.zmax").facets;
+    physics::TractionTerm term(mesh, map, u, facets, t, dofs::LoadCurve::constant(),
+                               physics::TractionArea::Current);
+    Vector x = Vector::Zero(map.num_dofs());
+    Vec3 total = Vec3::Zero();
+    for (Index e = 0; e < term.num_elements(); ++e) {
+      physics::LocalVector r;
+      term.evaluate(e, physics::EvalState{x, x, 1.0, 1.0}, r, nullptr);
+      for (Index a = 0; a < r.size() / 3; ++a)
+        total -= r.segment<3>(3 * a); // R = -f_ext
+    }
+    EXPECT_LE((total - t).norm(), 1e-14) << static_cast<int>(type); // the unit face
+    std::srand(11);
+    x = 0.15 * Vector::Random(map.num_dofs());
+    std::vector<Index> dofs;
+    term.element_dofs(0, dofs);
+    const int n = static_cast<int>(dofs.size());
+    auto residual = [&](const Eigen::VectorXd& local) {
+      Vector y = x;
+      for (int i = 0; i < n; ++i)
+        y[dofs[i]] = local[i];
+      physics::LocalVector r;
+      term.evaluate(0, physics::EvalState{y, x, 1.0, 1.0}, r, nullptr);
+      return Eigen::VectorXd(r);
+    };
+    Eigen::VectorXd local(n);
+    for (int i = 0; i < n; ++i)
+      local[i] = x[dofs[i]];
+    physics::LocalVector r;
+    physics::LocalMatrix K;
+    term.evaluate(0, physics::EvalState{x, x, 1.0, 1.0}, r, &K);
+    const Eigen::MatrixXd K_fd = fd_jacobian(residual, local, 1e-6);
+    EXPECT_GT(K.norm(), 0.0);
+    EXPECT_LE((K - K_fd).norm() / K.norm(), 1e-7) << static_cast<int>(type);
+  }
 }

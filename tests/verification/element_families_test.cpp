@@ -237,6 +237,18 @@ TEST_P(ElementFamilies, DeadTractionOnTheEndFaceGivesTheClosedFormStretch) {
   expect_uniaxial_displacements(m, l, uniaxial(l).t);
 }
 
+// A traction T = 0.2 MPa per current area on the end face: sigma = T along the bar.
+TEST_P(ElementFamilies, TractionPerCurrentAreaOnTheEndFaceGivesTheClosedFormStretch) {
+  const Real T = 0.2;
+  test::SolidModel m(bar(GetParam()), "neo-hookean", {{"E", 1.0}, {"nu", 0.3}});
+  load_bar(m, [&](test::SolidModel& s, auto facets) {
+    return std::make_unique<physics::TractionTerm>(s.mesh, s.dofs, s.u, facets, Vec3(T, 0, 0),
+                                                   kRamp, physics::TractionArea::Current);
+  });
+  const Real l = stretch_at(T, [](const UniaxialState& u) { return u.sigma; });
+  expect_uniaxial_displacements(m, l, uniaxial(l).t);
+}
+
 /// A quarter of a thick cylinder a <= r <= b (plane strain, u_z = 0 on both ends) with radial
 /// displacements prescribed on both radii: u = (A r + B / r) e_r for any isotropic law in the
 /// small-strain limit (its divergence is constant and its curl zero).

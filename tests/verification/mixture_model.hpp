@@ -17,11 +17,11 @@
 namespace trifem::test {
 
 /// The paper's section 4.1 tissue (docs/theory/reference-solutions.md §R0), optionally uncharged
-/// or biphasic.
+/// or biphasic, with the solid volume fraction `phi_s0`.
 inline material::MixtureProperties paper_tissue(bool charged, Real fixed_charge = 2e-4,
-                                                Real nu = 0.0) {
+                                                Real nu = 0.0, Real phi_s0 = 0.25) {
   auto solid = material::create_law("saint-venant-kirchhoff", {{"E", 0.3}, {"nu", nu}}, "solid");
-  material::ParameterValues v = {{"phi_s0", 0.25}, {"permeability", 1.07e-3}};
+  material::ParameterValues v = {{"phi_s0", phi_s0}, {"permeability", 1.07e-3}};
   if (charged) {
     v["fixed_charge"] = fixed_charge;
     v["d_plus"] = 5e-4;

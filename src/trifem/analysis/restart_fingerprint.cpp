@@ -233,6 +233,8 @@ void hash_surface_loads(const std::vector<io::PressureSpec>& pressures,
     h.text(t.surface);
     h.vec3(t.value);
     h.text(t.curve);
+    if (t.per_current_area) // (per reference area: the hash is unchanged)
+      h.integer(1);
   }
 }
 
@@ -261,6 +263,14 @@ std::uint64_t boundary_conditions_hash(const io::CaseSpec& spec) {
       for (const std::string& block : b.blocks)
         h.text(block);
       h.text(b.curve);
+    }
+  }
+  if (!spec.nodal_forces.empty()) { // (none: the hash is unchanged)
+    h.integer(static_cast<std::int64_t>(spec.nodal_forces.size()));
+    for (const io::NodalForceSpec& f : spec.nodal_forces) {
+      h.text(f.set);
+      h.vec3(f.value);
+      h.text(f.curve);
     }
   }
   h.integer(static_cast<std::int64_t>(spec.curves.size()));

@@ -194,12 +194,13 @@ io::PressureSpec pressure_load(const Reader& r, pugi::xml_node load) {
   return p;
 }
 
-/// <surface_load type="traction">: scale x traction per reference area, a dead load (FEBio
-/// integrates it over the reference surface, as trifem's [[loads.traction]]); the load curve
-/// is that of <scale>.
+/// <surface_load type="traction">: scale x traction in a fixed direction, integrated as FEBio
+/// does over the current surface (per current area) unless <linear> is 1 (over the reference
+/// surface: a dead load); the load curve is that of <scale>.
 io::TractionSpec traction_load(const Reader& r, pugi::xml_node load) {
   io::TractionSpec t;
   t.surface = r.surface(load);
+  t.per_current_area = true; // FEBio's default, linear = 0
   Real scale = 1.0;
   for (pugi::xml_node c : elements(load)) {
     const std::string_view name = c.name();
@@ -213,9 +214,11 @@ io::TractionSpec traction_load(const Reader& r, pugi::xml_node load) {
     } else if (name == "shell_bottom") {
       if (flag(r, c))
         r.doc.fail(c, "shell_bottom is not supported (trifem has no shells)");
+    } else if (name == "linear") {
+      t.per_current_area = !flag(r, c);
     } else {
       r.doc.fail(c, fmt::format("unknown parameter '{}' of a traction load (expected one of: "
-                                "scale, traction, shell_bottom)",
+                                "scale, traction, linear, shell_bottom)",
                                 name));
     }
   }
@@ -304,6 +307,46 @@ io::PrescribedSpec fluid_flux(Reader& r, pugi::xml_node load, bool step) {
   p.value = r.doc.number(value) * (normal[axis] > 0.0 ? 1.0 : -1.0);
   r.flux_surfaces.push_back(p.set);
   return p;
+}
+
+/// <nodal_load type="nodal_force" node_set="...">: the force <value> (x,y,z with an lc) on
+/// every node of the set, as trifem's [[loads.nodal_force]]. Top level only.
+void nodal_force(Reader& r, pugi::xml_node load, bool step) {
+  const std::string type = load.attribute("type").value();
+  if (type != "nodal_force")
+    r.doc.fail(
+        load, "type",
+        fmt::format("nodal_load of type '{}' is not supported (supported: nodal_force)", type));
+  if (step)
+    r.doc.fail(load, "a nodal load inside a <step> is not supported (give it in the top-level "
+                     "<Loads>: trifem's nodal forces act in every step; a load controller changes "
+                     "it in time)");
+  io::NodalForceSpec f;
+  f.key = key_of(r, load);
+  f.set = r.node_set(load);
+  for (pugi::xml_node c : elements(load)) {
+    const std::string_view name = c.name();
+    if (name == "value") {
+      if (c.attribute("type"))
+        r.doc.fail(c, "type",
+                   "a nodal force that varies in space (math or map) is not supported: give a "
+                   "constant value (with a load controller lc for its time history)");
+      f.value = r.doc.vector(c);
+      f.curve = r.curve_of(c);
+    } else if (name == "relative" || name == "shell_bottom") {
+      if (flag(r, c))
+        r.doc.fail(c, name == "relative"
+                          ? "a relative nodal force (added to the force at the step's start) "
+                            "is not supported"
+                          : "shell_bottom is not supported (trifem has no shells)");
+    } else {
+      r.doc.fail(c, fmt::format("unknown parameter '{}' of a nodal_force load (expected one of: "
+                                "value, relative, shell_bottom)",
+                                name));
+    }
+  }
+  r.doc.child(load, "value"); // required: InputError if missing
+  r.spec.nodal_forces.push_back(f);
 }
 
 /// A component of a body load given by a math expression or a map (type attribute).
@@ -404,10 +447,12 @@ void read_loads(Reader& r, pugi::xml_node section, std::vector<io::PressureSpec>
       prescribed.push_back(fluid_flux(r, load, step));
     } else if (std::string_view(load.name()) == "body_load") {
       body_load(r, load, step);
+    } else if (std::string_view(load.name()) == "nodal_load") {
+      nodal_force(r, load, step);
     } else {
       r.doc.fail(load, "only <surface_load> of type pressure, traction, normal_traction and "
-                       "fluidflux are supported in <Loads>, and <body_load> of type const and "
-                       "body force");
+                       "fluidflux are supported in <Loads>, <body_load> of type const and body "
+                       "force, and <nodal_load> of type nodal_force");
     }
   }
 }

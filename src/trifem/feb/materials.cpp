@@ -2,12 +2,14 @@
 // Material section: FEBio material types -> trifem laws with the same strain energy.
 #include "trifem/core/error.hpp"
 #include "trifem/feb/reader.hpp"
+#include "trifem/material/material_axes.hpp"
 #include "trifem/material/mixture.hpp"
 #include "trifem/material/registry.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
+#include <optional>
 
 namespace trifem::feb::detail {
 namespace {
@@ -18,6 +20,8 @@ struct LawMapping {
   const char* trifem;
   std::vector<std::pair<const char*, const char*>> parameters; ///< FEBio name -> trifem name
   std::vector<const char*> zero; ///< FEBio parameters accepted only at 0 (terms trifem lacks)
+  std::vector<const char*> ignored = {}; ///< FEBio parameters of those absent terms
+  bool takes_axes = false; ///< an anisotropic law: its <mat_axis> orients the material
 };
 
 const std::vector<LawMapping>& law_mappings() {
@@ -35,14 +39,55 @@ const std::vector<LawMapping>& law_mappings() {
         {"m2", "m2"},
         {"m3", "m3"},
         {"k", "k"}},
-       {"c4", "c5", "c6"}},
+       {"c4", "c5", "c6"},
+       {"m4", "m5", "m6"}},
+      {"Ogden unconstrained",
+       "ogden-unconstrained",
+       {{"c1", "c1"},
+        {"c2", "c2"},
+        {"c3", "c3"},
+        {"c4", "c4"},
+        {"c5", "c5"},
+        {"c6", "c6"},
+        {"m1", "m1"},
+        {"m2", "m2"},
+        {"m3", "m3"},
+        {"m4", "m4"},
+        {"m5", "m5"},
+        {"m6", "m6"},
+        {"cp", "cp"}},
+       {}},
+      {"Yeoh",
+       "yeoh",
+       {{"c1", "c1"},
+        {"c2", "c2"},
+        {"c3", "c3"},
+        {"c4", "c4"},
+        {"c5", "c5"},
+        {"c6", "c6"},
+        {"k", "k"}},
+       {}},
+      {"orthotropic elastic",
+       "orthotropic-elastic",
+       {{"E1", "E1"},
+        {"E2", "E2"},
+        {"E3", "E3"},
+        {"G12", "G12"},
+        {"G23", "G23"},
+        {"G31", "G31"},
+        {"v12", "v12"},
+        {"v23", "v23"},
+        {"v31", "v31"}},
+       {},
+       {},
+       true},
   };
   return laws;
 }
 
 /// Parameters FEBio reads that do not change a quasi-static solution without body forces.
 bool ignored_parameter(std::string_view name) {
-  return name == "density" || name == "m4" || name == "m5" || name == "m6";
+  return name == "density";
 }
 
 std::string known_types() {
@@ -80,8 +125,33 @@ Real material_density(const Reader& r, pugi::xml_node node, const io::MaterialSp
   return phi * solid + (1.0 - phi) * fluid;
 }
 
-/// The solid law of a FEBio solid material element (type attribute), validated.
-material::LawSpec solid_law(const Reader& r, pugi::xml_node node) {
+/// <mat_axis type="vector"><a>..</a><d>..</d></mat_axis>: FEBio's constant material axes,
+/// e1 along a, e2 in the plane of a and d (trifem's axes of type vector).
+material::AxesSpec material_axes(const Reader& r, pugi::xml_node node) {
+  const std::string type = r.doc.attribute(node, "type");
+  if (type != "vector")
+    r.doc.fail(node, "type",
+               fmt::format("mat_axis of type '{}' is not supported (supported: vector)", type));
+  for (pugi::xml_node c : elements(node))
+    if (std::string_view(c.name()) != "a" && std::string_view(c.name()) != "d")
+      r.doc.fail(
+          c, fmt::format("unknown parameter '{}' of a vector mat_axis (expected: a, d)", c.name()));
+  material::AxesSpec axes;
+  axes.kind = material::AxesKind::Vector;
+  axes.a = r.doc.vector(r.doc.child(node, "a"));
+  axes.d = r.doc.vector(r.doc.child(node, "d"));
+  try {
+    (void)material::vector_basis(axes.a, axes.d, "mat_axis");
+  } catch (const InputError& e) {
+    r.doc.fail(node, e.what());
+  }
+  return axes;
+}
+
+/// The solid law of a FEBio solid material element (type attribute), validated; `axes`
+/// receives the <mat_axis> of an anisotropic law (that of an isotropic one has no effect).
+material::LawSpec solid_law(const Reader& r, pugi::xml_node node,
+                            std::optional<material::AxesSpec>* axes = nullptr) {
   const std::string type = r.doc.attribute(node, "type");
   const LawMapping* law = nullptr;
   for (const auto& m : law_mappings())
@@ -102,8 +172,17 @@ material::LawSpec solid_law(const Reader& r, pugi::xml_node node) {
                                   model));
       continue;
     }
-    if (ignored_parameter(name))
+    if (ignored_parameter(name) ||
+        std::find(law->ignored.begin(), law->ignored.end(), name) != law->ignored.end())
       continue;
+    if (name == "mat_axis") {
+      if (!law->takes_axes) // an isotropic law: the axes change nothing
+        continue;
+      if (axes == nullptr)
+        r.doc.fail(p, "a mat_axis here is not supported (trifem orients a material as a whole)");
+      *axes = material_axes(r, p);
+      continue;
+    }
     if (std::find(law->zero.begin(), law->zero.end(), name) != law->zero.end()) {
       if (parameter_value(r, p) != 0.0)
         r.doc.fail(p, fmt::format("{} != 0: trifem's {} law has at most 3 terms", name, type));
@@ -184,7 +263,7 @@ io::MaterialSpec biphasic(const Reader& r, pugi::xml_node node) {
   for (pugi::xml_node p : elements(node)) {
     const std::string name = p.name();
     if (name == "solid")
-      m.solid = solid_law(r, p);
+      m.solid = solid_law(r, p, &m.axes);
     else if (name == "permeability")
       permeability(r, p, m.parameters);
     else if (name == "phi0")
@@ -255,7 +334,7 @@ io::MaterialSpec triphasic(Reader& r, pugi::xml_node node, const std::string& na
   for (pugi::xml_node p : elements(node)) {
     const std::string key = p.name();
     if (key == "solid") {
-      m.solid = solid_law(r, p);
+      m.solid = solid_law(r, p, &m.axes);
     } else if (key == "permeability") {
       permeability(r, p, m.parameters);
     } else if (key == "phi0") {
@@ -353,7 +432,7 @@ void read_materials(Reader& r, pugi::xml_node section) {
       add_rigid_material(r, node, name);
       continue;
     } else {
-      const material::LawSpec law = solid_law(r, node);
+      const material::LawSpec law = solid_law(r, node, &m.axes);
       m.type = law.type;
       m.parameters = law.parameters;
     }

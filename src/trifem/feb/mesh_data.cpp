@@ -47,7 +47,7 @@ void read_shell_thickness(Reader& r, pugi::xml_node data) {
     r.doc.fail(data, fmt::format("the shell thickness of a rigid body varies from {} to {}: "
                                  "trifem takes one thickness per rigid shell part",
                                  *lo, *hi));
-  body->shell_thickness = data;
+  body->mesh_data_thickness = *hi;
 }
 
 } // namespace

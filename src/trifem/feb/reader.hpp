@@ -8,6 +8,7 @@
 
 #include <array>
 #include <map>
+#include <optional>
 #include <set>
 #include <string>
 #include <string_view>
@@ -54,8 +55,9 @@ struct EffectiveCondition {
 struct RigidBodyInput {
   pugi::xml_node material;
   pugi::xml_node attachment;
-  /// <MeshData><ElementData type="shell thickness"> of its shell part (one value, checked)
-  pugi::xml_node shell_thickness;
+  /// The thickness of its shell part from <MeshData><ElementData type="shell thickness">
+  /// (checked uniform and not negative)
+  std::optional<Real> mesh_data_thickness;
   std::string set;                 ///< the attached node set
   std::vector<std::string> blocks; ///< the parts (solid domains) of the body
   bool shell = false; ///< made of a shell part (a surface mesh): `set` is its nodes; it rotates

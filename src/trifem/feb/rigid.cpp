@@ -215,10 +215,8 @@ io::RigidBodySpec rotating_body(const Reader& r, const std::string& name,
       if (thickness > 0.0)
         spec.shell_thickness = thickness;
     }
-  if (body.shell_thickness) // <MeshData> (one value, checked by read_mesh_data)
-    if (const Real thickness = r.doc.numbers(elements(body.shell_thickness).front()).front();
-        thickness > 0.0)
-      spec.shell_thickness = thickness;
+  if (body.mesh_data_thickness.value_or(0.0) > 0.0)
+    spec.shell_thickness = body.mesh_data_thickness;
   if (!spec.blocks.empty() || spec.shell_thickness) { // FEBio's default density 1
     const pugi::xml_node d = body.material.child("density");
     spec.density = d ? r.doc.number(d) : 1.0;

@@ -247,28 +247,47 @@ BodyForceSpec read_body_force(const Table& t, const CaseSpec& spec) {
   return b;
 }
 
+/// [[loads.nodal_force]] `t` (case level only; the model checks the node set).
+NodalForceSpec read_nodal_force(const Table& t, const CaseSpec& spec) {
+  t.allow({"set", "value", "curve"});
+  NodalForceSpec f;
+  f.key = t.path();
+  f.set = t.name("set");
+  f.value = t.vec3("value", {.unit = "N"}, std::nullopt);
+  f.curve = read_curve_reference(t, spec);
+  return f;
+}
+
 } // namespace
 
 void read_loads(const Table& root, CaseSpec& spec) {
   const auto loads = root.table("loads");
   if (!loads)
     return;
-  loads->allow({"pressure", "traction", "body_force"});
+  loads->allow({"pressure", "traction", "body_force", "nodal_force"});
   if (const toml::node* n = loads->find("body_force"); n && !root.path().empty())
     fail(n, loads->path("body_force"),
          "a body force acts in every step: give it in the case's [[loads.body_force]] (with a "
          "curve to change it in time)");
+  if (const toml::node* n = loads->find("nodal_force"); n && !root.path().empty())
+    fail(n, loads->path("nodal_force"),
+         "a nodal force acts in every step: give it in the case's [[loads.nodal_force]] (with a "
+         "curve to change it in time)");
   for (const Table& t : loads->tables("body_force"))
     spec.body_forces.push_back(read_body_force(t, spec));
+  for (const Table& t : loads->tables("nodal_force"))
+    spec.nodal_forces.push_back(read_nodal_force(t, spec));
   for (const Table& t : loads->tables("pressure")) {
     t.allow({"surface", "value", "curve"});
     spec.pressures.push_back(
         {t.name("surface"), t.number("value", {.unit = "MPa"}), read_curve_reference(t, spec)});
   }
+  static const Options<bool> areas = {{"reference", false}, {"current", true}};
   for (const Table& t : loads->tables("traction")) {
-    t.allow({"surface", "value", "curve"});
+    t.allow({"surface", "value", "curve", "area"});
     spec.tractions.push_back({t.name("surface"), t.vec3("value", {.unit = "MPa"}, std::nullopt),
-                              read_curve_reference(t, spec)});
+                              read_curve_reference(t, spec),
+                              t.choice("area", areas, std::optional(false), "traction area")});
   }
 }
 

@@ -301,11 +301,13 @@ struct ConstraintSpec {
   Vec3 normal = Vec3::UnitZ(); ///< wall: unit normal pointing to the side the surface keeps to
 };
 
-/// [[loads.traction]]: dead traction per reference area on a surface [MPa].
+/// [[loads.traction]]: traction in a fixed direction on a surface [MPa], per reference area (a
+/// dead load) or per current area (key `area`).
 struct TractionSpec {
   std::string surface;
   Vec3 value = Vec3::Zero();
   std::string curve;
+  bool per_current_area = false; ///< `area = "current"`
 };
 
 /// [[loads.body_force]]: a dead body force per unit mass (gravity) on the solid and rigid cells
@@ -316,6 +318,15 @@ struct BodyForceSpec {
   Vec3 force = Vec3::Zero(); ///< per unit mass [mm/s² = N/t], e.g. (0, 0, −9810) for gravity
   std::vector<std::string> blocks; ///< cell blocks; empty: every cell
   std::string curve;               ///< empty: constant 1
+};
+
+/// [[loads.nodal_force]]: a dead force on every node of a node set (each node gets the whole
+/// value): f = value curve(t) [N].
+struct NodalForceSpec {
+  std::string key;           ///< "loads.nodal_force[1]" (for messages)
+  std::string set;           ///< node set
+  Vec3 value = Vec3::Zero(); ///< per node [N]
+  std::string curve;         ///< empty: constant 1
 };
 
 /// Initial state of mixture models ([analysis] initial_state).
@@ -517,6 +528,7 @@ struct CaseSpec {
   std::vector<PressureSpec> pressures;
   std::vector<TractionSpec> tractions;
   std::vector<BodyForceSpec> body_forces;
+  std::vector<NodalForceSpec> nodal_forces;
   std::vector<BathSpec> baths;
   std::vector<ContactSpec> contacts;
   std::vector<RigidBodySpec> rigid_bodies;

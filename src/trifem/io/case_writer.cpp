@@ -162,6 +162,8 @@ void write_conditions(const std::vector<FixedSpec>& fixed,
     t.string("surface", p.surface);
     t.vector("value", p.value);
     t.optional_string("curve", p.curve);
+    if (p.per_current_area)
+      t.string("area", "current");
   }
 }
 
@@ -191,6 +193,12 @@ void write_boundary(const CaseSpec& spec, TomlText& t) {
       t.raw("blocks", "[" + blocks + "]");
     }
     t.optional_string("curve", b.curve);
+  }
+  for (const NodalForceSpec& f : spec.nodal_forces) {
+    t.header("[[loads.nodal_force]]");
+    t.string("set", f.set);
+    t.vector("value", f.value);
+    t.optional_string("curve", f.curve);
   }
 }
 

@@ -83,7 +83,7 @@ std::shared_ptr<const DiffusivityLaw> diffusivity_law(const SplitValues& s, cons
 
 const std::vector<ParameterSchema>& mixture_schema(bool charged) {
   static const std::vector<ParameterSchema> biphasic = {
-      {"phi_s0", "", "solid volume fraction in the reference state", Range::open(0.0, 1.0),
+      {"phi_s0", "", "solid volume fraction in the reference state", Range::half_open(0.0, 1.0),
        std::nullopt},
       {"permeability", "mm^4/(N s)", "hydraulic permeability kappa", Range::positive(),
        std::nullopt},

@@ -13,45 +13,6 @@ constexpr int kMaxTerms = 3;
 
 using Eigensystem = Eigen::SelfAdjointEigenSolver<Mat3>;
 
-/// (x^p - y^p)/(x - y) for x, y > 0, and its limit p x^(p-1) at y = x. Written as
-/// x^(p-1) expm1(p ln(y/x))/d with d = (y - x)/x, it is accurate to round-off for any pair,
-/// including nearly equal ones (ln(y/x) = log1p(d) there), with no tolerance.
-Real power_divided_difference(Real x, Real y, Real p) {
-  const Real d = (y - x) / x;
-  if (d == 0.0)
-    return p * std::pow(x, p - 1.0);
-  const Real log_ratio = std::abs(d) < 0.5 ? std::log1p(d) : std::log(y / x);
-  return std::pow(x, p - 1.0) * std::expm1(p * log_ratio) / d;
-}
-
-/// d(C^b)/dC (Voigt, components IJKL) by the Daleckii-Krein formula from the eigensystem of C:
-/// sum_a G_aa M_a (x) M_a + 2 sum_(a<b) G_ab N_ab (x) N_ab (see ogden.hpp).
-Mat6 power_derivative(const Eigensystem& eig, Real b) {
-  const Vec3& c = eig.eigenvalues();
-  const Mat3& n = eig.eigenvectors();
-  Mat6 D = Mat6::Zero();
-  for (int a = 0; a < 3; ++a)
-    for (int e = a; e < 3; ++e) {
-      const Mat3 na_ne = n.col(a) * n.col(e).transpose();
-      const Vec6 N = voigt::stress(0.5 * (na_ne + na_ne.transpose()));
-      const Real weight = (a == e ? 1.0 : 2.0) * power_divided_difference(c[a], c[e], b);
-      D += weight * N * N.transpose();
-    }
-  return D;
-}
-
-/// f(C) = tr C^a with df/dC = a C^(a-1) and, if `with_hessian`, d2f/dC2 = a d(C^(a-1))/dC.
-uncoupled::ScalarFunction power_trace(const Eigensystem& eig, Real a, bool with_hessian) {
-  const Vec3& c = eig.eigenvalues();
-  const Mat3& n = eig.eigenvectors();
-  const Vec3 c_a = c.array().pow(a);
-  uncoupled::ScalarFunction f{c_a.sum(), Mat3::Zero(), Mat6::Zero()};
-  f.gradient = n * (a * c_a.cwiseQuotient(c)).asDiagonal() * n.transpose();
-  if (with_hessian)
-    f.hessian = a * power_derivative(eig, a - 1.0);
-  return f;
-}
-
 std::string term_key(const char* name, int i) {
   return name + std::to_string(i + 1);
 }
@@ -105,9 +66,11 @@ uncoupled::ScalarFunction Ogden::strain_energy(const Mat3& C, bool with_hessian)
   for (const Term& t : terms_) {
     const Real weight = t.c / (t.m * t.m);
     W.value -= 3.0 * weight;
-    uncoupled::accumulate(W, weight,
-                          uncoupled::isochoric(power_trace(eig, 0.5 * t.m, with_hessian),
-                                               -t.m / 6.0, C, with_hessian));
+    uncoupled::accumulate(
+        W, weight,
+        uncoupled::isochoric(
+            uncoupled::power_trace(eig.eigenvalues(), eig.eigenvectors(), 0.5 * t.m, with_hessian),
+            -t.m / 6.0, C, with_hessian));
   }
   uncoupled::accumulate(W, k_, uncoupled::log_volumetric(C, with_hessian));
   return W;

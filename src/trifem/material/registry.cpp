@@ -8,8 +8,11 @@
 #include "trifem/material/mooney_rivlin.hpp"
 #include "trifem/material/neo_hookean.hpp"
 #include "trifem/material/ogden.hpp"
+#include "trifem/material/ogden_unconstrained.hpp"
+#include "trifem/material/orthotropic_elastic.hpp"
 #include "trifem/material/saint_venant_kirchhoff.hpp"
 #include "trifem/material/solid_mixture.hpp"
+#include "trifem/material/yeoh.hpp"
 
 namespace trifem::material {
 namespace {
@@ -46,6 +49,23 @@ const std::vector<LawEntry>& registered_laws() {
                           {{"c1", 0.3}, {"c2", 0.05}, {"k", 10.0}}),
       entry<Ogden>("ogden", "uncoupled Ogden, W = sum c_i/m_i^2 (sum_a l~_a^m_i - 3) + k/2 (lnJ)^2",
                    {{"c1", 0.4}, {"m1", 4.0}, {"c2", 0.2}, {"m2", -2.0}, {"k", 10.0}}),
+      entry<OgdenUnconstrained>(
+          "ogden-unconstrained",
+          "compressible Ogden, W = sum c_i/m_i^2 (sum_a l_a^m_i - 3 - m_i lnJ) + cp/2 (J-1)^2",
+          {{"c1", 0.4}, {"m1", 4.0}, {"c2", 0.2}, {"m2", -2.0}, {"cp", 2.0}}),
+      entry<Yeoh>("yeoh", "uncoupled Yeoh, W = sum_i c_i (I1~-3)^i + k/2 (lnJ)^2",
+                  {{"c1", 0.3}, {"c2", -0.02}, {"c3", 0.005}, {"k", 10.0}}),
+      entry<OrthotropicElastic>("orthotropic-elastic",
+                                "linear orthotropic in E (engineering constants), S = D : E",
+                                {{"E1", 1.0},
+                                 {"E2", 2.0},
+                                 {"E3", 3.0},
+                                 {"G12", 0.5},
+                                 {"G23", 0.8},
+                                 {"G31", 0.4},
+                                 {"v12", 0.3},
+                                 {"v23", 0.2},
+                                 {"v31", 0.1}}),
   };
   return laws;
 }

@@ -33,6 +33,14 @@ ScalarFunction isochoric(const ScalarFunction& f, Real q, const Mat3& C, bool wi
 /// d2U/dC2 = C^-1 (x) C^-1 / 4 - ln J / 2 C^-1 (.) C^-1. The hessian only if `with_hessian`.
 ScalarFunction log_volumetric(const Mat3& C, bool with_hessian);
 
+/// The spectral function f(C) = tr C^a = sum_a c_a^a of C with eigenvalues c (> 0) and unit
+/// eigenvectors n (columns), df/dC = a C^(a-1) and, if `with_hessian`, by the Daleckii-Krein
+/// formula d2f/dC2 = a [sum_a G_aa M_a (x) M_a + 2 sum_(a<b) G_ab N_ab (x) N_ab], M_a = n_a (x)
+/// n_a, N_ab = (n_a (x) n_b + n_b (x) n_a)/2, G_ab the divided difference of x^(a-1) at (c_a,
+/// c_b) and G_aa = (a-1) c_a^(a-2) its limit, evaluated to round-off for equal, nearly equal and
+/// distinct eigenvalues (no tolerance). Shared by the Ogden laws.
+ScalarFunction power_trace(const Vec3& c, const Mat3& n, Real a, bool with_hessian);
+
 } // namespace uncoupled
 
 } // namespace trifem::material

@@ -158,9 +158,9 @@ surface_load_terms(const io::CaseSpec& spec, const std::vector<io::PressureSpec>
     const auto& t = tractions[i];
     const auto& surface = with_context(fmt::format("{}loads.traction[{}].surface", prefix, i + 1),
                                        [&] { return model.mesh.surface(t.surface); });
-    terms.push_back(std::make_unique<physics::TractionTerm>(model.mesh, model.dofs, model.fields.u,
-                                                            surface.facets, t.value,
-                                                            make_curve(spec, t.curve)));
+    terms.push_back(std::make_unique<physics::TractionTerm>(
+        model.mesh, model.dofs, model.fields.u, surface.facets, t.value, make_curve(spec, t.curve),
+        t.per_current_area ? physics::TractionArea::Current : physics::TractionArea::Reference));
   }
   return terms;
 }
@@ -229,6 +229,22 @@ std::unique_ptr<physics::Term> body_force_term(const io::CaseSpec& spec, const i
                                                   make_curve(spec, b.curve));
 }
 
+/// The term of [[loads.nodal_force]] `f`: its value on every node of its set, one force per
+/// non-zero component (a node carried by a rigid body passes its force to the body as any load
+/// on its DOFs does). InputError naming its key if the set does not exist.
+std::unique_ptr<physics::Term> nodal_force_term(const io::CaseSpec& spec,
+                                                const io::NodalForceSpec& f, const Model& model) {
+  const auto& nodes =
+      with_context(fmt::format("{}.set", f.key), [&] { return model.mesh.node_set(f.set); });
+  const dofs::LoadCurve curve = make_curve(spec, f.curve);
+  std::vector<physics::NodalForce> forces;
+  for (const Index a : nodes)
+    for (int k = 0; k < 3; ++k)
+      if (f.value[k] != 0.0)
+        forces.push_back({model.dofs.dof(model.fields.u, a, k), f.value[k], curve});
+  return std::make_unique<physics::NodalForceTerm>(std::move(forces));
+}
+
 } // namespace
 
 std::vector<std::unique_ptr<physics::Term>> load_terms(const io::CaseSpec& spec,
@@ -236,6 +252,8 @@ std::vector<std::unique_ptr<physics::Term>> load_terms(const io::CaseSpec& spec,
   auto terms = surface_load_terms(spec, spec.pressures, spec.tractions, "", model);
   for (const io::BodyForceSpec& b : spec.body_forces)
     terms.push_back(body_force_term(spec, b, model));
+  for (const io::NodalForceSpec& f : spec.nodal_forces)
+    terms.push_back(nodal_force_term(spec, f, model));
   for (std::size_t i = 0; i < spec.baths.size(); ++i) {
     const auto& b = spec.baths[i];
     const auto& surface =

@@ -17,6 +17,44 @@ void facet_dofs(const mesh::Facet& f, const dofs::DofMap& map, dofs::FieldId u,
       dofs[static_cast<std::size_t>(3 * a + k)] = map.dof(u, f.node(a), k);
 }
 
+/// The residual r_a = -t int N_a |x_s1 x x_s2| ds of a traction t per current area on a facet
+/// of `ref`'s family with nodal positions x and, if K is given, its derivative
+/// K_ab = -t (x) int N_a [N_b,s1 (x_s2 x n) + N_b,s2 (n x x_s1)] ds.
+void current_area_load(const fe::ReferenceFacet& ref, const FacetPositions& x, const Vec3& t,
+                       LocalVector& r, LocalMatrix* K) {
+  const int n = ref.num_nodes();
+  Eigen::Matrix<Real, Eigen::Dynamic, 1, 0, fe::kMaxFacetNodes, 1> w =
+      Eigen::Matrix<Real, Eigen::Dynamic, 1, 0, fe::kMaxFacetNodes, 1>::Zero(n);
+  FacetMatrixX dw; // row a, columns 3 b + k: d(int N_a |x_s1 x x_s2| ds)/dx_bk
+  if (K)
+    dw.setZero(n, 3 * n);
+  for (const fe::FacetQuadraturePoint& p : ref.rule().points) {
+    const fe::FacetShapeGrads dN = ref.shape_grad(p.xi);
+    const fe::FacetShapeValues N = ref.shape(p.xi);
+    const Vec3 T1 = x.transpose() * dN.col(0), T2 = x.transpose() * dN.col(1);
+    const Vec3 normal_area = T1.cross(T2);
+    const Real da = normal_area.norm();
+    for (int a = 0; a < n; ++a)
+      w[a] += N[a] * da * p.weight;
+    if (!K)
+      continue;
+    const Vec3 normal = normal_area / da;
+    for (int b = 0; b < n; ++b) {
+      const Vec3 g = dN(b, 0) * T2.cross(normal) + dN(b, 1) * normal.cross(T1);
+      for (int a = 0; a < n; ++a)
+        dw.block<1, 3>(a, 3 * b) += N[a] * p.weight * g.transpose();
+    }
+  }
+  r.resize(3 * n);
+  for (int a = 0; a < n; ++a)
+    r.segment<3>(3 * a) = -w[a] * t;
+  if (K) {
+    K->setZero(3 * n, 3 * n);
+    for (int a = 0; a < n; ++a)
+      K->block(3 * a, 0, 3, 3 * n) = -t * dw.row(a);
+  }
+}
+
 } // namespace
 
 PressureTerm::PressureTerm(const mesh::Mesh& mesh, const dofs::DofMap& dofs,
@@ -55,9 +93,11 @@ bool PressureTerm::evaluate(Index e, const EvalState& state, LocalVector& r, Loc
 
 TractionTerm::TractionTerm(const mesh::Mesh& mesh, const dofs::DofMap& dofs,
                            dofs::FieldId displacement, std::vector<mesh::Facet> facets,
-                           Vec3 traction, dofs::LoadCurve curve)
+                           Vec3 traction, dofs::LoadCurve curve, TractionArea area)
     : mesh_(mesh), dofs_(dofs), u_(displacement), facets_(std::move(facets)), traction_(traction),
-      curve_(std::move(curve)) {
+      curve_(std::move(curve)), area_(area) {
+  if (area_ == TractionArea::Current)
+    return; // the areas change with the state: evaluated each time
   nodal_area_.reserve(facets_.size());
   for (const auto& f : facets_) {
     if (!f.is_quad4()) { // ∫ N_a dA by the facet type's rule
@@ -93,6 +133,11 @@ void TractionTerm::element_dofs(Index e, std::vector<Index>& dofs) const {
 
 bool TractionTerm::evaluate(Index e, const EvalState& state, LocalVector& r, LocalMatrix* K) const {
   const Vec3 t = traction_ * curve_(state.time);
+  if (area_ == TractionArea::Current) {
+    current_area_load(fe::reference_facet(facets_[e].type),
+                      facet_positions(mesh_, facets_[e], &dofs_, u_, &state.x), t, r, K);
+    return true;
+  }
   const auto n = static_cast<Index>(nodal_area_[e].size());
   r.resize(3 * n);
   for (Index a = 0; a < n; ++a)

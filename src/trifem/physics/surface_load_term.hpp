@@ -31,11 +31,21 @@ private:
   dofs::LoadCurve curve_;
 };
 
-/// Dead traction t(t) = vector * curve(t) per reference area: f_ext,a = int N_a t dA.
+/// The area a traction acts per.
+enum class TractionArea {
+  Reference, ///< per reference area: a dead load, f_ext,a = int N_a t dA
+  Current,   ///< per current area, in a fixed direction: f_ext,a = int N_a t da
+};
+
+/// Traction t(t) = vector * curve(t) in a fixed direction, per reference area (a dead load) or
+/// per current area: f_ext,a = int N_a t |x_s1 x x_s2| ds, whose tangent is
+///   df_ext,a/dx_b = t (x) int N_a [N_b,s1 (x_s2 x n) + N_b,s2 (n x x_s1)] ds,  n = the unit normal
+/// (d|a| = n . da, da = dx_s1 x x_s2 + x_s1 x dx_s2), by the facet's rule.
 class TractionTerm final : public Term {
 public:
   TractionTerm(const mesh::Mesh& mesh, const dofs::DofMap& dofs, dofs::FieldId displacement,
-               std::vector<mesh::Facet> facets, Vec3 traction, dofs::LoadCurve curve);
+               std::vector<mesh::Facet> facets, Vec3 traction, dofs::LoadCurve curve,
+               TractionArea area = TractionArea::Reference);
   std::string name() const override { return "traction"; }
   Index num_elements() const override { return static_cast<Index>(facets_.size()); }
   void element_dofs(Index e, std::vector<Index>& dofs) const override;
@@ -46,9 +56,10 @@ private:
   const dofs::DofMap& dofs_;
   dofs::FieldId u_;
   std::vector<mesh::Facet> facets_;
-  std::vector<std::vector<Real>> nodal_area_; ///< int N_a dA per facet and node
+  std::vector<std::vector<Real>> nodal_area_; ///< int N_a dA per facet and node (Reference)
   Vec3 traction_;
   dofs::LoadCurve curve_;
+  TractionArea area_;
 };
 
 } // namespace trifem::physics

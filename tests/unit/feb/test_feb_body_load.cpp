@@ -2,7 +2,8 @@
 // FEBio's <body_load> of type "const" (x, y, z, each with its own load controller) and "body
 // force" (<force>) map to [[loads.body_force]] with the sign flipped (FEBio applies its body
 // force b as the external force −ρ b), one per curve; the materials then get their densities
-// in a static analysis too. What has no counterpart is an error naming the line.
+// in a static analysis too. <nodal_load type="nodal_force"> maps to [[loads.nodal_force]]. What
+// has no counterpart is an error naming the line.
 #include "feb_errors.hpp"
 #include "trifem/core/error.hpp"
 #include "trifem/feb/feb_reader.hpp"
@@ -171,7 +172,58 @@ TEST(FebBodyLoad, WhatHasNoCounterpartIsAnErrorNamingTheLine) {
     <Loads><body_load type="const"><z>1</z></body_load></Loads>
   </step></Step>)")),
                         {"a body load inside a <step> is not supported"});
+  test::expect_contains(body_load_error(body_load_text(R"(<edge_load type="force"/>)")),
+                        {"bf.feb:21: ",
+                         "are supported in <Loads>, <body_load> of type const and body force, and "
+                         "<nodal_load> of type nodal_force"});
+}
+
+// <nodal_load type="nodal_force">: its <value> (with an lc) on every node of the set, as
+// [[loads.nodal_force]] (the run: FebNodalLoad in test_feb_verification.cpp).
+TEST(FebNodalLoad, ANodalForceIsANodalForceOnItsSet) {
+  const std::string top = R"(<NodeSet name="top">5, 6, 7, 8</NodeSet>
+  </Mesh>)";
+  std::string text = body_load_text(R"(<nodal_load name="F" node_set="top" type="nodal_force">
+      <relative>0</relative><value lc="1">0,0,0.1</value><shell_bottom>0</shell_bottom>
+    </nodal_load>)");
+  text.replace(text.find("</Mesh>"), 7, top);
+  const io::CaseSpec spec = feb::parse_feb(text, "nf.feb");
+  ASSERT_EQ(spec.nodal_forces.size(), 1u);
+  EXPECT_EQ(spec.nodal_forces[0].set, "top");
+  EXPECT_EQ(spec.nodal_forces[0].value, Vec3(0, 0, 0.1));
+  EXPECT_EQ(spec.nodal_forces[0].curve, "LC1");
+}
+
+TEST(FebNodalLoad, WhatHasNoCounterpartIsAnErrorNamingTheLine) {
+  const auto with_top = [](std::string text) {
+    text.replace(text.find("</Mesh>"), 7, R"(<NodeSet name="top">5, 6, 7, 8</NodeSet></Mesh>)");
+    return text;
+  };
   test::expect_contains(
-      body_load_error(body_load_text(R"(<nodal_load type="nodal_force"/>)")),
-      {"bf.feb:21: ", "are supported in <Loads>, and <body_load> of type const and body force"});
+      body_load_error(with_top(body_load_text(
+          R"(<nodal_load node_set="top" type="nodal fluidflux"><value>1</value></nodal_load>)"))),
+      {"bf.feb:21: ", "nodal_load of type 'nodal fluidflux' is not supported "
+                      "(supported: nodal_force)"});
+  test::expect_contains(
+      body_load_error(with_top(body_load_text(
+          R"(<nodal_load node_set="top" type="nodal_force"><relative>1</relative><value>0,0,1</value></nodal_load>)"))),
+      {"/relative: a relative nodal force", "is not supported"});
+  test::expect_contains(
+      body_load_error(with_top(body_load_text(
+          R"(<nodal_load node_set="top" type="nodal_force"><scale>1</scale></nodal_load>)"))),
+      {"unknown parameter 'scale' of a nodal_force load (expected one of: "
+       "value, relative, shell_bottom)"});
+  test::expect_contains(body_load_error(with_top(body_load_text(
+                            R"(<nodal_load node_set="top" type="nodal_force"></nodal_load>)"))),
+                        {"bf.feb:21: ", "value"});
+  test::expect_contains(
+      body_load_error(with_top(body_load_text(
+          R"(<nodal_load node_set="topp" type="nodal_force"><value>0,0,1</value></nodal_load>)"))),
+      {"bf.feb:21: ", "topp"});
+  test::expect_contains(body_load_error(with_top(body_load_text("", R"(
+  <Step><step id="1" name="s">
+    <Control><time_steps>2</time_steps><step_size>0.5</step_size></Control>
+    <Loads><nodal_load node_set="top" type="nodal_force"><value>0,0,1</value></nodal_load></Loads>
+  </step></Step>)"))),
+                        {"a nodal load inside a <step> is not supported"});
 }

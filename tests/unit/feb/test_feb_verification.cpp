@@ -211,40 +211,45 @@ TEST(FebVerification, MooneyRivlinFollowerPressure) {
   EXPECT_LT(c, 0.94); // a real compression (about 6.6 %), not a trivial state
 }
 
-// The same block under a dead traction of 0.1 MPa per reference area pulling the top face
-// (<surface_load type="traction">, the pressure load of the file replaced in memory): uniaxial
-// nominal stress P_zz = sigma_zz a^2 = 0.1.
-TEST(FebVerification, MooneyRivlinDeadTraction) {
+// The same block under a traction of 0.1 MPa pulling the top face (<surface_load
+// type="traction">, the pressure load of the file replaced in memory). With <linear>1</linear>
+// FEBio integrates it over the reference surface (a dead load): the nominal stress P_zz =
+// sigma_zz a^2 = 0.1. By default (linear = 0) over the current surface: sigma_zz = 0.1.
+TEST(FebVerification, MooneyRivlinTractionPerReferenceAndPerCurrentArea) {
   const Real t = 0.1;
   const auto law = mooney_rivlin(0.2, 0.05, 20.0);
-  const auto nominal = [&](Real c) {
-    const Real a = lateral_stretch(law, c);
-    return law(a, c)[1] * a * a;
-  };
-  Real lo = 1.0, hi = 1.5;
-  for (int i = 0; i < 200; ++i) {
-    const Real c = 0.5 * (lo + hi);
-    (nominal(c) > t ? hi : lo) = c;
+  for (const bool linear : {true, false}) {
+    const auto stress = [&](Real c) { // the stress the traction sets: nominal or Cauchy
+      const Real a = lateral_stretch(law, c);
+      return law(a, c)[1] * (linear ? a * a : 1.0);
+    };
+    Real lo = 1.0, hi = 1.5;
+    for (int i = 0; i < 200; ++i) {
+      const Real c = 0.5 * (lo + hi);
+      (stress(c) > t ? hi : lo) = c;
+    }
+    const Real c = 0.5 * (lo + hi), a = lateral_stretch(law, c);
+    const std::filesystem::path file = kData / "uniaxial_mooney_rivlin_pressure.feb";
+    std::string text = read_file(file);
+    const std::string from = text.substr(
+        text.find("<surface_load"), text.find("</surface_load>") + 15 - text.find("<surface_load"));
+    text.replace(text.find(from), from.size(),
+                 std::string("<surface_load name=\"Pull\" surface=\"Top\" type=\"traction\">\n"
+                             "<scale lc=\"1\">0.2</scale>\n<traction>0,0,0.5</traction>\n") +
+                     (linear ? "<linear>1</linear>\n" : "") + "</surface_load>");
+    const io::CaseSpec spec = feb::parse_feb(text, file);
+    ASSERT_EQ(spec.tractions.size(), 1u);
+    EXPECT_TRUE(spec.pressures.empty());
+    EXPECT_EQ(spec.tractions[0].curve, "ramp");
+    EXPECT_DOUBLE_EQ(spec.tractions[0].value.z(), 0.1); // scale x traction
+    EXPECT_EQ(spec.tractions[0].per_current_area, !linear);
+    const FebRun r = run(spec);
+    ASSERT_TRUE(r.report.success) << r.report.failure;
+    const Index corner = 6;
+    EXPECT_NEAR(displacement(*r.model, corner, 2), c - 1.0, 1e-8) << "linear " << linear;
+    EXPECT_NEAR(displacement(*r.model, corner, 0), a - 1.0, 1e-8) << "linear " << linear;
+    EXPECT_GT(c, 1.05); // a real stretch, not a trivial state
   }
-  const Real c = 0.5 * (lo + hi), a = lateral_stretch(law, c);
-  const std::filesystem::path file = kData / "uniaxial_mooney_rivlin_pressure.feb";
-  std::string text = read_file(file);
-  const std::string from = text.substr(
-      text.find("<surface_load"), text.find("</surface_load>") + 15 - text.find("<surface_load"));
-  text.replace(text.find(from), from.size(),
-               "<surface_load name=\"Pull\" surface=\"Top\" type=\"traction\">\n"
-               "<scale lc=\"1\">0.2</scale>\n<traction>0,0,0.5</traction>\n</surface_load>");
-  const io::CaseSpec spec = feb::parse_feb(text, file);
-  ASSERT_EQ(spec.tractions.size(), 1u);
-  EXPECT_TRUE(spec.pressures.empty());
-  EXPECT_EQ(spec.tractions[0].curve, "ramp");
-  EXPECT_DOUBLE_EQ(spec.tractions[0].value.z(), 0.1); // scale x traction
-  const FebRun r = run(spec);
-  ASSERT_TRUE(r.report.success);
-  const Index corner = 6;
-  EXPECT_NEAR(displacement(*r.model, corner, 2), c - 1.0, 1e-8);
-  EXPECT_NEAR(displacement(*r.model, corner, 0), a - 1.0, 1e-8);
-  EXPECT_GT(c, 1.05); // a real stretch, not a trivial state
 }
 
 TEST(FebVerification, OgdenTwoSteps) {
@@ -546,52 +551,14 @@ TEST_P(FebRigidShell, ARigidPlateMadeOfAShellPressesTheTopOfAHexByItsDisplacemen
 INSTANTIATE_TEST_SUITE_P(Facets, FebRigidShell, testing::Values(false, true),
                          [](const auto& info) { return info.param ? "Triangles" : "Quads"; });
 
-// A model of the rigid plate alone, held, under gravity (FEBio's body force b = 9.81 along z
-// is the load −ρ b): its shells of thickness 0.01 and density 2 weigh W = ρ t A g, which the
-// hold carries at the centroid of the plate (no moment). The body's force in history.csv is the
-// residual at its unknowns, R = f_int − f_ext = +W along z.
-TEST(FebRigidShell, AHeldShellBodyCarriesTheWeightOfItsShells) {
-  const std::string text = R"(<?xml version="1.0"?>
-<febio_spec version="4.0">
-  <Module type="solid"/>
-  <Control><analysis>STATIC</analysis><time_steps>1</time_steps><step_size>1</step_size></Control>
-  <Material>
-    <material id="1" name="plate" type="rigid body"><density>2</density></material>
-  </Material>
-  <Mesh>
-    <Nodes name="all">
-      <node id="1">-0.5,-0.5,1</node><node id="2">1.5,-0.5,1</node><node id="3">1.5,1.5,1</node><node id="4">-0.5,1.5,1</node>
-      <node id="5">3.5,-0.5,1</node><node id="6">3.5,1.5,1</node>
-    </Nodes>
-    <Elements type="quad4" name="Plate"><elem id="1">1,2,3,4</elem><elem id="2">2,5,6,3</elem></Elements>
-  </Mesh>
-  <MeshDomains><ShellDomain name="Plate" mat="plate"><shell_thickness>0.01</shell_thickness></ShellDomain></MeshDomains>
-  <Rigid>
-    <rigid_bc type="rigid_fixed"><rb>plate</rb><Rx_dof>1</Rx_dof><Ry_dof>1</Ry_dof><Rz_dof>1</Rz_dof><Ru_dof>1</Ru_dof><Rv_dof>1</Rv_dof><Rw_dof>1</Rw_dof></rigid_bc>
-  </Rigid>
-  <Loads><body_load type="const"><z>9.81</z></body_load></Loads>
-</febio_spec>
-)";
-  FebRun run = test::run_feb_case(feb::parse_feb(text, "shell_weight.feb"));
-  ASSERT_TRUE(run.report.success) << run.report.failure;
-  ASSERT_EQ(run.spec.rigid_bodies.size(), 1u);
-  EXPECT_EQ(run.spec.rigid_bodies[0].shell_thickness, 0.01);
-  EXPECT_EQ(run.spec.rigid_bodies[0].density, 2.0);
-  const model::Model& m = *run.model;
-  const model::RigidBody& b = m.rigid_bodies.at(0);
-  EXPECT_LE((m.problem->rigid_map().bodies()[b.rotating].centre - Vec3(1.5, 0.5, 1)).norm(),
-            1e-15); // the centroid of the shells
-  const Real weight = 2.0 * 0.01 * 8.0 * 9.81;
-  const Vec3 force = model::rigid_body_force(m, b, 1.0), moment = model::rigid_body_moment(m, b);
-  EXPECT_LE((force - Vec3(0, 0, weight)).norm(), 1e-12 * weight) << force.transpose();
-  EXPECT_LE(moment.norm(), 1e-12 * weight) << moment.transpose();
-}
-
 namespace {
 
-/// The held plate of the test above with its shell thickness in a <MeshData> section: `data`
-/// is the section's content.
-std::string plate_with_mesh_data(const std::string& data) {
+/// A plate of two quad4 shells (area 8, centroid (1.5, 0.5, 1)) forming a rigid body of
+/// density 2, held fixed under gravity along z. `domain` is its <ShellDomain> element,
+/// `mesh_data` the content of a <MeshData> section (none if empty).
+std::string held_plate(const std::string& domain, const std::string& mesh_data = "") {
+  const std::string data =
+      mesh_data.empty() ? std::string() : "\n  <MeshData>" + mesh_data + "</MeshData>";
   return R"(<?xml version="1.0"?>
 <febio_spec version="4.0">
   <Module type="solid"/>
@@ -606,9 +573,8 @@ std::string plate_with_mesh_data(const std::string& data) {
     </Nodes>
     <Elements type="quad4" name="Plate"><elem id="1">1,2,3,4</elem><elem id="2">2,5,6,3</elem></Elements>
   </Mesh>
-  <MeshDomains><ShellDomain name="Plate" mat="plate"/></MeshDomains>
-  <MeshData>)" +
-         data + R"(</MeshData>
+  <MeshDomains>)" +
+         domain + "</MeshDomains>" + data + R"(
   <Rigid>
     <rigid_bc type="rigid_fixed"><rb>plate</rb><Rx_dof>1</Rx_dof><Ry_dof>1</Ry_dof><Rz_dof>1</Rz_dof><Ru_dof>1</Ru_dof><Rv_dof>1</Rv_dof><Rw_dof>1</Rw_dof></rigid_bc>
   </Rigid>
@@ -617,7 +583,34 @@ std::string plate_with_mesh_data(const std::string& data) {
 )";
 }
 
+/// A plate whose shell thickness comes from a <MeshData> section of content `data`.
+std::string plate_with_mesh_data(const std::string& data) {
+  return held_plate(R"(<ShellDomain name="Plate" mat="plate"/>)", data);
+}
+
 } // namespace
+
+// A model of the rigid plate alone, held, under gravity (FEBio's body force b = 9.81 along z
+// is the load −ρ b): its shells of thickness 0.01 and density 2 weigh W = ρ t A g, which the
+// hold carries at the centroid of the plate (no moment). The body's force in history.csv is the
+// residual at its unknowns, R = f_int − f_ext = +W along z.
+TEST(FebRigidShell, AHeldShellBodyCarriesTheWeightOfItsShells) {
+  const std::string text = held_plate(
+      R"(<ShellDomain name="Plate" mat="plate"><shell_thickness>0.01</shell_thickness></ShellDomain>)");
+  FebRun run = test::run_feb_case(feb::parse_feb(text, "shell_weight.feb"));
+  ASSERT_TRUE(run.report.success) << run.report.failure;
+  ASSERT_EQ(run.spec.rigid_bodies.size(), 1u);
+  EXPECT_EQ(run.spec.rigid_bodies[0].shell_thickness, 0.01);
+  EXPECT_EQ(run.spec.rigid_bodies[0].density, 2.0);
+  const model::Model& m = *run.model;
+  const model::RigidBody& b = m.rigid_bodies.at(0);
+  EXPECT_LE((m.problem->rigid_map().bodies()[b.rotating].centre - Vec3(1.5, 0.5, 1)).norm(),
+            1e-15); // the centroid of the shells
+  const Real weight = 2.0 * 0.01 * 8.0 * 9.81;
+  const Vec3 force = model::rigid_body_force(m, b, 1.0), moment = model::rigid_body_moment(m, b);
+  EXPECT_LE((force - Vec3(0, 0, weight)).norm(), 1e-12 * weight) << force.transpose();
+  EXPECT_LE(moment.norm(), 1e-12 * weight) << moment.transpose();
+}
 
 // FEBio Studio writes the thickness of shells as element data (<MeshData>): the plate then
 // weighs what it weighs with the thickness on its domain.
@@ -787,4 +780,155 @@ TEST(FebRigid, AHingeToAGroundBodyTurnsTheBodyAsItsPrescribedRotationDid) {
   const Vec3 moment = model::rigid_body_moment(m, m.rigid_bodies[0]);
   EXPECT_GT(moment.z(), 0.01);
   EXPECT_LT((m.connectors->committed_wrenches()[0].moment - moment).norm(), 1e-10 * moment.z());
+}
+
+// <nodal_load type="nodal_force"> run: the four top nodes of a cube pushed up by 0.1 N each
+// (ramped by its load controller to t = 1) hand 0.4 N to the fixed base.
+TEST(FebNodalLoad, TheBaseCarriesTheForcesOfTheTopNodes) {
+  const std::string text = R"(<?xml version="1.0"?>
+<febio_spec version="4.0">
+  <Module type="solid"/>
+  <Control><analysis>STATIC</analysis><time_steps>2</time_steps><step_size>0.5</step_size></Control>
+  <Material>
+    <material id="1" name="m" type="neo-Hookean"><E>1</E><v>0.3</v></material>
+  </Material>
+  <Mesh>
+    <Nodes name="all">
+      <node id="1">0,0,0</node><node id="2">1,0,0</node><node id="3">1,1,0</node><node id="4">0,1,0</node>
+      <node id="5">0,0,1</node><node id="6">1,0,1</node><node id="7">1,1,1</node><node id="8">0,1,1</node>
+    </Nodes>
+    <Elements type="hex8" name="P"><elem id="1">1,2,3,4,5,6,7,8</elem></Elements>
+    <NodeSet name="bottom">1, 2, 3, 4</NodeSet>
+    <NodeSet name="top">5, 6, 7, 8</NodeSet>
+  </Mesh>
+  <MeshDomains><SolidDomain name="P" mat="m"/></MeshDomains>
+  <Boundary>
+    <bc name="fix" node_set="bottom" type="zero displacement"><x_dof>1</x_dof><y_dof>1</y_dof><z_dof>1</z_dof></bc>
+  </Boundary>
+  <Loads>
+    <nodal_load name="F" node_set="top" type="nodal_force"><relative>0</relative><value lc="1">0,0,0.1</value></nodal_load>
+  </Loads>
+  <LoadData>
+    <load_controller id="1" name="LC1" type="loadcurve"><interpolate>LINEAR</interpolate>
+      <points><point>0,0</point><point>1,1</point></points></load_controller>
+  </LoadData>
+</febio_spec>
+)";
+  FebRun run = test::run_feb_case(feb::parse_feb(text, "nodal_force.feb"));
+  ASSERT_TRUE(run.report.success) << run.report.failure;
+  const model::Model& m = *run.model;
+  Real base = 0.0, top = 0.0;
+  for (Index n : m.mesh.node_set("bottom"))
+    base += m.problem->full_residual()[m.dofs.dof(m.fields.u, n, 2)];
+  for (Index n : m.mesh.node_set("top"))
+    top += m.problem->state()[m.dofs.dof(m.fields.u, n, 2)];
+  EXPECT_NEAR(base, -0.4, 1e-12);
+  EXPECT_GT(top, 0.0); // pulled up
+}
+
+// The laws added for FEBio's test problems, through the two-step uniaxial cube of
+// ogden_two_steps.feb with its material replaced: the reactions at 30 % and 10 % stretch and the
+// lateral stretches against each law's closed form.
+
+namespace {
+
+/// ogden_two_steps.feb with its material element replaced by `material` (named "Ogden").
+io::CaseSpec two_step_cube(const std::string& material) {
+  std::string text = read_file(kData / "ogden_two_steps.feb");
+  const auto from = text.find("<material id=\"1\"");
+  const auto to = text.find("</material>", from) + std::string("</material>").size();
+  text.replace(from, to - from, material);
+  return feb::parse_feb(text, "two_step_cube.feb");
+}
+
+/// The top reactions at t = 1 (stretch 1.3) and t = 2 (1.1) against `law`.
+void expect_two_step_reactions(const io::CaseSpec& spec, const StressLaw& law) {
+  std::map<long, Real> force;
+  const FebRun r = run(spec, [&](const model::Model& m, Real t) {
+    force[std::lround(t * 100)] = reaction(m, "top", 2);
+  });
+  ASSERT_TRUE(r.report.success) << r.report.failure;
+  for (const auto& [t, c] : {std::pair{100L, 1.3}, {200L, 1.1}}) {
+    const Real a = lateral_stretch(law, c);
+    EXPECT_NEAR(force.at(t), law(a, c)[1] * a * a, 1e-8) << "t = " << t / 100.0;
+  }
+}
+
+} // namespace
+
+// Ogden unconstrained: sigma_i = sum_p c_p/m_p (l_i^m_p - 1)/J + cp (J - 1).
+TEST(FebVerification, OgdenUnconstrainedTwoSteps) {
+  const io::CaseSpec spec =
+      two_step_cube(R"(<material id="1" name="Ogden" type="Ogden unconstrained">
+      <density>1</density><cp>1</cp><c1>0.658</c1><c2>0</c2><c3>0</c3><c4>0</c4><c5>0</c5><c6>0</c6>
+      <m1>6.83</m1><m2>1</m2><m3>1</m3><m4>1</m4><m5>1</m5><m6>1</m6></material>)");
+  EXPECT_EQ(spec.materials.at("Ogden").type, "ogden-unconstrained");
+  expect_two_step_reactions(spec, [](Real a, Real c) {
+    const Real J = a * a * c, cp = 1.0, c1 = 0.658, m1 = 6.83;
+    const auto s = [&](Real l) { return c1 / m1 * (std::pow(l, m1) - 1.0) / J + cp * (J - 1.0); };
+    return std::array<Real, 2>{s(a), s(c)};
+  });
+}
+
+// Yeoh: t~_i = 2 W'(I1~ - 3) l~_i^2 with W' = c1 + 2 c2 x + 3 c3 x^2 (FEBio's ma61 parameters).
+TEST(FebVerification, YeohTwoSteps) {
+  const io::CaseSpec spec = two_step_cube(R"(<material id="1" name="Ogden" type="Yeoh">
+      <k>1000</k><pressure_model>default</pressure_model><c1>0.57382</c1><c2>-0.074744</c2>
+      <c3>0.011321</c3><c4>0</c4><c5>0</c5><c6>0</c6></material>)");
+  EXPECT_EQ(spec.materials.at("Ogden").type, "yeoh");
+  expect_two_step_reactions(spec, uncoupled(
+                                      [](Real l, Real I1) {
+                                        const Real x = I1 - 3.0;
+                                        const Real dW =
+                                            0.57382 - 2.0 * 0.074744 * x + 3.0 * 0.011321 * x * x;
+                                        return 2.0 * dW * l * l;
+                                      },
+                                      1000.0));
+}
+
+// Orthotropic elastic with its e1 along z (mat_axis a = z, d = x: e2 = x, e3 = y): the uniaxial
+// stress S_zz = E1 E_zz with E_zz = (c^2 - 1)/2 gives the nominal stress P_zz = c S_zz, and the
+// lateral strains E_xx = -v12 E_zz (along e2), E_yy = -v31 E1/E3 E_zz (along e3).
+TEST(FebVerification, OrthotropicElasticAlongItsMaterialAxisTwoSteps) {
+  const Real E1 = 2.0, E3 = 3.0, v12 = 0.3, v31 = 0.1;
+  const io::CaseSpec spec =
+      two_step_cube(R"(<material id="1" name="Ogden" type="orthotropic elastic">
+      <E1>2</E1><E2>1</E2><E3>3</E3><G12>3</G12><G23>2</G23><G31>1</G31>
+      <v12>0.3</v12><v23>0.2</v23><v31>0.1</v31>
+      <mat_axis type="vector"><a>0,0,1</a><d>1,0,0</d></mat_axis></material>)");
+  const io::MaterialSpec& m = spec.materials.at("Ogden");
+  EXPECT_EQ(m.type, "orthotropic-elastic");
+  ASSERT_TRUE(m.axes.has_value());
+  EXPECT_EQ(m.axes->a, Vec3(0, 0, 1));
+  EXPECT_EQ(m.axes->d, Vec3(1, 0, 0));
+  std::map<long, std::array<Real, 3>> state; // force, u_x and u_y of node (1, 1, 1)
+  const FebRun r = run(spec, [&](const model::Model& model, Real t) {
+    state[std::lround(t * 100)] = {reaction(model, "top", 2), displacement(model, 6, 0),
+                                   displacement(model, 6, 1)};
+  });
+  ASSERT_TRUE(r.report.success) << r.report.failure;
+  for (const auto& [t, c] : {std::pair{100L, 1.3}, {200L, 1.1}}) {
+    const Real Ezz = 0.5 * (c * c - 1.0);
+    const Real ax = std::sqrt(1.0 - 2.0 * v12 * Ezz),
+               ay = std::sqrt(1.0 - 2.0 * v31 * E1 / E3 * Ezz);
+    const auto& [force, ux, uy] = state.at(t);
+    EXPECT_NEAR(force, c * E1 * Ezz, 1e-8) << "t = " << t / 100.0;
+    EXPECT_NEAR(ux, ax - 1.0, 1e-8) << "t = " << t / 100.0;
+    EXPECT_NEAR(uy, ay - 1.0, 1e-8) << "t = " << t / 100.0;
+  }
+}
+
+TEST(FebVerification, AMatAxisOtherThanAVectorIsRefusedNamingIt) {
+  try {
+    (void)two_step_cube(R"(<material id="1" name="Ogden" type="orthotropic elastic">
+      <E1>2</E1><E2>1</E2><E3>3</E3><G12>3</G12><G23>2</G23><G31>1</G31>
+      <v12>0.3</v12><v23>0.2</v23><v31>0.1</v31>
+      <mat_axis type="local">0,0,0</mat_axis></material>)");
+    ADD_FAILURE() << "accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("two_step_cube.feb:"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("mat_axis of type 'local' is not supported"),
+              std::string::npos)
+        << e.what();
+  }
 }

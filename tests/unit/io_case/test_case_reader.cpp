@@ -704,7 +704,7 @@ const std::vector<BadCase> kMixtureBadCases = {
      {"materials.cart.fixed_charge_basis: expected a string, got an integer"}},
     {"volume_fraction_out_of_range",
      cartilage_with("phi_s0 = 0.2", "phi_s0 = 1.2"),
-     {"materials.cart.phi_s0 = 1.2: out of range, expected a value in (0, 1) (line 21)"}},
+     {"materials.cart.phi_s0 = 1.2: out of range, expected a value in [0, 1) (line 21)"}},
     {"negative_fixed_charge",
      cartilage_with("fixed_charge = 2e-4", "fixed_charge = -2e-4"),
      {"materials.cart.fixed_charge = -0.0002: out of range, expected a value in [0, 1] "

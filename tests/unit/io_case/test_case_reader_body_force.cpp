@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
-// [[loads.body_force]]: its keys, the TOML writer's round trip, the restart fingerprint, and the
-// errors of bad input, by the reader (keys, with their line) and by the model (cell blocks and
-// their materials, naming the key).
+// [[loads.body_force]] and [[loads.nodal_force]]: their keys, the TOML writer's round trip, the
+// restart fingerprint, and the errors of bad input, by the reader (keys, with their line) and by
+// the model (cell blocks and their materials, node sets, naming the key).
 #include "bad_input.hpp"
 #include "trifem/analysis/restart_fingerprint.hpp"
 #include "trifem/core/error.hpp"
@@ -230,4 +230,130 @@ TEST(CaseReaderBodyForce, ShellsOnFacesOfCellsAreAModelErrorNamingTheBodyAndTheS
   expect_contains(model_error_of(shells),
                   {"rigid_body[1].shell_thickness", "facet 1 of the surface 'block.zmax'",
                    "is a face of cell", "bound no cell"});
+}
+
+// ---------------------------------------------------------------------------------------------
+// [[loads.nodal_force]]
+
+namespace {
+
+const std::string kNodalForce = R"(
+[[loads.nodal_force]]
+set = "block.xmax"
+value = [0.5, 0, -1.5]
+curve = "ramp"
+)";
+
+} // namespace
+
+TEST(CaseReaderNodalForce, ReadsSetValueAndCurveAndTheWriterRoundTripsThem) {
+  const CaseSpec c = parse_case(body_case(kNodalForce + R"(
+[[loads.nodal_force]]
+set = "block.ymin"
+value = [0, 2, 0]
+)"),
+                                kMemoryFile);
+  ASSERT_EQ(c.nodal_forces.size(), 2u);
+  EXPECT_EQ(c.nodal_forces[0].key, "loads.nodal_force[1]");
+  EXPECT_EQ(c.nodal_forces[0].set, "block.xmax");
+  EXPECT_EQ(c.nodal_forces[0].value, Vec3(0.5, 0, -1.5));
+  EXPECT_EQ(c.nodal_forces[0].curve, "ramp");
+  EXPECT_TRUE(c.nodal_forces[1].curve.empty());
+  const CaseSpec back = parse_case(trifem::io::case_toml(c), kMemoryFile);
+  ASSERT_EQ(back.nodal_forces.size(), 2u);
+  for (std::size_t i = 0; i < 2; ++i) {
+    EXPECT_EQ(back.nodal_forces[i].set, c.nodal_forces[i].set);
+    EXPECT_EQ(back.nodal_forces[i].value, c.nodal_forces[i].value);
+    EXPECT_EQ(back.nodal_forces[i].curve, c.nodal_forces[i].curve);
+  }
+}
+
+TEST(CaseReaderNodalForce, ARestartOfACaseWithAnotherNodalForceIsRefused) {
+  const auto fingerprint = [](const std::string& text) {
+    const CaseSpec spec = parse_case(text, kMemoryFile);
+    const auto model = trifem::model::build_model(spec);
+    return trifem::analysis::case_fingerprint(
+        spec, *model)[static_cast<std::size_t>(trifem::analysis::CasePart::BoundaryConditions)];
+  };
+  const auto with = fingerprint(body_case(kNodalForce));
+  EXPECT_NE(fingerprint(body_case("")), with);
+  EXPECT_NE(with, fingerprint(body_case(replaced_in(kNodalForce, "-1.5", "-1.6"))));
+  EXPECT_NE(with, fingerprint(body_case(replaced_in(kNodalForce, "xmax", "xmin"))));
+  EXPECT_EQ(with, fingerprint(body_case(kNodalForce)));
+}
+
+const std::vector<BadCase> kBadNodalForces = {
+    {"missing_value",
+     body_case("[[loads.nodal_force]]\nset = \"block.xmax\"\n"),
+     {"loads.nodal_force[1].value: missing required key"}},
+    {"missing_set",
+     body_case("[[loads.nodal_force]]\nvalue = [0, 0, 1]\n"),
+     {"loads.nodal_force[1].set: missing required key"}},
+    {"unknown_key",
+     body_case("[[loads.nodal_force]]\nset = \"block.xmax\"\nvalue = [0, 0, 1]\nforce = 2\n"),
+     {"loads.nodal_force[1].force: unknown key (expected one of: set, value, curve)"}},
+    {"undefined_curve",
+     body_case("[[loads.nodal_force]]\nset = \"block.xmax\"\nvalue = [0, 0, 1]\ncurve = "
+               "\"rampe\"\n"),
+     {"loads.nodal_force[1].curve = 'rampe': undefined curve", "did you mean 'ramp'?"}},
+    {"in_a_step",
+     replaced_in(body_case(R"(
+[[step]]
+end_time = 1.0
+dt = 0.1
+[[step.loads.nodal_force]]
+set = "block.xmax"
+value = [0, 0, -1]
+)"),
+                 "[time]\nend_time = 1.0\ndt = 0.1\n", ""),
+     {"step[1].loads.nodal_force: a nodal force acts in every step", "[[loads.nodal_force]]"}},
+};
+
+class BadNodalForce : public ::testing::TestWithParam<BadCase> {};
+
+TEST_P(BadNodalForce, FailsNamingTheKey) {
+  expect_fails_naming(GetParam());
+}
+
+INSTANTIATE_TEST_SUITE_P(CaseReaderNodalForce, BadNodalForce, ::testing::ValuesIn(kBadNodalForces),
+                         [](const auto& info) { return info.param.name; });
+
+TEST(CaseReaderNodalForce, AnUndefinedNodeSetIsAModelErrorNamingTheKey) {
+  expect_contains(model_error_of(body_case(replaced_in(kNodalForce, "block.xmax", "block.xmx"))),
+                  {"loads.nodal_force[1].set", "block.xmx"});
+}
+
+// ---------------------------------------------------------------------------------------------
+// [[loads.traction]] area
+
+TEST(CaseReaderTraction, AreaIsPerReferenceByDefaultOrPerCurrentAreaAndRoundTrips) {
+  const CaseSpec c = parse_case(body_case(R"(
+[[loads.traction]]
+surface = "block.xmax"
+value = [0.1, 0, 0]
+[[loads.traction]]
+surface = "block.xmax"
+value = [0.2, 0, 0]
+area = "current"
+)"),
+                                kMemoryFile);
+  ASSERT_EQ(c.tractions.size(), 2u);
+  EXPECT_FALSE(c.tractions[0].per_current_area);
+  EXPECT_TRUE(c.tractions[1].per_current_area);
+  const CaseSpec back = parse_case(trifem::io::case_toml(c), kMemoryFile);
+  ASSERT_EQ(back.tractions.size(), 2u);
+  EXPECT_FALSE(back.tractions[0].per_current_area);
+  EXPECT_TRUE(back.tractions[1].per_current_area);
+  const auto fingerprint = [](const std::string& text) {
+    const CaseSpec spec = parse_case(text, kMemoryFile);
+    const auto model = trifem::model::build_model(spec);
+    return trifem::analysis::case_fingerprint(
+        spec, *model)[static_cast<std::size_t>(trifem::analysis::CasePart::BoundaryConditions)];
+  };
+  const std::string load = "[[loads.traction]]\nsurface = \"block.xmax\"\nvalue = [0.1, 0, 0]\n";
+  EXPECT_NE(fingerprint(body_case(load)), fingerprint(body_case(load + "area = \"current\"\n")));
+  EXPECT_EQ(fingerprint(body_case(load)), fingerprint(body_case(load + "area = \"reference\"\n")));
+  expect_fails_naming({"bad_area",
+                       body_case(load + "area = \"deformed\"\n"),
+                       {"loads.traction[1].area = 'deformed'", "reference", "current"}});
 }

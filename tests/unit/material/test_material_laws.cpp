@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
-// Holmes-Mow, Mooney-Rivlin and Ogden: derivatives, small-strain limit, frame invariance,
-// coincident principal stretches, equivalences between the laws and bad parameters.
+// Holmes-Mow, Mooney-Rivlin, Ogden (uncoupled and unconstrained), Yeoh and the orthotropic
+// elastic law: derivatives, small-strain limit, frame invariance, coincident principal
+// stretches, closed forms, equivalences between the laws and bad parameters.
 #include "trifem/core/error.hpp"
 #include "trifem/material/registry.hpp"
 #include "trifem/tensor/kinematics.hpp"
@@ -14,6 +15,7 @@
 #include <cstdint>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 using namespace trifem;
@@ -46,6 +48,30 @@ const std::vector<LawCase>& new_law_cases() {
         {"c3", 0.3},
         {"m3", 6.0},
         {"k", 5.0}}},
+      {"ogden-unconstrained", {{"c1", 0.658}, {"m1", 6.83}, {"cp", 1.0}}},
+      {"ogden-unconstrained",
+       {{"c1", 0.4},
+        {"m1", 4.0},
+        {"c2", 0.2},
+        {"m2", -2.0},
+        {"c3", -0.1},
+        {"m3", 1.5},
+        {"c4", 0.05},
+        {"m4", 3.0},
+        {"c5", 0.02},
+        {"m5", -1.0},
+        {"c6", 0.01},
+        {"m6", 8.0},
+        {"cp", 0.0}}},
+      {"yeoh", {{"c1", 0.57382}, {"c2", -0.074744}, {"c3", 0.011321}, {"k", 1000.0}}},
+      {"yeoh",
+       {{"c1", 0.3},
+        {"c2", 0.1},
+        {"c3", -0.02},
+        {"c4", 0.004},
+        {"c5", -0.001},
+        {"c6", 0.0002},
+        {"k", 3.0}}},
   };
   return cases;
 }
@@ -116,9 +142,13 @@ material::Lame small_strain_moduli(const LawCase& c) {
   Real mu = 0.0;
   if (c.type == "mooney-rivlin")
     mu = 2.0 * (p.at("c1") + (p.contains("c2") ? p.at("c2") : 0.0));
-  else // ogden: mu = (c1 + c2 + c3)/2 with FEBio's c_i/m_i^2 normalisation
-    for (const char* key : {"c1", "c2", "c3"})
+  else if (c.type == "yeoh")
+    mu = 2.0 * p.at("c1");
+  else // ogden: mu = (c1 + c2 + ...)/2 with FEBio's c_i/m_i^2 normalisation
+    for (const char* key : {"c1", "c2", "c3", "c4", "c5", "c6"})
       mu += p.contains(key) ? 0.5 * p.at(key) : 0.0;
+  if (c.type == "ogden-unconstrained") // lambda = cp
+    return {p.at("cp"), mu};
   return {p.at("k") - 2.0 / 3.0 * mu, mu};
 }
 
@@ -358,4 +388,137 @@ TEST(NewSolidLaws, RegistryExamplesAreValid) {
     EXPECT_GT(m->shear_modulus(), 0.0) << law.type;
     EXPECT_GT(m->p_wave_modulus(), m->shear_modulus()) << law.type;
   }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Closed forms of the FEBio laws added for .feb files, evaluated from the principal stretches
+// (not from the laws' tensor algebra).
+
+namespace {
+
+/// A deformation with distinct principal stretches l along the axes of the rotation R: F = R
+/// diag(l) (C = diag(l^2) in the rotated basis, the Cauchy stress R-rotated b's basis: sigma =
+/// R diag(s) R^T with the principal values s).
+struct PrincipalState {
+  Mat3 R;
+  Vec3 l;
+  Mat3 F() const { return R * l.asDiagonal() * R.transpose(); }
+};
+
+const std::vector<PrincipalState>& principal_states() {
+  static const std::vector<PrincipalState> states = {
+      {rotation(0.4, Vec3(1, -2, 0.5)), Vec3(1.3, 0.9, 0.75)},
+      {rotation(1.2, Vec3(0.2, 1, 1)), Vec3(0.7, 1.1, 1.45)},
+      {Mat3::Identity(), Vec3(1.2, 1.0, 1.0)}, // two equal stretches
+  };
+  return states;
+}
+
+/// The Cauchy stress of `law` at F.
+Mat3 cauchy(const material::ElasticLaw& law, const Mat3& F) {
+  return kinematics::cauchy_from_pk2(F, law.stress(F.transpose() * F));
+}
+
+} // namespace
+
+// Ogden unconstrained: sigma_a = sum_i c_i/m_i (l_a^m_i - 1)/J + cp (J - 1) (FEBio's principal
+// Cauchy stresses) for distinct and for equal stretches.
+TEST(OgdenUnconstrained, PrincipalCauchyStressesAreFebiosClosedForm) {
+  const std::vector<std::pair<Real, Real>> terms = {{0.4, 4.0}, {0.2, -2.0}, {-0.1, 1.5}};
+  const Real cp = 1.7;
+  const auto law = material::create_law(
+      "ogden-unconstrained",
+      {{"c1", 0.4}, {"m1", 4.0}, {"c2", 0.2}, {"m2", -2.0}, {"c3", -0.1}, {"m3", 1.5}, {"cp", cp}},
+      "o");
+  for (const PrincipalState& st : principal_states()) {
+    const Real J = st.l.prod();
+    Vec3 s = Vec3::Constant(cp * (J - 1.0));
+    for (int a = 0; a < 3; ++a)
+      for (const auto& [c, m] : terms)
+        s[a] += c / m * (std::pow(st.l[a], m) - 1.0) / J;
+    const Mat3 exact = st.R * s.asDiagonal() * st.R.transpose();
+    EXPECT_LE((cauchy(*law, st.F()) - exact).norm(), 1e-13 * exact.norm()) << st.l.transpose();
+  }
+}
+
+// Yeoh: sigma = 2/J W'(I1~ - 3) dev(b~) + k ln J / J I (FEBio's deviatoric stress plus the
+// volumetric pressure), W' = c1 + 2 c2 x + 3 c3 x^2.
+TEST(Yeoh, CauchyStressIsFebiosClosedForm) {
+  const Real c1 = 0.57382, c2 = -0.074744, c3 = 0.011321, k = 10.0;
+  const auto law =
+      material::create_law("yeoh", {{"c1", c1}, {"c2", c2}, {"c3", c3}, {"k", k}}, "y");
+  for (const PrincipalState& st : principal_states()) {
+    const Real J = st.l.prod();
+    const Vec3 b_bar = st.l.array().square() / std::cbrt(J * J);
+    const Real x = b_bar.sum() - 3.0, dW = c1 + 2.0 * c2 * x + 3.0 * c3 * x * x;
+    const Vec3 s = (2.0 / J * dW * (b_bar.array() - b_bar.sum() / 3.0)).matrix() +
+                   Vec3::Constant(k * std::log(J) / J);
+    const Mat3 exact = st.R * s.asDiagonal() * st.R.transpose();
+    EXPECT_LE((cauchy(*law, st.F()) - exact).norm(), 1e-13 * exact.norm()) << st.l.transpose();
+  }
+}
+
+// Orthotropic elastic: a uniaxial stress S11 = sigma needs the strains of the compliance,
+// E11 = sigma/E1, E22 = -v12 sigma/E1, E33 = -v31 sigma/E3 (FEBio's convention), and so on along
+// e2 and e3; a shear strain 2 E12 = g gives S12 = G12 g alone. The law is linear in E: S = D E
+// at any C, D symmetric, W = E : S / 2.
+TEST(OrthotropicElastic, UniaxialStressesAndShearsFollowTheEngineeringConstants) {
+  const material::ParameterValues p = {{"E1", 1.0},  {"E2", 2.0},  {"E3", 3.0},
+                                       {"G12", 3.0}, {"G23", 2.0}, {"G31", 1.0},
+                                       {"v12", 0.3}, {"v23", 0.2}, {"v31", 0.1}};
+  const auto law = material::create_law("orthotropic-elastic", p, "ortho");
+  const Real E1 = 1.0, E2 = 2.0, E3 = 3.0, v12 = 0.3, v23 = 0.2, v31 = 0.1, sigma = 0.01;
+  const std::vector<std::pair<Vec3, Vec3>> uniaxial = {
+      // (stress, strains) along e1, e2, e3
+      {Vec3(sigma, 0, 0), Vec3(sigma / E1, -v12 * sigma / E1, -v31 * sigma / E3)},
+      {Vec3(0, sigma, 0), Vec3(-v12 * sigma / E1, sigma / E2, -v23 * sigma / E2)},
+      {Vec3(0, 0, sigma), Vec3(-v31 * sigma / E3, -v23 * sigma / E2, sigma / E3)}};
+  for (const auto& [S, E] : uniaxial) {
+    const Mat3 C = Mat3::Identity() + 2.0 * Mat3(E.asDiagonal());
+    EXPECT_LE((law->stress(C) - Mat3(S.asDiagonal())).norm(), 1e-14) << S.transpose();
+  }
+  const std::vector<std::tuple<int, int, Real>> shears = {{0, 1, 3.0}, {1, 2, 2.0}, {0, 2, 1.0}};
+  for (const auto& [i, j, G] : shears) {
+    Mat3 C = Mat3::Identity();
+    C(i, j) = C(j, i) = 0.02; // 2 E_ij = 0.02: the engineering shear strain
+    Mat3 expected = Mat3::Zero();
+    expected(i, j) = expected(j, i) = G * 0.02;
+    EXPECT_LE((law->stress(C) - expected).norm(), 1e-15) << i << j;
+  }
+  const material::StressTangent st = law->stress_tangent(Mat3::Identity());
+  EXPECT_LE((st.D - st.D.transpose()).norm(), 1e-14 * st.D.norm());
+  for (std::uint64_t seed : {51u, 52u}) {
+    const Mat3 F = random_deformation(seed);
+    const Mat3 C = F.transpose() * F, E = 0.5 * (C - Mat3::Identity());
+    const Mat3 S = law->stress(C);
+    EXPECT_LE((voigt::stress(S) - st.D * voigt::strain(E)).norm(), 1e-14 * S.norm());
+    EXPECT_NEAR(law->energy(C), 0.5 * (E.cwiseProduct(S)).sum(), 1e-14 * S.norm());
+    EXPECT_LE((law->stress_tangent(C).D - st.D).norm(), 0.0);
+    EXPECT_LE(difference_errors(*law, C).stress, 1e-8);
+  }
+  EXPECT_NEAR(law->p_wave_modulus(), st.D.diagonal().head<3>().maxCoeff(), 0.0);
+  EXPECT_NEAR(law->shear_modulus(), 3.0, 0.0);
+}
+
+TEST(OrthotropicElastic, AnUnstableSetOfPoissonsRatiosIsRejectedNamingThem) {
+  const std::string message = input_error("orthotropic-elastic", {{"E1", 1.0},
+                                                                  {"E2", 1.0},
+                                                                  {"E3", 1.0},
+                                                                  {"G12", 1.0},
+                                                                  {"G23", 1.0},
+                                                                  {"G31", 1.0},
+                                                                  {"v12", 0.6},
+                                                                  {"v23", 0.6},
+                                                                  {"v31", 0.6}});
+  for (const char* part : {"materials.cartilage.v12 = 0.6", "materials.cartilage.v31 = 0.6",
+                           "the compliance is not positive definite"})
+    EXPECT_NE(message.find(part), std::string::npos) << message;
+  EXPECT_NE(input_error("ogden-unconstrained", {{"c1", 0.0}, {"cp", 1.0}})
+                .find("materials.cartilage.c1 + ... + materials.cartilage.c6 = 0: must be > 0"),
+            std::string::npos);
+  EXPECT_NE(input_error("ogden-unconstrained", {{"c2", 1.0}, {"m2", 0.0}, {"cp", 1.0}})
+                .find("materials.cartilage.m2 = 0"),
+            std::string::npos);
+  EXPECT_NE(input_error("yeoh", {{"c1", -1.0}, {"k", 1.0}}).find("materials.cartilage.c1"),
+            std::string::npos);
 }

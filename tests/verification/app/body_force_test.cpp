@@ -296,3 +296,111 @@ TEST(BodyForce, CellsOfEveryFamilyCarryTheirWeightAndFallWithTheirBodyForce) {
     EXPECT_LT(free_fall_error(cell, Vec3(200.0, 0.0, -9810.0), "lumped"), 1e-10) << cell;
   }
 }
+
+// ---------------------------------------------------------------------------------------------
+// [[loads.nodal_force]]
+
+namespace {
+
+const Vec3 kNodalForce(0.01, -0.02, 0.05); // [N] per node
+
+/// A unit cube of one hex8 cell, its base fixed, loaded on its top face by `load` (ramped).
+std::string loaded_cube(const std::string& load) {
+  return R"(
+[[mesh.box]]
+name = "cube"
+size = [1.0, 1.0, 1.0]
+divisions = [1, 1, 1]
+material = "tissue"
+[materials.tissue]
+type = "neo-hookean"
+E = 1.0
+nu = 0.3
+[curves.ramp]
+points = [[0.0, 0.0], [1.0, 1.0]]
+[[boundary.fixed]]
+set = "cube.zmin"
+[time]
+end_time = 1.0
+dt = 0.5
+[solver]
+residual_tolerance = 1e-13
+increment_tolerance = 1e-14
+)" + load;
+}
+
+} // namespace
+
+// The same dead load given two ways: a force F on each of the 4 nodes of the top face of one
+// hex8 cell, or the uniform traction 4 F / A on that face (its consistent nodal forces on a
+// flat quad are t A / 4 each): the same state to round-off, and the base carries 4 F.
+TEST(NodalForce, ForcesOnTheNodesOfAFaceActAsTheTractionTheyLump) {
+  const test::CaseRun nodal = test::run_case_text(loaded_cube(fmt::format(R"(
+[[loads.nodal_force]]
+set = "cube.zmax"
+value = {}
+curve = "ramp"
+)",
+                                                                          vec(kNodalForce))),
+                                                  "nodal.toml");
+  const test::CaseRun traction =
+      test::run_case_text(loaded_cube(fmt::format(R"(
+[[loads.traction]]
+surface = "cube.zmax"
+value = {}
+curve = "ramp"
+)",
+                                                  vec(4.0 * kNodalForce))),
+                          "traction.toml");
+  ASSERT_TRUE(nodal.report.success) << nodal.report.failure;
+  ASSERT_TRUE(traction.report.success) << traction.report.failure;
+  const Vector& a = nodal.model->problem->state();
+  const Vector& b = traction.model->problem->state();
+  ASSERT_EQ(a.size(), b.size());
+  EXPECT_GT(b.norm(), 1e-3); // the load deforms the cube
+  EXPECT_LE((a - b).norm(), 1e-12 * b.norm());
+  for (int k = 0; k < 3; ++k) // R = f_int − f_ext: the support's reaction is −4 F
+    EXPECT_NEAR(sum_of_reactions(*nodal.model, "cube.zmin", k), -4.0 * kNodalForce[k],
+                1e-12 * kNodalForce.norm())
+        << k;
+  std::printf("nodal forces vs traction: |u_nodal - u_traction| / |u| = %.2e\n",
+              (a - b).norm() / b.norm());
+}
+
+// Forces on the nodes of a rigid body reach its unknowns as any load on its DOFs does: held at
+// the pivot under its weight, the body's reactions are the weight and the forces' sum, and
+// their moments about the pivot.
+TEST(NodalForce, ForcesOnTheNodesOfARigidBodyLoadTheBodyWithTheirSumAndMoment) {
+  const test::CaseRun run =
+      test::run_case_text(bone_case(fmt::format(R"(
+center = {}
+x = {{ displacement = 0.0 }}
+y = {{ displacement = 0.0 }}
+z = {{ displacement = 0.0 }}
+rx = {{ rotation = 0.0 }}
+ry = {{ rotation = 0.0 }}
+rz = {{ rotation = 0.0 }}
+[[loads.nodal_force]]
+set = "bone.zmax"
+value = {}
+)",
+                                                vec(kPivot), vec(kNodalForce))),
+                          "nodal_bone.toml");
+  ASSERT_TRUE(run.report.success) << run.report.failure;
+  const model::Model& m = *run.model;
+  auto [load, moment_about_pivot] = bone_weight_and_moment();
+  for (Index n : m.mesh.node_set("bone.zmax")) {
+    load += kNodalForce;
+    moment_about_pivot += (m.mesh.node(n) - kPivot).cross(kNodalForce);
+  }
+  const dofs::RigidBodyDofs& body = m.problem->rigid_map().bodies().at(0);
+  const Vector& R = m.problem->full_residual();
+  Vec3 force, moment;
+  for (int k = 0; k < 3; ++k) {
+    force[k] = R[body.translation[k]];
+    moment[k] = R[body.rotation[k]];
+  }
+  EXPECT_LT((force + load).norm(), 1e-10 * load.norm()) << force.transpose();
+  EXPECT_LT((moment + moment_about_pivot).norm(), 1e-10 * moment_about_pivot.norm())
+      << moment.transpose();
+}

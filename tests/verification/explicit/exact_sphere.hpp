@@ -82,4 +82,13 @@ inline Real radius_at(const std::vector<RadialState>& h, Real t) {
   return (1.0 - w) * h[i].a + w * h[i + 1].a;
 }
 
+/// The first period of an oscillation from rest: the time of the first return to (near) rest
+/// after the first maximum (where ȧ turns from negative to non-negative); 0 if there is none.
+inline Real first_period(const std::vector<RadialState>& h) {
+  for (std::size_t i = 1; i + 1 < h.size(); ++i)
+    if (h[i - 1].v < 0.0 && h[i].v >= 0.0)
+      return h[i].t;
+  return 0.0;
+}
+
 } // namespace trifem::test::sphere

@@ -234,12 +234,7 @@ TEST(ExplicitFamilies, Hex20SphereFollowsTheRadialOdeAndConservesEnergy) {
   const test::sphere::Sphere sphere{};
   const auto ode = test::sphere::integrate_radial(
       sphere, [](Real) { return 0.3; }, 20.0, 1e-4);
-  Real period = 0.0;
-  for (std::size_t i = 1; i + 1 < ode.size(); ++i)
-    if (ode[i - 1].v < 0.0 && ode[i].v >= 0.0) {
-      period = ode[i].t;
-      break;
-    }
+  const Real period = test::sphere::first_period(ode);
   ASSERT_GT(period, 0.0);
   const test::TestModel model = hex20_sphere(3, {dofs::Interpolation::Step, {{0.0, 0.3}}});
   ExplicitSettings settings;

@@ -47,20 +47,12 @@ Real mean_radius(const model::Model& m, const std::string& set) {
   return sum / static_cast<Real>(m.mesh.node_set(set).size());
 }
 
-/// The first period of the ODE: its first return to rest after the first maximum.
-Real ode_period(const std::vector<sphere::RadialState>& ode) {
-  for (std::size_t i = 1; i + 1 < ode.size(); ++i)
-    if (ode[i - 1].v < 0.0 && ode[i].v >= 0.0)
-      return ode[i].t;
-  return 0.0;
-}
-
 } // namespace
 
 TEST(ImplicitSphere, StepPressureOscillationMatchesTheRadialOdeAndTheExplicitAnswer) {
   const auto ode = sphere::integrate_radial(
       kSphere, [](Real) { return kPressure; }, 20.0, 1e-4);
-  const Real period = ode_period(ode);
+  const Real period = sphere::first_period(ode);
   ASSERT_GT(period, 0.0);
 
   // implicit: κ = 10⁴ μ (mean-dilatation cells), 50 steps per period, ρ∞ = 0.9

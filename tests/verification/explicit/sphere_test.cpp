@@ -124,13 +124,7 @@ Oscillation step_pressure_run(int n, Reading reading, Real t_end) {
 TEST(ExplicitSphere, StepPressureOscillationMatchesRadialOde) {
   const auto ode = test::sphere::integrate_radial(
       kSphere, [](Real) { return 0.3; }, 20.0, 1e-4);
-  // First period of the ODE: the first return to (near) rest after the first maximum.
-  Real period = 0.0;
-  for (std::size_t i = 1; i + 1 < ode.size(); ++i)
-    if (ode[i - 1].v < 0.0 && ode[i].v >= 0.0) {
-      period = ode[i].t;
-      break;
-    }
+  const Real period = test::sphere::first_period(ode);
   ASSERT_GT(period, 0.0);
   const Oscillation o = step_pressure_run(4, Reading::B, period);
   Real max_err = 0.0, amplitude = 0.0;

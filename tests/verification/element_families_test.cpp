@@ -237,6 +237,19 @@ TEST_P(ElementFamilies, DeadTractionOnTheEndFaceGivesTheClosedFormStretch) {
   expect_uniaxial_displacements(m, l, uniaxial(l).t);
 }
 
+// A dead pressure p = 0.2 MPa (along the reference normal, per reference area) on the end face:
+// P = -p along the bar.
+TEST_P(ElementFamilies, DeadPressureOnTheEndFaceGivesTheClosedFormCompression) {
+  const Real p = 0.2;
+  test::SolidModel m(bar(GetParam()), "neo-hookean", {{"E", 1.0}, {"nu", 0.3}});
+  load_bar(m, [&](test::SolidModel& s, auto facets) {
+    return std::make_unique<physics::PressureTerm>(s.mesh, s.dofs, s.u, facets, p, kRamp,
+                                                   physics::PressureNormal::Reference);
+  });
+  const Real l = stretch_at(-p, [](const UniaxialState& u) { return u.P; });
+  expect_uniaxial_displacements(m, l, uniaxial(l).t);
+}
+
 // A traction T = 0.2 MPa per current area on the end face: sigma = T along the bar.
 TEST_P(ElementFamilies, TractionPerCurrentAreaOnTheEndFaceGivesTheClosedFormStretch) {
   const Real T = 0.2;

@@ -227,6 +227,8 @@ void hash_surface_loads(const std::vector<io::PressureSpec>& pressures,
     h.text(p.surface);
     h.real(p.value);
     h.text(p.curve);
+    if (!p.follower) // (a follower: the hash is unchanged)
+      h.integer(2);
   }
   h.integer(static_cast<std::int64_t>(tractions.size()));
   for (const io::TractionSpec& t : tractions) {

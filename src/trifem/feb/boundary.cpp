@@ -173,7 +173,8 @@ void read_boundary(Reader& r, pugi::xml_node section, std::vector<io::FixedSpec>
 
 namespace {
 
-/// <surface_load type="pressure">: a follower pressure on the deformed surface.
+/// <surface_load type="pressure">: a follower pressure on the deformed surface, or with
+/// <linear>1</linear> a dead pressure along the reference normal per reference area.
 io::PressureSpec pressure_load(const Reader& r, pugi::xml_node load) {
   io::PressureSpec p;
   p.surface = r.surface(load);
@@ -182,9 +183,8 @@ io::PressureSpec pressure_load(const Reader& r, pugi::xml_node load) {
   p.curve = r.curve_of(value);
   for (pugi::xml_node c : elements(load)) {
     const std::string_view name = c.name();
-    if (name == "linear" && flag(r, c))
-      r.doc.fail(c, "a linear (non-follower) pressure is not supported: trifem's pressure "
-                    "follows the deformed surface");
+    if (name == "linear") // 1: along the reference normal per reference area (a dead load)
+      p.follower = !flag(r, c);
     if (name == "shell_bottom" && flag(r, c))
       r.doc.fail(c, "shell_bottom is not supported (trifem has no shells)");
     if (name != "pressure" && name != "linear" && name != "symmetric_stiffness" &&

@@ -5,6 +5,7 @@
 #include "trifem/material/material_axes.hpp"
 #include "trifem/material/mixture.hpp"
 #include "trifem/material/registry.hpp"
+#include "trifem/material/solid_mixture.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -57,6 +58,7 @@ const std::vector<LawMapping>& law_mappings() {
         {"m6", "m6"},
         {"cp", "cp"}},
        {}},
+      {"Veronda-Westmann", "veronda-westmann", {{"c1", "c1"}, {"c2", "c2"}, {"k", "k"}}, {}},
       {"Yeoh",
        "yeoh",
        {{"c1", "c1"},
@@ -94,7 +96,8 @@ std::string known_types() {
   std::string s;
   for (const auto& m : law_mappings())
     s += fmt::format("{}{}", s.empty() ? "" : ", ", m.febio);
-  return s + ", biphasic, triphasic, multiphasic (Na and Cl)";
+  return s + ", trans iso Mooney-Rivlin, trans iso Veronda-Westmann, biphasic, triphasic, "
+             "multiphasic (Na and Cl)";
 }
 
 /// The value of a material parameter element (a plain number: no load curve, no map).
@@ -125,6 +128,64 @@ Real material_density(const Reader& r, pugi::xml_node node, const io::MaterialSp
   return phi * solid + (1.0 - phi) * fluid;
 }
 
+/// <pressure_model> of an uncoupled law: only FEBio's default, U = k/2 (ln J)^2.
+void check_pressure_model(const Reader& r, pugi::xml_node p) {
+  const std::string model = r.doc.text(p);
+  if (model != "default" && model != "0")
+    r.doc.fail(p, fmt::format("pressure_model '{}' is not supported (trifem's volumetric energy "
+                              "is FEBio's default, U = k/2 (ln J)^2)",
+                              model));
+}
+
+/// <fiber type="vector"><vector>x,y,z</vector></fiber> (or the vector as the element's text):
+/// a constant fibre direction.
+Vec3 fibre_vector(const Reader& r, pugi::xml_node fiber) {
+  const std::string type = fiber.attribute("type").as_string("vector");
+  if (type != "vector")
+    r.doc.fail(fiber, "type",
+               fmt::format("fiber of type '{}' is not supported (supported: vector, a constant "
+                           "direction)",
+                           type));
+  const pugi::xml_node vector = fiber.child("vector");
+  return r.doc.vector(vector ? vector : fiber);
+}
+
+/// FEBio's "trans iso Mooney-Rivlin" and "trans iso Veronda-Westmann": the uncoupled ground
+/// matrix `ground` (c1, c2, k) plus an uncoupled exponential-linear fibre family (c3, c4, c5,
+/// lam_max, fiber), as a trifem solid mixture of the two.
+material::LawSpec trans_iso_law(const Reader& r, pugi::xml_node node, const char* ground) {
+  material::LawSpec matrix{ground, {}, {}}, fibre{"fibre-exp-linear", {}, {}};
+  bool has_fibre = false;
+  for (pugi::xml_node p : elements(node)) {
+    const std::string name = p.name();
+    if (name == "pressure_model") {
+      check_pressure_model(r, p);
+    } else if (name == "c1" || name == "c2" || name == "k") {
+      matrix.parameters[name] = parameter_value(r, p);
+    } else if (name == "c3" || name == "c4" || name == "c5" || name == "lam_max") {
+      fibre.parameters[name] = parameter_value(r, p);
+    } else if (name == "fiber") {
+      material::set_vector(fibre.parameters, "fibre", fibre_vector(r, p));
+      has_fibre = true;
+    } else if (name == "active_contraction") {
+      r.doc.fail(p, "an active contraction is not supported (trifem's fibres are passive)");
+    } else if (!ignored_parameter(name)) {
+      r.doc.fail(p, fmt::format("unknown parameter '{}' of material type '{}' (expected one of: "
+                                "c1, c2, c3, c4, c5, lam_max, k, fiber, density)",
+                                name, r.doc.attribute(node, "type")));
+    }
+  }
+  if (!has_fibre)
+    r.doc.fail(node, "the fibre direction <fiber> is required");
+  material::LawSpec mixture{std::string(material::kSolidMixtureType), {}, {matrix, fibre}};
+  try {
+    material::create_law(mixture, fmt::format("trifem {}", mixture.type));
+  } catch (const InputError& e) {
+    r.doc.fail(node, e.what());
+  }
+  return mixture;
+}
+
 /// <mat_axis type="vector"><a>..</a><d>..</d></mat_axis>: FEBio's constant material axes,
 /// e1 along a, e2 in the plane of a and d (trifem's axes of type vector).
 material::AxesSpec material_axes(const Reader& r, pugi::xml_node node) {
@@ -153,6 +214,10 @@ material::AxesSpec material_axes(const Reader& r, pugi::xml_node node) {
 material::LawSpec solid_law(const Reader& r, pugi::xml_node node,
                             std::optional<material::AxesSpec>* axes = nullptr) {
   const std::string type = r.doc.attribute(node, "type");
+  if (type == "trans iso Mooney-Rivlin")
+    return trans_iso_law(r, node, "mooney-rivlin");
+  if (type == "trans iso Veronda-Westmann")
+    return trans_iso_law(r, node, "veronda-westmann");
   const LawMapping* law = nullptr;
   for (const auto& m : law_mappings())
     if (type == m.febio)
@@ -165,11 +230,7 @@ material::LawSpec solid_law(const Reader& r, pugi::xml_node node,
   for (pugi::xml_node p : elements(node)) {
     const std::string name = p.name();
     if (name == "pressure_model") {
-      const std::string model = r.doc.text(p);
-      if (model != "default" && model != "0")
-        r.doc.fail(p, fmt::format("pressure_model '{}' is not supported (trifem's volumetric "
-                                  "energy is FEBio's default, U = k/2 (ln J)^2)",
-                                  model));
+      check_pressure_model(r, p);
       continue;
     }
     if (ignored_parameter(name) ||
@@ -435,6 +496,7 @@ void read_materials(Reader& r, pugi::xml_node section) {
       const material::LawSpec law = solid_law(r, node, &m.axes);
       m.type = law.type;
       m.parameters = law.parameters;
+      m.constituents = law.constituents;
     }
     if (r.spec.materials.contains(name))
       r.doc.fail(node, "name", fmt::format("a second material named '{}'", name));

@@ -278,9 +278,10 @@ void read_loads(const Table& root, CaseSpec& spec) {
   for (const Table& t : loads->tables("nodal_force"))
     spec.nodal_forces.push_back(read_nodal_force(t, spec));
   for (const Table& t : loads->tables("pressure")) {
-    t.allow({"surface", "value", "curve"});
-    spec.pressures.push_back(
-        {t.name("surface"), t.number("value", {.unit = "MPa"}), read_curve_reference(t, spec)});
+    t.allow({"surface", "value", "curve", "follower"});
+    spec.pressures.push_back({t.name("surface"), t.number("value", {.unit = "MPa"}),
+                              read_curve_reference(t, spec),
+                              t.get<bool>("follower").value_or(true)});
   }
   static const Options<bool> areas = {{"reference", false}, {"current", true}};
   for (const Table& t : loads->tables("traction")) {

@@ -147,11 +147,14 @@ struct PrescribedSpec {
   bool relative = false;
 };
 
-/// [[loads.pressure]]: follower pressure on a surface (positive pushes into the body) [MPa].
+/// [[loads.pressure]]: pressure on a surface (positive pushes into the body) [MPa], along the
+/// current normal per current area (a follower load) or, with `follower = false`, along the
+/// reference normal per reference area (a dead load).
 struct PressureSpec {
   std::string surface;
   Real value = 0.0;
   std::string curve;
+  bool follower = true;
 };
 
 /// [[boundary.bath]]: a surface in a NaCl bath whose concentration moves from the reference

@@ -156,6 +156,8 @@ void write_conditions(const std::vector<FixedSpec>& fixed,
     t.string("surface", p.surface);
     t.number("value", p.value);
     t.optional_string("curve", p.curve);
+    if (!p.follower)
+      t.raw("follower", "false");
   }
   for (const TractionSpec& p : tractions) {
     t.header(fmt::format("[[{}.traction]]", loads));

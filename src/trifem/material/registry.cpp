@@ -3,6 +3,7 @@
 
 #include "trifem/core/error.hpp"
 #include "trifem/material/fibre_distribution.hpp"
+#include "trifem/material/fibre_exp_linear.hpp"
 #include "trifem/material/fibre_exp_pow.hpp"
 #include "trifem/material/holmes_mow.hpp"
 #include "trifem/material/mooney_rivlin.hpp"
@@ -12,6 +13,7 @@
 #include "trifem/material/orthotropic_elastic.hpp"
 #include "trifem/material/saint_venant_kirchhoff.hpp"
 #include "trifem/material/solid_mixture.hpp"
+#include "trifem/material/veronda_westmann.hpp"
 #include "trifem/material/yeoh.hpp"
 
 namespace trifem::material {
@@ -53,6 +55,10 @@ const std::vector<LawEntry>& registered_laws() {
           "ogden-unconstrained",
           "compressible Ogden, W = sum c_i/m_i^2 (sum_a l_a^m_i - 3 - m_i lnJ) + cp/2 (J-1)^2",
           {{"c1", 0.4}, {"m1", 4.0}, {"c2", 0.2}, {"m2", -2.0}, {"cp", 2.0}}),
+      entry<VerondaWestmann>(
+          "veronda-westmann",
+          "uncoupled Veronda-Westmann, W = c1 (e^(c2 (I1~-3)) - 1) - c1 c2/2 (I2~-3) + k/2 (lnJ)^2",
+          {{"c1", 0.2}, {"c2", 1.5}, {"k", 10.0}}),
       entry<Yeoh>("yeoh", "uncoupled Yeoh, W = sum_i c_i (I1~-3)^i + k/2 (lnJ)^2",
                   {{"c1", 0.3}, {"c2", -0.02}, {"c3", 0.005}, {"k", 10.0}}),
       entry<OrthotropicElastic>("orthotropic-elastic",
@@ -76,6 +82,8 @@ const std::vector<LawEntry>& constituent_laws() {
     set_vector(fibre, "fibre", Vec3(1.0, 0.0, 0.0));
     ParameterValues distribution = {{"ksi", 5.0}, {"alpha", 1.0}, {"beta", 2.5}};
     set_vector(distribution, "semi_axes", Vec3(1.0, 1.0, 1.0));
+    ParameterValues exp_linear = {{"c3", 0.5}, {"c4", 20.0}, {"c5", 100.0}, {"lam_max", 1.05}};
+    set_vector(exp_linear, "fibre", Vec3(1.0, 0.0, 0.0));
     return std::vector<LawEntry>{
         entry<FibreExpPow>("fibre-exp-pow",
                            "tension-only fibre, W = ksi/(alpha beta) (exp(alpha (I_n-1)^beta) - 1)",
@@ -84,6 +92,10 @@ const std::vector<LawEntry>& constituent_laws() {
                                  "fibre-exp-pow fibres in all directions, mean weighted by a "
                                  "spherical or ellipsoidal density",
                                  distribution),
+        entry<FibreExpLinear>("fibre-exp-linear",
+                              "uncoupled tension-only fibre, l dW/dl = c3 (exp(c4 (l-1)) - 1), "
+                              "then linear above lam_max",
+                              exp_linear),
     };
   }();
   return laws;

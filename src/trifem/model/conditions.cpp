@@ -150,9 +150,9 @@ surface_load_terms(const io::CaseSpec& spec, const std::vector<io::PressureSpec>
     const auto& p = pressures[i];
     const auto& surface = with_context(fmt::format("{}loads.pressure[{}].surface", prefix, i + 1),
                                        [&] { return model.mesh.surface(p.surface); });
-    terms.push_back(std::make_unique<physics::PressureTerm>(model.mesh, model.dofs, model.fields.u,
-                                                            surface.facets, p.value,
-                                                            make_curve(spec, p.curve)));
+    terms.push_back(std::make_unique<physics::PressureTerm>(
+        model.mesh, model.dofs, model.fields.u, surface.facets, p.value, make_curve(spec, p.curve),
+        p.follower ? physics::PressureNormal::Current : physics::PressureNormal::Reference));
   }
   for (std::size_t i = 0; i < tractions.size(); ++i) {
     const auto& t = tractions[i];

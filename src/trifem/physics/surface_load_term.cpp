@@ -59,9 +59,14 @@ void current_area_load(const fe::ReferenceFacet& ref, const FacetPositions& x, c
 
 PressureTerm::PressureTerm(const mesh::Mesh& mesh, const dofs::DofMap& dofs,
                            dofs::FieldId displacement, std::vector<mesh::Facet> facets,
-                           Real magnitude, dofs::LoadCurve curve)
+                           Real magnitude, dofs::LoadCurve curve, PressureNormal normal)
     : mesh_(mesh), dofs_(dofs), u_(displacement), facets_(std::move(facets)), magnitude_(magnitude),
-      curve_(std::move(curve)) {}
+      curve_(std::move(curve)) {
+  if (normal == PressureNormal::Reference)
+    for (const mesh::Facet& f : facets_)
+      reference_areas_.push_back(
+          facet_area_vectors(fe::reference_facet(f.type), facet_positions(mesh, f)));
+}
 
 void PressureTerm::element_dofs(Index e, std::vector<Index>& dofs) const {
   facet_dofs(facets_[e], dofs_, u_, dofs);
@@ -69,6 +74,12 @@ void PressureTerm::element_dofs(Index e, std::vector<Index>& dofs) const {
 
 bool PressureTerm::evaluate(Index e, const EvalState& state, LocalVector& r, LocalMatrix* K) const {
   const mesh::Facet& f = facets_[e];
+  if (!reference_areas_.empty()) { // a dead load: R = -f_ext = p int N_a N dA
+    r = magnitude_ * curve_(state.time) * reference_areas_[e];
+    if (K)
+      K->setZero(r.size(), r.size());
+    return true;
+  }
   if (!f.is_quad4()) {
     const Real p = magnitude_ * curve_(state.time);
     FacetMatrixX da;

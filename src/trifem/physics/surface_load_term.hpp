@@ -6,17 +6,26 @@
 #include "trifem/dofs/dof_map.hpp"
 #include "trifem/dofs/load_curve.hpp"
 #include "trifem/mesh/mesh.hpp"
+#include "trifem/physics/facet_area_any.hpp"
 #include "trifem/physics/term.hpp"
 
 namespace trifem::physics {
 
-/// Follower pressure p(t) = magnitude * curve(t) on the current surface:
-/// f_ext,a = -int N_a p n da = -int N_a p (x_xi x x_eta) dxi deta. Positive p pushes into the
-/// body. Its tangent is the (unsymmetric) load stiffness.
+/// Which normal and area a pressure acts with.
+enum class PressureNormal {
+  Current,   ///< a follower: the current normal and area
+  Reference, ///< a dead load: the reference normal and area
+};
+
+/// Pressure p(t) = magnitude * curve(t), positive pushing into the body: a follower on the
+/// current surface, f_ext,a = -int N_a p n da = -int N_a p (x_xi x x_eta) dxi deta, whose
+/// tangent is the (unsymmetric) load stiffness; or a dead load along the reference normal,
+/// f_ext,a = -int N_a p N dA (no stiffness).
 class PressureTerm final : public Term {
 public:
   PressureTerm(const mesh::Mesh& mesh, const dofs::DofMap& dofs, dofs::FieldId displacement,
-               std::vector<mesh::Facet> facets, Real magnitude, dofs::LoadCurve curve);
+               std::vector<mesh::Facet> facets, Real magnitude, dofs::LoadCurve curve,
+               PressureNormal normal = PressureNormal::Current);
   std::string name() const override { return "pressure"; }
   Index num_elements() const override { return static_cast<Index>(facets_.size()); }
   void element_dofs(Index e, std::vector<Index>& dofs) const override;
@@ -29,6 +38,7 @@ private:
   std::vector<mesh::Facet> facets_;
   Real magnitude_;
   dofs::LoadCurve curve_;
+  std::vector<FacetVectorX> reference_areas_; ///< int N_a N dA per facet (Reference only)
 };
 
 /// The area a traction acts per.

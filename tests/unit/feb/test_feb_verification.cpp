@@ -211,6 +211,33 @@ TEST(FebVerification, MooneyRivlinFollowerPressure) {
   EXPECT_LT(c, 0.94); // a real compression (about 6.6 %), not a trivial state
 }
 
+// The same file with <linear>1</linear>: FEBio's dead pressure, along the reference normal per
+// reference area: the nominal stress P_zz = sigma_zz a^2 = -p.
+TEST(FebVerification, MooneyRivlinLinearPressureIsADeadLoad) {
+  const Real p = 0.1;
+  const auto law = mooney_rivlin(0.2, 0.05, 20.0);
+  Real lo = 0.5, hi = 1.0;
+  for (int i = 0; i < 200; ++i) {
+    const Real c = 0.5 * (lo + hi);
+    const Real a = lateral_stretch(law, c);
+    (law(a, c)[1] * a * a > -p ? hi : lo) = c;
+  }
+  const Real c = 0.5 * (lo + hi), a = lateral_stretch(law, c);
+  const std::filesystem::path file = kData / "uniaxial_mooney_rivlin_pressure.feb";
+  std::string text = read_file(file);
+  const std::string follower = "<linear>0</linear>";
+  text.replace(text.find(follower), follower.size(), "<linear>1</linear>");
+  const io::CaseSpec spec = feb::parse_feb(text, file);
+  ASSERT_EQ(spec.pressures.size(), 1u);
+  EXPECT_FALSE(spec.pressures[0].follower);
+  const FebRun r = run(spec);
+  ASSERT_TRUE(r.report.success) << r.report.failure;
+  const Index corner = 6;
+  EXPECT_NEAR(displacement(*r.model, corner, 2), c - 1.0, 1e-8);
+  EXPECT_NEAR(displacement(*r.model, corner, 0), a - 1.0, 1e-8);
+  EXPECT_LT(c, 0.94);
+}
+
 // The same block under a traction of 0.1 MPa pulling the top face (<surface_load
 // type="traction">, the pressure load of the file replaced in memory). With <linear>1</linear>
 // FEBio integrates it over the reference surface (a dead load): the nominal stress P_zz =
@@ -930,5 +957,67 @@ TEST(FebVerification, AMatAxisOtherThanAVectorIsRefusedNamingIt) {
     EXPECT_NE(std::string(e.what()).find("mat_axis of type 'local' is not supported"),
               std::string::npos)
         << e.what();
+  }
+}
+
+// Veronda-Westmann: t~_i = 2 l~_i^2 [W1 + W2 (I1~ - l~_i^2)], W1 = c1 c2 exp(c2 (I1~ - 3)),
+// W2 = -c1 c2 / 2.
+TEST(FebVerification, VerondaWestmannTwoSteps) {
+  const Real c1 = 0.2, c2 = 1.5;
+  const io::CaseSpec spec = two_step_cube(R"(<material id="1" name="Ogden" type="Veronda-Westmann">
+      <c1>0.2</c1><c2>1.5</c2><k>20</k></material>)");
+  EXPECT_EQ(spec.materials.at("Ogden").type, "veronda-westmann");
+  expect_two_step_reactions(spec, uncoupled(
+                                      [=](Real l, Real I1) {
+                                        const Real W1 = c1 * c2 * std::exp(c2 * (I1 - 3.0));
+                                        const Real W2 = -0.5 * c1 * c2;
+                                        return 2.0 * l * l * (W1 + W2 * (I1 - l * l));
+                                      },
+                                      20.0));
+}
+
+// Trans iso Mooney-Rivlin with its fibre along the pull (z): the isochoric Kirchhoff stress
+// along z adds the fibre's F(l~) = c3 (exp(c4 (l~ - 1)) - 1) (below lam_max) or c5 l~ + c6 to
+// the Mooney-Rivlin part; across it, Mooney-Rivlin alone.
+TEST(FebVerification, TransIsoMooneyRivlinAlongItsFibreTwoSteps) {
+  const Real c1 = 0.5, c3 = 0.2, c4 = 3.0, c5 = 4.0, lam_max = 1.2, k = 30.0;
+  const io::CaseSpec spec =
+      two_step_cube(R"(<material id="1" name="Ogden" type="trans iso Mooney-Rivlin">
+      <density>1</density><k>30</k><pressure_model>default</pressure_model><c1>0.5</c1><c2>0</c2>
+      <c3>0.2</c3><c4>3</c4><c5>4</c5><lam_max>1.2</lam_max>
+      <fiber type="vector"><vector>0,0,1</vector></fiber></material>)");
+  const io::MaterialSpec& m = spec.materials.at("Ogden");
+  EXPECT_EQ(m.type, "solid-mixture");
+  ASSERT_EQ(m.constituents.size(), 2u);
+  EXPECT_EQ(m.constituents[1].type, "fibre-exp-linear");
+  const Real c6 = c3 * (std::exp(c4 * (lam_max - 1.0)) - 1.0) - c5 * lam_max;
+  expect_two_step_reactions(spec, [=](Real a, Real c) {
+    const Real J = a * a * c, s = std::cbrt(J), la = a / s, lc = c / s;
+    const Real fibre = lc <= 1.0      ? 0.0
+                       : lc < lam_max ? c3 * (std::exp(c4 * (lc - 1.0)) - 1.0)
+                                      : c5 * lc + c6;
+    const Real ta = 2.0 * c1 * la * la, tc = 2.0 * c1 * lc * lc + fibre;
+    const Real mean = (2.0 * ta + tc) / 3.0;
+    return std::array<Real, 2>{(ta - mean + k * std::log(J)) / J,
+                               (tc - mean + k * std::log(J)) / J};
+  });
+}
+
+TEST(FebVerification, TransIsoFibresOtherThanAConstantVectorAndActiveContractionAreRefused) {
+  const std::pair<std::string, std::string> cases[] = {
+      {R"(<fiber type="local">1,7</fiber>)", "fiber of type 'local' is not supported"},
+      {R"(<fiber type="vector"><vector>1,0,0</vector></fiber><active_contraction><Tmax>1</Tmax></active_contraction>)",
+       "an active contraction is not supported"},
+      {"", "the fibre direction <fiber> is required"}};
+  for (const auto& [fiber, message] : cases) {
+    try {
+      (void)two_step_cube(R"(<material id="1" name="Ogden" type="trans iso Mooney-Rivlin">
+      <k>30</k><c1>0.5</c1><c2>0</c2><c3>0.2</c3><c4>3</c4><c5>4</c5><lam_max>1.2</lam_max>)" +
+                          fiber + "</material>");
+      ADD_FAILURE() << "accepted: " << fiber;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("two_step_cube.feb:"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << e.what();
+    }
   }
 }

@@ -357,3 +357,25 @@ area = "current"
                        body_case(load + "area = \"deformed\"\n"),
                        {"loads.traction[1].area = 'deformed'", "reference", "current"}});
 }
+
+TEST(CaseReaderPressure, AFollowerByDefaultOrADeadLoadAndRoundTrips) {
+  const std::string load = "[[loads.pressure]]\nsurface = \"block.xmax\"\nvalue = 0.1\n";
+  const CaseSpec c = parse_case(body_case(load + load + "follower = false\n"), kMemoryFile);
+  ASSERT_EQ(c.pressures.size(), 2u);
+  EXPECT_TRUE(c.pressures[0].follower);
+  EXPECT_FALSE(c.pressures[1].follower);
+  const CaseSpec back = parse_case(trifem::io::case_toml(c), kMemoryFile);
+  ASSERT_EQ(back.pressures.size(), 2u);
+  EXPECT_TRUE(back.pressures[0].follower);
+  EXPECT_FALSE(back.pressures[1].follower);
+  const auto fingerprint = [](const std::string& text) {
+    const CaseSpec spec = parse_case(text, kMemoryFile);
+    const auto model = trifem::model::build_model(spec);
+    return trifem::analysis::case_fingerprint(
+        spec, *model)[static_cast<std::size_t>(trifem::analysis::CasePart::BoundaryConditions)];
+  };
+  EXPECT_NE(fingerprint(body_case(load)), fingerprint(body_case(load + "follower = false\n")));
+  EXPECT_EQ(fingerprint(body_case(load)), fingerprint(body_case(load + "follower = true\n")));
+  expect_fails_naming(
+      {"bad_follower", body_case(load + "follower = \"no\"\n"), {"loads.pressure[1].follower"}});
+}

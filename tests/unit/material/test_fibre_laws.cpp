@@ -284,7 +284,7 @@ TEST(SolidMixture, StressAndTangentMatchCentralDifferences) {
 TEST(FibreExpPow, RegistryEntries) {
   for (const auto& law : material::registered_laws())
     EXPECT_NE(law.type, "fibre-exp-pow");
-  ASSERT_EQ(material::constituent_laws().size(), 2u); // and fibre-distribution
+  ASSERT_EQ(material::constituent_laws().size(), 3u); // and fibre-distribution, fibre-exp-linear
   EXPECT_EQ(material::constituent_laws()[0].type, "fibre-exp-pow");
   const material::LawEntry& entry = material::find_law("fibre-exp-pow", "m");
   const auto m = material::create_law(entry.type, entry.example, "example");
@@ -366,4 +366,105 @@ TEST(SolidMixture, BadMixturesAreRejectedWithTheKeyPath) {
       EXPECT_NE(message.find(part), std::string::npos) << message;
   }
   EXPECT_THROW(material::SolidMixture({}, ctx), InputError);
+}
+
+// ---------------------------------------------------------------------------------------------
+// fibre-exp-linear (the fibre of FEBio's trans iso Mooney-Rivlin / Veronda-Westmann)
+
+namespace {
+
+material::ParameterValues exp_linear(Real c3, Real c4, Real c5, Real lam_max, const Vec3& a) {
+  material::ParameterValues v = {{"c3", c3}, {"c4", c4}, {"c5", c5}, {"lam_max", lam_max}};
+  material::set_vector(v, "fibre", a);
+  return v;
+}
+
+/// F = I + 0.2 R with R in [-1, 1] (a state where the fibre of direction (1, 2, 2)/3 is
+/// stretched past lam_max or not, by the scale).
+Mat3 stretched_along(const Vec3& a, Real stretch, std::uint64_t seed) {
+  std::uint64_t state = seed;
+  Mat3 F = Mat3::Identity() + (stretch - 1.0) * a * a.transpose() / a.squaredNorm();
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      F(i, j) += 0.03 * uniform(state);
+  return F;
+}
+
+} // namespace
+
+// S and D against central differences of W and S, in the exponential and the linear part, with
+// c3 given and with c3 = 0 (FEBio's derived c3).
+TEST(FibreExpLinear, StressAndTangentAreTheDerivativesOfItsEnergy) {
+  const Vec3 a(1.0, 2.0, 2.0);
+  for (const Real c3 : {0.5, 0.0})
+    for (const Real stretch : {1.03, 1.12}) // below and above lam_max = 1.06
+      for (std::uint64_t seed : {61u, 62u}) {
+        const auto law =
+            material::create_law("fibre-exp-linear", exp_linear(c3, 20.0, 80.0, 1.06, a), "f");
+        const Mat3 F = stretched_along(a, stretch, seed);
+        const Mat3 C = F.transpose() * F;
+        const material::StressTangent st = law->stress_tangent(C);
+        ASSERT_GT(st.S.norm(), 0.0);
+        const Real h = 1e-6;
+        EXPECT_LE((st.S - stress_by_differences(*law, C, h)).norm(), 1e-6 * st.S.norm())
+            << c3 << " " << stretch;
+        EXPECT_LE((st.D - tangent_by_differences(*law, C, h)).norm(), 1e-6 * st.D.norm())
+            << c3 << " " << stretch;
+      }
+}
+
+// Along the fibre at J = 1 (l~ = l): the Cauchy stress's fibre component minus its lateral one
+// is the fibre's F(l) = c3 (exp(c4 (l - 1)) - 1) below lam_max and c5 l + c6 above (FEBio's
+// closed form), none in compression, and the law is inert at C = I.
+TEST(FibreExpLinear, IsochoricStretchAlongTheFibreGivesFebiosFibreStress) {
+  const Real c3 = 0.5, c4 = 20.0, c5 = 80.0, lam_max = 1.06;
+  const auto law =
+      material::create_law("fibre-exp-linear", exp_linear(c3, c4, c5, lam_max, Vec3::UnitX()), "f");
+  const Real c6 = c3 * (std::exp(c4 * (lam_max - 1.0)) - 1.0) - c5 * lam_max;
+  for (const Real l : {1.02, 1.05, 1.06, 1.1, 1.3}) {
+    Mat3 F = Mat3::Identity();
+    F(0, 0) = l;
+    F(1, 1) = F(2, 2) = 1.0 / std::sqrt(l);
+    const Mat3 sigma = kinematics::cauchy_from_pk2(F, law->stress(F.transpose() * F));
+    const Real expected = l < lam_max ? c3 * (std::exp(c4 * (l - 1.0)) - 1.0) : c5 * l + c6;
+    EXPECT_NEAR(sigma(0, 0) - sigma(1, 1), expected, 1e-12 * c5) << l;
+    EXPECT_NEAR(sigma.trace(), 0.0, 1e-12 * c5) << l; // deviatoric
+  }
+  Mat3 F = Mat3::Identity();
+  F(0, 0) = 0.9;
+  EXPECT_EQ(law->stress(F.transpose() * F).norm(), 0.0);
+  EXPECT_EQ(law->stress_tangent(Mat3::Identity()).D.norm(), 0.0);
+  EXPECT_EQ(law->energy(Mat3::Identity()), 0.0);
+}
+
+// FEBio's trans iso Mooney-Rivlin as a solid mixture: c1, c2, k and the fibre. Stretched by 1.2
+// along the fibre (x) or across it (y), the difference of the two stresses along the stretch
+// is the fibre's deviatoric part 2/3 F(l~)/J, l~ = 1.2^(2/3), J = 1.2 (stretched across, the
+// fibre is shortened and inert); the two lateral directions across the fibre agree.
+TEST(FibreExpLinear, TransverselyIsotropicMixtureIsStifferAlongItsFibre) {
+  material::LawSpec mix{"solid-mixture",
+                        {},
+                        {{"mooney-rivlin", {{"c1", 1.0}, {"c2", 0.0}, {"k", 100.0}}, {}},
+                         {"fibre-exp-linear", exp_linear(1.0, 1.0, 1.0, 10.0, Vec3::UnitX()), {}}}};
+  const auto law = material::create_law(mix, "m");
+  const auto along = [&](int k) {
+    Mat3 F = Mat3::Identity();
+    F(k, k) = 1.2;
+    return kinematics::cauchy_from_pk2(F, law->stress(F.transpose() * F))(k, k);
+  };
+  const Real l = std::pow(1.2, 2.0 / 3.0), fibre = std::exp(l - 1.0) - 1.0;
+  EXPECT_NEAR(along(0) - along(1), 2.0 / 3.0 * fibre / 1.2, 1e-12);
+  EXPECT_NEAR(along(1), along(2), 1e-12);
+}
+
+TEST(FibreExpLinear, BadParametersAreRejectedWithTheKeyPath) {
+  const auto message = [](const material::ParameterValues& v) {
+    return input_error([&] { material::create_law("fibre-exp-linear", v, "materials.lig"); });
+  };
+  EXPECT_NE(message(exp_linear(1.0, 1.0, 1.0, 1.0, Vec3::Zero())).find("materials.lig.fibre"),
+            std::string::npos);
+  EXPECT_NE(message(exp_linear(0.0, 0.0, 1.0, 1.1, Vec3::UnitX())).find("materials.lig.c4 = 0"),
+            std::string::npos);
+  EXPECT_NE(message(exp_linear(1.0, 1.0, 1.0, 0.9, Vec3::UnitX())).find("materials.lig.lam_max"),
+            std::string::npos);
 }

@@ -63,6 +63,8 @@ const std::vector<LawCase>& new_law_cases() {
         {"c6", 0.01},
         {"m6", 8.0},
         {"cp", 0.0}}},
+      {"veronda-westmann", {{"c1", 0.2}, {"c2", 1.5}, {"k", 10.0}}},
+      {"veronda-westmann", {{"c1", 1.0}, {"c2", 0.5}, {"k", 100.0}}},
       {"yeoh", {{"c1", 0.57382}, {"c2", -0.074744}, {"c3", 0.011321}, {"k", 1000.0}}},
       {"yeoh",
        {{"c1", 0.3},
@@ -144,6 +146,8 @@ material::Lame small_strain_moduli(const LawCase& c) {
     mu = 2.0 * (p.at("c1") + (p.contains("c2") ? p.at("c2") : 0.0));
   else if (c.type == "yeoh")
     mu = 2.0 * p.at("c1");
+  else if (c.type == "veronda-westmann")
+    mu = p.at("c1") * p.at("c2");
   else // ogden: mu = (c1 + c2 + ...)/2 with FEBio's c_i/m_i^2 normalisation
     for (const char* key : {"c1", "c2", "c3", "c4", "c5", "c6"})
       mu += p.contains(key) ? 0.5 * p.at(key) : 0.0;

@@ -23,10 +23,7 @@ const std::vector<ParameterSchema>& FibreExpLinear::schema() {
 }
 
 void FibreExpLinear::check(const ParameterValues& p, const std::string& context) {
-  const Vec3 a = vector_value(p, "fibre");
-  TRIFEM_CHECK(a.norm() > 0.0,
-               "{}.fibre = [{}, {}, {}]: the fibre direction must be a nonzero vector", context,
-               a.x(), a.y(), a.z());
+  (void)fibre_direction(p, context);
   TRIFEM_CHECK(p.at("c3") > 0.0 || p.at("c5") == 0.0 || p.at("c4") > 0.0,
                "{}.c4 = 0 with {}.c3 = 0: c3 is then c5/c4 exp(-c4 (lam_max - 1)), which needs "
                "c4 > 0",

@@ -20,10 +20,7 @@ const std::vector<ParameterSchema>& FibreExpPow::schema() {
 }
 
 void FibreExpPow::check(const ParameterValues& p, const std::string& context) {
-  const Vec3 a = vector_value(p, "fibre");
-  TRIFEM_CHECK(a.norm() > 0.0,
-               "{}.fibre = [{}, {}, {}]: the fibre direction must be a nonzero vector", context,
-               a.x(), a.y(), a.z());
+  (void)fibre_direction(p, context);
 }
 
 FibreExpPow::FibreExpPow(const ParameterValues& p)

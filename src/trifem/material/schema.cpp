@@ -133,6 +133,14 @@ void set_vector(ParameterValues& values, std::string_view key, const Vec3& v) {
     values[keys[d]] = v[d];
 }
 
+Vec3 fibre_direction(const ParameterValues& values, const std::string& context) {
+  const Vec3 a = vector_value(values, "fibre");
+  TRIFEM_CHECK(a.norm() > 0.0,
+               "{}.fibre = [{}, {}, {}]: the fibre direction must be a nonzero vector", context,
+               a.x(), a.y(), a.z());
+  return a;
+}
+
 Vec3 vector_value(const ParameterValues& values, std::string_view key) {
   const auto keys = vector_keys(key);
   Vec3 v;

@@ -102,6 +102,10 @@ void set_vector(ParameterValues& values, std::string_view key, const Vec3& v);
 /// The Vector parameter `key` of validated `values` (LogicError if a component is absent).
 Vec3 vector_value(const ParameterValues& values, std::string_view key);
 
+/// The fibre direction `fibre` of validated `values`: InputError naming `context.fibre` if it
+/// is the zero vector (the check of the fibre laws' parameters).
+Vec3 fibre_direction(const ParameterValues& values, const std::string& context);
+
 /// Validates `values` against `schema`: unknown keys, missing required keys (for a Vector, any
 /// of its three components) and values outside their range are InputErrors naming
 /// `context.key`. Returns the values with defaults filled in.

@@ -509,3 +509,79 @@ TEST_F(ContactCli, FlatBlockSlidesWithLoadedEdges) {
     EXPECT_LE(iterations[i], 8.0) << "row " << i;
   }
 }
+
+/// The contact surface CSV of the last output of the run.
+fs::path last_surface_file(const fs::path& dir) {
+  std::vector<fs::path> files;
+  for (const auto& e : fs::directory_iterator(dir))
+    if (e.path().filename().string().starts_with("contact1_surface_"))
+      files.push_back(e.path());
+  std::sort(files.begin(), files.end());
+  return files.empty() ? dir / "contact1_surface_missing.csv" : files.back();
+}
+
+/// Coulomb friction (friction = 0.3) between a block pressed by a rigid plate (0.4 N) and a
+/// fixed base: a tangential force below the friction limit μ F_n is carried with every slave
+/// node sticking (the block's bottom does not move); dragged by 0.5 mm, every node slips and the
+/// friction force is μ times the normal force, with quadratic Newton convergence while sliding.
+TEST_F(ContactCli, FrictionHoldsABlockBelowTheLimitAndDragsItAtTheLimit) {
+  constexpr double kMu = 0.3, kLoad = 0.4, kPush = 0.03;
+  Result r = run(kData / "friction_block.toml");
+  ASSERT_EQ(r.exit_code, kSuccess) << r;
+  CsvTable h = read_csv(output() / "history.csv");
+  ASSERT_EQ(h.rows.size(), 21u);
+  const std::vector<double> time = h.column("time [s]");
+  const std::vector<double> fx = h.column("contact1.Fx [N]");
+  const std::vector<double> fz = h.column("contact1.Fz [N]");
+  for (std::size_t i = 0; i < time.size(); ++i) {
+    EXPECT_NEAR(fx[i], -kPush * std::max(0.0, time[i] - 1.0), 1e-10 * kLoad) << "row " << i;
+    EXPECT_NEAR(fz[i], kLoad * std::min(1.0, time[i]), 1e-10 * kLoad) << "row " << i;
+  }
+  const CsvTable stuck = read_csv(last_surface_file(output()));
+  ASSERT_EQ(stuck.rows.size(), 15u);
+  const std::vector<double> X = stuck.column("X [mm]"), x = stuck.column("x [mm]");
+  const std::vector<double> slipping = stuck.column("contact_slipping");
+  const std::vector<double> active = stuck.column("contact_active");
+  const std::vector<double> tx = stuck.column("friction_traction.x [MPa]");
+  const std::vector<double> p = stuck.column("contact_traction [MPa]");
+  for (std::size_t k = 0; k < X.size(); ++k) {
+    EXPECT_EQ(active[k], 1.0) << "slave node " << k;
+    EXPECT_EQ(slipping[k], 0.0) << "slave node " << k;
+    EXPECT_NEAR(x[k], X[k], 1e-10 * kEdge) << "slave node " << k << " slid";
+    EXPECT_LT(std::abs(tx[k]), kMu * std::abs(p[k])) << "slave node " << k;
+  }
+
+  const fs::path drag = data_variant(
+      "friction_block.toml", "friction_drag.toml",
+      {{"x = { force = 0.03, curve = \"push\" }", "x = { displacement = 0.5, curve = \"push\" }"}});
+  r = run(drag);
+  ASSERT_EQ(r.exit_code, kSuccess) << r;
+  h = read_csv(output() / "history.csv");
+  const std::vector<double> t2 = h.column("time [s]"), fx2 = h.column("contact1.Fx [N]");
+  const std::vector<double> fz2 = h.column("contact1.Fz [N]"), plate = h.column("plate.Fx [N]");
+  const std::vector<double> iterations = h.column("iterations");
+  std::size_t sliding = 0;
+  for (std::size_t i = 0; i < t2.size(); ++i) {
+    if (t2[i] < 1.2)
+      continue; // pressed, then dragged until every node slips
+    ++sliding;
+    EXPECT_NEAR(fx2[i], -kMu * fz2[i], 1e-10 * kLoad) << "row " << i;
+    EXPECT_NEAR(plate[i], kMu * kLoad, 1e-10 * kLoad) << "row " << i;
+    EXPECT_LE(iterations[i], 3.0) << "row " << i;
+  }
+  EXPECT_GE(sliding, 8u);
+  const CsvTable slid = read_csv(last_surface_file(output()));
+  for (const double s : slid.column("contact_slipping"))
+    EXPECT_EQ(s, 1.0);
+  EXPECT_NEAR(h.last("plate.ux [mm]"), 0.5, 1e-12);
+}
+
+TEST_F(ContactCli, FrictionBetweenMixturesIsRefusedNamingThePair) {
+  const fs::path file =
+      data_variant("contact_triphasic_column.toml", "friction_mixture.toml",
+                   {{"slave = \"upper.zmin\"\n", "slave = \"upper.zmin\"\nfriction = 0.2\n"}});
+  const Result r = trifem({"check", file.string()});
+  EXPECT_EQ(r.exit_code, kInvalidInput) << r;
+  EXPECT_TRUE(contains(r.err, "contact[1]")) << r;
+  EXPECT_TRUE(contains(r.err, "friction between mixtures is not implemented yet")) << r;
+}

@@ -158,6 +158,15 @@ std::vector<io::DataArray> contact_arrays(const model::Model& model,
                              [](const SlaveNodeState& s) { return s.active ? 1.0 : 0.0; }));
   out.push_back(scalar_array("contact_projected", states,
                              [](const SlaveNodeState& s) { return s.projected ? 1.0 : 0.0; }));
+  if (!states.empty() && states.front().frictional) {
+    io::DataArray friction{"friction_traction [MPa]", 3, std::vector<double>(3 * states.size())};
+    for (std::size_t k = 0; k < states.size(); ++k)
+      for (int i = 0; i < 3; ++i)
+        friction.values[3 * k + i] = states[k].multiplier[1 + i];
+    out.push_back(std::move(friction));
+    out.push_back(scalar_array("contact_slipping", states,
+                               [](const SlaveNodeState& s) { return s.slipping ? 1.0 : 0.0; }));
+  }
   io::DataArray normal{"normal", 3, std::vector<double>(3 * states.size())};
   for (std::size_t k = 0; k < states.size(); ++k)
     for (int i = 0; i < 3; ++i)

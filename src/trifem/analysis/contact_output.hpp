@@ -16,7 +16,8 @@ namespace trifem::analysis {
 
 /// Nodal arrays of one contact pair in physical units, one value (or vector) per slave node in
 /// the order of `states` (= ContactTerm::slave_states of the model's state): gap, traction,
-/// potentials and normal fluxes (mixtures), active and projected flags, slave normal and nodal
+/// potentials and normal fluxes (mixtures), active and projected flags, friction traction and
+/// slipping flag (friction), slave normal and nodal
 /// area (docs/input.md, "Contact output").
 std::vector<io::DataArray> contact_arrays(const model::Model& model,
                                           const std::vector<contact::SlaveNodeState>& states);

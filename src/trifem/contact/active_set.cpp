@@ -9,6 +9,18 @@
 namespace trifem::contact {
 
 NodeContact ActiveSet::wanted(Index k, const NodeStatus& s) const {
+  const NodeContact target = normal_wanted(k, s);
+  if (!s.frictional || target == NodeContact::Open || !initialized_)
+    return target;
+  const auto current = static_cast<NodeContact>(active_[k]);
+  if (current == NodeContact::Slipping)
+    return s.slip < -settings_.release_threshold ? NodeContact::Sealed : NodeContact::Slipping;
+  if (current == NodeContact::Sealed && s.slip > settings_.release_threshold)
+    return NodeContact::Slipping;
+  return NodeContact::Sealed;
+}
+
+NodeContact ActiveSet::normal_wanted(Index k, const NodeStatus& s) const {
   const auto current = static_cast<NodeContact>(active_[k]);
   if (!s.admissible)
     return NodeContact::Open;

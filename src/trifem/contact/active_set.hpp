@@ -27,6 +27,8 @@ struct NodeStatus {
   Real gap = 0;            ///< g_k [length]
   Real indicator = 0;      ///< complementarity function, e.g. t_k + c_N g_k [stress]
   bool wettable = false;   ///< the law has a wetted state (mixtures: see ActiveSet)
+  bool frictional = false; ///< the law tells sticking from slipping nodes
+  Real slip = 0;           ///< frictional: slip indicator, > 0 slipping [stress]
 };
 
 /// Contact status of a slave node (the stored flag; `Open` = 0 is inactive).
@@ -34,6 +36,7 @@ enum class NodeContact : char {
   Open = 0,   ///< separated or not projecting: traction-free (and free-draining for mixtures)
   Sealed = 1, ///< in contact; for mixtures the interface is sealed (potential and flux continuity)
   Wetted = 2, ///< in contact, but the interface is wetted by the bath (mixtures: free-draining)
+  Slipping = 3, ///< in contact and slipping (frictional laws; Sealed is then sticking)
 };
 
 /// The set of active slave nodes. Rules, applied at every system evaluation (Term::prepare):
@@ -50,6 +53,9 @@ enum class NodeContact : char {
 ///     was released from sealed: there the sealed state was just found to pull, and re-sealing
 ///     would cycle. So layers that were wetted while their traction was about zero (free
 ///     swelling) close the interface again when a platen compresses them;
+///   * a frictional node in contact sticks (Sealed) or slips: a sticking node starts to slip
+///     when its slip indicator exceeds ε_t, a slipping node sticks when it falls below -ε_t; a
+///     node that comes into contact sticks first;
 ///   * after `max_updates` evaluations of a step the set is frozen (only non-admissible nodes
 ///     are still released) until it has *settled*: every active node has |g_k| ≤
 ///     gap_tolerance, i.e. Newton has converged for the frozen set. Then the rule is applied
@@ -73,6 +79,8 @@ public:
   void assign(std::vector<char> active);
 
   bool active(Index k) const { return active_[k] != 0; }
+  /// In contact and slipping (frictional laws).
+  bool slipping(Index k) const { return active_[k] == static_cast<char>(NodeContact::Slipping); }
   /// In contact with a wetted (free-draining) interface.
   bool wetted(Index k) const { return active_[k] == static_cast<char>(NodeContact::Wetted); }
   const std::vector<char>& flags() const { return active_; }
@@ -87,6 +95,7 @@ public:
 
 private:
   NodeContact wanted(Index k, const NodeStatus& s) const;
+  NodeContact normal_wanted(Index k, const NodeStatus& s) const;
   bool settled(const std::vector<NodeStatus>& nodes) const;
 
   ActiveSetSettings settings_;

@@ -30,15 +30,23 @@ struct SlaveNodeRows {
   /// corners (ContactLaw::corner_interpolated) have no constraint there (their rows hold λ = 0).
   bool mid_edge = false;
   const ProjectionDerivatives* derivatives = nullptr; ///< of *projection (null: none)
-  Real weight = 0;      ///< A_k = ∫_slave M_k dA (reference tributary area; a fixed row weight)
-  Real scale = 1;       ///< c_N > 0 [stress/length]: the complementarity scaling
-  Real dt = 0;          ///< step size (for rate-type constraints such as flux continuity)
-  Vector multiplier;    ///< λ_k (num_components() values)
-  bool wetted = false;  ///< in contact with a wetted interface (NodeContact::Wetted)
-  Index lambda_at = -1; ///< local position of λ_k component 0 (components are contiguous)
+  Real weight = 0;       ///< A_k = ∫_slave M_k dA (reference tributary area; a fixed row weight)
+  Real scale = 1;        ///< c_N > 0 [stress/length]: the complementarity scaling
+  Real dt = 0;           ///< step size (for rate-type constraints such as flux continuity)
+  Vector multiplier;     ///< λ_k (num_components() values)
+  bool wetted = false;   ///< in contact with a wetted interface (NodeContact::Wetted)
+  bool slipping = false; ///< in contact and slipping (NodeContact::Slipping; frictional laws)
+  Index lambda_at = -1;  ///< local position of λ_k component 0 (components are contiguous)
   /// Local position of coordinate component 0 of stencil point j (j = 0: the slave node,
   /// 1 + a: master facet node a; -1 when there is no projection), j < nodes.size.
   std::array<Index, kMaxStencilPoints> x_at = no_positions();
+  /// Position of each stencil point at the start of the step (frictional laws; with a
+  /// projection only).
+  std::array<Vec3, kMaxStencilPoints> x_old{};
+  /// Per axis i: the displacement component i is prescribed at the slave node and at every
+  /// node of the master facet it projects onto (e.g. plane strain), so no slip along e_i can
+  /// occur and a traction along e_i does no work: frictional laws hold that component at zero.
+  std::array<bool, 3> held{};
 
   static std::array<Index, kMaxStencilPoints> no_positions() {
     std::array<Index, kMaxStencilPoints> a;
@@ -50,7 +58,9 @@ struct SlaveNodeRows {
 /// A contact law: the meaning of the multiplier components and their constraint rows.
 /// Interface work (ContactTerm): component c adds R_{F_c,a} -= s_c ∫ N_a λ_c n da on the rows of
 /// the vector field F_c = paired_field(c) at the facet nodes of both surfaces (s_c =
-/// work_factor(c, Δt)).
+/// work_factor(c, Δt)); a component with a work axis i (a traction component e_i·t) adds
+/// R_{F_c,a} -= s_c ∫ N_a λ_c e_i |n da| on the slave facets and the opposite on the master
+/// facets.
 class ContactLaw {
 public:
   virtual ~ContactLaw() = default;
@@ -64,6 +74,9 @@ public:
   /// of the term that owns those rows (1 for momentum rows; -Δt for the -Δt-scaled mixture flux
   /// rows, so that R_{F_c,a} += Δt ∫ N_a λ_c n da there). `dt` is the step size.
   virtual Real work_factor(int /*c*/, Real /*dt*/) const { return 1; }
+  /// The Cartesian axis i of a traction component (its work acts along e_i over the area),
+  /// or -1 for a component whose work acts along the surface normal (n da).
+  virtual int work_axis(int /*c*/) const { return -1; }
   /// Whether component c and its paired field are interpolated linearly from the corners on
   /// quadratic facets (the fluxes of tet10 and hex20 cells): its multiplier then lives on the
   /// corner slave nodes only, and its interface work acts through the corners' linear functions.
@@ -76,6 +89,11 @@ public:
   virtual Real indicator(const SlaveNodeRows& node) const = 0;
   /// Whether the law distinguishes a wetted from a sealed contact (NodeContact::Wetted).
   virtual bool wettable() const { return false; }
+  /// Whether the law distinguishes sticking (NodeContact::Sealed) from slipping contact.
+  virtual bool frictional() const { return false; }
+  /// Of a frictional law at a node in contact: the slip function, > 0 where the node slips
+  /// (e.g. |trial tangential traction| - μ p) [stress].
+  virtual Real slip_indicator(const SlaveNodeRows& /*node*/) const { return 0; }
   /// Constraint rows (on the λ_k DOFs) of an active node, added to `out` (node.wetted tells
   /// a wetted from a sealed contact).
   virtual void active_rows(const SlaveNodeRows& node, LocalSystem& out) const = 0;

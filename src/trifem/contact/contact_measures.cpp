@@ -51,6 +51,8 @@ std::vector<SlaveNodeState> ContactTerm::slave_states(const Vector& x) const {
     if (norm > 0)
       s.normal = area[k] / norm;
     s.active = active_.active(k);
+    s.frictional = law_->frictional();
+    s.slipping = active_.slipping(k);
     set_projection(projections[k], s);
     s.multiplier.resize(law_->num_components());
     const std::array<Index, 2> ends = slave_.edge_corners(k);

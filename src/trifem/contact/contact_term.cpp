@@ -166,13 +166,13 @@ void ContactTerm::update_active_set(const physics::EvalState& state) {
     if (!pr || pr->on_free_boundary)
       continue;
     SlaveNodeRows node;
-    node.slave = k;
-    node.projection = &*pr;
-    node.scale = settings_.scale;
-    node.multiplier.resize(law_->num_components());
-    for (int c = 0; c < law_->num_components(); ++c)
-      node.multiplier[c] = state.x[multiplier_dof(k, c)];
-    status[k] = {true, pr->gap, law_->indicator(node), law_->wettable()};
+    describe_node(k, state, node);
+    status[k] = {true,
+                 pr->gap,
+                 law_->indicator(node),
+                 law_->wettable(),
+                 law_->frictional(),
+                 law_->frictional() ? law_->slip_indicator(node) : 0.0};
   }
   active_.update(state.time, status);
 }
@@ -216,7 +216,7 @@ void ContactTerm::restore_history(const std::vector<double>& values) {
   committed_pressure_.assign(n, 0.0);
   for (Index k = 0; k < n; ++k) {
     const Real status = values[3 * k], projected = values[3 * k + 1];
-    TRIFEM_CHECK((status == 0 || status == 1 || status == 2) &&
+    TRIFEM_CHECK((status == 0 || status == 1 || status == 2 || status == 3) &&
                      (projected == 0 || projected == 1) && std::isfinite(values[3 * k + 2]),
                  "the restart file holds an invalid contact state of slave node {} (status {}, "
                  "projected {}, pressure {})",
@@ -346,9 +346,8 @@ bool ContactTerm::evaluate(Index e, const physics::EvalState& state, physics::Lo
   return true;
 }
 
-void ContactTerm::slave_node_rows(Index k, const physics::EvalState& state,
-                                  LocalSystem& out) const {
-  SlaveNodeRows node;
+void ContactTerm::describe_node(Index k, const physics::EvalState& state,
+                                SlaveNodeRows& node) const {
   node.slave = k;
   node.state = &state;
   node.dofs = &dofs_;
@@ -358,22 +357,37 @@ void ContactTerm::slave_node_rows(Index k, const physics::EvalState& state,
   node.multiplier.resize(law_->num_components());
   for (int c = 0; c < law_->num_components(); ++c)
     node.multiplier[c] = state.x[multiplier_dof(k, c)];
-  node.lambda_at = out.at(multiplier_dof(k, 0));
   node.wetted = active_.wetted(k);
+  node.slipping = active_.slipping(k);
   node.mid_edge = slave_.is_mid_edge_node(k);
   const auto& pr = slave_proj_[k];
-  ProjectionDerivatives d;
-  if (pr) {
-    node.nodes = stencil_nodes(slave_.nodes()[k], master_, pr->facet);
-    for (int j = 0; j < node.nodes.size; ++j)
-      node.x_at[j] = out.at(u_dof(node.nodes[j], 0));
-    node.projection = &*pr;
-    node.facet_type = master_.facet_type(pr->facet);
-  } else {
+  if (!pr) {
     node.nodes.nodes[0] = slave_.nodes()[k];
     node.nodes.size = 1;
-    node.x_at[0] = out.at(u_dof(slave_.nodes()[k], 0));
+    return;
   }
+  node.nodes = stencil_nodes(slave_.nodes()[k], master_, pr->facet);
+  node.projection = &*pr;
+  node.facet_type = master_.facet_type(pr->facet);
+  for (int j = 0; j < node.nodes.size; ++j)
+    node.x_old[static_cast<std::size_t>(j)] = position(node.nodes[j], state.x_old);
+  for (int i = 0; i < 3; ++i) {
+    node.held[static_cast<std::size_t>(i)] = true;
+    for (int j = 0; j < node.nodes.size; ++j)
+      node.held[static_cast<std::size_t>(i)] =
+          node.held[static_cast<std::size_t>(i)] && dofs_.is_constrained(u_dof(node.nodes[j], i));
+  }
+}
+
+void ContactTerm::slave_node_rows(Index k, const physics::EvalState& state,
+                                  LocalSystem& out) const {
+  SlaveNodeRows node;
+  describe_node(k, state, node);
+  node.lambda_at = out.at(multiplier_dof(k, 0));
+  for (int j = 0; j < node.nodes.size; ++j)
+    node.x_at[j] = out.at(u_dof(node.nodes[j], 0));
+  const auto& pr = slave_proj_[k];
+  ProjectionDerivatives d;
   if (active_.active(k) && pr && !pr->on_free_boundary) {
     d = projection_derivatives(*pr, coords(master_, pr->facet, state.x));
     node.derivatives = &d;
@@ -381,20 +395,6 @@ void ContactTerm::slave_node_rows(Index k, const physics::EvalState& state,
   } else {
     law_->inactive_rows(node, out);
   }
-}
-
-Vec3 ContactTerm::slave_force(const Vector& x) const {
-  Vec3 f = Vec3::Zero();
-  for (Index s = 0; s < slave_.num_facets(); ++s) {
-    const FacetCoords X = coords(slave_, s, x);
-    const fe::FacetShapeValues lam = facet_multipliers(s, x).col(0);
-    for (const auto& qp : X.reference->rule().points) {
-      const FacetPoint fp = evaluate_facet(X, qp.xi);
-      const Vec3 r = fp.t[0].cross(fp.t[1]) * qp.weight;
-      f += fp.N.dot(lam) * r; // = Σ_a λ_a a_a as well (lumped forces have the same sum)
-    }
-  }
-  return f;
 }
 
 } // namespace trifem::contact

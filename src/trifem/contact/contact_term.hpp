@@ -66,6 +66,9 @@ struct SlaveNodeState {
   Vec3 normal = Vec3::Zero();      ///< a_k / |a_k|: outward unit normal of the slave surface
   bool projected = false;          ///< admissible projection onto the master surface
   bool active = false;             ///< in the active set (of the last prepare())
+  bool frictional = false;         ///< of a frictional law: multipliers 1-3 are the friction
+                                   ///< traction on the slave body [stress]
+  bool slipping = false;           ///< active and slipping (frictional laws)
   Real gap = 0;                    ///< g = (x - x^m(ξ))·n^m(ξ) [length]: ≥ 0 separated
   Vec3 master_normal = Vec3::Zero(); ///< n^m(ξ) at the projection (outward from the master)
   Vector multiplier; ///< λ_k as stored (components and units: the ContactLaw); at a mid-edge
@@ -150,10 +153,11 @@ public:
   Real tributary_area(Index k) const { return area_[k]; }
   /// DOF of component c of λ_k.
   Index multiplier_dof(Index k, int c) const { return dofs_.dof(lambda_, k, c); }
-  /// Total interface force of component 0 on the slave body in the state x,
-  /// f = ∫ λ^s n da = Σ_k λ_k a_k (both integration options give the same total).
+  /// Total interface force on the slave body in the state x: of the components paired with
+  /// the displacement, f = ∫ λ^s n da = Σ_k λ_k a_k (normal) plus ∫ t^s da (friction)
+  /// (both integration options give the same total).
   Vec3 slave_force(const Vector& x) const;
-  /// Total interface force of component 0 on the master body in the state x (projections of
+  /// Total interface force (as slave_force) on the master body in the state x (projections of
   /// the last prepare()): ∫ λ^m n da (BothSurfaces) or -Σ_k λ_k a_k over the slave nodes that
   /// transfer their force (SlaveNodes, = -slave_force). The both-surface scheme does not
   /// conserve momentum exactly: master + slave force is zero for a uniform pressure (patch
@@ -203,6 +207,8 @@ private:
   void master_facet_work(Index f, const Vector& x, Real dt, LocalSystem& out) const;
   void slave_point_forces(Index f, const Vector& x, Real dt, LocalSystem& out) const;
   void slave_node_rows(Index k, const physics::EvalState& state, LocalSystem& out) const;
+  /// Slave node k as its law sees it in `state` (without local positions and derivatives).
+  void describe_node(Index k, const physics::EvalState& state, SlaveNodeRows& node) const;
 
   const mesh::Mesh& mesh_;
   const dofs::DofMap& dofs_;

@@ -21,6 +21,46 @@ Mat3 area_derivative(const FacetPoint& fp, Index b, Real w) {
   return w * (fp.dN(b, 1) * skew(fp.t[0]) - fp.dN(b, 0) * skew(fp.t[1]));
 }
 
+/// The vector along which the interface work of a component acts at a facet point: the
+/// weighted area vector r = w t_1 × t_2 (work_axis < 0: a normal component), or
+/// sign e_i (n·r) for a traction component along axis i (sign -1 on the master facets, whose
+/// body takes the opposite traction).
+Vec3 work_vector(int axis, Real sign, const FacetPoint& fp, Real w) {
+  const Vec3 r = w * fp.t[0].cross(fp.t[1]);
+  if (axis < 0)
+    return r;
+  Vec3 out = Vec3::Zero();
+  out[axis] = sign * fp.t[0].cross(fp.t[1]).normalized().dot(r);
+  return out;
+}
+
+/// ∂(work_vector)/∂x_b.
+Mat3 work_derivative(int axis, Real sign, const FacetPoint& fp, Index b, Real w) {
+  const Mat3 dr = area_derivative(fp, b, w);
+  if (axis < 0)
+    return dr;
+  Mat3 out = Mat3::Zero();
+  out.row(axis) = sign * fp.t[0].cross(fp.t[1]).normalized().transpose() * dr;
+  return out;
+}
+
+/// The same for a lumped area vector a (slave-node integration) and its derivative rows dA.
+Vec3 point_work_vector(int axis, const Vec3& a) {
+  if (axis < 0)
+    return a;
+  Vec3 out = Vec3::Zero();
+  out[axis] = a.norm();
+  return out;
+}
+
+Mat3 point_work_derivative(int axis, const Vec3& a, const Mat3& da) {
+  if (axis < 0)
+    return da;
+  Mat3 out = Mat3::Zero();
+  out.row(axis) = a.normalized().transpose() * da;
+  return out;
+}
+
 /// A master node i and the slave facet s_i it projects onto at ζ_i:
 /// λ^m_i = Σ_b M_b(ζ_i) λ_{k_b} and its derivative through ζ_i with respect to the stencil
 /// coordinates (x_i, slave facet nodes): Σ_b λ_{k_b} M_{b,β}(ζ_i) ∂ζ_i^β/∂x.
@@ -60,7 +100,8 @@ void ContactTerm::slave_facet_work(Index f, const Vector& x, Real dt, LocalSyste
     for (int c = 0; c < lam.cols(); ++c) {
       const fe::FacetShapeValues& S = law_->corner_interpolated(c) ? L : fp.N;
       const Real wc = law_->work_factor(c, dt) * qp.weight;
-      const Vec3 r = wc * fp.t[0].cross(fp.t[1]);
+      const int axis = law_->work_axis(c);
+      const Vec3 r = work_vector(axis, 1.0, fp, wc);
       const Real lc = S.dot(lam.col(c));
       for (Index a = 0; a < n; ++a) {
         if (S[a] == 0.0)
@@ -70,7 +111,7 @@ void ContactTerm::slave_facet_work(Index f, const Vector& x, Real dt, LocalSyste
         if (!out.with_jacobian())
           continue;
         for (Index b = 0; b < n; ++b) {
-          out.K().block<3, 3>(row, x_at[b]) -= S[a] * lc * area_derivative(fp, b, wc);
+          out.K().block<3, 3>(row, x_at[b]) -= S[a] * lc * work_derivative(axis, 1.0, fp, b, wc);
           out.K().block<3, 1>(row, l_at[b] + c) -= S[a] * S[b] * r;
         }
       }
@@ -127,7 +168,8 @@ void ContactTerm::master_facet_work(Index f, const Vector& x, Real dt, LocalSyst
         if (link[i].linked)
           lm += S[i] * link[i].lambda[c];
       const Real wc = law_->work_factor(c, dt) * qp.weight;
-      const Vec3 r = wc * fp.t[0].cross(fp.t[1]);
+      const int axis = law_->work_axis(c);
+      const Vec3 r = work_vector(axis, -1.0, fp, wc);
       for (Index a = 0; a < n; ++a) {
         if (S[a] == 0.0)
           continue; // a mid-edge node of a corner-interpolated field
@@ -136,7 +178,7 @@ void ContactTerm::master_facet_work(Index f, const Vector& x, Real dt, LocalSyst
         if (!out.with_jacobian())
           continue;
         for (Index b = 0; b < n; ++b)
-          out.K().block<3, 3>(row, x_at[b]) -= S[a] * lm * area_derivative(fp, b, wc);
+          out.K().block<3, 3>(row, x_at[b]) -= S[a] * lm * work_derivative(axis, -1.0, fp, b, wc);
         for (Index i = 0; i < n; ++i) {
           const MasterLink& l = link[i];
           if (!l.linked)
@@ -186,13 +228,18 @@ void ContactTerm::slave_point_forces(Index f, const Vector& x, Real dt, LocalSys
     for (int c = 0; c < lam.cols(); ++c) {
       const dofs::FieldId F = law_->paired_field(c);
       const Real sc = law_->work_factor(c, dt);
-      const Vec3 a_a = sc * A.segment<3>(3 * a);
+      const int axis = law_->work_axis(c);
+      const Vec3 a_a = sc * point_work_vector(axis, A.segment<3>(3 * a));
+      const auto da = [&](Index b) {
+        return Mat3(sc *
+                    point_work_derivative(axis, A.segment<3>(3 * a), dA.block<3, 3>(3 * a, 3 * b)));
+      };
       const Index row = out.at(dofs_.dof(F, nodes[a], 0));
       out.r().segment<3>(row) -= lam(a, c) * a_a;
       if (out.with_jacobian()) {
         out.K().block<3, 1>(row, l_at + c) -= a_a;
         for (Index b = 0; b < n; ++b)
-          out.K().block<3, 3>(row, x_at[b]) -= sc * lam(a, c) * dA.block<3, 3>(3 * a, 3 * b);
+          out.K().block<3, 3>(row, x_at[b]) -= lam(a, c) * da(b);
       }
       if (!transfer)
         continue;
@@ -203,8 +250,7 @@ void ContactTerm::slave_point_forces(Index f, const Vector& x, Real dt, LocalSys
           continue;
         out.K().block<3, 1>(qrow, l_at + c) += Nq[qn] * a_a;
         for (Index b = 0; b < n; ++b)
-          out.K().block<3, 3>(qrow, x_at[b]) +=
-              sc * lam(a, c) * Nq[qn] * dA.block<3, 3>(3 * a, 3 * b);
+          out.K().block<3, 3>(qrow, x_at[b]) += lam(a, c) * Nq[qn] * da(b);
         for (int j = 0; j < stencil.size; ++j)
           out.K().block<3, 3>(qrow, q_at[j]) += lam(a, c) * a_a * dNq.row(qn).segment<3>(3 * j);
       }
@@ -212,16 +258,36 @@ void ContactTerm::slave_point_forces(Index f, const Vector& x, Real dt, LocalSys
   }
 }
 
+Vec3 ContactTerm::slave_force(const Vector& x) const {
+  Vec3 f = Vec3::Zero();
+  for (Index s = 0; s < slave_.num_facets(); ++s) {
+    const FacetCoords X = coords(slave_, s, x);
+    const FacetMultipliers lam = facet_multipliers(s, x);
+    for (const auto& qp : X.reference->rule().points) {
+      const FacetPoint fp = evaluate_facet(X, qp.xi);
+      for (int c = 0; c < lam.cols(); ++c) // = Σ_a λ_a a_a as well (lumped forces: same sum)
+        if (law_->paired_field(c) == u_)
+          f += fp.N.dot(lam.col(c)) * work_vector(law_->work_axis(c), 1.0, fp, qp.weight);
+    }
+  }
+  return f;
+}
+
 Vec3 ContactTerm::master_force(const Vector& x) const {
   Vec3 f = Vec3::Zero();
+  const int C = law_->num_components();
   if (settings_.integration == Integration::SlaveNodes) {
     for (Index s = 0; s < slave_.num_facets(); ++s) {
       const FacetCoords X = coords(slave_, s, x);
       const physics::FacetVectorX A = physics::facet_area_vectors(*X.reference, X.x);
       for (Index a = 0; a < X.num_nodes(); ++a) {
         const Index k = slave_facet_k_[s][a];
-        if (slave_proj_[k] && !slave_proj_[k]->on_free_boundary)
-          f -= x[multiplier_dof(k, 0)] * A.segment<3>(3 * a);
+        if (!slave_proj_[k] || slave_proj_[k]->on_free_boundary)
+          continue;
+        for (int c = 0; c < C; ++c)
+          if (law_->paired_field(c) == u_)
+            f -= x[multiplier_dof(k, c)] *
+                 point_work_vector(law_->work_axis(c), A.segment<3>(3 * a));
       }
     }
     return f;
@@ -229,17 +295,19 @@ Vec3 ContactTerm::master_force(const Vector& x) const {
   for (Index m = 0; m < master_.num_facets(); ++m) {
     const auto nodes = master_.facet_nodes(m);
     const FacetCoords X = coords(master_, m, x);
-    fe::FacetShapeValues lm = fe::FacetShapeValues::Zero(X.num_nodes()); // λ^m_i of the nodes
+    // λ^m_i of the nodes (rows) per component (columns)
+    FacetMultipliers lm = FacetMultipliers::Zero(X.num_nodes(), C);
     for (Index i = 0; i < X.num_nodes(); ++i) {
       const auto& pr = master_proj_[master_.local_node(nodes[i])];
       if (pr && !pr->on_free_boundary)
-        lm[i] = facet_multipliers(pr->facet, x)
-                    .col(0)
-                    .dot(fe::reference_facet(slave_.facet_type(pr->facet)).shape(pr->xi));
+        lm.row(i) = fe::reference_facet(slave_.facet_type(pr->facet)).shape(pr->xi).transpose() *
+                    facet_multipliers(pr->facet, x);
     }
     for (const auto& qp : X.reference->rule().points) {
       const FacetPoint fp = evaluate_facet(X, qp.xi);
-      f += fp.N.dot(lm) * qp.weight * fp.t[0].cross(fp.t[1]);
+      for (int c = 0; c < C; ++c)
+        if (law_->paired_field(c) == u_)
+          f += fp.N.dot(lm.col(c)) * work_vector(law_->work_axis(c), -1.0, fp, qp.weight);
     }
   }
   return f;

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
-// FEBio contact interfaces as trifem's contact pairs (docs/feb.md): frictionless sliding
-// contact of solids and of biphasic bodies; FEBio's penalty and augmentation settings are read
-// and ignored, since trifem enforces contact with Lagrange multipliers.
+// FEBio contact interfaces as trifem's contact pairs (docs/feb.md): sliding contact of solids
+// (frictionless or with Coulomb friction) and frictionless contact of biphasic bodies; FEBio's
+// penalty and augmentation settings are read and ignored, since trifem enforces contact and
+// friction with Lagrange multipliers.
 #include "trifem/feb/reader.hpp"
 
 #include <algorithm>
@@ -14,13 +15,13 @@
 namespace trifem::feb::detail {
 namespace {
 
-/// FEBio's frictionless sliding interfaces of solids.
+/// FEBio's sliding interfaces of solids.
 constexpr std::string_view kSolidContacts[] = {"sliding-elastic", "sliding-facet-on-facet",
                                                "sliding-node-on-facet"};
 
 /// Parameters of the enforcement (penalty, augmentation, search, stiffness symmetry, and the
-/// penalty of friction, which fric_coeff = 0 switches off): they do not change the contact
-/// conditions, which trifem's multipliers hold exactly.
+/// penalty of friction): they do not change the contact conditions, which trifem's multipliers
+/// hold exactly.
 constexpr std::string_view kEnforcement[] = {"laugon",
                                              "fric_penalty",
                                              "ktmult",
@@ -48,9 +49,11 @@ constexpr std::string_view kEnforcement[] = {"laugon",
                                              "max_traction"};
 
 /// Parameters that must keep FEBio's default (the value trifem's contact has).
-const std::map<std::string_view, Real> kFixedDefaults = {
-    {"fric_coeff", 0.0},     {"tension", 0.0},      {"flip_primary", 0.0},
-    {"flip_secondary", 0.0}, {"contact_frac", 0.0}, {"smooth_fls", 0.0}};
+const std::map<std::string_view, Real> kFixedDefaults = {{"tension", 0.0},
+                                                         {"flip_primary", 0.0},
+                                                         {"flip_secondary", 0.0},
+                                                         {"contact_frac", 0.0},
+                                                         {"smooth_fls", 0.0}};
 
 bool contains(std::span<const std::string_view> list, std::string_view s) {
   return std::find(list.begin(), list.end(), s) != list.end();
@@ -109,11 +112,21 @@ void check_type(const Reader& r, pugi::xml_node c, const std::string& type) {
                          type));
 }
 
-/// The parameters of an interface: enforcement settings are ignored, the others must keep
-/// the defaults that describe trifem's frictionless contact.
-void check_parameters(Reader& r, pugi::xml_node c, bool& noted) {
+/// The parameters of an interface: enforcement settings are ignored, the friction coefficient
+/// of solids is returned, the others must keep the defaults that describe trifem's contact.
+Real check_parameters(Reader& r, pugi::xml_node c, bool& noted) {
+  Real friction = 0.0;
   for (pugi::xml_node p : elements(c)) {
     const std::string_view name = p.name();
+    if (name == "fric_coeff") {
+      friction = r.doc.number(p);
+      if (friction < 0.0 || !std::isfinite(friction))
+        r.doc.fail(p, fmt::format("'fric_coeff' must be >= 0, not {}", friction));
+      if (friction > 0.0 && r.doc.attribute(c, "type") == "sliding-biphasic")
+        r.doc.fail(p, "friction between biphasic bodies is not implemented yet (trifem's "
+                      "contact of mixtures is frictionless; fric_coeff must be 0)");
+      continue;
+    }
     if (contains(kEnforcement, name)) {
       if (!noted)
         r.warn(c, "FEBio's penalty, augmentation and search settings of contact interfaces "
@@ -126,10 +139,11 @@ void check_parameters(Reader& r, pugi::xml_node c, bool& noted) {
     if (fixed == kFixedDefaults.end())
       r.doc.fail(p, fmt::format("contact parameter '{}' is not supported", name));
     if (r.doc.number(p) != fixed->second)
-      r.doc.fail(p, fmt::format("'{}' must be {} (trifem's contact is frictionless, "
-                                "compressive, with the surfaces' own normals)",
+      r.doc.fail(p, fmt::format("'{}' must be {} (trifem's contact is compressive, with the "
+                                "surfaces' own normals)",
                                 name, fixed->second));
   }
+  return friction;
 }
 
 /// The mean reference facet size sqrt(area) of two surfaces.
@@ -165,8 +179,8 @@ void read_contact(Reader& r, pugi::xml_node section, pugi::xml_node mesh) {
     if (pair == pairs.end())
       r.doc.fail(c, "surface_pair",
                  fmt::format("surface pair '{}' is not defined in <Mesh>", pair_name));
-    check_parameters(r, c, noted);
     io::ContactSpec spec;
+    spec.friction = check_parameters(r, c, noted);
     spec.key = fmt::format("contact '{}'",
                            c.attribute("name") ? c.attribute("name").value() : pair_name.c_str());
     spec.slave = pair->second.primary; // FEBio's primary surface is the former slave

@@ -351,8 +351,8 @@ namespace trifem::io::detail {
 void read_contacts(const Table& root, CaseSpec& spec) {
   const Options<bool> integration = {{"both-surfaces", true}, {"slave-nodes", false}};
   for (const Table& t : root.tables("contact")) {
-    t.allow(
-        {"master", "slave", "integration", "scale", "search_distance", "penetration_tolerance"});
+    t.allow({"master", "slave", "integration", "scale", "search_distance", "penetration_tolerance",
+             "friction"});
     ContactSpec c;
     c.key = t.path();
     c.master = t.name("master");
@@ -376,6 +376,7 @@ void read_contacts(const Table& root, CaseSpec& spec) {
     c.penetration_tolerance =
         t.number("penetration_tolerance",
                  {.range = material::Range::non_negative(), .fallback = -1.0, .unit = "mm"});
+    c.friction = t.number("friction", {.range = material::Range::non_negative(), .fallback = 0.0});
     spec.contacts.push_back(std::move(c));
   }
 }

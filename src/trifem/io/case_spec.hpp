@@ -168,8 +168,8 @@ struct BathSpec {
   std::string curve;        ///< empty: the new bath applies from t = 0
 };
 
-/// [[contact]]: a frictionless contact pair (one pass: the slave's nodes carry the contact
-/// pressure and, between mixtures, the potentials).
+/// [[contact]]: a contact pair (one pass: the slave's nodes carry the contact pressure, the
+/// friction traction of solids with friction and, between mixtures, the potentials).
 struct ContactSpec {
   std::string key;            ///< "contact[1]" (for messages)
   std::string master;         ///< master surface (the coarser one)
@@ -179,6 +179,7 @@ struct ContactSpec {
   Real search_distance = 0.0; ///< [mm]; 0: half the mean facet size
   /// Largest initial penetration accepted [mm]; < 0 (absent): 1e-3 x the mean facet size.
   Real penetration_tolerance = -1.0;
+  Real friction = 0.0; ///< Coulomb friction coefficient μ (0: frictionless)
 };
 
 /// How one translation (rotation) component of a rigid body is driven.

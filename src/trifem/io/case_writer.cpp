@@ -216,6 +216,8 @@ void write_contacts(const CaseSpec& spec, TomlText& t) {
       t.number("search_distance", c.search_distance);
     if (c.penetration_tolerance >= 0.0)
       t.number("penetration_tolerance", c.penetration_tolerance);
+    if (c.friction > 0.0)
+      t.number("friction", c.friction);
   }
 }
 

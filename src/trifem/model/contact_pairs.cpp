@@ -2,6 +2,7 @@
 #include "trifem/model/contact_pairs.hpp"
 
 #include "trifem/contact/contact_law.hpp"
+#include "trifem/contact/frictional_law.hpp"
 #include "trifem/contact/mixture_contact_law.hpp"
 #include "trifem/core/log.hpp"
 #include "trifem/model/conditions.hpp"
@@ -11,10 +12,18 @@
 namespace trifem::model {
 namespace {
 
-/// Frictionless solid contact, or the mixture law (pressure and potential continuity).
-std::shared_ptr<const contact::ContactLaw> law(const Model& model) {
+/// Solid contact, frictionless or with Coulomb friction, or the mixture law (pressure and
+/// potential continuity).
+std::shared_ptr<const contact::ContactLaw> law(const io::ContactSpec& c, const Model& model) {
+  if (!model.fields.w.valid() && c.friction > 0.0)
+    return std::make_shared<contact::FrictionalLaw>(model.fields.u, c.friction);
   if (!model.fields.w.valid())
     return std::make_shared<contact::FrictionlessLaw>(model.fields.u);
+  TRIFEM_CHECK(c.friction == 0.0,
+               "friction = {} in a model with biphasic or triphasic materials: friction between "
+               "mixtures is not implemented yet (contact between mixtures is frictionless; "
+               "remove the key)",
+               c.friction);
   const physics::MixtureFields& f = model.fields;
   return std::make_shared<contact::MixtureContactLaw>(
       contact::MixtureContactFields{f.u, f.w, f.j_plus, f.j_minus});
@@ -125,8 +134,12 @@ void add_contact_fields(const io::CaseSpec& spec, Model& model) {
     const auto& slave = with_context(
         c.key + ".slave", [&]() -> const mesh::Surface& { return model.mesh.surface(c.slave); });
     const auto nodes = static_cast<Index>(mesh::surface_nodes(slave).size());
-    // components: contact pressure [+ water potential [+ c_ref x ion potentials]]
-    const int components = model.fields.j_plus.valid() ? 4 : model.fields.w.valid() ? 2 : 1;
+    // components: contact pressure [+ water potential [+ c_ref x ion potentials]], or
+    // contact pressure + friction traction (solids with friction)
+    const int components = model.fields.j_plus.valid() ? 4
+                           : model.fields.w.valid()    ? 2
+                           : c.friction > 0.0          ? 4
+                                                       : 1;
     model.contact_fields.push_back(model.dofs.add_field(
         fmt::format("contact_multipliers_{}", i + 1), FieldRole::multiplier, nodes, components));
   }
@@ -156,7 +169,7 @@ std::vector<std::unique_ptr<physics::Term>> contact_terms(const io::CaseSpec& sp
     auto term = with_context(pair_context(c), [&] {
       return std::make_unique<contact::ContactTerm>(model.mesh, model.dofs, model.fields.u,
                                                     model.contact_fields[i], master, slave,
-                                                    law(model), settings);
+                                                    law(c, model), settings);
     });
     check_initial_geometry(c, *term, model, h);
     model.contacts.push_back(term.get());

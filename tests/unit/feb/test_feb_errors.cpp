@@ -256,11 +256,18 @@ TEST(FebContact, TheFrictionPenaltyOfAFrictionlessInterfaceIsIgnored) {
       "good.feb"));
 }
 
+TEST(FebContact, TheFrictionCoefficientOfASolidInterfaceIsItsCoulombFriction) {
+  const io::CaseSpec spec = feb::parse_feb(
+      stacked_with("<fric_coeff>0</fric_coeff>", "<fric_coeff>0.3</fric_coeff>"), "good.feb");
+  ASSERT_EQ(spec.contacts.size(), 1u);
+  EXPECT_EQ(spec.contacts[0].friction, 0.3);
+}
+
 TEST(FebErrors, UnsupportedContact) {
   expect_contains(
-      feb_error(stacked_with("<fric_coeff>0</fric_coeff>", "<fric_coeff>0.3</fric_coeff>")),
+      feb_error(stacked_with("<fric_coeff>0</fric_coeff>", "<fric_coeff>-0.3</fric_coeff>")),
       {"bad.feb:", "contact[@type='sliding-elastic'][@name='Stack']/fric_coeff",
-       "'fric_coeff' must be 0 (trifem's contact is frictionless"});
+       "'fric_coeff' must be >= 0, not -0.3"});
   expect_contains(feb_error(stacked_with("type=\"sliding-elastic\"", "type=\"tied-elastic\"")),
                   {"@type: contact type 'tied-elastic' is not supported (trifem has no tied "
                    "contact"});

@@ -8,11 +8,11 @@
 
 namespace trifem::test {
 
-/// Residual (and Jacobian) of the whole term over all DOFs at x with step dt, after
-/// prepare(x). Returns whether prepare() changed the stencils.
-inline bool assemble_dense(contact::ContactTerm& term, const Vector& x, Real dt, Vector& R,
-                           Eigen::MatrixXd* K) {
-  const physics::EvalState state{x, x, 1.0, dt};
+/// Residual (and Jacobian) of the whole term over all DOFs at x with step dt from the state
+/// x_old, after prepare(x). Returns whether prepare() changed the stencils.
+inline bool assemble_dense(contact::ContactTerm& term, const Vector& x, const Vector& x_old,
+                           Real dt, Vector& R, Eigen::MatrixXd* K) {
+  const physics::EvalState state{x, x_old, 1.0, dt};
   const bool changed = term.prepare(state);
   const Index n = static_cast<Index>(x.size());
   R.setZero(n);
@@ -32,6 +32,32 @@ inline bool assemble_dense(contact::ContactTerm& term, const Vector& x, Real dt,
     }
   }
   return changed;
+}
+
+/// The same for a step that starts at x.
+inline bool assemble_dense(contact::ContactTerm& term, const Vector& x, Real dt, Vector& R,
+                           Eigen::MatrixXd* K) {
+  return assemble_dense(term, x, x, dt, R, K);
+}
+
+/// Central differences (step h) of the whole term's residual over all DOFs at x, in a step of
+/// size dt from x_old; the stencils must not change under the perturbations (checked). The
+/// projections of x are restored on return.
+inline Eigen::MatrixXd fd_jacobian(contact::ContactTerm& term, const Vector& x, const Vector& x_old,
+                                   Real dt, Real h = 1e-6) {
+  const Index n = static_cast<Index>(x.size());
+  Eigen::MatrixXd fd = Eigen::MatrixXd::Zero(n, n);
+  Vector Rp, Rm;
+  for (Index j = 0; j < n; ++j) {
+    Vector xp = x, xm = x;
+    xp[j] += h;
+    xm[j] -= h;
+    EXPECT_FALSE(assemble_dense(term, xp, x_old, dt, Rp, nullptr)) << "stencil changed at " << j;
+    EXPECT_FALSE(assemble_dense(term, xm, x_old, dt, Rm, nullptr)) << "stencil changed at " << j;
+    fd.col(j) = (Rp - Rm) / (2 * h);
+  }
+  assemble_dense(term, x, x_old, dt, Rp, nullptr);
+  return fd;
 }
 
 } // namespace trifem::test

@@ -632,5 +632,25 @@ TEST_F(CliParallel, TheKrylovBackendIsRefusedWithOneErrorLine) {
   EXPECT_TRUE(contains(errors[0], "krylov")) << r;
 }
 
+TEST_F(CliParallel, AFrictionalBlockDraggedOnSeveralProcessesGivesTheOneProcessHistory) {
+  // the block of the friction test pressed by a rigid plate and dragged 0.5 mm over a fixed
+  // base (every slave node sticking, then slipping at the Coulomb limit)
+  std::string text = read_text(kData / "friction_block.toml");
+  const std::string push = "x = { force = 0.03, curve = \"push\" }";
+  ASSERT_NE(text.find(push), std::string::npos);
+  text.replace(text.find(push), push.size(), "x = { displacement = 0.5, curve = \"push\" }");
+  const fs::path file = write_file("drag.toml", text);
+  const Result one = trifem({"run", file.string(), "-o", (output() / "1").string()});
+  ASSERT_EQ(one.exit_code, kSuccess) << one;
+  const History serial = read_history(output() / "1" / "history.csv");
+  for (const int processes : {2, 3}) {
+    SCOPED_TRACE(std::to_string(processes) + " processes");
+    const fs::path out = output() / std::to_string(processes);
+    const Result r = mpirun(processes, {"run", file.string(), "-o", out.string()});
+    ASSERT_EQ(r.exit_code, kSuccess) << r;
+    expect_the_same_history(serial, read_history(out / "history.csv"), 1e-10, {"iterations"});
+  }
+}
+
 } // namespace
 } // namespace trifem::cli_test

@@ -75,6 +75,21 @@ TEST_F(CliRestart, ContinuedInsideALaterAnalysisStep) {
 
 /// A rotating rigid body (its rotation vector is part of the state): the lid of a clamped
 /// cube pulled up, twisted by a moment about z and turned about x, continued from the middle.
+TEST_F(CliRestart, ContinuedWhileABlockSlidesWithFriction) {
+  // the friction test's block dragged over its base: restarted while every node slips (the
+  // stick/slip state and the start of the step's slip come from the restart file)
+  std::string text = read_text(kData / "friction_block.toml");
+  for (const auto& [from, to] :
+       {std::pair<std::string, std::string>{"x = { force = 0.03, curve = \"push\" }",
+                                            "x = { displacement = 0.5, curve = \"push\" }"},
+        {"vtu = false", "vtu = true"}}) {
+    ASSERT_NE(text.find(from), std::string::npos) << from;
+    text.replace(text.find(from), from.size(), to);
+  }
+  check_restart(write_file("drag.toml", text),
+                [](const auto& files) { return files[3 * (files.size() - 1) / 4]; });
+}
+
 TEST_F(CliRestart, ContinuedWhileARigidBodyRotates) {
   const fs::path file = write_file("rotating_lid.toml", R"(
 [[mesh.box]]

@@ -11,8 +11,13 @@ Vec3 traction_of(const SlaveNodeRows& node) {
   return {node.multiplier[1], node.multiplier[2], node.multiplier[3]};
 }
 
+/// The augmented contact pressure p = max(0, -(λ_n + c_N g)) that bounds the friction: at a
+/// converged active node (g = 0) the contact pressure -λ_n, and positive exactly where the
+/// normal indicator keeps the node in contact, so the friction bound and the normal state agree
+/// along the iterations.
 Real pressure_of(const SlaveNodeRows& node) {
-  return std::max(0.0, -node.multiplier[0]);
+  const Real gap = node.projection ? node.projection->gap : 0.0;
+  return std::max(0.0, -(node.multiplier[0] + node.scale * gap));
 }
 
 } // namespace
@@ -63,7 +68,9 @@ Real FrictionalLaw::slip_indicator(const SlaveNodeRows& node) const {
     if (node.held[static_cast<std::size_t>(i)])
       t[i] = 0.0;
   const Vec3 q = t - slip.normal * slip.normal.dot(t) - node.scale * slip.v;
-  return q.norm() - mu_ * pressure_of(node);
+  const Real excess = q.norm() - mu_ * pressure_of(node);
+  const Real band = kSlipBand * mu_ * pressure_of(node);
+  return excess > band ? excess - band : excess < -band ? excess + band : 0.0;
 }
 
 void FrictionalLaw::inactive_rows(const SlaveNodeRows& node, LocalSystem& out) const {
@@ -142,11 +149,13 @@ void FrictionalLaw::slipping_rows(const SlaveNodeRows& node, const Slip& slip,
     return;
   const Mat3 du_dq = (Mat3::Identity() - u * u.transpose()) / q_norm;
   out.K().block<3, 3>(rows, rows) += (A / c) * (Mat3::Identity() - mu_ * p * du_dq * P);
-  if (p > 0.0)
-    out.K().block<3, 1>(rows, node.lambda_at) += (A / c) * mu_ * u;
   const ProjectionDerivatives& d = *node.derivatives;
   const StencilRows<3> dq = -n.dot(t) * d.dnormal - n * (t.transpose() * d.dnormal) - c * slip.dv;
-  const StencilRows<3> dG = -(A / c) * mu_ * p * du_dq * dq;
+  StencilRows<3> dG = -(A / c) * mu_ * p * du_dq * dq;
+  if (p > 0.0) { // ∂p/∂λ_n = -1, ∂p/∂x = -c ∂g/∂x
+    out.K().block<3, 1>(rows, node.lambda_at) += (A / c) * mu_ * u;
+    dG += A * mu_ * u * d.dgap;
+  }
   for (int j = 0; j < node.nodes.size; ++j)
     out.K().block<3, 3>(rows, node.x_at[j]) += dG.middleCols<3>(3 * j);
 }

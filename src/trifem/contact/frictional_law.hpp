@@ -27,11 +27,13 @@ Slip slip_of(const SlaveNodeRows& node);
 /// Coulomb friction between solids: multipliers (λ_n, t_x, t_y, t_z) per slave node, the
 /// contact pressure of FrictionlessLaw (≤ 0 compressive) and the tangential traction t on the
 /// slave body (its work along the axes over the current area; the master body takes -t). With
-/// p = max(0, -λ_n), c = c_N and A = A_k, the rows of t are
+/// the augmented pressure p = max(0, -(λ_n + c g)) (= -λ_n once the gap is closed), c = c_N and
+/// A = A_k, the rows of t are
 ///   separated:  (A/c) t = 0
 ///   sticking:   A (v + n (n·t)/c) = 0                 (no slip, t tangential)
 ///   slipping:   (A/c) (t - μ p q/|q|) = 0,  q = P t - c v   (|t| = μ p against the slip)
-/// and the slip indicator of a node in contact is |P t - c v| - μ p: a sticking node whose
+/// and the slip indicator of a node in contact is |P t - c v| - μ p (zero within kSlipBand of
+/// the limit): a sticking node whose
 /// trial traction exceeds the friction limit slips; a slipping node whose slip would reverse
 /// sticks (Alart–Curnier's semismooth form, split by the active set). A component along an
 /// axis in which neither the node nor the master facet can move (SlaveNodeRows::held, e.g. plane
@@ -49,6 +51,10 @@ public:
   void active_rows(const SlaveNodeRows& node, LocalSystem& out) const override;
   void inactive_rows(const SlaveNodeRows& node, LocalSystem& out) const override;
   Real friction_coefficient() const { return mu_; }
+  /// The slip indicator is zero while |q| is within this fraction of μ p of the friction
+  /// limit: a node keeps its state there (a sticking node at the limit, a slipping node at
+  /// rest), so that states converged to a loose tolerance do not flip back and forth.
+  static constexpr Real kSlipBand = 1e-3;
 
 private:
   void sticking_rows(const SlaveNodeRows& node, const Slip& slip, LocalSystem& out) const;

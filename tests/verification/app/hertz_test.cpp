@@ -325,3 +325,168 @@ normal = "z"
   for (std::size_t i = 0; i < platen.size(); ++i)
     EXPECT_NEAR(platen[i], prescribed[i], 1e-8 * scale) << "step " << i + 1;
 }
+
+namespace {
+
+/// Cattaneo–Mindlin in plane strain: a rigid cylinder (R = kR) pressed by kDepth into a
+/// nearly incompressible block (ν = 0.49: the normal and tangential problems barely couple)
+/// through Coulomb friction μ, then moved sideways by `slide` (less than the slip distance).
+/// Of the tangential force Q < μ P, the stick zone |x| < c, c² = a² (1 - Q/(μ P)), carries
+///   q = μ p0 [√(1 - x²/a²) - (c/a) √(1 - x²/c²)],  with  <x²>_q = (a² + c²)/4
+/// for its second moment, against <x²>_p = a²/4 of the pressure: <x²>_q / <x²>_p = 2 - Q/(μ P),
+/// independent of a (2: all stuck, 1: all slipping).
+constexpr Real kFriction = 0.5;
+constexpr Real kNearlyIncompressible = 0.49;
+
+/// The whole block in x (cells graded towards x = 0 and z = 0 on both sides), one cell thick in
+/// y: 2 n x 1 x n cells.
+mesh::Mesh cattaneo_block(int n) {
+  mesh::BoxSpec box;
+  box.name = "block";
+  box.divisions = {2 * n, 1, n};
+  const mesh::Mesh unit = mesh::make_box(box);
+  const std::vector<Real> half = mesh::graded_coordinates(kBlock, n, 28.0);
+  mesh::Mesh block;
+  for (const Vec3& X : unit.nodes()) {
+    const auto i = static_cast<int>(std::lround(X.x() * 2 * n)) - n;
+    const auto k = static_cast<int>(std::lround(X.z() * n));
+    const Real x = i < 0 ? -half[static_cast<std::size_t>(-i)] : half[static_cast<std::size_t>(i)];
+    block.add_node(Vec3(x, X.y() * kWidth, -half[static_cast<std::size_t>(n - k)]));
+  }
+  for (Index c = 0; c < unit.num_cells(); ++c)
+    block.add_cell(unit.cell_type(c), unit.cell_nodes(c));
+  for (const auto& [name, surface] : unit.surfaces())
+    block.add_surface(name, surface);
+  for (const auto& [name, nodes] : unit.node_sets())
+    if (!block.has_node_set(name))
+      block.add_node_set(name, nodes);
+  for (const auto& [name, cells] : unit.cell_blocks())
+    block.add_cell_block(name, cells);
+  return block;
+}
+
+/// The cylinder's cap over [-kCap, kCap] x [0, kWidth] (2 `cells` x 1 x 1), its bottom face
+/// "cap.zmin" on the cylinder, touching the block's top at the origin.
+mesh::Mesh full_cylinder_cap(int cells) {
+  mesh::BoxSpec box;
+  box.name = "cap";
+  box.origin = Vec3(-kCap, 0.0, 0.0);
+  box.size = Vec3(2.0 * kCap, kWidth, 0.5);
+  box.divisions = {2 * cells, 1, 1};
+  mesh::Mesh cap = mesh::make_box(box);
+  mesh::Mesh lifted;
+  for (const Vec3& X : cap.nodes())
+    lifted.add_node(X + Vec3(0.0, 0.0, kR - std::sqrt(kR * kR - X.x() * X.x())));
+  for (Index c = 0; c < cap.num_cells(); ++c)
+    lifted.add_cell(cap.cell_type(c), cap.cell_nodes(c));
+  for (const auto& [name, surface] : cap.surfaces())
+    lifted.add_surface(name, surface);
+  for (const auto& [name, nodes] : cap.node_sets())
+    if (!lifted.has_node_set(name))
+      lifted.add_node_set(name, nodes);
+  for (const auto& [name, cells] : cap.cell_blocks())
+    lifted.add_cell_block(name, cells);
+  return lifted;
+}
+
+io::CaseSpec cattaneo_case(int n, int cap_cells, Real slide) {
+  // (the box stands for the graded block, which replaces it)
+  io::CaseSpec spec =
+      io::parse_case(fmt::format(R"(
+[[mesh.box]]
+name = "block"
+size = [1.0, 1.0, 1.0]
+divisions = [1, 1, 1]
+material = "soft"
+[materials.soft]
+type = "neo-hookean"
+E = {}
+nu = {}
+[curves.press]
+points = [[0.0, 0.0], [1.0, 1.0], [2.0, 1.0]]
+[curves.slide]
+points = [[0.0, 0.0], [1.0, 0.0], [2.0, 1.0]]
+[[boundary.fixed]]
+set = "block.all"
+components = ["y"]
+[[boundary.fixed]]
+set = "block.zmin"
+[[rigid_body]]
+name = "cylinder"
+blocks = ["cap"]
+center = [0.0, 0.0, {}]
+x = {{ displacement = {}, curve = "slide" }}
+y = {{ displacement = 0.0 }}
+z = {{ displacement = {}, curve = "press" }}
+rx = {{ rotation = 0.0 }}
+ry = {{ rotation = 0.0 }}
+rz = {{ rotation = 0.0 }}
+[[contact]]
+master = "cap.zmin"
+slave = "block.zmax"
+integration = "slave-nodes"
+friction = {}
+[time]
+end_time = 2.0
+dt = 0.25
+)",
+                                 kE, kNearlyIncompressible, kR, slide, -kDepth, kFriction),
+                     "cattaneo.toml");
+  spec.boxes.clear();
+  io::InlineMeshSpec block, cap;
+  block.mesh = cattaneo_block(n);
+  block.materials = {{"block", "soft"}};
+  cap.mesh = full_cylinder_cap(cap_cells);
+  spec.meshes.push_back(std::move(block));
+  spec.meshes.push_back(std::move(cap));
+  return spec;
+}
+
+struct CattaneoMeasure {
+  Real normal = 0.0, tangential = 0.0; ///< P, Q of the slave nodes [N]
+  Real p_moment = 0.0, q_moment = 0.0; ///< <x²>_p, <x²>_q about the pressure's centre [mm²]
+  Index slipping = 0, active = 0;
+};
+
+CattaneoMeasure cattaneo_measure(const model::Model& m) {
+  const contact::ContactTerm& contact = *m.contacts.at(0);
+  const auto states = contact.slave_states(m.problem->state());
+  CattaneoMeasure c;
+  Real centre = 0.0;
+  for (const contact::SlaveNodeState& s : states) {
+    const Real fn = -s.multiplier[0] * std::abs(s.area_vector.z());
+    c.normal += fn;
+    centre += fn * s.position.x();
+  }
+  centre /= c.normal;
+  for (const contact::SlaveNodeState& s : states) {
+    const Real fn = -s.multiplier[0] * std::abs(s.area_vector.z());
+    const Real ft = s.multiplier[1] * s.area_vector.norm();
+    const Real d2 = (s.position.x() - centre) * (s.position.x() - centre);
+    c.tangential += ft;
+    c.p_moment += fn * d2;
+    c.q_moment += ft * d2;
+    c.slipping += s.slipping ? 1 : 0;
+    c.active += s.active ? 1 : 0;
+  }
+  c.p_moment /= c.normal;
+  c.q_moment /= c.tangential;
+  return c;
+}
+
+} // namespace
+
+TEST(Hertz, ARigidCylinderPushedSidewaysWithFrictionHasCattaneosStickZone) {
+  const test::CaseRun run = test::run_case_spec(cattaneo_case(24, 40, 0.02));
+  ASSERT_TRUE(run.report.success) << run.report.failure;
+  const CattaneoMeasure c = cattaneo_measure(*run.model);
+  const Real load = std::abs(c.tangential) / (kFriction * c.normal);
+  const Real ratio = c.q_moment / c.p_moment;
+  std::cout << "  Cattaneo: P = " << c.normal << " N, Q = " << c.tangential
+            << " N, Q/(mu P) = " << load << ", <x2>_q/<x2>_p = " << ratio << " (exact "
+            << 2.0 - load << "), a = " << 2.0 * std::sqrt(c.p_moment) << " mm, slipping "
+            << c.slipping << " of " << c.active << " nodes in contact\n";
+  EXPECT_GT(load, 0.2);
+  EXPECT_LT(load, 0.8);
+  EXPECT_LT(std::abs(ratio / (2.0 - load) - 1.0), 0.03);
+}

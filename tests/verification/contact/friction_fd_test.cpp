@@ -148,8 +148,10 @@ TEST(FrictionLaw, SlipRowsHoldTheCoulombLimitAgainstTheSlip) {
   node.multiplier << -p, t.x(), t.y(), t.z();
   const contact::Slip kin = contact::slip_of(node);
   EXPECT_NEAR((kin.v - slip).norm(), 0.0, 1e-15);
-  // at the Coulomb limit against the slip the slip indicator is c |v| > 0 ...
-  EXPECT_NEAR(law.slip_indicator(node), node.scale * slip.norm(), 1e-14);
+  // at the Coulomb limit against the slip the slip indicator is c |v| > 0 (less the band
+  // within which a node keeps its state) ...
+  const Real band = contact::FrictionalLaw::kSlipBand * kMu * p;
+  EXPECT_NEAR(law.slip_indicator(node), node.scale * slip.norm() - band, 1e-14);
   // ... and the slipping rows vanish
   std::vector<Index> dofs{0, 1, 2, 3};
   physics::LocalVector r;
@@ -165,5 +167,9 @@ TEST(FrictionLaw, SlipRowsHoldTheCoulombLimitAgainstTheSlip) {
   // a traction below the limit does not slip: the indicator of a node at rest is |t| - μ p < 0
   node.x_old[0] = point;
   node.multiplier << -p, 0.5 * t.x(), 0.5 * t.y(), 0.5 * t.z();
-  EXPECT_NEAR(law.slip_indicator(node), -0.5 * kMu * p, 1e-14);
+  EXPECT_NEAR(law.slip_indicator(node), -0.5 * kMu * p + band, 1e-14);
+  // and within the band of the limit it is zero: the node keeps its state
+  node.multiplier << -p, (1 - 0.5 * contact::FrictionalLaw::kSlipBand) * t.x(), 0.0,
+      (1 - 0.5 * contact::FrictionalLaw::kSlipBand) * t.z();
+  EXPECT_EQ(law.slip_indicator(node), 0.0);
 }

@@ -533,9 +533,16 @@ TEST_F(ContactCli, FrictionHoldsABlockBelowTheLimitAndDragsItAtTheLimit) {
   const std::vector<double> time = h.column("time [s]");
   const std::vector<double> fx = h.column("contact1.Fx [N]");
   const std::vector<double> fz = h.column("contact1.Fz [N]");
+  const std::vector<double> friction_x = h.column("contact1.friction_Fx [N]");
+  const std::vector<double> friction_z = h.column("contact1.friction_Fz [N]");
+  const std::vector<double> slipping_nodes = h.column("contact1.slipping_nodes");
+  ASSERT_EQ(friction_x.size(), time.size());
   for (std::size_t i = 0; i < time.size(); ++i) {
     EXPECT_NEAR(fx[i], -kPush * std::max(0.0, time[i] - 1.0), 1e-10 * kLoad) << "row " << i;
     EXPECT_NEAR(fz[i], kLoad * std::min(1.0, time[i]), 1e-10 * kLoad) << "row " << i;
+    EXPECT_NEAR(friction_x[i], fx[i], 1e-10 * kLoad) << "row " << i; // the interface is flat
+    EXPECT_NEAR(friction_z[i], 0.0, 1e-10 * kLoad) << "row " << i;
+    EXPECT_EQ(slipping_nodes[i], 0.0) << "row " << i;
   }
   const CsvTable stuck = read_csv(last_surface_file(output()));
   ASSERT_EQ(stuck.rows.size(), 15u);
@@ -570,6 +577,8 @@ TEST_F(ContactCli, FrictionHoldsABlockBelowTheLimitAndDragsItAtTheLimit) {
     EXPECT_LE(iterations[i], 3.0) << "row " << i;
   }
   EXPECT_GE(sliding, 8u);
+  EXPECT_EQ(h.last("contact1.slipping_nodes"), 15.0);
+  EXPECT_NEAR(h.last("contact1.friction_Fx [N]"), -kMu * kLoad, 1e-10 * kLoad);
   const CsvTable slid = read_csv(last_surface_file(output()));
   for (const double s : slid.column("contact_slipping"))
     EXPECT_EQ(s, 1.0);

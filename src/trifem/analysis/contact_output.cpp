@@ -209,6 +209,11 @@ std::vector<std::string> contact_history_columns(const model::Model& model) {
       cols.push_back(fmt::format("contact{}.master_{} [N]", i, c));
     cols.push_back(fmt::format("contact{}.area [mm^2]", i));
     cols.push_back(fmt::format("contact{}.active_nodes", i));
+    if (!model.contacts[i - 1]->frictional())
+      continue;
+    for (const char* c : {"Fx", "Fy", "Fz"})
+      cols.push_back(fmt::format("contact{}.friction_{} [N]", i, c));
+    cols.push_back(fmt::format("contact{}.slipping_nodes", i));
   }
   return cols;
 }
@@ -220,6 +225,14 @@ void append_contact_history(const model::Model& model, std::vector<double>& row)
     row.insert(row.end(), {slave.x(), slave.y(), slave.z(), master.x(), master.y(), master.z()});
     row.push_back(pair->contact_area(x));
     row.push_back(static_cast<double>(pair->active_set().num_active()));
+    if (!pair->frictional())
+      continue;
+    const Vec3 friction = pair->slave_force(x, true);
+    row.insert(row.end(), {friction.x(), friction.y(), friction.z()});
+    Index slipping = 0;
+    for (Index k = 0; k < pair->slave().num_nodes(); ++k)
+      slipping += pair->active_set().slipping(k) ? 1 : 0;
+    row.push_back(static_cast<double>(slipping));
   }
 }
 

@@ -155,8 +155,10 @@ public:
   Index multiplier_dof(Index k, int c) const { return dofs_.dof(lambda_, k, c); }
   /// Total interface force on the slave body in the state x: of the components paired with
   /// the displacement, f = ∫ λ^s n da = Σ_k λ_k a_k (normal) plus ∫ t^s da (friction)
-  /// (both integration options give the same total).
-  Vec3 slave_force(const Vector& x) const;
+  /// (both integration options give the same total); with `friction_only` the friction part.
+  Vec3 slave_force(const Vector& x, bool friction_only = false) const;
+  /// Whether the pair's law has friction tractions (FrictionalLaw).
+  bool frictional() const { return law_->frictional(); }
   /// Total interface force (as slave_force) on the master body in the state x (projections of
   /// the last prepare()): ∫ λ^m n da (BothSurfaces) or -Σ_k λ_k a_k over the slave nodes that
   /// transfer their force (SlaveNodes, = -slave_force). The both-surface scheme does not

@@ -258,7 +258,7 @@ void ContactTerm::slave_point_forces(Index f, const Vector& x, Real dt, LocalSys
   }
 }
 
-Vec3 ContactTerm::slave_force(const Vector& x) const {
+Vec3 ContactTerm::slave_force(const Vector& x, bool friction_only) const {
   Vec3 f = Vec3::Zero();
   for (Index s = 0; s < slave_.num_facets(); ++s) {
     const FacetCoords X = coords(slave_, s, x);
@@ -266,7 +266,7 @@ Vec3 ContactTerm::slave_force(const Vector& x) const {
     for (const auto& qp : X.reference->rule().points) {
       const FacetPoint fp = evaluate_facet(X, qp.xi);
       for (int c = 0; c < lam.cols(); ++c) // = Σ_a λ_a a_a as well (lumped forces: same sum)
-        if (law_->paired_field(c) == u_)
+        if (law_->paired_field(c) == u_ && (!friction_only || law_->work_axis(c) >= 0))
           f += fp.N.dot(lam.col(c)) * work_vector(law_->work_axis(c), 1.0, fp, qp.weight);
     }
   }

@@ -357,3 +357,69 @@ TEST_F(CliDynamic, ADynamicStepThenAQuasiStaticOneEndsAtTheStaticEquilibrium) {
   EXPECT_LT(std::abs(top.back()), 1e-8 * pressed);
   EXPECT_LT(std::abs(h["block.zmin.Rz [N]"].back()), 1e-8 * 0.01); // of the pressing force
 }
+
+namespace {
+
+/// A free block given a starting velocity of (2, 0, -1) mm/s over all its nodes: an analysis of
+/// `analysis` type and its settings.
+std::string flying_block(const std::string& analysis) {
+  return R"(
+[analysis]
+type = ")" +
+         analysis +
+         R"("
+[[mesh.box]]
+name = "block"
+size = [1.0, 1.0, 1.0]
+divisions = [2, 2, 2]
+material = "rubber"
+[materials.rubber]
+type = "neo-hookean"
+E = 0.8
+nu = 0.3
+density = 1.1e-9
+[[initial_velocity]]
+set = "block.all"
+value = [2.0, 0.0, -1.0]
+[time]
+end_time = 1e-3
+)" + (analysis == "dynamic" ? "dt = 1e-4\n" : "[explicit]\npenalty = 4000.0\n") +
+         R"(
+[output]
+interval = 2.5e-4
+[[output.probe]]
+name = "corner"
+point = [1.0, 1.0, 1.0]
+)";
+}
+
+} // namespace
+
+// With no support and no load a block given a uniform velocity translates: u = v t at every
+// output, in implicit and in explicit dynamics.
+TEST_F(CliDynamic, AFreeBlockGivenAnInitialVelocityTranslatesWithIt) {
+  for (const std::string analysis : {"dynamic", "dynamic-explicit"}) {
+    SCOPED_TRACE(analysis);
+    const fs::path out = output() / analysis;
+    const Result r = trifem({"run", write_file(analysis + ".toml", flying_block(analysis)).string(),
+                             "-o", out.string()});
+    ASSERT_EQ(r.exit_code, kSuccess) << r;
+    const History h = read_history(out / "history.csv");
+    const auto& t = h["time [s]"];
+    ASSERT_GE(t.size(), 4u);
+    EXPECT_NEAR(t.back(), 1e-3, 1e-15);
+    for (std::size_t i = 0; i < t.size(); ++i) {
+      EXPECT_NEAR(h["corner.ux [mm]"][i], 2.0 * t[i], 1e-12) << "t = " << t[i];
+      EXPECT_NEAR(h["corner.uy [mm]"][i], 0.0, 1e-12) << "t = " << t[i];
+      EXPECT_NEAR(h["corner.uz [mm]"][i], -1.0 * t[i], 1e-12) << "t = " << t[i];
+    }
+  }
+}
+
+TEST_F(CliDynamic, AnInitialVelocityOfAQuasiStaticAnalysisIsAnInputError) {
+  std::string text = flying_block("quasi-static");
+  text.replace(text.find("[explicit]\npenalty = 4000.0\n"), 27, "dt = 1e-4\n");
+  const Result r = trifem({"check", write_file("static.toml", text).string()});
+  EXPECT_EQ(r.exit_code, kInvalidInput) << r;
+  EXPECT_TRUE(contains(r.err, "initial_velocity[1]: only applies to dynamic analyses")) << r;
+}

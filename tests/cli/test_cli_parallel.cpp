@@ -14,6 +14,7 @@
 #include <fmt/format.h>
 
 #include <cstdlib>
+#include <functional>
 #include <map>
 #include <regex>
 
@@ -36,6 +37,24 @@ protected:
     return run(shell_quoted(kMpiexec.string()) + " --oversubscribe -np " +
                    std::to_string(processes) + " " + shell_quoted(kExe.string()),
                args);
+  }
+
+  /// Runs `file` on one process, then on 2 and 3: each history must be the one-process history
+  /// to `relative` of each unit's scale (iterations aside); `check` looks at each parallel run.
+  void expect_the_one_process_history(const fs::path& file, double relative,
+                                      const std::function<void(const Result&)>& check = {}) const {
+    const Result one = trifem({"run", file.string(), "-o", (output() / "1").string()});
+    ASSERT_EQ(one.exit_code, kSuccess) << one;
+    const History serial = read_history(output() / "1" / "history.csv");
+    for (const int processes : {2, 3}) {
+      SCOPED_TRACE(std::to_string(processes) + " processes");
+      const fs::path out = output() / std::to_string(processes);
+      const Result r = mpirun(processes, {"run", file.string(), "-o", out.string()});
+      ASSERT_EQ(r.exit_code, kSuccess) << r;
+      if (check)
+        check(r);
+      expect_the_same_history(serial, read_history(out / "history.csv"), relative, {"iterations"});
+    }
   }
 
   /// The example `name` as a case file of the working directory (its mesh file, if any, read
@@ -223,23 +242,14 @@ TEST_F(CliParallel, AContactInterfaceSplitBetweenProcessesGivesTheOneProcessAnsw
   const std::string upper = "divisions = [3, 3, 5]";
   ASSERT_NE(text.find(upper), std::string::npos);
   text.replace(text.find(upper), upper.size(), "divisions = [2, 2, 5]");
-  const fs::path file = write_file("halves.toml", text);
-  const Result one = trifem({"run", file.string(), "-o", (output() / "1").string()});
-  ASSERT_EQ(one.exit_code, kSuccess) << one;
-  const History serial = read_history(output() / "1" / "history.csv");
-  for (const int processes : {2, 3}) {
-    SCOPED_TRACE(std::to_string(processes) + " processes");
-    const fs::path out = output() / std::to_string(processes);
-    const Result r = mpirun(processes, {"run", file.string(), "-o", out.string()});
-    ASSERT_EQ(r.exit_code, kSuccess) << r;
+  expect_the_one_process_history(write_file("halves.toml", text), 1e-8, [](const Result& r) {
     // "contact 1: slave nodes on processes [a], master nodes on processes [b]" with a != b
     const std::regex sides(
         R"(contact 1: slave nodes on processes \[(\d)\], master nodes on processes \[(\d)\])");
     std::smatch m;
     ASSERT_TRUE(std::regex_search(r.out, m, sides)) << r;
     EXPECT_NE(m[1].str(), m[2].str()) << "the interface must lie between processes" << r;
-    expect_the_same_history(serial, read_history(out / "history.csv"), 1e-8, {"iterations"});
-  }
+  });
 }
 
 TEST_F(CliParallel, BadInputFailsWithOneErrorLine) {
@@ -639,17 +649,7 @@ TEST_F(CliParallel, AFrictionalBlockDraggedOnSeveralProcessesGivesTheOneProcessH
   const std::string push = "x = { force = 0.03, curve = \"push\" }";
   ASSERT_NE(text.find(push), std::string::npos);
   text.replace(text.find(push), push.size(), "x = { displacement = 0.5, curve = \"push\" }");
-  const fs::path file = write_file("drag.toml", text);
-  const Result one = trifem({"run", file.string(), "-o", (output() / "1").string()});
-  ASSERT_EQ(one.exit_code, kSuccess) << one;
-  const History serial = read_history(output() / "1" / "history.csv");
-  for (const int processes : {2, 3}) {
-    SCOPED_TRACE(std::to_string(processes) + " processes");
-    const fs::path out = output() / std::to_string(processes);
-    const Result r = mpirun(processes, {"run", file.string(), "-o", out.string()});
-    ASSERT_EQ(r.exit_code, kSuccess) << r;
-    expect_the_same_history(serial, read_history(out / "history.csv"), 1e-10, {"iterations"});
-  }
+  expect_the_one_process_history(write_file("drag.toml", text), 1e-10);
 }
 
 } // namespace

@@ -275,6 +275,13 @@ std::uint64_t boundary_conditions_hash(const io::CaseSpec& spec) {
       h.text(f.curve);
     }
   }
+  if (!spec.initial_velocities.empty()) { // (none: the hash is unchanged)
+    h.integer(static_cast<std::int64_t>(spec.initial_velocities.size()));
+    for (const io::InitialVelocitySpec& v : spec.initial_velocities) {
+      h.text(v.set);
+      h.vec3(v.value);
+    }
+  }
   h.integer(static_cast<std::int64_t>(spec.curves.size()));
   for (const auto& [name, curve] : spec.curves) {
     h.text(name);

@@ -278,6 +278,14 @@ void read_initial(Reader& r, pugi::xml_node section) {
     if (std::string_view(ic.name()) != "ic")
       r.doc.fail(ic, fmt::format("<{}> is not supported in <Initial> (expected <ic>)", ic.name()));
     const std::string type = r.doc.attribute(ic, "type");
+    if (type == "velocity") {
+      const pugi::xml_node value = r.doc.child(ic, "value");
+      if (value.attribute("lc") || value.attribute("type"))
+        r.doc.fail(value, "an initial velocity must be a constant vector");
+      r.spec.initial_velocities.push_back({fmt::format("ic '{}'", ic.attribute("name").value()),
+                                           r.node_set(ic), r.doc.vector(value)});
+      continue;
+    }
     EffectiveCondition c{ic, r.node_set(ic), 0, 0.0, ""};
     if (type == "initial concentration") {
       const pugi::xml_node dof = r.doc.child(ic, "dof");
@@ -288,7 +296,7 @@ void read_initial(Reader& r, pugi::xml_node section) {
     } else if (type != "initial fluid pressure") {
       r.doc.fail(ic, "type",
                  fmt::format("initial condition type '{}' is not supported (supported: initial "
-                             "fluid pressure, initial concentration)",
+                             "fluid pressure, initial concentration, velocity)",
                              type));
     }
     const pugi::xml_node value = r.doc.child(ic, "value");

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Case reader: what an implicit dynamic analysis (or step) reads besides a quasi-static one:
-// the [dynamic] table and the mass density of every material.
+// the [dynamic] table, the starting velocities and the mass density of every material.
 #include "trifem/io/toml_table.hpp"
 
 namespace trifem::io::detail {
@@ -29,10 +29,26 @@ void check_rigid_velocities(const Table& root) {
              "dynamic step; set [analysis] type = \"dynamic\" or \"dynamic-explicit\")");
 }
 
+/// [[initial_velocity]] tables (of a dynamic analysis).
+void read_initial_velocities(const Table& root, CaseSpec& spec) {
+  for (const Table& t : root.tables("initial_velocity")) {
+    t.allow({"set", "value"});
+    spec.initial_velocities.push_back(
+        {t.path(), t.name("set"), t.vec3("value", {.unit = "mm/s"}, std::nullopt)});
+  }
+}
+
 } // namespace
 
 void read_dynamic(const Table& root, CaseSpec& spec) {
   const auto t = root.table("dynamic");
+  const bool dynamic = spec.has_dynamic_step() || spec.is_explicit() || spec.has_explicit_step();
+  if (!dynamic)
+    for (const Table& v : root.tables("initial_velocity"))
+      fail(v.where(), v.path(),
+           "only applies to dynamic analyses (the velocity at the start of the first dynamic "
+           "step; set [analysis] type = \"dynamic\" or \"dynamic-explicit\")");
+  read_initial_velocities(root, spec);
   if (!spec.has_dynamic_step()) {
     if (!spec.is_explicit() && !spec.has_explicit_step())
       check_rigid_velocities(root);

@@ -692,7 +692,7 @@ void read_sections(const toml::table& document, CaseSpec& spec) {
   const Table root(document, "", &spec.warnings);
   root.allow({"title", "mesh", "materials", "curves", "boundary", "loads", "contact", "rigid_body",
               "connector", "constraint", "analysis", "electrochemistry", "time", "step", "solver",
-              "explicit", "dynamic", "output"});
+              "explicit", "dynamic", "initial_velocity", "output"});
   spec.title = root.get<std::string>("title").value_or("");
   read_analysis_type(root, spec); // the other sections depend on it
   check_analysis_sections(root, spec);

@@ -333,6 +333,14 @@ struct NodalForceSpec {
   std::string curve;         ///< empty: constant 1
 };
 
+/// [[initial_velocity]]: the velocity of the nodes of a node set when a dynamic analysis (implicit
+/// or explicit) starts [mm/s].
+struct InitialVelocitySpec {
+  std::string key;           ///< "initial_velocity[1]" (for messages)
+  std::string set;           ///< node set
+  Vec3 value = Vec3::Zero(); ///< [mm/s]
+};
+
 /// Initial state of mixture models ([analysis] initial_state).
 enum class InitialStateKind {
   Donnan,            ///< "donnan": Donnan equilibrium with the bath, stress-free solid (IC-1)
@@ -533,6 +541,7 @@ struct CaseSpec {
   std::vector<TractionSpec> tractions;
   std::vector<BodyForceSpec> body_forces;
   std::vector<NodalForceSpec> nodal_forces;
+  std::vector<InitialVelocitySpec> initial_velocities;
   std::vector<BathSpec> baths;
   std::vector<ContactSpec> contacts;
   std::vector<RigidBodySpec> rigid_bodies;

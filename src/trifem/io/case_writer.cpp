@@ -202,6 +202,11 @@ void write_boundary(const CaseSpec& spec, TomlText& t) {
     t.vector("value", f.value);
     t.optional_string("curve", f.curve);
   }
+  for (const InitialVelocitySpec& v : spec.initial_velocities) {
+    t.header("[[initial_velocity]]");
+    t.string("set", v.set);
+    t.vector("value", v.value);
+  }
 }
 
 void write_contacts(const CaseSpec& spec, TomlText& t) {

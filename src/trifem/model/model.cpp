@@ -298,6 +298,38 @@ material::Electrochemistry electrochemistry(const io::ElectrochemistrySpec& e) {
   return c;
 }
 
+/// The [[initial_velocity]] entries added to the starting velocity `v` (every DOF, empty: at
+/// rest). A node carried by a rigid body moves with it: an error naming the entry. Prescribed
+/// components keep their prescribed motion (said once in a warning).
+void add_initial_velocities(const io::CaseSpec& spec, const Model& model, Vector& v) {
+  if (spec.initial_velocities.empty())
+    return;
+  if (v.size() == 0)
+    v = Vector::Zero(model.dofs.num_dofs());
+  Index prescribed = 0;
+  for (const io::InitialVelocitySpec& s : spec.initial_velocities) {
+    const auto& nodes = with_context(
+        s.key + ".set", [&]() -> const std::vector<Index>& { return model.mesh.node_set(s.set); });
+    for (const Index node : nodes)
+      for (int k = 0; k < 3; ++k) {
+        const Index dof = model.dofs.dof(model.fields.u, node, k);
+        TRIFEM_CHECK(!model.dofs.is_dependent(dof) && model.dofs.leader(dof) == dof,
+                     "{}: node {} of the set '{}' is carried by a rigid body, which moves it: "
+                     "give the body its velocity ([[rigid_body]] velocity) instead",
+                     s.key, node, s.set);
+        if (model.dofs.is_constrained(dof)) {
+          prescribed += s.value[k] != 0.0 ? 1 : 0;
+          continue;
+        }
+        v[dof] = s.value[k];
+      }
+  }
+  if (prescribed > 0)
+    log::warn("warning: initial_velocity: {} prescribed displacement component(s) of its nodes "
+              "keep their prescribed motion",
+              prescribed);
+}
+
 } // namespace
 
 mesh::Mesh build_mesh(const io::CaseSpec& spec, std::map<std::string, std::string>& materials) {
@@ -387,8 +419,14 @@ std::unique_ptr<Model> build_model(const io::CaseSpec& spec) {
   model->problem->set_node_positions(model->fields.u, model->mesh.nodes());
   if (spec.has_dynamic_step())
     model->problem->add_inertia(inertia_term(spec, *model));
-  if (spec.has_dynamic_step() || spec.is_explicit() || spec.has_explicit_step())
+  if (spec.has_dynamic_step() || spec.is_explicit() || spec.has_explicit_step()) {
     model->initial_velocity = initial_rigid_velocity(spec, *model);
+    add_initial_velocities(spec, *model, model->initial_velocity);
+  } else if (!spec.initial_velocities.empty()) {
+    log::warn("warning: {}: an initial velocity applies to dynamic analyses only; this "
+              "quasi-static analysis ignores it",
+              spec.initial_velocities.front().key);
+  }
   if (model->mixture) {
     Vector x = model->problem->state();
     const auto kind = spec.analysis.initial_state == io::InitialStateKind::DonnanPrestressed

@@ -125,7 +125,8 @@ struct Model {
   dofs::FieldId constraint_forces;
   std::vector<RigidWall> walls;
   /// The velocity of every DOF (global components) at the start of an analysis that starts
-  /// with a dynamic step: that of the rigid bodies given one (empty: at rest).
+  /// with a dynamic step: that of the rigid bodies given one and of the [[initial_velocity]]
+  /// nodes (empty: at rest).
   Vector initial_velocity;
   std::vector<ModelStep> steps; ///< empty: one step with the case's conditions only
   std::vector<dofs::DirichletCondition> case_conditions; ///< the conditions of every step

@@ -598,3 +598,19 @@ TEST(FebRigid, EulerAnglesInDegreesPrescribeTheRotation) {
 </Rigid>)")),
                   {"/convention: ", "convention 'XYZ' is not supported"});
 }
+
+TEST(FebInitial, AnInitialVelocityOfANodeSetIsTheCasesInitialVelocity) {
+  std::string text = solid_model_text(kMaterial, kHex, kFixed);
+  const std::string end = "</febio_spec>";
+  text.insert(
+      text.find(end),
+      R"(  <Initial><ic name="v0" node_set="bottom" type="velocity"><value>-1,0,2.5</value></ic></Initial>
+)");
+  const io::CaseSpec spec = feb::parse_feb(text, "good.feb");
+  ASSERT_EQ(spec.initial_velocities.size(), 1u);
+  EXPECT_EQ(spec.initial_velocities[0].set, "bottom");
+  EXPECT_EQ(spec.initial_velocities[0].value, Vec3(-1.0, 0.0, 2.5));
+  std::string varying = text;
+  varying.replace(varying.find("<value>"), 7, R"(<value lc="1">)");
+  expect_contains(feb_error(varying), {"an initial velocity must be a constant vector"});
+}

@@ -7,6 +7,7 @@
 // forces: an integral of the pressure, insensitive to where the discrete contact edge falls,
 // and (unlike the approach δ) to the block's finite size.
 #include "case_runner.hpp"
+#include "mapped_mesh.hpp"
 #include "trifem/mesh/box.hpp"
 
 #include <gtest/gtest.h>
@@ -41,22 +42,10 @@ mesh::Mesh rigid_cap(Indenter indenter, int n) {
   box.name = "cap";
   box.size = Vec3(kCap, sphere ? kCap : kWidth, 0.5);
   box.divisions = {n, sphere ? n : 1, 1};
-  const mesh::Mesh flat = mesh::make_box(box);
-  mesh::Mesh cap;
-  for (const Vec3& X : flat.nodes()) {
+  return test::map_nodes(mesh::make_box(box), [&](const Vec3& X) {
     const Real r2 = X.x() * X.x() + (sphere ? X.y() * X.y() : 0.0);
-    cap.add_node(X + Vec3(0.0, 0.0, kR - std::sqrt(kR * kR - r2)));
-  }
-  for (Index c = 0; c < flat.num_cells(); ++c)
-    cap.add_cell(flat.cell_type(c), flat.cell_nodes(c));
-  for (const auto& [name, surface] : flat.surfaces())
-    cap.add_surface(name, surface);
-  for (const auto& [name, nodes] : flat.node_sets())
-    if (!cap.has_node_set(name)) // (a surface's nodes are a node set already)
-      cap.add_node_set(name, nodes);
-  for (const auto& [name, cells] : flat.cell_blocks())
-    cap.add_cell_block(name, cells);
-  return cap;
+    return Vec3(X + Vec3(0.0, 0.0, kR - std::sqrt(kR * kR - r2)));
+  });
 }
 
 /// The bottom face of rigid_cap only, each facet split into two triangles (quads whose last
@@ -344,25 +333,15 @@ mesh::Mesh cattaneo_block(int n) {
   mesh::BoxSpec box;
   box.name = "block";
   box.divisions = {2 * n, 1, n};
-  const mesh::Mesh unit = mesh::make_box(box);
   const std::vector<Real> half = mesh::graded_coordinates(kBlock, n, 28.0);
-  mesh::Mesh block;
-  for (const Vec3& X : unit.nodes()) {
+  const auto at = [&](int i) { // of the graded half, mirrored for i < 0
+    return i < 0 ? -half[static_cast<std::size_t>(-i)] : half[static_cast<std::size_t>(i)];
+  };
+  return test::map_nodes(mesh::make_box(box), [&](const Vec3& X) {
     const auto i = static_cast<int>(std::lround(X.x() * 2 * n)) - n;
     const auto k = static_cast<int>(std::lround(X.z() * n));
-    const Real x = i < 0 ? -half[static_cast<std::size_t>(-i)] : half[static_cast<std::size_t>(i)];
-    block.add_node(Vec3(x, X.y() * kWidth, -half[static_cast<std::size_t>(n - k)]));
-  }
-  for (Index c = 0; c < unit.num_cells(); ++c)
-    block.add_cell(unit.cell_type(c), unit.cell_nodes(c));
-  for (const auto& [name, surface] : unit.surfaces())
-    block.add_surface(name, surface);
-  for (const auto& [name, nodes] : unit.node_sets())
-    if (!block.has_node_set(name))
-      block.add_node_set(name, nodes);
-  for (const auto& [name, cells] : unit.cell_blocks())
-    block.add_cell_block(name, cells);
-  return block;
+    return Vec3(at(i), X.y() * kWidth, -at(n - k));
+  });
 }
 
 /// The cylinder's cap over [-kCap, kCap] x [0, kWidth] (2 `cells` x 1 x 1), its bottom face
@@ -373,20 +352,9 @@ mesh::Mesh full_cylinder_cap(int cells) {
   box.origin = Vec3(-kCap, 0.0, 0.0);
   box.size = Vec3(2.0 * kCap, kWidth, 0.5);
   box.divisions = {2 * cells, 1, 1};
-  mesh::Mesh cap = mesh::make_box(box);
-  mesh::Mesh lifted;
-  for (const Vec3& X : cap.nodes())
-    lifted.add_node(X + Vec3(0.0, 0.0, kR - std::sqrt(kR * kR - X.x() * X.x())));
-  for (Index c = 0; c < cap.num_cells(); ++c)
-    lifted.add_cell(cap.cell_type(c), cap.cell_nodes(c));
-  for (const auto& [name, surface] : cap.surfaces())
-    lifted.add_surface(name, surface);
-  for (const auto& [name, nodes] : cap.node_sets())
-    if (!lifted.has_node_set(name))
-      lifted.add_node_set(name, nodes);
-  for (const auto& [name, cells] : cap.cell_blocks())
-    lifted.add_cell_block(name, cells);
-  return lifted;
+  return test::map_nodes(mesh::make_box(box), [](const Vec3& X) {
+    return Vec3(X + Vec3(0.0, 0.0, kR - std::sqrt(kR * kR - X.x() * X.x())));
+  });
 }
 
 io::CaseSpec cattaneo_case(int n, int cap_cells, Real slide) {

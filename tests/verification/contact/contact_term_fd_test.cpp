@@ -20,12 +20,7 @@ using namespace trifem;
 
 namespace {
 
-struct Layout {
-  const char* name;
-  std::vector<Real> master; ///< x (= z) node coordinates of the master block
-  std::vector<Real> slave;  ///< x (= z) node coordinates of the slave block
-  mesh::CellType master_cells = mesh::CellType::Hex8, slave_cells = mesh::CellType::Hex8;
-};
+using Layout = test::FdLayout;
 
 struct Setup {
   mesh::Mesh mesh;
@@ -122,15 +117,11 @@ void check(const Layout& layout, contact::Integration integration, const char* o
   EXPECT_LE(error, 1e-6) << option << " " << layout.name;
 }
 
-const Layout kInterior{"interior", {-0.25, 0.25, 0.75, 1.25}, {0.0, 0.5, 1.0}};
-const Layout kNearEdges{"near-edges", {-0.25, 0.25, 0.75, 1.25}, {0.0, 0.24, 0.5, 0.77, 1.0}};
+const Layout& kInterior = test::kFdInterior;
+const Layout& kNearEdges = test::kFdNearEdges;
 // The cell families: curved tri6 slave facets on quad8 master facets, tri3 on tri6, quad8 on
 // tri3.
-const Layout kTri6OnQuad8{"tri6/quad8",
-                          {-0.25, 0.25, 0.75, 1.25},
-                          {0.0, 0.5, 1.0},
-                          mesh::CellType::Hex20,
-                          mesh::CellType::Tet10};
+const Layout& kTri6OnQuad8 = test::kFdTri6OnQuad8;
 const Layout kTri3OnTri6{"tri3/tri6",
                          {-0.25, 0.25, 0.75, 1.25},
                          {0.0, 0.5, 1.0},

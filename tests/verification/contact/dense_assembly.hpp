@@ -8,6 +8,26 @@
 
 namespace trifem::test {
 
+/// Two blocks meeting at y = 0 for the finite-difference tests of the contact term: the x (= z)
+/// node coordinates of the master block (below) and of the slave block (above), and their cells.
+struct FdLayout {
+  const char* name;
+  std::vector<Real> master; ///< x (= z) node coordinates of the master block
+  std::vector<Real> slave;  ///< x (= z) node coordinates of the slave block
+  mesh::CellType master_cells = mesh::CellType::Hex8, slave_cells = mesh::CellType::Hex8;
+};
+
+/// Projections near facet centres; near facet edges (|ξ| up to 0.97); curved tri6 slave facets
+/// on quad8 master facets.
+inline const FdLayout kFdInterior{"interior", {-0.25, 0.25, 0.75, 1.25}, {0.0, 0.5, 1.0}};
+inline const FdLayout kFdNearEdges{
+    "near-edges", {-0.25, 0.25, 0.75, 1.25}, {0.0, 0.24, 0.5, 0.77, 1.0}};
+inline const FdLayout kFdTri6OnQuad8{"tri6/quad8",
+                                     {-0.25, 0.25, 0.75, 1.25},
+                                     {0.0, 0.5, 1.0},
+                                     mesh::CellType::Hex20,
+                                     mesh::CellType::Tet10};
+
 /// Residual (and Jacobian) of the whole term over all DOFs at x with step dt from the state
 /// x_old, after prepare(x). Returns whether prepare() changed the stencils.
 inline bool assemble_dense(contact::ContactTerm& term, const Vector& x, const Vector& x_old,

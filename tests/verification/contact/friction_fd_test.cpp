@@ -19,11 +19,7 @@ using namespace trifem;
 
 namespace {
 
-struct FrictionLayout {
-  const char* name;
-  std::vector<Real> master, slave; ///< x (= z) node coordinates of the blocks
-  mesh::CellType master_cells = mesh::CellType::Hex8, slave_cells = mesh::CellType::Hex8;
-};
+using FrictionLayout = test::FdLayout;
 
 struct FrictionSetup {
   mesh::Mesh mesh;
@@ -93,13 +89,9 @@ void check_friction(const FrictionLayout& layout, contact::Integration integrati
   EXPECT_LE(error, 1e-6) << option << " " << layout.name;
 }
 
-const FrictionLayout kFlat{"interior", {-0.25, 0.25, 0.75, 1.25}, {0.0, 0.5, 1.0}};
-const FrictionLayout kEdges{"near-edges", {-0.25, 0.25, 0.75, 1.25}, {0.0, 0.24, 0.5, 0.77, 1.0}};
-const FrictionLayout kQuadratic{"tri6/quad8",
-                                {-0.25, 0.25, 0.75, 1.25},
-                                {0.0, 0.5, 1.0},
-                                mesh::CellType::Hex20,
-                                mesh::CellType::Tet10};
+const FrictionLayout& kFlat = test::kFdInterior;
+const FrictionLayout& kEdges = test::kFdNearEdges;
+const FrictionLayout& kQuadratic = test::kFdTri6OnQuad8;
 
 } // namespace
 

@@ -40,12 +40,13 @@ struct SlaveNodeRows {
   /// Local position of coordinate component 0 of stencil point j (j = 0: the slave node,
   /// 1 + a: master facet node a; -1 when there is no projection), j < nodes.size.
   std::array<Index, kMaxStencilPoints> x_at = no_positions();
-  /// Position of each stencil point at the start of the step (frictional laws; with a
+  /// Position of each stencil point at the start of the step (set for frictional laws, with a
   /// projection only).
   std::array<Vec3, kMaxStencilPoints> x_old{};
   /// Per axis i: the displacement component i is prescribed at the slave node and at every
   /// node of the master facet it projects onto (e.g. plane strain), so no slip along e_i can
-  /// occur and a traction along e_i does no work: frictional laws hold that component at zero.
+  /// occur and a traction along e_i does no work: frictional laws hold that component at zero
+  /// (set for frictional laws only).
   std::array<bool, 3> held{};
 
   static std::array<Index, kMaxStencilPoints> no_positions() {

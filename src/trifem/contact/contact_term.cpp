@@ -369,6 +369,8 @@ void ContactTerm::describe_node(Index k, const physics::EvalState& state,
   node.nodes = stencil_nodes(slave_.nodes()[k], master_, pr->facet);
   node.projection = &*pr;
   node.facet_type = master_.facet_type(pr->facet);
+  if (!law_->frictional())
+    return; // the slip data below is for frictional laws only
   for (int j = 0; j < node.nodes.size; ++j)
     node.x_old[static_cast<std::size_t>(j)] = position(node.nodes[j], state.x_old);
   // held: the slave node is held in i, and the master facet's nodes are held in i or carried by

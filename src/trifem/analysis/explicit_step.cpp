@@ -166,7 +166,8 @@ io::CaseSpec explicit_part(const io::CaseSpec& spec, std::optional<std::size_t> 
   return part;
 }
 
-void check_explicit_outputs(const model::Model& model) {
+void check_explicit_model(const model::Model& model) {
+  ed::ExplicitModel::check_cells(model);
   for (const model::Probe& p : model.probes)
     TRIFEM_CHECK(p.quantity->name == "displacement" || p.quantity->name == "position",
                  "output.probe '{}': dynamic-explicit analyses probe only 'displacement' and "
@@ -179,7 +180,7 @@ ExplicitStep::ExplicitStep(const io::CaseSpec& part, model::Model& model, Real s
     : part_(part), model_(model), start_(start),
       view_(std::make_unique<ed::ExplicitModel>(model, model::rigid_shell_masses(part, model))),
       balance_(*view_) {
-  check_explicit_outputs(model);
+  check_explicit_model(model);
   const Vector& x = model.problem->state();
   ed::InitialState initial{view_->gather(x),
                            velocity.size() > 0 ? view_->gather(velocity) : Vector(),

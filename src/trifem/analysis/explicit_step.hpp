@@ -30,9 +30,10 @@ using RestartWriter = std::function<void(const Resume& resume)>;
 /// (nullopt: the whole case, a dynamic-explicit analysis).
 io::CaseSpec explicit_part(const io::CaseSpec& spec, std::optional<std::size_t> k);
 
-/// InputError if `model` has outputs an explicit step cannot write (probes of quantities other
-/// than displacement and position: its stresses would lack the multiplier's pressure).
-void check_explicit_outputs(const model::Model& model);
+/// InputError if `model` has cells the explicit scheme cannot hold (ExplicitModel::check_cells)
+/// or outputs an explicit step cannot write (probes of quantities other than displacement and
+/// position: its stresses would lack the multiplier's pressure).
+void check_explicit_model(const model::Model& model);
 
 /// One dynamic-explicit step: from the model's current displacement and a given velocity, at
 /// its current time `start`, to part.time.end_time. Results: a history row after every step (with

@@ -71,7 +71,8 @@ std::vector<io::DataArray> point_fields(const model::Model& model, const Vector&
   io::DataArray reaction = array("reaction_forces [N]", 3, model.mesh.num_nodes());
   for (Index a = 0; a < model.mesh.num_nodes(); ++a)
     for (int k = 0; k < 3; ++k)
-      if (const Index d = model.dofs.dof(model.fields.u, a, k); model.dofs.is_constrained(d))
+      if (const Index d = model.dofs.dof(model.fields.u, a, k);
+          model.problem->dof_map().is_constrained(d))
         reaction.values[3 * a + k] = R[d];
   out.push_back(std::move(reaction));
   if (!model.mixture)

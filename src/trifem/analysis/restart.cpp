@@ -5,7 +5,6 @@
 #include "trifem/analysis/restart_fingerprint.hpp"
 #include "trifem/core/error.hpp"
 #include "trifem/io/vtu_writer.hpp"
-#include "trifem/model/steps.hpp"
 
 #include <algorithm>
 #include <climits>
@@ -147,11 +146,10 @@ std::vector<physics::Term*> stateful_terms(const model::Model& model) {
   return out;
 }
 
-void write_step(PayloadWriter& w, const model::Model& model) {
-  w.integer(model.active_step);
-  if (model.active_step < 0)
+void write_step(PayloadWriter& w, const StepState& step) {
+  w.integer(step.active);
+  if (step.active < 0)
     return;
-  const model::ModelStep& step = model.steps[model.active_step];
   w.integer(static_cast<std::int64_t>(step.offsets.size()));
   for (const auto& o : step.offsets)
     w.numbers(o.data(), o.size());
@@ -326,13 +324,13 @@ std::vector<char> held_in_step(const model::Model& model, const model::ModelStep
 
 /// The offsets of the step's conditions: as many as each relative condition has DOFs, none
 /// for the others.
-void read_offsets(PayloadReader& r, model::ModelStep& step, std::size_t k,
+void read_offsets(PayloadReader& r, const model::ModelStep& step, StepState& out, std::size_t k,
                   const std::string& name) {
   const std::int64_t conditions = r.integer("the number of step conditions");
   TRIFEM_CHECK(conditions == static_cast<std::int64_t>(step.conditions.size()),
                "{}: analysis step {} of the restart file has {} conditions, the case's has {} ({})",
                name, k + 1, conditions, step.conditions.size(), kUseTheWritingCase);
-  step.offsets.clear();
+  out.offsets.clear();
   for (std::size_t i = 0; i < step.conditions.size(); ++i) {
     std::vector<double> offsets = r.numbers("the offsets of a step condition");
     const std::size_t expected = step.relative[i] ? step.conditions[i].dofs.size() : 0;
@@ -340,14 +338,14 @@ void read_offsets(PayloadReader& r, model::ModelStep& step, std::size_t k,
                  "{}: invalid restart file: it holds {} offsets for {} (analysis step {}), which "
                  "needs {} ({})",
                  name, offsets.size(), step.keys[i], k + 1, expected, kUseAnotherFile);
-    step.offsets.push_back(std::move(offsets));
+    out.offsets.push_back(std::move(offsets));
   }
 }
 
 /// The reactions released when the step began: DOFs of the model, ascending, free in the step,
 /// finite forces; none unless the step releases gradually.
-void read_released(PayloadReader& r, const model::Model& model, model::ModelStep& step,
-                   std::size_t k, const std::string& name) {
+void read_released(PayloadReader& r, const model::Model& model, const model::ModelStep& step,
+                   StepState& out, std::size_t k, const std::string& name) {
   const std::size_t count =
       r.count("the number of released reactions", sizeof(std::int64_t) + sizeof(double));
   TRIFEM_CHECK(count == 0 || step.release_time > 0.0,
@@ -356,18 +354,18 @@ void read_released(PayloadReader& r, const model::Model& model, model::ModelStep
                name, count, k + 1, step.release_time, kUseAnotherFile);
   const std::vector<char> held = held_in_step(model, step);
   const std::int64_t dofs = model.dofs.num_dofs();
-  step.released.clear();
+  out.released.clear();
   for (std::size_t i = 0; i < count; ++i) {
     const std::int64_t dof = r.integer("a released degree of freedom");
     const double force = r.number("a released reaction");
-    const std::int64_t previous = i == 0 ? -1 : step.released.back().first;
+    const std::int64_t previous = i == 0 ? -1 : out.released.back().first;
     TRIFEM_CHECK(dof > previous && dof < dofs && !held[static_cast<std::size_t>(dof)] &&
                      std::isfinite(force),
                  "{}: invalid restart file: released reaction {} is {} on degree of freedom {}, "
                  "not a finite force on a free degree of freedom of this model's {} in "
                  "ascending order ({})",
                  name, i + 1, force, dof, dofs, kUseAnotherFile);
-    step.released.emplace_back(static_cast<Index>(dof), force);
+    out.released.emplace_back(static_cast<Index>(dof), force);
   }
 }
 
@@ -416,7 +414,7 @@ void read_motion(PayloadReader& r, const io::CaseSpec& spec, const model::Model&
 } // namespace
 
 void write_restart(const std::filesystem::path& file, const io::CaseSpec& spec,
-                   const model::Model& model, const Resume& resume) {
+                   const model::Model& model, const StepState& step, const Resume& resume) {
   PayloadWriter w;
   for (const std::uint64_t part : case_fingerprint(spec, model))
     w.raw(&part, sizeof part);
@@ -425,7 +423,7 @@ void write_restart(const std::filesystem::path& file, const io::CaseSpec& spec,
   w.integer(resume.steps);
   const Vector& x = model.problem->state();
   w.numbers(x.data(), static_cast<std::size_t>(x.size()));
-  write_step(w, model);
+  write_step(w, step);
   const auto terms = stateful_terms(model);
   w.integer(static_cast<std::int64_t>(terms.size()));
   for (const physics::Term* t : terms) {
@@ -441,7 +439,7 @@ void write_restart(const std::filesystem::path& file, const io::CaseSpec& spec,
 }
 
 Resume read_restart(const std::filesystem::path& file, const io::CaseSpec& spec,
-                    model::Model& model) {
+                    model::Model& model, StepState& steps) {
   const std::string name = file.string();
   const std::string bytes = read_file(file, name);
   check_header(bytes, name);
@@ -450,11 +448,12 @@ Resume read_restart(const std::filesystem::path& file, const io::CaseSpec& spec,
   Resume resume = read_resume(r, spec, name);
   const std::vector<double> x = read_state(r, model, name);
   const int k = read_active_step(r, model, resume, spec.time.end_time, name);
-  std::optional<model::ModelStep> step;
+  std::optional<StepState> step;
   if (k >= 0) {
-    step = model.steps[static_cast<std::size_t>(k)];
-    read_offsets(r, *step, static_cast<std::size_t>(k), name);
-    read_released(r, model, *step, static_cast<std::size_t>(k), name);
+    step.emplace();
+    const model::ModelStep& described = model.steps[static_cast<std::size_t>(k)];
+    read_offsets(r, described, *step, static_cast<std::size_t>(k), name);
+    read_released(r, model, described, *step, static_cast<std::size_t>(k), name);
   }
   const std::vector<physics::Term*> terms = stateful_terms(model); // before the step adds any
   const std::vector<std::vector<double>> histories = read_histories(r, terms, name);
@@ -466,7 +465,7 @@ Resume read_restart(const std::filesystem::path& file, const io::CaseSpec& spec,
   model.problem->set_time(resume.time);
   model.problem->set_state(Eigen::Map<const Vector>(x.data(), static_cast<Index>(x.size())));
   if (step)
-    model::activate_step(model, static_cast<std::size_t>(k), &*step);
+    activate_step(model, static_cast<std::size_t>(k), steps, &*step);
   for (std::size_t i = 0; i < terms.size(); ++i) {
     try {
       terms[i]->restore_history(histories[i]);

@@ -17,6 +17,7 @@
 // fingerprint, then every value against the case (docs/cli.md, "Restart files").
 #pragma once
 
+#include "trifem/analysis/step_state.hpp"
 #include "trifem/io/case_spec.hpp"
 #include "trifem/model/model.hpp"
 
@@ -42,20 +43,21 @@ struct Resume {
   std::vector<double> integrator = {};
 };
 
-/// Writes the current (converged) state of `model` (built from `spec`) at `resume.time` to
-/// `file` atomically (a temporary file renamed onto it). OutputError if it cannot be written.
+/// Writes the current (converged) state of `model` (built from `spec`) in its active analysis
+/// `step` at `resume.time` to `file` atomically (a temporary file renamed onto it).
+/// OutputError if it cannot be written.
 void write_restart(const std::filesystem::path& file, const io::CaseSpec& spec,
-                   const model::Model& model, const Resume& resume);
+                   const model::Model& model, const StepState& step, const Resume& resume);
 
-/// Reads `file` into `model` (built from `spec`, not yet run): state, term histories and the
-/// active analysis step with its offsets and released reactions. Every failure is an
-/// InputError whose message starts with the file's path: not a restart file, another format
-/// version, truncated or damaged (checksum), written for another case (the parts of the
+/// Reads `file` into `model` (built from `spec`, not yet run): state and term histories, and
+/// makes the file's analysis step active with its offsets and released reactions (`steps`). Every
+/// failure is an InputError whose message starts with the file's path: not a restart file, another
+/// format version, truncated or damaged (checksum), written for another case (the parts of the
 /// fingerprint that differ are named), values that do not fit the case (time outside the run
 /// or the active step, offsets or histories of other lengths, released DOFs out of range), or
 /// a state at the end of the run (nothing left to run). The model is only changed once the
 /// whole file has been checked.
 Resume read_restart(const std::filesystem::path& file, const io::CaseSpec& spec,
-                    model::Model& model);
+                    model::Model& model, StepState& steps);
 
 } // namespace trifem::analysis

@@ -14,7 +14,6 @@
 #include "trifem/mesh/mesh.hpp"
 #include "trifem/model/conditions.hpp"
 #include "trifem/model/model.hpp"
-#include "trifem/model/steps.hpp"
 #include "trifem/parallel/communicator.hpp"
 
 #include <chrono>
@@ -81,8 +80,9 @@ void log_model(const io::CaseSpec& spec, const model::Model& model) {
   if (!spec.title.empty())
     log::info("  {}", spec.title);
   log::info("  mesh: {} nodes, {}; {} equations, {} prescribed DOFs; {} threads{}",
-            model.mesh.num_nodes(), cell_counts(model.mesh), model.dofs.num_equations(),
-            model.dofs.num_constrained(), omp_get_max_threads(),
+            model.mesh.num_nodes(), cell_counts(model.mesh),
+            model.problem->dof_map().num_equations(), model.problem->dof_map().num_constrained(),
+            omp_get_max_threads(),
             parallel::active() ? fmt::format(" on each of {} processes", parallel::size()) : "");
   log::info("  scales: length {:.4g} mm, modulus {:.4g} MPa", model.length_scale,
             model.modulus_scale);
@@ -109,8 +109,8 @@ nlohmann::json summary(const io::CaseSpec& spec, const model::Model& model,
   j["failed_attempts"] = run.failed_attempts;
   j["roundoff_floor_steps"] = run.roundoff_floor_steps;
   j["mesh"] = {{"nodes", model.mesh.num_nodes()}, {"cells", model.mesh.num_cells()}};
-  j["dofs"] = {{"equations", model.dofs.num_equations()},
-               {"prescribed", model.dofs.num_constrained()}};
+  j["dofs"] = {{"equations", model.problem->dof_map().num_equations()},
+               {"prescribed", model.problem->dof_map().num_constrained()}};
   j["threads"] = omp_get_max_threads();
   j["wall_time_s"] = {{"total", wall_s},
                       {"assembly", phases.assembly},
@@ -285,9 +285,9 @@ std::string write_initial_state(OutputWriter& output, const std::optional<Resume
 
 /// Reads the restart file into the model; InputError (naming the file) if it does not fit the
 /// case or holds the end of the run (read_restart).
-Resume resume_from(const std::filesystem::path& file, const io::CaseSpec& spec,
-                   model::Model& model) {
-  const Resume resume = read_restart(file, spec, model);
+Resume resume_from(const std::filesystem::path& file, const io::CaseSpec& spec, model::Model& model,
+                   StepState& steps) {
+  const Resume resume = read_restart(file, spec, model, steps);
   log::info("continuing from {} at t = {} s (after {} steps)", file.string(), resume.time,
             resume.steps);
   return resume;
@@ -381,7 +381,7 @@ solver::StepSettings step_settings(const io::CaseSpec& spec, std::size_t k) {
   return settings_over(spec, spec.steps.at(k).time, start);
 }
 
-solver::RunReport run_steps(const io::CaseSpec& spec, model::Model& model,
+solver::RunReport run_steps(const io::CaseSpec& spec, model::Model& model, StepState& steps,
                             solver::NewtonSolver& newton, const solver::StepObserver& observer,
                             const std::function<void(const solver::StepController&)>& on_start,
                             const Resume* resume, const ExplicitRunner& run_explicit) {
@@ -424,8 +424,8 @@ solver::RunReport run_steps(const io::CaseSpec& spec, model::Model& model,
   for (std::size_t k = 0; k < spec.steps.size() && run.success; ++k) {
     if (resume && model.steps[k].end_time <= resume->time + tol)
       continue; // done before the restart
-    if (static_cast<int>(k) != model.active_step)
-      model::activate_step(model, k);
+    if (static_cast<int>(k) != steps.active)
+      activate_step(model, k, steps);
     const model::ModelStep& step = model.steps[k];
     const bool is_explicit = spec.steps[k].is_explicit();
     if (!is_explicit && !spec.steps[k].is_dynamic())
@@ -441,7 +441,7 @@ solver::RunReport run_steps(const io::CaseSpec& spec, model::Model& model,
               is_explicit                  ? " (dynamic-explicit)"
               : spec.steps[k].is_dynamic() ? " (dynamic)"
                                            : "",
-              step.start_time, step.end_time, model.dofs.num_constrained());
+              step.start_time, step.end_time, model.problem->dof_map().num_constrained());
     if (is_explicit) {
       explicit_step(k);
       continue;
@@ -491,7 +491,7 @@ public:
   /// case then creates no output.
   ExplicitSteps(const io::CaseSpec& spec, model::Model& model) : spec_(spec), model_(model) {
     if (spec.has_explicit_step())
-      with_case_file(spec, [&] { check_explicit_outputs(model); });
+      with_case_file(spec, [&] { check_explicit_model(model); });
     if (spec.is_explicit()) {
       parts_.push_back(explicit_part(spec, std::nullopt));
       whole_ = explicit_step(spec, parts_.back(), std::nullopt, model, 0.0, model.initial_velocity);
@@ -621,9 +621,12 @@ int run_model(const io::CaseSpec& spec, const std::filesystem::path& output_dir,
   std::unique_ptr<model::Model> model = build_model_for(spec);
   ExplicitSteps explicit_steps(spec, *model);
   std::optional<Resume> resume;
+  StepState steps;
   if (!options.restart_file.empty()) {
-    resume = resume_from(options.restart_file, spec, *model);
+    resume = resume_from(options.restart_file, spec, *model, steps);
     explicit_steps.continue_from(*resume, options.restart_file);
+  } else {
+    steps = start_steps(*model);
   }
   const bool write_restarts = options.write_restart || spec.output.restart;
   std::unique_ptr<linalg::LinearSolver> linear_solver = linear_solver_for(spec);
@@ -661,7 +664,7 @@ int run_model(const io::CaseSpec& spec, const std::filesystem::path& output_dir,
       parallel::agree_on_output([&] {
         if (parallel::is_root())
           write_restart(output_dir / fmt::format("restart_{:04d}.bin", output.last_state_index()),
-                        spec, *model, state);
+                        spec, *model, steps, state);
       });
     };
     if (write_restarts)
@@ -682,8 +685,8 @@ int run_model(const io::CaseSpec& spec, const std::filesystem::path& output_dir,
             {controller->time(), controller->dt(), info.step, model->problem->velocity(), {}});
     };
     run = run_steps(
-        spec, *model, newton, observer, [&](const solver::StepController& c) { controller = &c; },
-        resume ? &*resume : nullptr,
+        spec, *model, steps, newton, observer,
+        [&](const solver::StepController& c) { controller = &c; }, resume ? &*resume : nullptr,
         [&](std::optional<std::size_t> k, int steps_before, Vector& velocity) {
           return explicit_steps.run(k, output, steps_before, velocity);
         });
@@ -729,6 +732,7 @@ int run_case(const io::CaseSpec& spec, const std::filesystem::path& output_dir,
 
 int check_case(const io::CaseSpec& spec) {
   std::unique_ptr<model::Model> model = build_model_for(spec);
+  start_steps(*model); // the equations of the first step
   log_model(spec, *model);
   const ExplicitSteps explicit_steps(spec, *model); // the stable step of an explicit analysis
   explicit_steps.log_settings();

@@ -54,8 +54,9 @@ using ExplicitRunner = std::function<solver::RunReport(std::optional<std::size_t
 /// dynamic step (implicit or explicit) that follows a dynamic one starts with its velocity;
 /// after a quasi-static step, at rest.
 /// Returns the totals of the run; it stops at the first step that fails.
+/// `steps` is the run's active step (none before the first one), which the run advances.
 /// With `resume`, the run continues from a restart state already read into `model`.
-solver::RunReport run_steps(const io::CaseSpec& spec, model::Model& model,
+solver::RunReport run_steps(const io::CaseSpec& spec, model::Model& model, StepState& steps,
                             solver::NewtonSolver& newton, const solver::StepObserver& observer,
                             const std::function<void(const solver::StepController&)>& on_start,
                             const Resume* resume = nullptr,

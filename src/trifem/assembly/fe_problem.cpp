@@ -10,21 +10,21 @@
 
 namespace trifem::assembly {
 
-FeProblem::FeProblem(const dofs::DofMap& map, std::vector<dofs::DirichletCondition> conditions,
+FeProblem::FeProblem(dofs::DofMap map, std::vector<dofs::DirichletCondition> conditions,
                      std::vector<std::unique_ptr<physics::Term>> terms,
                      std::vector<solver::FieldScale> scales, dofs::NodalFrames frames,
                      dofs::RigidMap rigid)
-    : map_(map), conditions_(std::move(conditions)), terms_(std::move(terms)),
+    : map_(std::move(map)), conditions_(std::move(conditions)), terms_(std::move(terms)),
       scales_(std::move(scales)), frames_(std::move(frames)), rigid_(std::move(rigid)) {
-  TRIFEM_VERIFY(static_cast<int>(scales_.size()) == map.num_fields(), "one scale per field");
-  for (Index d = 0; d < map.num_dofs() && !rigid_.empty(); ++d)
-    TRIFEM_VERIFY((rigid_.body_of(d) >= 0) == map.is_dependent(d) &&
+  TRIFEM_VERIFY(static_cast<int>(scales_.size()) == map_.num_fields(), "one scale per field");
+  for (Index d = 0; d < map_.num_dofs() && !rigid_.empty(); ++d)
+    TRIFEM_VERIFY((rigid_.body_of(d) >= 0) == map_.is_dependent(d) &&
                       (rigid_.body_of(d) < 0 || frames_.frame_of(d) < 0),
                   "DOF {}: the followers of rigid bodies must be the dependent DOFs, in no "
                   "rotated frame",
                   d);
   build_assembler();
-  x_ = x_old_ = saved_ = target_ = Vector::Zero(map.num_dofs());
+  x_ = x_old_ = saved_ = target_ = Vector::Zero(map_.num_dofs());
   dofs::prescribed_values(conditions_, time_, x_);
   x_old_ = target_ = x_;
   sync();
@@ -197,8 +197,10 @@ void FeProblem::partition() {
 }
 
 void FeProblem::set_conditions(std::vector<dofs::DirichletCondition> conditions) {
-  TRIFEM_VERIFY(map_.finalized(), "set_conditions: the DOF map is not finalized");
   conditions_ = std::move(conditions);
+  map_.reset_constraints();
+  dofs::constrain_all(conditions_, map_);
+  map_.finalize();
   build_assembler();
   target_ = x_;
   dofs::prescribed_values(conditions_, time_, target_);

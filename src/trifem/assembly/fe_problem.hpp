@@ -85,15 +85,18 @@ private:
 /// A transient/quasi-static problem: R(x, t) = 0 with prescribed DOFs.
 class FeProblem final : public solver::TransientProblem {
 public:
-  /// `map` must be finalized with the constrained DOFs of `conditions`. `scales` gives one
-  /// FieldScale per field of `map`.
+  /// `map` (the problem keeps its own copy: the constraints of its current conditions) must be
+  /// finalized with the constrained DOFs of `conditions`. `scales` gives one FieldScale per
+  /// field of `map`.
   /// `frames`: rotated nodal DOFs (their values and prescribed values are local components).
   /// `rigid`: rigid bodies, whose followers must be the dependent DOFs of `map` (and in no
   /// rotated frame).
-  FeProblem(const dofs::DofMap& map, std::vector<dofs::DirichletCondition> conditions,
+  FeProblem(dofs::DofMap map, std::vector<dofs::DirichletCondition> conditions,
             std::vector<std::unique_ptr<physics::Term>> terms,
             std::vector<solver::FieldScale> scales, dofs::NodalFrames frames = {},
             dofs::RigidMap rigid = {});
+  FeProblem(const FeProblem&) = delete; // its assembler refers to its DOF map
+  FeProblem& operator=(const FeProblem&) = delete;
 
   // NonlinearProblem
   Index num_equations() const override { return map_.num_equations(); }
@@ -138,9 +141,8 @@ public:
   void set_time(Real time) { time_ = time_old_ = time; }
   /// Sets the state (global components; e.g. initial conditions) at the current time.
   void set_state(const Vector& x);
-  /// Replaces the prescribed conditions (between steps). `map` must have been re-finalized with
-  /// their DOFs constrained (DofMap::reset_constraints); the equations and the pattern are
-  /// rebuilt and the state is kept.
+  /// Replaces the prescribed conditions (between steps): the DOF map's constraints become
+  /// theirs, the equations and the pattern are rebuilt and the state is kept.
   void set_conditions(std::vector<dofs::DirichletCondition> conditions);
   /// The displacement field and the reference position of every node, from which
   /// rigid_body_modes() builds the solid's rigid motions.
@@ -165,12 +167,13 @@ public:
   /// Residual at every DOF of the last evaluation: reactions at constrained DOFs. In dynamic
   /// steps, that of the last accepted state, g + M a (the support forces).
   const Vector& full_residual() const { return dynamic_ ? committed_residual_ : system_.residual; }
+  /// The DOFs with the constraints of the current conditions.
   const dofs::DofMap& dof_map() const { return map_; }
   const dofs::RigidMap& rigid_map() const { return rigid_; }
   const std::vector<std::unique_ptr<physics::Term>>& terms() const { return terms_; }
 
 private:
-  physics::EvalState eval_state() const { return {x_global_, x_old_global_, time_, dt_}; }
+  physics::EvalState eval_state() const { return {x_global_, x_old_global_, time_, dt_, &map_}; }
   /// Refreshes the follower DOFs of rigid bodies and the global-component copy of the state
   /// after x_ changed.
   void sync();
@@ -197,7 +200,7 @@ private:
   void start_motion(const Vector& velocity);
   void reset_system();
 
-  const dofs::DofMap& map_;
+  dofs::DofMap map_;
   std::vector<dofs::DirichletCondition> conditions_;
   std::vector<std::unique_ptr<physics::Term>> terms_;
   physics::InertiaTerm* inertia_ = nullptr; ///< among terms_ (nullptr: none)

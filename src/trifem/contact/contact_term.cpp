@@ -375,11 +375,12 @@ void ContactTerm::describe_node(Index k, const physics::EvalState& state,
     node.x_old[static_cast<std::size_t>(j)] = position(node.nodes[j], state.x_old);
   // held: the slave node is held in i, and the master facet's nodes are held in i or carried by
   // a rigid body (held in i in the models this rule is for: plane strain)
+  const dofs::DofMap& current = state.dofs ? *state.dofs : dofs_;
   for (int i = 0; i < 3; ++i) {
-    bool held = dofs_.is_constrained(u_dof(node.nodes[0], i));
+    bool held = current.is_constrained(u_dof(node.nodes[0], i));
     for (int j = 1; j < node.nodes.size && held; ++j) {
       const Index dof = u_dof(node.nodes[j], i);
-      held = dofs_.is_constrained(dof) || dofs_.is_dependent(dof);
+      held = current.is_constrained(dof) || current.is_dependent(dof);
     }
     node.held[static_cast<std::size_t>(i)] = held;
   }

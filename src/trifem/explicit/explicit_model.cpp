@@ -5,6 +5,7 @@
 #include "trifem/fe/quadrature.hpp"
 #include "trifem/linalg/nested_dissection.hpp"
 #include "trifem/mesh/hex_faces.hpp"
+#include "trifem/model/cell_families.hpp"
 #include "trifem/model/model.hpp"
 #include "trifem/parallel/communicator.hpp"
 #include "trifem/tensor/rotation.hpp"
@@ -14,6 +15,19 @@
 #include <algorithm>
 
 namespace trifem::explicit_dynamics {
+
+void ExplicitModel::check_cells(const model::Model& model) {
+  for (Index c = 0; c < model.mesh.num_cells(); ++c) {
+    const mesh::CellType type = model.mesh.cell_type(c);
+    TRIFEM_CHECK(model.materials[static_cast<std::size_t>(c)].rigid() ||
+                     (type != mesh::CellType::Tet4 && type != mesh::CellType::Penta6),
+                 "analysis: a dynamic-explicit analysis holds the volume of every cell with one "
+                 "multiplier, and the mesh has {}: tet4 and penta6 cells lock there (too stiff: "
+                 "one volume per tet, or per triangle of a wedge). Mesh the body with tet10, hex20 "
+                 "or hex8 cells",
+                 model::describe_cell(model.mesh, c));
+  }
+}
 
 ExplicitModel::ExplicitModel(const model::Model& model,
                              const std::vector<physics::MassElement>& shells)
@@ -25,6 +39,7 @@ ExplicitModel::ExplicitModel(const model::Model& model,
   TRIFEM_CHECK(model.connectors == nullptr,
                "dynamic-explicit analyses do not take rigid connectors (joints need the implicit "
                "solver)");
+  check_cells(model);
   for (const dofs::DirichletCondition& c : model.problem->conditions())
     prescribed_motion_ =
         prescribed_motion_ || (!c.dofs.empty() && c.magnitude != 0.0) || static_cast<bool>(c.law) ||
@@ -42,7 +57,7 @@ ExplicitModel::ExplicitModel(const model::Model& model,
       const Index i = 3 * a + k, dof = model.dofs.dof(model.fields.u, a, k);
       dofs_.push_back(dof);
       local_[dof] = i;
-      fixed_[i] = model.dofs.is_constrained(dof) ? 1 : 0;
+      fixed_[i] = model.problem->dof_map().is_constrained(dof) ? 1 : 0;
     }
   build_bodies();
   inverse_mass_.resize(num_dofs());
@@ -311,7 +326,7 @@ int single_free_axis(const std::array<bool, 3>& held) {
 /// true if `rigid` moves under its loads in some component (its motion is not wholly
 /// prescribed in the model's current step).
 bool moves_itself(const model::Model& model, const model::RigidBody& rigid) {
-  const auto constrained = [&](Index dof) { return model.dofs.is_constrained(dof); };
+  const auto constrained = [&](Index dof) { return model.problem->dof_map().is_constrained(dof); };
   if (rigid.rotating < 0) {
     for (int k = 0; k < 3; ++k)
       if (rigid.tied[k] && !constrained(rigid.dofs[k].front()))
@@ -351,8 +366,8 @@ void ExplicitModel::add_rotating_body(const model::RigidBody& rigid) {
       model_.problem->rigid_map().bodies()[static_cast<std::size_t>(rigid.rotating)];
   std::array<bool, 3> driven{}, held{};
   for (int k = 0; k < 3; ++k) {
-    driven[k] = model_.dofs.is_constrained(r.translation[k]);
-    held[k] = model_.dofs.is_constrained(r.rotation[k]);
+    driven[k] = model_.problem->dof_map().is_constrained(r.translation[k]);
+    held[k] = model_.problem->dof_map().is_constrained(r.rotation[k]);
   }
   const std::array<bool, 3> all{true, true, true};
   if (!moves_itself(model_, rigid)) { // its nodes are constrained DOFs (prescribe())
@@ -397,7 +412,7 @@ void ExplicitModel::add_translating_body(const model::RigidBody& rigid) {
   body.name = rigid.name;
   std::array<Index, 3> leaders{-1, -1, -1};
   for (int k = 0; k < 3; ++k) {
-    if (!rigid.tied[k] || model_.dofs.is_constrained(rigid.dofs[k].front()))
+    if (!rigid.tied[k] || model_.problem->dof_map().is_constrained(rigid.dofs[k].front()))
       continue; // a prescribed component: its DOFs are constrained
     body.moves[k] = true;
     leaders[k] = rigid.dofs[k].front();

@@ -580,6 +580,15 @@ struct CaseSpec {
            std::any_of(steps.begin(), steps.end(),
                        [](const StepSpec& s) { return s.is_dynamic(); });
   }
+  /// The analysis or one of its steps is dynamic, implicit or explicit: the bodies start with
+  /// their initial velocities.
+  bool has_motion() const { return has_dynamic_step() || is_explicit() || has_explicit_step(); }
+  /// The dynamics lump the mass: always in dynamic-explicit analyses and steps, in implicit ones
+  /// if [dynamic] mass = "lumped" (body forces are then lumped alike).
+  bool lumps_the_mass() const {
+    return is_explicit() || has_explicit_step() ||
+           (has_dynamic_step() && dynamics.mass == MassMatrixSpec::Lumped);
+  }
 };
 
 } // namespace trifem::io

@@ -7,10 +7,8 @@
 #include <set>
 
 namespace trifem::model {
-namespace {
 
-/// "a tet4 cell (cell 12 of block 'plug')".
-std::string describe(const mesh::Mesh& mesh, Index c) {
+std::string describe_cell(const mesh::Mesh& mesh, Index c) {
   for (const auto& [name, cells] : mesh.cell_blocks())
     if (std::find(cells.begin(), cells.end(), c) != cells.end())
       return fmt::format("a {} cell (cell {} of block '{}')", mesh::name(mesh.cell_type(c)), c,
@@ -18,11 +16,13 @@ std::string describe(const mesh::Mesh& mesh, Index c) {
   return fmt::format("a {} cell (cell {})", mesh::name(mesh.cell_type(c)), c);
 }
 
+namespace {
+
 constexpr const char* kSoFar = "for now only hex8 cells take it";
 
 void check_material(const io::CaseSpec& spec, const Model& model, Index c) {
   const CellMaterial& m = model.materials[static_cast<std::size_t>(c)];
-  const std::string where = describe(model.mesh, c);
+  const std::string where = describe_cell(model.mesh, c);
   const mesh::CellType type = model.mesh.cell_type(c);
   TRIFEM_CHECK(!m.mixture || type != mesh::CellType::Tet4,
                "materials.{}: {} has this mixture material, and tet4 cells cannot carry it: "
@@ -64,31 +64,12 @@ void check_material(const io::CaseSpec& spec, const Model& model, Index c) {
                m.name, kNearlyIncompressible, where);
 }
 
-/// A dynamic-explicit analysis holds the volume of each cell with one multiplier (the P0
-/// pressure of the Appendix A2 scheme): tet10 and hex20 cells take it as hex8 cells do, tet4 and
-/// penta6 cells lock under it as under the mean-dilatation element.
-void check_analysis(const io::CaseSpec& spec, const Model& model) {
-  if (!spec.is_explicit() && !spec.has_explicit_step())
-    return;
-  for (Index c = 0; c < model.mesh.num_cells(); ++c) {
-    const mesh::CellType type = model.mesh.cell_type(c);
-    TRIFEM_CHECK(model.materials[static_cast<std::size_t>(c)].rigid() ||
-                     (type != mesh::CellType::Tet4 && type != mesh::CellType::Penta6),
-                 "analysis: a dynamic-explicit analysis holds the volume of every cell with one "
-                 "multiplier, and the mesh has {}: tet4 and penta6 cells lock there (too stiff: "
-                 "one volume per tet, or per triangle of a wedge). Mesh the body with tet10, hex20 "
-                 "or hex8 cells",
-                 describe(model.mesh, c));
-  }
-}
-
 } // namespace
 
 void check_cell_families(const io::CaseSpec& spec, const Model& model) {
   const Index first = model.mesh.first_non_hex8();
   if (first < 0)
     return;
-  check_analysis(spec, model);
   // one check per material and cell type, at its first cell (the message names it)
   std::set<std::pair<std::string, mesh::CellType>> checked;
   for (Index c = first; c < model.mesh.num_cells(); ++c) {

@@ -13,10 +13,11 @@ namespace trifem::model {
 /// mixture material or a tet10 a triphasic one (singular: docs/theory/elements.md), if a
 /// mixture on such cells meets the drained Schur preconditioner (hex8 only), if a tet4 or a
 /// penta6 has a nearly incompressible law with `element = "auto"` (they lock there with either
-/// element, so the element must be asked for) or a tet4 the mean-dilatation element, or if a
-/// tet4 or a penta6 that is not rigid is in a case with an explicit analysis or step (they lock
-/// under its one volume multiplier per cell).
+/// element, so the element must be asked for) or a tet4 the mean-dilatation element.
 void check_cell_families(const io::CaseSpec& spec, const Model& model);
+
+/// "a tet4 cell (cell 12 of block 'plug')": cell c of `mesh` as error messages name it.
+std::string describe_cell(const mesh::Mesh& mesh, Index c);
 
 /// The element of cell c: that of its material, but the displacement element on a tet4.
 physics::SolidElement cell_element(const Model& model, Index c);

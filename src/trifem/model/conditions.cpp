@@ -167,13 +167,6 @@ surface_load_terms(const io::CaseSpec& spec, const std::vector<io::PressureSpec>
 
 namespace {
 
-/// true if the case's dynamics lump the mass: a dynamic-explicit analysis or step, or a dynamic
-/// one with a lumped mass matrix.
-bool lumps_the_mass(const io::CaseSpec& spec) {
-  return spec.is_explicit() || spec.has_explicit_step() ||
-         (spec.has_dynamic_step() && spec.dynamics.mass == io::MassMatrixSpec::Lumped);
-}
-
 /// The term of [[loads.body_force]] `b`: the cells of its blocks with a mass (without blocks:
 /// of the mesh, and the shells of the rigid bodies). InputError naming its key if a block does
 /// not exist, a cell is a mixture or a solid without a density, or nothing has a mass (rigid
@@ -219,7 +212,7 @@ std::unique_ptr<physics::Term> body_force_term(const io::CaseSpec& spec, const i
                "{}: the body force acts on no mass (its cells are those of rigid bodies without a "
                "density: give `density` in their [[rigid_body]])",
                b.key);
-  if (lumps_the_mass(spec)) // f_a = m_a b with the lumped m_a: a free body falls with b
+  if (spec.lumps_the_mass()) // f_a = m_a b with the lumped m_a: a free body falls with b
     for (physics::MassElement& e : masses)
       if (!(e.mass.rowwise().sum().array() > 0.0).all()) { // (the row sums are: unchanged)
         const Eigen::VectorXd lumped = physics::lumped_mass(e.mass);

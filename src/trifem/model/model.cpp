@@ -419,7 +419,7 @@ std::unique_ptr<Model> build_model(const io::CaseSpec& spec) {
   model->problem->set_node_positions(model->fields.u, model->mesh.nodes());
   if (spec.has_dynamic_step())
     model->problem->add_inertia(inertia_term(spec, *model));
-  if (spec.has_dynamic_step() || spec.is_explicit() || spec.has_explicit_step()) {
+  if (spec.has_motion()) {
     model->initial_velocity = initial_rigid_velocity(spec, *model);
     add_initial_velocities(spec, *model, model->initial_velocity);
   } else if (!spec.initial_velocities.empty()) {
@@ -435,8 +435,6 @@ std::unique_ptr<Model> build_model(const io::CaseSpec& spec) {
     model->mixture->initialize(kind, 0.0, x);
     model->problem->set_state(x);
   }
-  if (!model->steps.empty())
-    activate_step(*model, 0);
   if (spec.has_static_step())
     check_support(spec, *model);
   add_outputs(spec, *model);
@@ -449,7 +447,8 @@ int node_owner(const Model& model, Index node) {
   if (owner.empty())
     return -1;
   for (int c = 0; c < 3; ++c)
-    if (const Index eq = model.dofs.equation(model.dofs.dof(model.fields.u, node, c)); eq >= 0)
+    if (const Index eq = model.problem->dof_map().equation(model.dofs.dof(model.fields.u, node, c));
+        eq >= 0)
       return owner[eq];
   return -1;
 }

@@ -78,24 +78,24 @@ struct RigidWall {
 
 /// The conditions of one [[step]] (acting in addition to the case's own) and how the conditions
 /// it releases are unloaded. Its loads are terms of the problem active during the step only.
+/// What a run changes as a step begins (offsets, released reactions) is the analysis'
+/// (analysis::StepState).
 struct ModelStep {
   std::string name;
   std::string key;                                  ///< "step[i]"
   Real start_time = 0.0;                            ///< end of the previous step [s]
   Real end_time = 0.0;                              ///< [s]
-  std::vector<dofs::DirichletCondition> conditions; ///< offsets set when the step begins
+  std::vector<dofs::DirichletCondition> conditions; ///< without the offsets of relative ones
   std::vector<std::string> keys;                    ///< case key of each condition
   std::vector<bool> relative;                       ///< per condition
   Real release_time = 0.0;                          ///< see io::StepSpec
-  /// Set when the step begins: the offsets of its relative conditions (per condition, per DOF)
-  /// and the released reactions (DOF, force at the step start).
-  std::vector<std::vector<Real>> offsets = {};
-  std::vector<std::pair<Index, Real>> released = {};
 };
 
-/// Everything a run needs. Owns the mesh and DOF map the problem refers to.
+/// Everything a run needs. Owns the mesh and the DOF map the terms refer to.
 struct Model {
   mesh::Mesh mesh;
+  /// The DOFs, constrained by the case's conditions (those of every step); the problem holds
+  /// them with the constraints of the current step (problem->dof_map()).
   dofs::DofMap dofs;
   std::vector<CellMaterial> materials; ///< per cell
   /// The material basis Q = [e1 e2 e3] per cell (the identity for cells of materials without
@@ -130,7 +130,6 @@ struct Model {
   Vector initial_velocity;
   std::vector<ModelStep> steps; ///< empty: one step with the case's conditions only
   std::vector<dofs::DirichletCondition> case_conditions; ///< the conditions of every step
-  int active_step = -1;                                  ///< index into steps (-1: none)
   Real length_scale = 1.0;                               ///< bounding-box diagonal [mm]
   Real modulus_scale = 1.0;                              ///< largest P-wave modulus [MPa]
   Real permeability_scale = 0.0; ///< largest permeability [mm^4/(N s)] (0: no mixture)

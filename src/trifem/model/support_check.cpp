@@ -39,10 +39,22 @@ std::string body_name(const mesh::Mesh& mesh, const std::vector<Index>& componen
   return "of the mesh";
 }
 
+/// Per DOF: held when the analysis starts, by a condition of the case or of its first step.
+std::vector<char> held_at_start(const Model& model) {
+  std::vector<char> held(static_cast<std::size_t>(model.dofs.num_dofs()), 0);
+  for (Index d = 0; d < model.dofs.num_dofs(); ++d)
+    held[static_cast<std::size_t>(d)] = model.dofs.is_constrained(d) ? 1 : 0;
+  if (!model.steps.empty())
+    for (const auto& c : model.steps.front().conditions)
+      for (Index d : c.dofs)
+        held[static_cast<std::size_t>(d)] = 1;
+  return held;
+}
+
 /// Throws if a rotating rigid body has an unknown that nothing holds: no prescribed value, and
 /// no deformable cell, contact surface or connector on the body.
 void check_rigid_bodies(const io::CaseSpec& spec, const Model& model,
-                        const std::vector<char>& in_contact) {
+                        const std::vector<char>& in_contact, const std::vector<char>& held) {
   if (model.rigid_bodies.empty() || !model.problem)
     return;
   const mesh::Mesh& mesh = model.mesh;
@@ -70,7 +82,7 @@ void check_rigid_bodies(const io::CaseSpec& spec, const Model& model,
     for (int k = 0; k < 6; ++k) {
       const Index d = k < 3 ? r.translation[k] : r.rotation[k - 3];
       const std::string key = fmt::format("{}{}", k < 3 ? "" : "r", "xyz"[k % 3]);
-      TRIFEM_CHECK(model.dofs.is_constrained(d),
+      TRIFEM_CHECK(held[static_cast<std::size_t>(d)],
                    "{}: the rigid body '{}' is not supported in {}: no prescribed value, and no "
                    "deformable cell, contact pair or [[connector]] on it, so a quasi-static "
                    "analysis cannot determine its motion (singular stiffness). Prescribe it "
@@ -104,11 +116,12 @@ void check_support(const io::CaseSpec& spec, const Model& model) {
           held[component[n]][k] = held[component[n]][k] || std::abs(c.normal[k]) > 0.0 ||
                                   c.kind != io::ConstraintKind::RigidWall;
   }
-  check_rigid_bodies(spec, model, in_contact);
+  const std::vector<char> held_dofs = held_at_start(model);
+  check_rigid_bodies(spec, model, in_contact, held_dofs);
   for (Index n = 0; n < mesh.num_nodes(); ++n)
     for (int k = 0; k < 3; ++k) {
       const Index d = model.dofs.dof(model.fields.u, n, k);
-      if (model.dofs.is_constrained(d) || model.dofs.leader(d) != d ||
+      if (held_dofs[static_cast<std::size_t>(d)] || model.dofs.leader(d) != d ||
           model.dofs.is_dependent(d)) // fixed, or a rigid body
         held[component[n]][k] = true;
     }

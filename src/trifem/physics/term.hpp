@@ -11,6 +11,10 @@
 #include <string>
 #include <vector>
 
+namespace trifem::dofs {
+class DofMap;
+}
+
 namespace trifem::physics {
 
 /// The state seen by terms during one evaluation. Vectors hold all DOFs.
@@ -19,6 +23,8 @@ struct EvalState {
   const Vector& x_old; ///< converged state at the start of the step
   Real time = 0.0;     ///< end time of the step [s]
   Real dt = 0.0;       ///< step size [s]
+  /// The DOFs with the constraints of the current step (null: those a term was built with).
+  const dofs::DofMap* dofs = nullptr;
 };
 
 using LocalVector = Eigen::VectorXd;

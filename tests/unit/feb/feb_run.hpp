@@ -26,10 +26,11 @@ inline FebRun run_feb_case(io::CaseSpec spec,
   r.model = model::build_model(r.spec);
   solver::NewtonSolver newton(analysis::newton_settings(r.spec.solver),
                               linalg::make_linear_solver(r.spec.solver.linear_solver));
+  analysis::StepState steps = analysis::start_steps(*r.model);
   solver::Linearization initial;
   r.model->problem->linearize(initial, false);
   r.report = analysis::run_steps(
-      r.spec, *r.model, newton,
+      r.spec, *r.model, steps, newton,
       [&](const solver::StepInfo& info) {
         if (observer)
           observer(*r.model, info.time);

@@ -107,25 +107,22 @@ Written run_and_write(const io::CaseSpec& spec, const fs::path& file) {
   const std::unique_ptr<model::Model> model = model::build_model(spec);
   solver::NewtonSolver newton(analysis::newton_settings(spec.solver),
                               linalg::make_linear_solver(spec.solver.linear_solver));
+  analysis::StepState steps = analysis::start_steps(*model);
   solver::Linearization initial;
   model->problem->linearize(initial, false);
   const solver::StepController* controller = nullptr;
   std::optional<Written> written;
   const solver::RunReport report = analysis::run_steps(
-      spec, *model, newton,
+      spec, *model, steps, newton,
       [&](const solver::StepInfo& info) {
         if (written || info.time <= kWrittenAfter)
           return;
         const analysis::Resume resume{info.time, controller->dt(), info.step};
-        analysis::write_restart(file, spec, *model, resume);
+        analysis::write_restart(file, spec, *model, steps, resume);
         const Vector& x = model->problem->state();
-        const model::ModelStep& step = model->steps.at(model->active_step);
-        written = Written{resume,
-                          {x.data(), x.data() + x.size()},
-                          model->active_step,
-                          step.offsets,
-                          step.released,
-                          histories_of(*model)};
+        written = Written{resume,         {x.data(), x.data() + x.size()},
+                          steps.active,   steps.offsets,
+                          steps.released, histories_of(*model)};
       },
       [&](const solver::StepController& c) { controller = &c; });
   if (!report.success || !written)
@@ -165,7 +162,8 @@ protected:
   static std::optional<std::string> rejection_of(const fs::path& file, const io::CaseSpec& spec) {
     const std::unique_ptr<model::Model> model = model::build_model(spec);
     try {
-      analysis::read_restart(file, spec, *model);
+      analysis::StepState steps;
+      analysis::read_restart(file, spec, *model, steps);
       return std::nullopt;
     } catch (const InputError& e) {
       const std::string message = e.what();
@@ -198,15 +196,16 @@ TEST_F(RestartFile, HoldsEverySectionOfAStateInALaterStep) {
 
 TEST_F(RestartFile, AnIntactFileRestoresTheWrittenStateExactly) {
   const std::unique_ptr<model::Model> model = model::build_model(*spec_);
-  const analysis::Resume resume = analysis::read_restart(file(), *spec_, *model);
+  analysis::StepState steps;
+  const analysis::Resume resume = analysis::read_restart(file(), *spec_, *model, steps);
   EXPECT_EQ(resume.time, written_->resume.time);
   EXPECT_EQ(resume.dt, written_->resume.dt);
   EXPECT_EQ(resume.steps, written_->resume.steps);
   const Vector& x = model->problem->state();
   EXPECT_EQ(std::vector<double>(x.data(), x.data() + x.size()), written_->state);
-  ASSERT_EQ(model->active_step, written_->active_step);
-  EXPECT_EQ(model->steps[model->active_step].offsets, written_->offsets);
-  EXPECT_EQ(model->steps[model->active_step].released, written_->released);
+  EXPECT_EQ(steps.active, written_->active_step);
+  EXPECT_EQ(steps.offsets, written_->offsets);
+  EXPECT_EQ(steps.released, written_->released);
   EXPECT_EQ(histories_of(*model), written_->histories);
 }
 
@@ -452,7 +451,8 @@ TEST_F(RestartFile, SettingsThatDoNotChangeTheStateAreNotPartOfTheFingerprint) {
     SCOPED_TRACE(o.what);
     const io::CaseSpec other = spec_of(replaced(case_text(), o.from, o.to));
     const std::unique_ptr<model::Model> model = model::build_model(other);
-    EXPECT_NO_THROW(analysis::read_restart(file(), other, *model));
+    analysis::StepState steps;
+    EXPECT_NO_THROW(analysis::read_restart(file(), other, *model, steps));
     const Vector& x = model->problem->state();
     EXPECT_EQ(std::vector<double>(x.data(), x.data() + x.size()), written_->state);
   }

@@ -53,10 +53,11 @@ inline CaseRun run_case_steps(io::CaseSpec spec,
   run.model = model::build_model(run.spec);
   solver::NewtonSolver newton(analysis::newton_settings(run.spec.solver),
                               linalg::make_linear_solver(run.spec.solver.linear_solver));
+  analysis::StepState steps = analysis::start_steps(*run.model);
   solver::Linearization initial; // the state at t = 0 (reactions of the initial state)
   run.model->problem->linearize(initial, false);
   run.report = analysis::run_steps(
-      run.spec, *run.model, newton,
+      run.spec, *run.model, steps, newton,
       [&](const solver::StepInfo& info) {
         if (observer)
           observer(*run.model, info.time);

@@ -66,8 +66,9 @@ TEST(ImplicitSphere, StepPressureOscillationMatchesTheRadialOdeAndTheExplicitAns
   solver::NewtonSolver newton(analysis::newton_settings(spec.solver),
                               linalg::make_linear_solver({LinearSolverKind::umfpack}));
   std::vector<Real> times = {0.0}, radii = {mean_radius(*model, "shell.inner")};
+  analysis::StepState steps;
   const solver::RunReport run = analysis::run_steps(
-      spec, *model, newton,
+      spec, *model, steps, newton,
       [&](const solver::StepInfo& info) {
         times.push_back(info.time);
         radii.push_back(mean_radius(*model, "shell.inner"));

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
+#include <numbers>
 #include <optional>
 
 namespace trifem::feb::detail {
@@ -96,8 +97,10 @@ std::string known_types() {
   std::string s;
   for (const auto& m : law_mappings())
     s += fmt::format("{}{}", s.empty() ? "" : ", ", m.febio);
-  return s + ", trans iso Mooney-Rivlin, trans iso Veronda-Westmann, biphasic, triphasic, "
-             "multiphasic (Na and Cl)";
+  return s + ", trans iso Mooney-Rivlin, trans iso Veronda-Westmann, EFD neo-Hookean, solid "
+             "mixture and uncoupled solid mixture (of these and the fibres fiber-exp-pow, "
+             "fiber-exp-linear, uncoupled fiber-exp-linear, ellipsoidal fiber distribution), "
+             "biphasic, triphasic, multiphasic (Na and Cl)";
 }
 
 /// The value of a material parameter element (a plain number: no load curve, no map).
@@ -137,14 +140,21 @@ void check_pressure_model(const Reader& r, pugi::xml_node p) {
                               model));
 }
 
-/// <fiber type="vector"><vector>x,y,z</vector></fiber> (or the vector as the element's text):
-/// a constant fibre direction.
+/// <fiber type="vector"><vector>x,y,z</vector></fiber> (or the vector as the element's text),
+/// or <fiber type="angles"><theta>..</theta><phi>..</phi></fiber> (degrees; FEBio's
+/// (cos θ sin φ, sin θ sin φ, cos φ)): a constant fibre direction.
 Vec3 fibre_vector(const Reader& r, pugi::xml_node fiber) {
   const std::string type = fiber.attribute("type").as_string("vector");
+  if (type == "angles") {
+    const Real degree = std::numbers::pi / 180.0;
+    const Real theta = r.doc.number(r.doc.child(fiber, "theta")) * degree;
+    const Real phi = r.doc.number(r.doc.child(fiber, "phi")) * degree;
+    return {std::cos(theta) * std::sin(phi), std::sin(theta) * std::sin(phi), std::cos(phi)};
+  }
   if (type != "vector")
     r.doc.fail(fiber, "type",
-               fmt::format("fiber of type '{}' is not supported (supported: vector, a constant "
-                           "direction)",
+               fmt::format("fiber of type '{}' is not supported (supported: vector and angles, "
+                           "a constant direction)",
                            type));
   const pugi::xml_node vector = fiber.child("vector");
   return r.doc.vector(vector ? vector : fiber);
@@ -186,6 +196,152 @@ material::LawSpec trans_iso_law(const Reader& r, pugi::xml_node node, const char
   return mixture;
 }
 
+/// A fibre constituent of a FEBio solid mixture: fiber-exp-pow (its toe stretch lam0 = 1 and
+/// fibre modulus mu = 0 only), fiber-exp-linear (coupled) or uncoupled fiber-exp-linear, with a
+/// constant <fiber>; nullopt for other types.
+std::optional<material::LawSpec> fibre_constituent(const Reader& r, pugi::xml_node node) {
+  const std::string type = r.doc.attribute(node, "type");
+  std::vector<std::pair<const char*, const char*>> names;
+  std::vector<std::pair<const char*, Real>> fixed; // FEBio parameters trifem has at one value
+  material::LawSpec law;
+  if (type == "fiber-exp-pow") {
+    law.type = "fibre-exp-pow";
+    names = {{"ksi", "ksi"}, {"alpha", "alpha"}, {"beta", "beta"}};
+    fixed = {{"lam0", 1.0}, {"mu", 0.0}};
+  } else if (type == "fiber-exp-linear" || type == "uncoupled fiber-exp-linear") {
+    law.type = type == "fiber-exp-linear" ? "fibre-exp-linear-coupled" : "fibre-exp-linear";
+    names = {
+        {"c3", "c3"}, {"c4", "c4"}, {"c5", "c5"}, {"lambda", "lam_max"}, {"lam_max", "lam_max"}};
+  } else {
+    return std::nullopt;
+  }
+  bool has_fibre = false;
+  for (pugi::xml_node p : elements(node)) {
+    const std::string name = p.name();
+    if (name == "fiber") {
+      material::set_vector(law.parameters, "fibre", fibre_vector(r, p));
+      has_fibre = true;
+      continue;
+    }
+    if (name == "k") { // an uncoupled fibre's: its mixture sums it with the others'
+      law.parameters["k"] = parameter_value(r, p);
+      continue;
+    }
+    if (ignored_parameter(name) || name == "pressure_model")
+      continue;
+    if (const auto it = std::find_if(fixed.begin(), fixed.end(),
+                                     [&](const auto& q) { return name == q.first; });
+        it != fixed.end()) {
+      if (parameter_value(r, p) != it->second)
+        r.doc.fail(p, fmt::format("{} = {} only (trifem's {} has no such term)", name, it->second,
+                                  law.type));
+      continue;
+    }
+    const auto it =
+        std::find_if(names.begin(), names.end(), [&](const auto& q) { return name == q.first; });
+    if (it == names.end())
+      r.doc.fail(p, fmt::format("unknown parameter '{}' of material type '{}'", name, type));
+    law.parameters[it->second] = parameter_value(r, p);
+  }
+  if (!has_fibre)
+    r.doc.fail(node, "the fibre direction <fiber> is required");
+  return law;
+}
+
+/// FEBio's "ellipsoidal fiber distribution" (beta and ksi, three values each) as trifem's
+/// ellipsoidal-fibre-distribution; other elements of `node` but those in `also` are errors.
+material::LawSpec efd_law(const Reader& r, pugi::xml_node node,
+                          const std::vector<std::string>& also = {}) {
+  material::LawSpec law{"ellipsoidal-fibre-distribution", {}, {}};
+  for (const char* name : {"beta", "ksi"})
+    material::set_vector(law.parameters, name, r.doc.vector(r.doc.child(node, name)));
+  for (pugi::xml_node p : elements(node)) {
+    const std::string name = p.name();
+    if (name != "beta" && name != "ksi" && !ignored_parameter(name) &&
+        std::find(also.begin(), also.end(), name) == also.end())
+      r.doc.fail(p, fmt::format("unknown parameter '{}' of material type '{}' (expected: beta, "
+                                "ksi{}, density)",
+                                name, r.doc.attribute(node, "type"), also.empty() ? "" : ", E, v"));
+  }
+  return law;
+}
+
+material::LawSpec solid_law(const Reader& r, pugi::xml_node node,
+                            std::optional<material::AxesSpec>* axes, bool validate = true);
+
+/// Whether the trifem law `type` has a bulk modulus k (an uncoupled law).
+bool has_bulk_modulus(const std::string& type) {
+  const auto& schema = *material::find_law(type, type).parameters;
+  return std::any_of(schema.begin(), schema.end(), [](const auto& p) { return p.key == "k"; });
+}
+
+/// FEBio's "solid mixture" and "uncoupled solid mixture": the sum of its <solid> constituents
+/// (laws or fibres), as a trifem solid mixture. The bulk modulus of an uncoupled mixture is its
+/// own k plus its constituents' (FEBio sums them), carried by the first constituent with a k.
+material::LawSpec solid_mixture_law(const Reader& r, pugi::xml_node node, bool uncoupled) {
+  material::LawSpec mixture{std::string(material::kSolidMixtureType), {}, {}};
+  Real k = 0.0;
+  for (pugi::xml_node p : elements(node)) {
+    const std::string name = p.name();
+    if (name == "solid") {
+      const std::string type = r.doc.attribute(p, "type");
+      if (type == "solid mixture" || type == "uncoupled solid mixture")
+        r.doc.fail(p, "a solid mixture inside a solid mixture is not supported (list its "
+                      "constituents in the outer one)");
+      std::optional<material::LawSpec> fibre = fibre_constituent(r, p);
+      if (type == "ellipsoidal fiber distribution")
+        fibre = efd_law(r, p);
+      mixture.constituents.push_back(fibre ? *fibre : solid_law(r, p, nullptr, false));
+    } else if (uncoupled && name == "k") {
+      k = parameter_value(r, p);
+    } else if (uncoupled && name == "pressure_model") {
+      check_pressure_model(r, p);
+    } else if (!ignored_parameter(name)) {
+      r.doc.fail(p, fmt::format("unknown parameter '{}' of material type '{}' (expected: solid, "
+                                "density{})",
+                                name, r.doc.attribute(node, "type"), uncoupled ? ", k" : ""));
+    }
+  }
+  if (mixture.constituents.empty())
+    r.doc.fail(node, "a solid mixture needs at least one <solid>");
+  if (uncoupled) { // FEBio: k of the mixture plus those of its constituents, on the first
+    const auto carrier = std::find_if(mixture.constituents.begin(), mixture.constituents.end(),
+                                      [](const auto& c) { return has_bulk_modulus(c.type); });
+    if (carrier == mixture.constituents.end())
+      r.doc.fail(node, "no constituent of the uncoupled mixture has a bulk modulus k to carry "
+                       "the volume (an uncoupled law such as Mooney-Rivlin)");
+    for (auto& c : mixture.constituents)
+      if (&c != &*carrier && c.parameters.contains("k")) {
+        k += c.parameters.at("k");
+        c.parameters.erase("k");
+      }
+    carrier->parameters["k"] += k; // (absent: 0)
+  }
+  try {
+    material::create_law(mixture, fmt::format("trifem {}", mixture.type));
+  } catch (const InputError& e) {
+    r.doc.fail(node, e.what());
+  }
+  return mixture;
+}
+
+/// FEBio's "EFD neo-Hookean": neo-Hookean (E, v) plus an ellipsoidal fibre distribution (beta,
+/// ksi), as a trifem solid mixture of the two.
+material::LawSpec efd_neo_hookean_law(const Reader& r, pugi::xml_node node) {
+  material::LawSpec matrix{"neo-hookean",
+                           {{"E", parameter_value(r, r.doc.child(node, "E"))},
+                            {"nu", parameter_value(r, r.doc.child(node, "v"))}},
+                           {}};
+  material::LawSpec mixture{
+      std::string(material::kSolidMixtureType), {}, {matrix, efd_law(r, node, {"E", "v"})}};
+  try {
+    material::create_law(mixture, fmt::format("trifem {}", mixture.type));
+  } catch (const InputError& e) {
+    r.doc.fail(node, e.what());
+  }
+  return mixture;
+}
+
 /// <mat_axis type="vector"><a>..</a><d>..</d></mat_axis>: FEBio's constant material axes,
 /// e1 along a, e2 in the plane of a and d (trifem's axes of type vector).
 material::AxesSpec material_axes(const Reader& r, pugi::xml_node node) {
@@ -212,8 +368,12 @@ material::AxesSpec material_axes(const Reader& r, pugi::xml_node node) {
 /// The solid law of a FEBio solid material element (type attribute), validated; `axes`
 /// receives the <mat_axis> of an anisotropic law (that of an isotropic one has no effect).
 material::LawSpec solid_law(const Reader& r, pugi::xml_node node,
-                            std::optional<material::AxesSpec>* axes = nullptr) {
+                            std::optional<material::AxesSpec>* axes, bool validate) {
   const std::string type = r.doc.attribute(node, "type");
+  if (type == "solid mixture" || type == "uncoupled solid mixture")
+    return solid_mixture_law(r, node, type == "uncoupled solid mixture");
+  if (type == "EFD neo-Hookean")
+    return efd_neo_hookean_law(r, node);
   if (type == "trans iso Mooney-Rivlin")
     return trans_iso_law(r, node, "mooney-rivlin");
   if (type == "trans iso Veronda-Westmann")
@@ -261,6 +421,8 @@ material::LawSpec solid_law(const Reader& r, pugi::xml_node node,
     }
     spec.parameters[it->second] = parameter_value(r, p);
   }
+  if (!validate) // a constituent: validated with its mixture (after its k is set)
+    return spec;
   try {
     material::create_law(spec, fmt::format("trifem {}", spec.type));
   } catch (const InputError& e) {

@@ -4,6 +4,7 @@
 #include "trifem/core/error.hpp"
 #include "trifem/feb/reader.hpp"
 #include "trifem/mesh/cell_checks.hpp"
+#include "trifem/mesh/conformity.hpp"
 
 #include <algorithm>
 #include <fmt/format.h>
@@ -335,6 +336,27 @@ void read_domains(Reader& r, pugi::xml_node domains) {
   }
 }
 
+/// Fails at the first of two elements that meet with hanging nodes, naming both by their ids.
+void check_conforming(const Reader& r, pugi::xml_node mesh) {
+  const std::optional<mesh::HangingNodes> hanging = mesh::find_hanging_nodes(r.mesh.mesh);
+  if (!hanging)
+    return;
+  std::map<Index, long> id_of;
+  for (const auto& [id, c] : r.cell_index)
+    id_of[c] = id;
+  const long id = id_of[hanging->cell];
+  pugi::xml_node at = mesh;
+  for (const auto& [name, part] : r.parts)
+    for (pugi::xml_node e : elements(part))
+      if (e.attribute("id").as_llong(-1) == id)
+        at = e;
+  r.doc.fail(at, fmt::format("elements {} ({}) and {} ({}) {}; trifem needs a conforming mesh, "
+                             "in which elements that touch share whole faces with the same nodes",
+                             id, mesh::name(r.mesh.mesh.cell_type(hanging->cell)),
+                             id_of[hanging->other],
+                             mesh::name(r.mesh.mesh.cell_type(hanging->other)), hanging->how));
+}
+
 } // namespace
 
 void read_mesh(Reader& r, pugi::xml_node mesh, pugi::xml_node domains) {
@@ -346,6 +368,7 @@ void read_mesh(Reader& r, pugi::xml_node mesh, pugi::xml_node domains) {
     read_elements(r, n);
   if (r.parts.empty() && r.shell_parts.empty())
     r.doc.fail(mesh, "the mesh has no <Elements>");
+  check_conforming(r, mesh);
   for (pugi::xml_node n : elements(mesh)) {
     const std::string_view kind = n.name();
     if (kind == "NodeSet")

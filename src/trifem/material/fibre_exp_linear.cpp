@@ -30,9 +30,9 @@ void FibreExpLinear::check(const ParameterValues& p, const std::string& context)
                context, context);
 }
 
-FibreExpLinear::FibreExpLinear(const ParameterValues& p)
+FibreExpLinear::FibreExpLinear(const ParameterValues& p, bool coupled)
     : c3_(p.at("c3")), c4_(p.at("c4")), c5_(p.at("c5")), lam_max_(p.at("lam_max")),
-      a0_(vector_value(p, "fibre")) {
+      a0_(vector_value(p, "fibre")), coupled_(coupled) {
   check(p, "fibre-exp-linear");
   a0_.normalize();
   if (c3_ == 0.0 && c5_ > 0.0)
@@ -63,8 +63,9 @@ void FibreExpLinear::evaluate(const Mat3& C, Real& W, Mat3& dW, Mat6* d2W) const
   dW.setZero();
   if (d2W)
     d2W->setZero();
-  const uncoupled::ScalarFunction I4 = uncoupled::isochoric(
-      {a0_.dot(C * a0_), a0_ * a0_.transpose(), Mat6::Zero()}, -1.0 / 3.0, C, d2W != nullptr);
+  const uncoupled::ScalarFunction whole = {a0_.dot(C * a0_), a0_ * a0_.transpose(), Mat6::Zero()};
+  const uncoupled::ScalarFunction I4 =
+      coupled_ ? whole : uncoupled::isochoric(whole, -1.0 / 3.0, C, d2W != nullptr);
   if (I4.value <= 1.0) // tension only
     return;
   const Real l = std::sqrt(I4.value);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
-// Uncoupled tension-only fibre family, exponential then linear in its stretch (the fibre of
-// FEBio's "trans iso Mooney-Rivlin" and "trans iso Veronda-Westmann").
+// Tension-only fibre family, exponential then linear in its stretch: uncoupled (the fibre of
+// FEBio's "trans iso Mooney-Rivlin" and "trans iso Veronda-Westmann", "uncoupled
+// fiber-exp-linear") or coupled (FEBio's "fiber-exp-linear").
 #pragma once
 
 #include "trifem/material/elastic_law.hpp"
@@ -23,12 +24,14 @@ namespace trifem::material {
 /// (Ei the exponential integral), with dW/dI4~ = F/(2 I4~), d2W/dI4~2 = (l F'(l) - 2 F)/(4 I4~^2)
 /// and I4~ the isochoric scaling of a0 . C a0 (uncoupled::isochoric): a purely deviatoric law,
 /// inert at C = I (S = 0, D = 0), valid only as a constituent of a SolidMixture with a ground
-/// matrix that carries the volume (registry: constituent_laws()).
+/// matrix that carries the volume (registry: constituent_laws()). The coupled variant
+/// ("fibre-exp-linear-coupled", FEBio's FEFiberExpLinear) takes the same F and W of the whole
+/// fibre stretch l = sqrt(a0 . C a0) instead: its stress is not deviatoric.
 class FibreExpLinear final : public ElasticLaw {
 public:
   /// Parameters: c3, c4, c5 (MPa, MPa^0, MPa; >= 0; c4 > 0 if c3 = 0 and c5 > 0), lam_max (>= 1),
-  /// fibre (Vector, nonzero; normalised here).
-  explicit FibreExpLinear(const ParameterValues& params);
+  /// fibre (Vector, nonzero; normalised here). `coupled`: the stretch of the whole deformation.
+  explicit FibreExpLinear(const ParameterValues& params, bool coupled = false);
   static const std::vector<ParameterSchema>& schema();
   /// The checks the schema's ranges cannot express, fibre != 0 and c4 > 0 where c3 is derived
   /// from c5: InputError naming `context.key` otherwise.
@@ -41,7 +44,9 @@ public:
   Real p_wave_modulus() const override { return 0.0; }
   /// 0, as p_wave_modulus().
   Real shear_modulus() const override { return 0.0; }
-  std::string type() const override { return "fibre-exp-linear"; }
+  std::string type() const override {
+    return coupled_ ? "fibre-exp-linear-coupled" : "fibre-exp-linear";
+  }
 
   const Vec3& direction() const { return a0_; }
 
@@ -55,6 +60,7 @@ private:
 
   Real c3_, c4_, c5_, c6_, lam_max_;
   Vec3 a0_;
+  bool coupled_;
 };
 
 } // namespace trifem::material

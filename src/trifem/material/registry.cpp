@@ -2,6 +2,7 @@
 #include "trifem/material/registry.hpp"
 
 #include "trifem/core/error.hpp"
+#include "trifem/material/ellipsoidal_fibre_distribution.hpp"
 #include "trifem/material/fibre_distribution.hpp"
 #include "trifem/material/fibre_exp_linear.hpp"
 #include "trifem/material/fibre_exp_pow.hpp"
@@ -76,12 +77,29 @@ const std::vector<LawEntry>& registered_laws() {
   return laws;
 }
 
+namespace {
+
+/// fibre-exp-linear of the whole fibre stretch (FEBio's coupled fiber-exp-linear).
+LawEntry coupled_exp_linear(const ParameterValues& example) {
+  LawEntry e = entry<FibreExpLinear>("fibre-exp-linear-coupled",
+                                     "tension-only fibre of the whole stretch l = |F a0|, "
+                                     "l dW/dl = c3 (exp(c4 (l-1)) - 1), then linear above lam_max",
+                                     example);
+  e.make = [](const ParameterValues& p) { return std::make_unique<FibreExpLinear>(p, true); };
+  return e;
+}
+
+} // namespace
+
 const std::vector<LawEntry>& constituent_laws() {
   static const std::vector<LawEntry> laws = [] {
     ParameterValues fibre = {{"ksi", 5.0}, {"alpha", 1.0}, {"beta", 2.5}};
     set_vector(fibre, "fibre", Vec3(1.0, 0.0, 0.0));
     ParameterValues distribution = {{"ksi", 5.0}, {"alpha", 1.0}, {"beta", 2.5}};
     set_vector(distribution, "semi_axes", Vec3(1.0, 1.0, 1.0));
+    ParameterValues efd = {};
+    set_vector(efd, "ksi", Vec3(4.0, 2.0, 2.0));
+    set_vector(efd, "beta", Vec3(2.5, 3.0, 3.0));
     ParameterValues exp_linear = {{"c3", 0.5}, {"c4", 20.0}, {"c5", 100.0}, {"lam_max", 1.05}};
     set_vector(exp_linear, "fibre", Vec3(1.0, 0.0, 0.0));
     return std::vector<LawEntry>{
@@ -96,6 +114,12 @@ const std::vector<LawEntry>& constituent_laws() {
                               "uncoupled tension-only fibre, l dW/dl = c3 (exp(c4 (l-1)) - 1), "
                               "then linear above lam_max",
                               exp_linear),
+        coupled_exp_linear(exp_linear),
+        entry<EllipsoidalFibreDistribution>(
+            "ellipsoidal-fibre-distribution",
+            "power-law fibres in all directions, W = int_S2 ksi(n) (I_n-1)^beta(n) dS, ksi and "
+            "beta ellipsoidal",
+            efd),
     };
   }();
   return laws;

@@ -4,6 +4,7 @@
 
 #include "trifem/core/error.hpp"
 #include "trifem/mesh/cell_checks.hpp"
+#include "trifem/mesh/conformity.hpp"
 #include "trifem/mesh/gmsh_element_types.hpp"
 #include "trifem/mesh/gmsh_line_reader.hpp"
 
@@ -742,6 +743,23 @@ void add_cell_data(const LineReader& in, GmshData& d) {
   }
 }
 
+/// InputError naming two elements by their tags if cells meet with hanging nodes.
+void check_conforming(const LineReader& in, const GmshData& d) {
+  const std::optional<HangingNodes> hanging = find_hanging_nodes(d.mesh);
+  if (!hanging)
+    return;
+  std::unordered_map<Index, Tag> tag_of;
+  for (const auto& [tag, c] : d.element_cells)
+    if (c >= 0)
+      tag_of[c] = tag;
+  throw InputError(fmt::format(
+      "{}: elements {} ({}) and {} ({}) {}; trifem needs a conforming mesh, in which cells that "
+      "touch share whole faces with the same nodes (mesh all volumes together, with one element "
+      "order)",
+      in.at(d.elements_line), tag_of[hanging->cell], name(d.mesh.cell_type(hanging->cell)),
+      tag_of[hanging->other], name(d.mesh.cell_type(hanging->other)), hanging->how));
+}
+
 Mesh finish(const LineReader& in, GmshData& d) {
   TRIFEM_CHECK(d.seen_nodes, "{}: the file has no $Nodes section", in.location());
   TRIFEM_CHECK(d.seen_elements, "{}: the file has no $Elements section", in.location());
@@ -749,6 +767,7 @@ Mesh finish(const LineReader& in, GmshData& d) {
                "{}: the file has no volume elements (hexahedron8, tetra4, tetra10, prism6 or "
                "hexahedron20) and no surface mesh (quad4, type 3, or triangle3, type 2, elements)",
                in.at(d.elements_line));
+  check_conforming(in, d);
   add_cell_blocks(in, d);
   add_surfaces(in, d);
   add_point_sets(in, d);

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 // The FEBio reader refuses what it cannot map with one error line: file, line, XML path, what.
+#include "box_assembly.hpp"
 #include "feb_errors.hpp"
 #include "trifem/core/error.hpp"
 #include "trifem/feb/feb_reader.hpp"
@@ -100,6 +101,44 @@ TEST(FebErrors, InvertedOrIncompleteCellsOfTheOtherFamilies) {
   expect_contains(feb_error(solid_model_text(kMaterial, tet10, kFixed)),
                   {"febio_spec/Mesh/Elements[@type='tet10'][@name='P']/elem[@id='1']: ",
                    "a tet10 has 10 nodes, got 8"});
+}
+
+// One hex beside eight of half its size: the fine cells' nodes hang on its face.
+TEST(FebErrors, ElementsMeetingWithHangingNodes) {
+  test::BoxAssembly a;
+  a.add_box(mesh::CellType::Hex8, Vec3::Zero(), Vec3::Ones(), {1, 1, 1});
+  a.add_box(mesh::CellType::Hex8, Vec3(1.0, 0.0, 0.0), Vec3::Ones(), {2, 2, 2});
+  const mesh::Mesh& m = a.mesh();
+  std::string text = R"(<?xml version="1.0"?>
+<febio_spec version="4.0">
+  <Module type="solid"/>
+  <Control><analysis>STATIC</analysis><time_steps>2</time_steps><step_size>0.5</step_size></Control>
+  <Material>
+)" + kMaterial + R"(
+  </Material>
+  <Mesh>
+    <Nodes name="all">
+)";
+  for (Index n = 0; n < m.num_nodes(); ++n)
+    text += fmt::format("      <node id=\"{}\">{},{},{}</node>\n", n + 1, m.node(n).x(),
+                        m.node(n).y(), m.node(n).z());
+  text += "    </Nodes>\n    <Elements type=\"hex8\" name=\"P\">\n";
+  for (Index c = 0; c < m.num_cells(); ++c) {
+    text += fmt::format("      <elem id=\"{}\">", c + 1);
+    for (const Index n : m.cell_nodes(c))
+      text += fmt::format("{}{}", n == m.cell_nodes(c).front() ? "" : ",", n + 1);
+    text += "</elem>\n";
+  }
+  text += R"(    </Elements>
+  </Mesh>
+  <MeshDomains><SolidDomain name="P" mat="m"/></MeshDomains>
+</febio_spec>
+)";
+  expect_contains(feb_error(text),
+                  {"febio_spec/Mesh/Elements[@type='hex8'][@name='P']/elem[@id='1']: ",
+                   "elements 1 (hex8) and 2 (hex8) meet on a quad4 face and a "
+                   "quad4 face that overlap",
+                   "nodes of one hang on the other", "trifem needs a conforming mesh"});
 }
 
 TEST(FebErrors, UnknownMaterialType) {

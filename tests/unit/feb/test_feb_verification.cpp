@@ -1003,6 +1003,127 @@ TEST(FebVerification, TransIsoMooneyRivlinAlongItsFibreTwoSteps) {
   });
 }
 
+// FEBio's uncoupled solid mixture of Mooney-Rivlin and an uncoupled fiber-exp-linear is trans
+// iso Mooney-Rivlin (the test above), its bulk modulus the sum of the mixture's k (20) and its
+// constituents' (10; FEBio sums them).
+TEST(FebVerification, UncoupledSolidMixtureIsTransIsoMooneyRivlinWithTheSummedBulkModulus) {
+  const Real c1 = 0.5, c3 = 0.2, c4 = 3.0, c5 = 4.0, lam_max = 1.2, k = 30.0;
+  const io::CaseSpec spec =
+      two_step_cube(R"(<material id="1" name="Ogden" type="uncoupled solid mixture">
+      <density>1</density><k>20</k><pressure_model>default</pressure_model>
+      <solid type="Mooney-Rivlin"><density>1</density><k>10</k><c1>0.5</c1><c2>0</c2></solid>
+      <solid type="uncoupled fiber-exp-linear"><k>0</k><c3>0.2</c3><c4>3</c4><c5>4</c5>
+        <lambda>1.2</lambda><fiber type="vector"><vector>0,0,1</vector></fiber></solid>
+      </material>)");
+  const io::MaterialSpec& m = spec.materials.at("Ogden");
+  EXPECT_EQ(m.type, "solid-mixture");
+  ASSERT_EQ(m.constituents.size(), 2u);
+  EXPECT_EQ(m.constituents[0].parameters.at("k"), k);
+  EXPECT_EQ(m.constituents[1].type, "fibre-exp-linear");
+  const Real c6 = c3 * (std::exp(c4 * (lam_max - 1.0)) - 1.0) - c5 * lam_max;
+  expect_two_step_reactions(spec, [=](Real a, Real c) {
+    const Real J = a * a * c, s = std::cbrt(J), la = a / s, lc = c / s;
+    const Real fibre = lc <= 1.0      ? 0.0
+                       : lc < lam_max ? c3 * (std::exp(c4 * (lc - 1.0)) - 1.0)
+                                      : c5 * lc + c6;
+    const Real ta = 2.0 * c1 * la * la, tc = 2.0 * c1 * lc * lc + fibre;
+    const Real mean = (2.0 * ta + tc) / 3.0;
+    return std::array<Real, 2>{(ta - mean + k * std::log(J)) / J,
+                               (tc - mean + k * std::log(J)) / J};
+  });
+}
+
+// FEBio's solid mixture of neo-Hookean and the coupled fiber-exp-linear, its fibre given by
+// angles (theta = 0, phi = 0: along z, the pull): sigma_i = mu/J (l_i^2 - 1) + lambda ln J / J
+// plus, along the fibre, F(c)/J of the whole stretch c, F = c3 (exp(c4 (c - 1)) - 1) below
+// lambda and c5 c + c6 above.
+TEST(FebVerification, SolidMixtureOfNeoHookeanAndACoupledFibreTwoSteps) {
+  const Real E = 1.0, v = 0.3, c3 = 0.02, c4 = 10.0, c5 = 2.0, lam_max = 1.2;
+  const io::CaseSpec spec = two_step_cube(R"(<material id="1" name="Ogden" type="solid mixture">
+      <density>1</density>
+      <solid type="neo-Hookean"><density>1</density><E>1</E><v>0.3</v></solid>
+      <solid type="fiber-exp-linear"><density>1</density><c3>0.02</c3><c4>10</c4><c5>2</c5>
+        <lambda>1.2</lambda><fiber type="angles"><theta>0</theta><phi>0</phi></fiber></solid>
+      </material>)");
+  const io::MaterialSpec& m = spec.materials.at("Ogden");
+  ASSERT_EQ(m.constituents.size(), 2u);
+  EXPECT_EQ(m.constituents[1].type, "fibre-exp-linear-coupled");
+  const Real mu = E / (2.0 * (1.0 + v)), lambda = E * v / ((1.0 + v) * (1.0 - 2.0 * v));
+  const Real c6 = c3 * (std::exp(c4 * (lam_max - 1.0)) - 1.0) - c5 * lam_max;
+  expect_two_step_reactions(spec, [=](Real a, Real c) {
+    const Real J = a * a * c;
+    const auto neo = [&](Real l) { return (mu * (l * l - 1.0) + lambda * std::log(J)) / J; };
+    const Real fibre = c <= 1.0      ? 0.0
+                       : c < lam_max ? c3 * (std::exp(c4 * (c - 1.0)) - 1.0)
+                                     : c5 * c + c6;
+    return std::array<Real, 2>{neo(a), neo(c) + fibre / J};
+  });
+}
+
+// A fiber-exp-pow constituent with its fibre by angles (theta = phi = 90 degrees: along y);
+// its toe stretch and fibre modulus only at FEBio's defaults; nested mixtures refused.
+TEST(FebVerification, SolidMixtureFibresByAnglesAndWhatIsRefused) {
+  const auto cube = [](const std::string& fibre) {
+    return two_step_cube(R"(<material id="1" name="Ogden" type="solid mixture">
+      <solid type="neo-Hookean"><E>1</E><v>0.3</v></solid>)" +
+                         fibre + "</material>");
+  };
+  const io::CaseSpec spec = cube(R"(<solid type="fiber-exp-pow"><alpha>1</alpha><beta>2</beta>
+      <ksi>5</ksi><mu>0</mu><lam0>1</lam0><fiber type="angles"><theta>90</theta><phi>90</phi>
+      </fiber></solid>)");
+  const material::LawSpec& fibre = spec.materials.at("Ogden").constituents.at(1);
+  EXPECT_EQ(fibre.type, "fibre-exp-pow");
+  EXPECT_LE((material::vector_value(fibre.parameters, "fibre") - Vec3::UnitY()).norm(), 1e-15);
+  const std::pair<std::string, std::string> refused[] = {
+      {R"(<solid type="fiber-exp-pow"><alpha>1</alpha><beta>2</beta><ksi>5</ksi><lam0>1.1</lam0>
+         <fiber type="vector"><vector>1,0,0</vector></fiber></solid>)",
+       "lam0 = 1 only"},
+      {R"(<solid type="solid mixture"><solid type="neo-Hookean"><E>1</E><v>0.3</v></solid></solid>)",
+       "a solid mixture inside a solid mixture is not supported"},
+      {R"(<solid type="fiber-exp-pow"><alpha>1</alpha><beta>2</beta><ksi>5</ksi></solid>)",
+       "the fibre direction <fiber> is required"}};
+  for (const auto& [text, message] : refused) {
+    try {
+      (void)cube(text);
+      ADD_FAILURE() << "accepted: " << text;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("two_step_cube.feb:"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << e.what();
+    }
+  }
+}
+
+// FEBio's EFD neo-Hookean is neo-Hookean plus the ellipsoidal fibre distribution: the same cube
+// as a solid mixture of the two gives the same reactions to the bit, and the fibres stiffen it.
+TEST(FebVerification, EfdNeoHookeanIsTheSolidMixtureOfItsTwoParts) {
+  const io::CaseSpec efd = two_step_cube(R"(<material id="1" name="Ogden" type="EFD neo-Hookean">
+      <density>1</density><E>1</E><v>0.3</v><beta>2.5,3,3</beta><ksi>3,2,2</ksi></material>)");
+  const io::MaterialSpec& m = efd.materials.at("Ogden");
+  EXPECT_EQ(m.type, "solid-mixture");
+  ASSERT_EQ(m.constituents.size(), 2u);
+  EXPECT_EQ(m.constituents[1].type, "ellipsoidal-fibre-distribution");
+  EXPECT_EQ(material::vector_value(m.constituents[1].parameters, "ksi"), Vec3(3.0, 2.0, 2.0));
+  const io::CaseSpec mixture = two_step_cube(R"(<material id="1" name="Ogden" type="solid mixture">
+      <solid type="neo-Hookean"><E>1</E><v>0.3</v></solid>
+      <solid type="ellipsoidal fiber distribution"><beta>2.5,3,3</beta><ksi>3,2,2</ksi></solid>
+      </material>)");
+  const io::CaseSpec matrix = two_step_cube(
+      R"(<material id="1" name="Ogden" type="neo-Hookean"><E>1</E><v>0.3</v></material>)");
+  const auto reactions = [](const io::CaseSpec& spec) {
+    std::vector<Real> out;
+    const FebRun r =
+        run(spec, [&](const model::Model& m, Real) { out.push_back(reaction(m, "top", 2)); });
+    EXPECT_TRUE(r.report.success) << r.report.failure;
+    return out;
+  };
+  const std::vector<Real> with_fibres = reactions(efd);
+  EXPECT_EQ(with_fibres, reactions(mixture));
+  const std::vector<Real> without = reactions(matrix);
+  ASSERT_EQ(with_fibres.size(), without.size());
+  ASSERT_FALSE(with_fibres.empty());
+  EXPECT_GT(with_fibres.front(), 1.5 * without.front()) << "pulled 30 %: the fibres carry load";
+}
+
 TEST(FebVerification, TransIsoFibresOtherThanAConstantVectorAndActiveContractionAreRefused) {
   const std::pair<std::string, std::string> cases[] = {
       {R"(<fiber type="local">1,7</fiber>)", "fiber of type 'local' is not supported"},

@@ -15,6 +15,7 @@
 #include <cmath>
 #include <cstdint>
 #include <memory>
+#include <numbers>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -284,7 +285,8 @@ TEST(SolidMixture, StressAndTangentMatchCentralDifferences) {
 TEST(FibreExpPow, RegistryEntries) {
   for (const auto& law : material::registered_laws())
     EXPECT_NE(law.type, "fibre-exp-pow");
-  ASSERT_EQ(material::constituent_laws().size(), 3u); // and fibre-distribution, fibre-exp-linear
+  // and fibre-distribution, fibre-exp-linear (uncoupled and coupled), the ellipsoidal one
+  ASSERT_EQ(material::constituent_laws().size(), 5u);
   EXPECT_EQ(material::constituent_laws()[0].type, "fibre-exp-pow");
   const material::LawEntry& entry = material::find_law("fibre-exp-pow", "m");
   const auto m = material::create_law(entry.type, entry.example, "example");
@@ -393,24 +395,25 @@ Mat3 stretched_along(const Vec3& a, Real stretch, std::uint64_t seed) {
 } // namespace
 
 // S and D against central differences of W and S, in the exponential and the linear part, with
-// c3 given and with c3 = 0 (FEBio's derived c3).
+// c3 given and with c3 = 0 (FEBio's derived c3), uncoupled and coupled.
 TEST(FibreExpLinear, StressAndTangentAreTheDerivativesOfItsEnergy) {
   const Vec3 a(1.0, 2.0, 2.0);
-  for (const Real c3 : {0.5, 0.0})
-    for (const Real stretch : {1.03, 1.12}) // below and above lam_max = 1.06
-      for (std::uint64_t seed : {61u, 62u}) {
-        const auto law =
-            material::create_law("fibre-exp-linear", exp_linear(c3, 20.0, 80.0, 1.06, a), "f");
-        const Mat3 F = stretched_along(a, stretch, seed);
-        const Mat3 C = F.transpose() * F;
-        const material::StressTangent st = law->stress_tangent(C);
-        ASSERT_GT(st.S.norm(), 0.0);
-        const Real h = 1e-6;
-        EXPECT_LE((st.S - stress_by_differences(*law, C, h)).norm(), 1e-6 * st.S.norm())
-            << c3 << " " << stretch;
-        EXPECT_LE((st.D - tangent_by_differences(*law, C, h)).norm(), 1e-6 * st.D.norm())
-            << c3 << " " << stretch;
-      }
+  for (const char* type : {"fibre-exp-linear", "fibre-exp-linear-coupled"})
+    for (const Real c3 : {0.5, 0.0})
+      for (const Real stretch : {1.03, 1.12}) // below and above lam_max = 1.06
+        for (std::uint64_t seed : {61u, 62u}) {
+          const auto law = material::create_law(type, exp_linear(c3, 20.0, 80.0, 1.06, a), "f");
+          EXPECT_EQ(law->type(), type);
+          const Mat3 F = stretched_along(a, stretch, seed);
+          const Mat3 C = F.transpose() * F;
+          const material::StressTangent st = law->stress_tangent(C);
+          ASSERT_GT(st.S.norm(), 0.0);
+          const Real h = 1e-6;
+          EXPECT_LE((st.S - stress_by_differences(*law, C, h)).norm(), 1e-6 * st.S.norm())
+              << c3 << " " << stretch;
+          EXPECT_LE((st.D - tangent_by_differences(*law, C, h)).norm(), 1e-6 * st.D.norm())
+              << c3 << " " << stretch;
+        }
 }
 
 // Along the fibre at J = 1 (l~ = l): the Cauchy stress's fibre component minus its lateral one
@@ -435,6 +438,31 @@ TEST(FibreExpLinear, IsochoricStretchAlongTheFibreGivesFebiosFibreStress) {
   EXPECT_EQ(law->stress(F.transpose() * F).norm(), 0.0);
   EXPECT_EQ(law->stress_tangent(Mat3::Identity()).D.norm(), 0.0);
   EXPECT_EQ(law->energy(Mat3::Identity()), 0.0);
+}
+
+// The coupled fibre stretched along x by l with the lateral stretch s (J = l s^2): the Cauchy
+// stress is F(l)/J along the fibre and nothing else (FEBio's FEFiberExpLinear), l the whole
+// stretch; none in compression.
+TEST(FibreExpLinear, CoupledFibreStressIsThatOfItsWholeStretch) {
+  const Real c3 = 0.5, c4 = 20.0, c5 = 80.0, lam_max = 1.06;
+  const auto law = material::create_law("fibre-exp-linear-coupled",
+                                        exp_linear(c3, c4, c5, lam_max, Vec3::UnitX()), "f");
+  const Real c6 = c3 * (std::exp(c4 * (lam_max - 1.0)) - 1.0) - c5 * lam_max;
+  for (const Real l : {1.02, 1.05, 1.1, 1.3})
+    for (const Real lateral : {0.9, 1.0, 1.1}) {
+      Mat3 F = Mat3::Identity();
+      F(0, 0) = l;
+      F(1, 1) = F(2, 2) = lateral;
+      const Real J = l * lateral * lateral;
+      const Mat3 sigma = kinematics::cauchy_from_pk2(F, law->stress(F.transpose() * F));
+      const Real expected = l < lam_max ? c3 * (std::exp(c4 * (l - 1.0)) - 1.0) : c5 * l + c6;
+      EXPECT_NEAR(sigma(0, 0), expected / J, 1e-12 * c5) << l << " " << lateral;
+      EXPECT_NEAR(sigma(1, 1), 0.0, 1e-12 * c5) << l << " " << lateral;
+      EXPECT_NEAR(sigma(2, 2), 0.0, 1e-12 * c5) << l << " " << lateral;
+    }
+  Mat3 F = Mat3::Identity() * 1.2; // stretched laterally, shortened along the fibre
+  F(0, 0) = 0.95;
+  EXPECT_EQ(law->stress(F.transpose() * F).norm(), 0.0);
 }
 
 // FEBio's trans iso Mooney-Rivlin as a solid mixture: c1, c2, k and the fibre. Stretched by 1.2
@@ -467,4 +495,83 @@ TEST(FibreExpLinear, BadParametersAreRejectedWithTheKeyPath) {
             std::string::npos);
   EXPECT_NE(message(exp_linear(1.0, 1.0, 1.0, 0.9, Vec3::UnitX())).find("materials.lig.lam_max"),
             std::string::npos);
+}
+
+// ---------------------------------------------------------------------------------------------
+// ellipsoidal-fibre-distribution (FEBio's "ellipsoidal fiber distribution")
+
+namespace {
+
+material::ParameterValues efd(const Vec3& ksi, const Vec3& beta, Real resolution = 12.0) {
+  material::ParameterValues v = {{"resolution", resolution}};
+  material::set_vector(v, "ksi", ksi);
+  material::set_vector(v, "beta", beta);
+  return v;
+}
+
+/// W = int_S2 ksi(n) (I_n - 1)^beta(n) dS by the midpoint rule in (theta, phi) with `m` x 2m
+/// cells: an integration independent of the law's.
+Real efd_energy_by_angles(const Mat3& C, const Vec3& ksi, const Vec3& beta, int m) {
+  const auto ellipsoid = [](const Vec3& n, const Vec3& a) {
+    return 1.0 / std::sqrt((n.array() / a.array()).square().sum());
+  };
+  Real W = 0.0;
+  const Real dphi = std::numbers::pi / m, dtheta = std::numbers::pi / m;
+  for (int i = 0; i < m; ++i)
+    for (int j = 0; j < 2 * m; ++j) {
+      const Real phi = (i + 0.5) * dphi, theta = (j + 0.5) * dtheta;
+      const Vec3 n(std::cos(theta) * std::sin(phi), std::sin(theta) * std::sin(phi), std::cos(phi));
+      const Real x = n.dot(C * n) - 1.0;
+      if (x > 0.0)
+        W += ellipsoid(n, ksi) * std::pow(x, ellipsoid(n, beta)) * std::sin(phi) * dphi * dtheta;
+    }
+  return W;
+}
+
+} // namespace
+
+// S and D against central differences of W and S at states where some fibres are in tension
+// and others not.
+TEST(EllipsoidalFibreDistribution, StressAndTangentAreTheDerivativesOfItsEnergy) {
+  const auto law = material::create_law("ellipsoidal-fibre-distribution",
+                                        efd(Vec3(4.0, 2.0, 1.0), Vec3(2.5, 3.0, 3.5), 8.0), "f");
+  for (std::uint64_t seed : {71u, 72u, 73u}) {
+    const Mat3 F = stretched_along(Vec3(1.0, 2.0, 2.0), 1.1, seed);
+    const Mat3 C = F.transpose() * F;
+    const material::StressTangent st = law->stress_tangent(C);
+    ASSERT_GT(st.S.norm(), 0.0);
+    const Real h = 1e-6;
+    EXPECT_LE((st.S - stress_by_differences(*law, C, h)).norm(), 1e-6 * st.S.norm()) << seed;
+    EXPECT_LE((st.D - tangent_by_differences(*law, C, h)).norm(), 1e-6 * st.D.norm()) << seed;
+  }
+}
+
+// A dilatation C = c^2 I stretches every fibre alike: W = 4 pi ksi (c^2 - 1)^beta and
+// S = 8 pi/3 ksi beta (c^2 - 1)^(beta - 1) I for equal semi-axes, exactly at every resolution
+// (the rule integrates constants and n (x) n exactly); a contraction loads no fibre.
+TEST(EllipsoidalFibreDistribution, ADilatationGivesTheClosedForm) {
+  const Real ksi = 3.0, beta = 2.5, c = 1.1, x = c * c - 1.0;
+  for (const Real resolution : {3.0, 12.0}) {
+    const auto law =
+        material::create_law("ellipsoidal-fibre-distribution",
+                             efd(Vec3::Constant(ksi), Vec3::Constant(beta), resolution), "f");
+    const Mat3 C = c * c * Mat3::Identity();
+    const Real W = 4.0 * std::numbers::pi * ksi * std::pow(x, beta);
+    EXPECT_NEAR(law->energy(C), W, 1e-13 * W) << resolution;
+    const Real S = 8.0 * std::numbers::pi / 3.0 * ksi * beta * std::pow(x, beta - 1.0);
+    EXPECT_LE((law->stress(C) - S * Mat3::Identity()).norm(), 1e-13 * S) << resolution;
+    EXPECT_EQ(law->stress(0.9 * Mat3::Identity()).norm(), 0.0);
+  }
+}
+
+// With unequal semi-axes the energy of a stretch along a skew direction equals an independent
+// integration over the angles (a 1000 x 2000 midpoint rule) within the rules' errors.
+TEST(EllipsoidalFibreDistribution, EnergyIsTheIntegralOverTheSphere) {
+  const Vec3 ksi(4.0, 2.0, 1.0), beta(2.5, 3.0, 3.5);
+  const auto law = material::create_law("ellipsoidal-fibre-distribution", efd(ksi, beta), "f");
+  const Vec3 a = Vec3(1.0, 2.0, 2.0) / 3.0;
+  const Mat3 F = Mat3::Identity() + 0.2 * a * a.transpose(); // stretched along a, 1 across
+  const Mat3 C = F.transpose() * F;
+  const Real expected = efd_energy_by_angles(C, ksi, beta, 1000);
+  EXPECT_NEAR(law->energy(C), expected, 1e-5 * expected);
 }

@@ -8,6 +8,7 @@
 #include "trifem/material/solid_mixture.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <fmt/format.h>
 #include <numbers>
@@ -60,6 +61,7 @@ const std::vector<LawMapping>& law_mappings() {
         {"cp", "cp"}},
        {}},
       {"Veronda-Westmann", "veronda-westmann", {{"c1", "c1"}, {"c2", "c2"}, {"k", "k"}}, {}},
+      {"porous neo-Hookean", "porous-neo-hookean", {{"E", "E"}, {"phi0", "phi0"}}, {}},
       {"Yeoh",
        "yeoh",
        {{"c1", "c1"},
@@ -97,7 +99,8 @@ std::string known_types() {
   std::string s;
   for (const auto& m : law_mappings())
     s += fmt::format("{}{}", s.empty() ? "" : ", ", m.febio);
-  return s + ", trans iso Mooney-Rivlin, trans iso Veronda-Westmann, EFD neo-Hookean, solid "
+  return s + ", trans iso Mooney-Rivlin, trans iso Veronda-Westmann, Arruda-Boyce, EFD "
+             "neo-Hookean, solid "
              "mixture and uncoupled solid mixture (of these and the fibres fiber-exp-pow, "
              "fiber-exp-linear, uncoupled fiber-exp-linear, ellipsoidal fiber distribution), "
              "biphasic, triphasic, multiphasic (Na and Cl)";
@@ -325,6 +328,50 @@ material::LawSpec solid_mixture_law(const Reader& r, pugi::xml_node node, bool u
   return mixture;
 }
 
+/// FEBio's "Arruda-Boyce" (mu, N, k): W = mu sum_i a_i (I1~^i - 3^i)/N^(i-1) + k/2 (ln J)^2 with
+/// FEBio's a = (1/2, 1/10, 11/350, 19/1750, 519/134750), a polynomial of degree 5 in I1~ and so
+/// trifem's Yeoh law with c_j = mu sum_(i>=j) a_i/N^(i-1) C(i, j) 3^(i-j).
+material::LawSpec arruda_boyce_law(const Reader& r, pugi::xml_node node) {
+  Real mu = 0.0, N = 0.0;
+  material::LawSpec law{"yeoh", {}, {}};
+  for (pugi::xml_node p : elements(node)) {
+    const std::string name = p.name();
+    if (name == "mu")
+      mu = parameter_value(r, p);
+    else if (name == "N")
+      N = parameter_value(r, p);
+    else if (name == "k")
+      law.parameters["k"] = parameter_value(r, p);
+    else if (name == "pressure_model")
+      check_pressure_model(r, p);
+    else if (!ignored_parameter(name))
+      r.doc.fail(p, fmt::format("unknown parameter '{}' of material type 'Arruda-Boyce' "
+                                "(expected one of: mu, N, k, density)",
+                                name));
+  }
+  if (!(mu > 0.0) || !(N > 0.0))
+    r.doc.fail(node,
+               fmt::format("Arruda-Boyce needs mu > 0 and N > 0 (got mu = {}, N = {})", mu, N));
+  constexpr std::array<Real, 5> a = {0.5, 0.1, 11.0 / 350.0, 19.0 / 1750.0, 519.0 / 134750.0};
+  std::array<Real, 6> c{};
+  for (int i = 1; i <= 5; ++i) {
+    const Real A = mu * a[static_cast<std::size_t>(i - 1)] / std::pow(N, i - 1);
+    Real binomial = 1.0; // C(i, j), j from i down to 1
+    for (int j = i; j >= 1; --j) {
+      c[static_cast<std::size_t>(j - 1)] += A * binomial * std::pow(3.0, i - j);
+      binomial = binomial * j / (i - j + 1);
+    }
+  }
+  for (int j = 1; j <= 5; ++j)
+    law.parameters[fmt::format("c{}", j)] = c[static_cast<std::size_t>(j - 1)];
+  try {
+    material::create_law(law, "trifem yeoh (Arruda-Boyce)");
+  } catch (const InputError& e) {
+    r.doc.fail(node, e.what());
+  }
+  return law;
+}
+
 /// FEBio's "EFD neo-Hookean": neo-Hookean (E, v) plus an ellipsoidal fibre distribution (beta,
 /// ksi), as a trifem solid mixture of the two.
 material::LawSpec efd_neo_hookean_law(const Reader& r, pugi::xml_node node) {
@@ -374,6 +421,8 @@ material::LawSpec solid_law(const Reader& r, pugi::xml_node node,
     return solid_mixture_law(r, node, type == "uncoupled solid mixture");
   if (type == "EFD neo-Hookean")
     return efd_neo_hookean_law(r, node);
+  if (type == "Arruda-Boyce")
+    return arruda_boyce_law(r, node);
   if (type == "trans iso Mooney-Rivlin")
     return trans_iso_law(r, node, "mooney-rivlin");
   if (type == "trans iso Veronda-Westmann")
@@ -465,12 +514,21 @@ void permeability(const Reader& r, pugi::xml_node node, material::ParameterValue
 }
 
 /// The solid and phi0 every mixture needs, and its parameters validated by trifem's schema
-/// (errors located at the material element).
+/// (errors located at the material element). The solid, read unvalidated, is validated here: a
+/// porous neo-Hookean solid with phi0 = 1 takes the mixture's phi0 (FEBio's rule).
 void validate_mixture(const Reader& r, pugi::xml_node node, io::MaterialSpec& m) {
   if (!m.solid)
     r.doc.fail(node, fmt::format("a {} material needs a <solid>", m.type));
   if (!m.parameters.contains("phi_s0"))
     r.doc.fail(node, fmt::format("a {} material needs <phi0> (the solid volume fraction)", m.type));
+  if (m.solid->type == "porous-neo-hookean" && m.solid->parameters.contains("phi0") &&
+      m.solid->parameters.at("phi0") == 1.0)
+    m.solid->parameters["phi0"] = m.parameters.at("phi_s0");
+  try {
+    material::create_law(*m.solid, fmt::format("trifem {}", m.solid->type));
+  } catch (const InputError& e) {
+    r.doc.fail(node.child("solid"), e.what());
+  }
   try {
     m.parameters =
         material::validate_mixture_parameters(m.type == "triphasic", m.parameters, m.type);
@@ -486,7 +544,7 @@ io::MaterialSpec biphasic(const Reader& r, pugi::xml_node node) {
   for (pugi::xml_node p : elements(node)) {
     const std::string name = p.name();
     if (name == "solid")
-      m.solid = solid_law(r, p, &m.axes);
+      m.solid = solid_law(r, p, &m.axes, false); // validated with the mixture
     else if (name == "permeability")
       permeability(r, p, m.parameters);
     else if (name == "phi0")
@@ -557,7 +615,7 @@ io::MaterialSpec triphasic(Reader& r, pugi::xml_node node, const std::string& na
   for (pugi::xml_node p : elements(node)) {
     const std::string key = p.name();
     if (key == "solid") {
-      m.solid = solid_law(r, p, &m.axes);
+      m.solid = solid_law(r, p, &m.axes, false); // validated with the mixture
     } else if (key == "permeability") {
       permeability(r, p, m.parameters);
     } else if (key == "phi0") {

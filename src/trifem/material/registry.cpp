@@ -12,6 +12,7 @@
 #include "trifem/material/ogden.hpp"
 #include "trifem/material/ogden_unconstrained.hpp"
 #include "trifem/material/orthotropic_elastic.hpp"
+#include "trifem/material/porous_neo_hookean.hpp"
 #include "trifem/material/saint_venant_kirchhoff.hpp"
 #include "trifem/material/solid_mixture.hpp"
 #include "trifem/material/veronda_westmann.hpp"
@@ -62,6 +63,10 @@ const std::vector<LawEntry>& registered_laws() {
           {{"c1", 0.2}, {"c2", 1.5}, {"k", 10.0}}),
       entry<Yeoh>("yeoh", "uncoupled Yeoh, W = sum_i c_i (I1~-3)^i + k/2 (lnJ)^2",
                   {{"c1", 0.3}, {"c2", -0.02}, {"c3", 0.005}, {"k", 10.0}}),
+      entry<PorousNeoHookean>("porous-neo-hookean",
+                              "neo-Hookean whose pores close at J = phi0, W = mu ((I1 (J~/J)^(2/3) "
+                              "- 3)/2 - ln J~), J~ = (J - phi0)/(1 - phi0)",
+                              {{"E", 1.0}, {"phi0", 0.2}}),
       entry<OrthotropicElastic>("orthotropic-elastic",
                                 "linear orthotropic in E (engineering constants), S = D : E",
                                 {{"E1", 1.0},

@@ -976,6 +976,27 @@ TEST(FebVerification, VerondaWestmannTwoSteps) {
                                       20.0));
 }
 
+// Arruda-Boyce as FEBio writes it, W = mu sum_i a_i (I1~^i - 3^i)/N^(i-1) with a = (1/2, 1/10,
+// 11/350, 19/1750, 519/134750): t~_i = 2 l~_i^2 W1, W1 = mu sum_i i a_i (I1~/N)^(i-1) (FEBio's
+// FEArrudaBoyce stress), through trifem's Yeoh law of the expanded polynomial.
+TEST(FebVerification, ArrudaBoyceTwoSteps) {
+  const Real mu = 1.0, N = 2.5;
+  const io::CaseSpec spec = two_step_cube(R"(<material id="1" name="Ogden" type="Arruda-Boyce">
+      <density>1</density><k>100</k><pressure_model>default</pressure_model><mu>1</mu><N>2.5</N>
+      </material>)");
+  EXPECT_EQ(spec.materials.at("Ogden").type, "yeoh");
+  expect_two_step_reactions(
+      spec, uncoupled(
+                [=](Real l, Real I1) {
+                  const Real a[] = {0.5, 0.1, 11.0 / 350.0, 19.0 / 1750.0, 519.0 / 134750.0};
+                  Real W1 = 0.0;
+                  for (int i = 1; i <= 5; ++i)
+                    W1 += i * a[i - 1] * std::pow(I1 / N, i - 1);
+                  return 2.0 * l * l * mu * W1;
+                },
+                100.0));
+}
+
 // Trans iso Mooney-Rivlin with its fibre along the pull (z): the isochoric Kirchhoff stress
 // along z adds the fibre's F(l~) = c3 (exp(c4 (l~ - 1)) - 1) (below lam_max) or c5 l~ + c6 to
 // the Mooney-Rivlin part; across it, Mooney-Rivlin alone.

@@ -526,3 +526,30 @@ TEST(OrthotropicElastic, AnUnstableSetOfPoissonsRatiosIsRejectedNamingThem) {
   EXPECT_NE(input_error("yeoh", {{"c1", -1.0}, {"k", 1.0}}).find("materials.cartilage.c1"),
             std::string::npos);
 }
+
+// Porous neo-Hookean: FEBio's Cauchy stress (FEPorousNeoHookean, lambda = 0)
+// sigma = mu/J (R b + (phi_s R I1/3 - J)/(J - phi_s) I), R = (J~/J)^(2/3), J~ = (J - phi_s)/phi_w,
+// mu = E/3 (1 + phi_w^2/2); the small-strain moduli: shear mu, bulk d2W/dJ2 = 2 mu/(3 phi_w^2).
+TEST(PorousNeoHookean, CauchyStressIsFebiosClosedFormAndEIsItsYoungsModulus) {
+  const Real E = 2.0, phi_s = 0.3, phi_w = 1.0 - phi_s;
+  const auto law = material::create_law("porous-neo-hookean", {{"E", E}, {"phi0", phi_s}}, "m");
+  const Real mu = E / 3.0 * (1.0 + 0.5 * phi_w * phi_w);
+  for (const PrincipalState& st : principal_states()) {
+    const Mat3 F = st.F();
+    const Mat3 b = F * F.transpose();
+    const Real J = F.determinant(), I1 = b.trace();
+    const Real R = std::cbrt(std::pow((J - phi_s) / phi_w / J, 2.0));
+    const Mat3 expected =
+        mu / J * (R * b + (phi_s * R * I1 / 3.0 - J) / (J - phi_s) * Mat3::Identity());
+    const Mat3 sigma = kinematics::cauchy_from_pk2(F, law->stress(F.transpose() * F));
+    EXPECT_LE((sigma - expected).norm(), 1e-13 * mu) << st.l.transpose();
+  }
+  EXPECT_NEAR(law->shear_modulus(), mu, 1e-15 * mu);
+  const Real bulk = 2.0 * mu / (3.0 * phi_w * phi_w);
+  EXPECT_NEAR(law->p_wave_modulus(), bulk + 4.0 / 3.0 * mu, 1e-14 * mu);
+  EXPECT_NEAR(9.0 * bulk * mu / (3.0 * bulk + mu), E, 1e-14 * E); // Young's modulus
+  // the bulk modulus from the energy of dilatations C = J^(2/3) I
+  const auto W = [&](Real J) { return law->energy(std::cbrt(J * J) * Mat3::Identity()); };
+  const Real h = 1e-4;
+  EXPECT_NEAR((W(1.0 + h) - 2.0 * W(1.0) + W(1.0 - h)) / (h * h), bulk, 1e-6 * bulk);
+}

@@ -267,7 +267,14 @@ io::TimeSpec read_control(Reader& r, pugi::xml_node control, Real start, FebAnal
   return t;
 }
 
+pugi::xml_node only_step(pugi::xml_node root) {
+  const pugi::xml_node steps = root.child("Step");
+  const pugi::xml_node first = steps.child("step");
+  return first && !first.next_sibling("step") ? first : pugi::xml_node();
+}
+
 void read_steps(Reader& r, pugi::xml_node root) {
+  const pugi::xml_node single = only_step(root);
   const pugi::xml_node steps = root.child("Step");
   const pugi::xml_node control = root.child("Control");
   if (!steps) {
@@ -310,6 +317,8 @@ void read_steps(Reader& r, pugi::xml_node root) {
         read_boundary(r, part, step.fixed, step.prescribed, true);
       else if (kind == "Loads")
         read_loads(r, part, step.pressures, step.tractions, step.prescribed, true);
+      else if (s == single && (kind == "Rigid" || kind == "Contact" || kind == "Constraints"))
+        continue; // read with the file's own sections (feb_reader.cpp)
       else if (kind != "Control")
         r.doc.fail(part, fmt::format("<{}> in a step is not supported", kind));
     }

@@ -134,8 +134,11 @@ void read_sections(Reader& r) {
     detail::read_boundary(r, b, r.spec.fixed, r.spec.prescribed, false);
   for (const pugi::xml_node l : root.children("Loads"))
     detail::read_loads(r, l, r.spec.pressures, r.spec.tractions, r.spec.prescribed, false);
-  if (const pugi::xml_node rigid = root.child("Rigid"))
-    detail::read_rigid(r, rigid);
+  // the sections of a file's only step act over the whole run, as the file's own do
+  const pugi::xml_node only_step = detail::only_step(root);
+  for (const pugi::xml_node owner : {root, only_step})
+    if (const pugi::xml_node rigid = owner.child("Rigid"))
+      detail::read_rigid(r, rigid);
   detail::map_rigid_bodies(r);
   if (const pugi::xml_node i = root.child("Initial"))
     detail::read_initial(r, i);
@@ -144,10 +147,12 @@ void read_sections(Reader& r) {
   detail::drop_static_rigid_velocities(r);
   check_curve_extents(r);
   detail::map_baths(r);
-  for (const pugi::xml_node c : root.children("Contact"))
-    detail::read_contact(r, c, root.child("Mesh"));
-  for (const pugi::xml_node c : root.children("Constraints"))
-    detail::read_constraints(r, c);
+  for (const pugi::xml_node owner : {root, only_step}) {
+    for (const pugi::xml_node c : owner.children("Contact"))
+      detail::read_contact(r, c, root.child("Mesh"));
+    for (const pugi::xml_node c : owner.children("Constraints"))
+      detail::read_constraints(r, c);
+  }
   if (const pugi::xml_node o = root.child("Output"))
     detail::read_output(r, o);
   detail::add_impermeable_faces(r);

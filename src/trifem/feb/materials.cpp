@@ -102,7 +102,8 @@ std::string known_types() {
   return s + ", trans iso Mooney-Rivlin, trans iso Veronda-Westmann, Arruda-Boyce, EFD "
              "neo-Hookean, solid "
              "mixture and uncoupled solid mixture (of these and the fibres fiber-exp-pow, "
-             "fiber-exp-linear, uncoupled fiber-exp-linear, ellipsoidal fiber distribution), "
+             "fiber-exp-linear, uncoupled fiber-exp-linear, ellipsoidal fiber distribution, EFD "
+             "uncoupled), "
              "biphasic, triphasic, multiphasic (Na and Cl)";
 }
 
@@ -252,19 +253,27 @@ std::optional<material::LawSpec> fibre_constituent(const Reader& r, pugi::xml_no
 }
 
 /// FEBio's "ellipsoidal fiber distribution" (beta and ksi, three values each) as trifem's
-/// ellipsoidal-fibre-distribution; other elements of `node` but those in `also` are errors.
+/// ellipsoidal-fibre-distribution (of the deviatoric deformation if `uncoupled`: FEBio's "EFD
+/// uncoupled"); other elements of `node` but those in `also` are errors.
 material::LawSpec efd_law(const Reader& r, pugi::xml_node node,
-                          const std::vector<std::string>& also = {}) {
-  material::LawSpec law{"ellipsoidal-fibre-distribution", {}, {}};
+                          const std::vector<std::string>& also = {}, bool uncoupled = false) {
+  material::LawSpec law{uncoupled ? "ellipsoidal-fibre-distribution-uncoupled"
+                                  : "ellipsoidal-fibre-distribution",
+                        {},
+                        {}};
   for (const char* name : {"beta", "ksi"})
     material::set_vector(law.parameters, name, r.doc.vector(r.doc.child(node, name)));
   for (pugi::xml_node p : elements(node)) {
     const std::string name = p.name();
     if (name != "beta" && name != "ksi" && !ignored_parameter(name) &&
-        std::find(also.begin(), also.end(), name) == also.end())
+        std::find(also.begin(), also.end(), name) == also.end()) {
+      std::string expected;
+      for (const std::string& a : also)
+        expected += ", " + a;
       r.doc.fail(p, fmt::format("unknown parameter '{}' of material type '{}' (expected: beta, "
                                 "ksi{}, density)",
-                                name, r.doc.attribute(node, "type"), also.empty() ? "" : ", E, v"));
+                                name, r.doc.attribute(node, "type"), expected));
+    }
   }
   return law;
 }
@@ -292,8 +301,11 @@ material::LawSpec solid_mixture_law(const Reader& r, pugi::xml_node node, bool u
         r.doc.fail(p, "a solid mixture inside a solid mixture is not supported (list its "
                       "constituents in the outer one)");
       std::optional<material::LawSpec> fibre = fibre_constituent(r, p);
-      if (type == "ellipsoidal fiber distribution")
-        fibre = efd_law(r, p);
+      if (type == "ellipsoidal fiber distribution" || type == "EFD uncoupled") {
+        fibre = efd_law(r, p, {"k", "pressure_model"}, type == "EFD uncoupled");
+        if (const pugi::xml_node k = p.child("k")) // summed with the mixture's below
+          fibre->parameters["k"] = parameter_value(r, k);
+      }
       mixture.constituents.push_back(fibre ? *fibre : solid_law(r, p, nullptr, false));
     } else if (uncoupled && name == "k") {
       k = parameter_value(r, p);
@@ -372,15 +384,29 @@ material::LawSpec arruda_boyce_law(const Reader& r, pugi::xml_node node) {
   return law;
 }
 
-/// FEBio's "EFD neo-Hookean": neo-Hookean (E, v) plus an ellipsoidal fibre distribution (beta,
-/// ksi), as a trifem solid mixture of the two.
-material::LawSpec efd_neo_hookean_law(const Reader& r, pugi::xml_node node) {
-  material::LawSpec matrix{"neo-hookean",
-                           {{"E", parameter_value(r, r.doc.child(node, "E"))},
-                            {"nu", parameter_value(r, r.doc.child(node, "v"))}},
+/// FEBio's "EFD neo-Hookean" (neo-Hookean E, v), "EFD Mooney-Rivlin" and "EFD Veronda-Westmann"
+/// (uncoupled c1, c2, k) plus an ellipsoidal fibre distribution (beta, ksi; the uncoupled one
+/// with the uncoupled grounds), as a trifem solid mixture of the two.
+material::LawSpec efd_ground_law(const Reader& r, pugi::xml_node node, const std::string& type) {
+  const bool neo = type == "EFD neo-Hookean";
+  material::LawSpec matrix{neo                           ? "neo-hookean"
+                           : type == "EFD Mooney-Rivlin" ? "mooney-rivlin"
+                                                         : "veronda-westmann",
+                           {},
                            {}};
+  using Names = std::vector<std::pair<std::string, std::string>>;
+  const Names names =
+      neo ? Names{{"E", "E"}, {"v", "nu"}} : Names{{"c1", "c1"}, {"c2", "c2"}, {"k", "k"}};
+  std::vector<std::string> also = {"pressure_model"};
+  for (const auto& [febio, trifem] : names) {
+    also.push_back(febio);
+    if (const pugi::xml_node p = node.child(febio.c_str()))
+      matrix.parameters[trifem] = parameter_value(r, p);
+  }
+  if (const pugi::xml_node p = node.child("pressure_model"))
+    check_pressure_model(r, p);
   material::LawSpec mixture{
-      std::string(material::kSolidMixtureType), {}, {matrix, efd_law(r, node, {"E", "v"})}};
+      std::string(material::kSolidMixtureType), {}, {matrix, efd_law(r, node, also, !neo)}};
   try {
     material::create_law(mixture, fmt::format("trifem {}", mixture.type));
   } catch (const InputError& e) {
@@ -419,8 +445,8 @@ material::LawSpec solid_law(const Reader& r, pugi::xml_node node,
   const std::string type = r.doc.attribute(node, "type");
   if (type == "solid mixture" || type == "uncoupled solid mixture")
     return solid_mixture_law(r, node, type == "uncoupled solid mixture");
-  if (type == "EFD neo-Hookean")
-    return efd_neo_hookean_law(r, node);
+  if (type == "EFD neo-Hookean" || type == "EFD Mooney-Rivlin" || type == "EFD Veronda-Westmann")
+    return efd_ground_law(r, node, type);
   if (type == "Arruda-Boyce")
     return arruda_boyce_law(r, node);
   if (type == "trans iso Mooney-Rivlin")

@@ -205,6 +205,9 @@ void add_rigid_material(Reader& r, pugi::xml_node node, const std::string& name)
 void attach_rigid(Reader& r, pugi::xml_node bc, bool step);
 /// <Rigid>: rigid_fixed, rigid_displacement and rigid_force on the bodies.
 void read_rigid(Reader& r, pugi::xml_node section);
+/// The <step> of a file whose <Step> has exactly one (null otherwise): its <Rigid>, <Contact>
+/// and <Constraints> act over the whole run, as the file's own sections do.
+pugi::xml_node only_step(pugi::xml_node root);
 /// The rigid bodies as [[rigid_body]]s (translating if attached by nodes with their rotations
 /// fixed and joined by no connector, else rotating), then the connectors as [[connector]]s.
 void map_rigid_bodies(Reader& r);

@@ -3,6 +3,7 @@
 
 #include "trifem/core/error.hpp"
 #include "trifem/material/sphere_rule.hpp"
+#include "trifem/material/uncoupled.hpp"
 
 #include <cmath>
 #include <numbers>
@@ -46,7 +47,8 @@ void EllipsoidalFibreDistribution::check(const ParameterValues& p, const std::st
   TRIFEM_CHECK(r == std::floor(r), "{}.resolution = {}: must be an integer", context, r);
 }
 
-EllipsoidalFibreDistribution::EllipsoidalFibreDistribution(const ParameterValues& p) {
+EllipsoidalFibreDistribution::EllipsoidalFibreDistribution(const ParameterValues& p, bool uncoupled)
+    : uncoupled_(uncoupled) {
   check(p, "ellipsoidal-fibre-distribution");
   const Vec3 ksi = vector_value(p, "ksi"), beta = vector_value(p, "beta");
   const Real r = p.at("resolution");
@@ -86,7 +88,47 @@ Vec6 EllipsoidalFibreDistribution::sum(const Mat3& C, Mat6* D) const {
   return S;
 }
 
+Mat3 EllipsoidalFibreDistribution::deviatoric_sum(const Mat3& C, Mat6* D, Real* W) const {
+  // I_n~ = s I_n with s = I3^(-1/3); with a = dW_n/dI_n~ and c = d2W_n/dI_n~2 of each direction,
+  // dW/dC = sum a dI_n~/dC and d2W/dC2 = sum c dI_n~/dC (x) dI_n~/dC + sum a d2I_n~/dC2, where
+  // the sums of a dI_n~/dC and a d2I_n~/dC2 are the isochoric scaling of sum a {I_n, n (x) n, 0}
+  // (linear in it: uncoupled::isochoric once)
+  const Real s = std::pow(C.determinant(), -1.0 / 3.0);
+  const Vec6 c_voigt = voigt::strain(C);
+  const Mat3 Ci = C.inverse();
+  uncoupled::ScalarFunction weighted;
+  Mat6 outer = Mat6::Zero();
+  if (W)
+    *W = 0.0;
+  for (const Direction& d : directions_) {
+    const Real In = d.N.dot(c_voigt);
+    const Real x = s * In - 1.0;
+    if (!(x > 0.0) || d.weight == 0.0)
+      continue;
+    const Real x2 = std::pow(x, d.beta - 2.0);
+    const Real a = d.weight * d.beta * x2 * x;
+    const Mat3 N = voigt::from_stress(d.N);
+    weighted.value += a * In;
+    weighted.gradient += a * N;
+    if (W)
+      *W += d.weight * x2 * x * x;
+    if (D) {
+      const Mat3 g = s * (N - In / 3.0 * Ci); // dI_n~/dC
+      outer.noalias() += (d.weight * d.beta * (d.beta - 1.0) * x2) * voigt::outer(g, g);
+    }
+  }
+  const uncoupled::ScalarFunction iso = uncoupled::isochoric(weighted, -1.0 / 3.0, C, D != nullptr);
+  if (D)
+    *D = 4.0 * (outer + iso.hessian);
+  return 2.0 * iso.gradient;
+}
+
 Real EllipsoidalFibreDistribution::energy(const Mat3& C) const {
+  if (uncoupled_) {
+    Real W = 0.0;
+    (void)deviatoric_sum(C, nullptr, &W);
+    return W;
+  }
   const Vec6 strain = voigt::strain(C - Mat3::Identity());
   Real W = 0.0;
   for (const Direction& d : directions_) {
@@ -98,12 +140,14 @@ Real EllipsoidalFibreDistribution::energy(const Mat3& C) const {
 }
 
 Mat3 EllipsoidalFibreDistribution::stress(const Mat3& C) const {
+  if (uncoupled_)
+    return deviatoric_sum(C, nullptr, nullptr);
   return voigt::from_stress(sum(C, nullptr));
 }
 
 StressTangent EllipsoidalFibreDistribution::stress_tangent(const Mat3& C) const {
   StressTangent st;
-  st.S = voigt::from_stress(sum(C, &st.D));
+  st.S = uncoupled_ ? deviatoric_sum(C, &st.D, nullptr) : voigt::from_stress(sum(C, &st.D));
   return st;
 }
 

@@ -24,12 +24,15 @@ namespace trifem::material {
 /// half sphere, doubled, with `resolution` points per cube-face edge; a direction whose
 /// component i is nonzero has ksi(n) = 0 if ksi_i = 0. S and D are the exact derivatives of the
 /// discrete W; inert at C = I, so valid only as a constituent of a SolidMixture with a ground
-/// matrix (registry: constituent_laws()).
+/// matrix (registry: constituent_laws()). The uncoupled variant
+/// ("ellipsoidal-fibre-distribution-uncoupled", FEBio's "EFD uncoupled" of its EFD Mooney-Rivlin
+/// and Veronda-Westmann) takes I_n~ = J^(-2/3) I_n, the deviatoric part: its stress is
+/// deviatoric and a ground matrix with a bulk modulus carries the volume.
 class EllipsoidalFibreDistribution final : public ElasticLaw {
 public:
   /// Parameters: ksi (Vector, MPa, each >= 0), beta (Vector, each >= 2), resolution (integer
-  /// in [3, 64], default 12).
-  explicit EllipsoidalFibreDistribution(const ParameterValues& params);
+  /// in [3, 64], default 12). `uncoupled`: of the deviatoric deformation.
+  explicit EllipsoidalFibreDistribution(const ParameterValues& params, bool uncoupled = false);
   static const std::vector<ParameterSchema>& schema();
   /// An integer resolution: InputError naming `context.resolution` otherwise.
   static void check(const ParameterValues& params, const std::string& context);
@@ -40,7 +43,10 @@ public:
   /// 0: no fibre carries load at C = I.
   Real p_wave_modulus() const override { return 0.0; }
   Real shear_modulus() const override { return 0.0; }
-  std::string type() const override { return "ellipsoidal-fibre-distribution"; }
+  std::string type() const override {
+    return uncoupled_ ? "ellipsoidal-fibre-distribution-uncoupled"
+                      : "ellipsoidal-fibre-distribution";
+  }
 
 private:
   /// One direction of the rule: n (x) n (stress-like Voigt), its weight (area) times ksi(n),
@@ -52,8 +58,11 @@ private:
   };
   /// S as a stress-like Voigt vector and, if `D` is not null, D.
   Vec6 sum(const Mat3& C, Mat6* D) const;
+  /// The same of the uncoupled variant: S and, if `D` is not null, D; W if `W` is not null.
+  Mat3 deviatoric_sum(const Mat3& C, Mat6* D, Real* W) const;
 
   std::vector<Direction> directions_;
+  bool uncoupled_;
 };
 
 } // namespace trifem::material

@@ -94,6 +94,17 @@ LawEntry coupled_exp_linear(const ParameterValues& example) {
   return e;
 }
 
+/// ellipsoidal-fibre-distribution of the deviatoric deformation (FEBio's EFD uncoupled).
+LawEntry uncoupled_efd(const ParameterValues& example) {
+  LawEntry e = entry<EllipsoidalFibreDistribution>(
+      "ellipsoidal-fibre-distribution-uncoupled",
+      "ellipsoidal-fibre-distribution of the deviatoric stretch I_n~ = J^(-2/3) I_n", example);
+  e.make = [](const ParameterValues& p) {
+    return std::make_unique<EllipsoidalFibreDistribution>(p, true);
+  };
+  return e;
+}
+
 } // namespace
 
 const std::vector<LawEntry>& constituent_laws() {
@@ -125,6 +136,7 @@ const std::vector<LawEntry>& constituent_laws() {
             "power-law fibres in all directions, W = int_S2 ksi(n) (I_n-1)^beta(n) dS, ksi and "
             "beta ellipsoidal",
             efd),
+        uncoupled_efd(efd),
     };
   }();
   return laws;

@@ -575,6 +575,32 @@ TEST_P(FebRigidShell, ARigidPlateMadeOfAShellPressesTheTopOfAHexByItsDisplacemen
     EXPECT_NEAR(x[m.dofs.dof(m.fields.u, n, 2)], -0.1, 1e-15) << "node " << n;
 }
 
+// A file with one <step> holding the <Rigid> and <Contact> sections runs as the same file with
+// them at the top level (FEBio applies a step's conditions during the step, here the whole run).
+TEST(FebRigid, TheSectionsOfTheOnlyStepActOverTheWholeRun) {
+  std::string text = kShellPlate;
+  const auto cut = [&](const std::string& open, const std::string& close) {
+    const auto from = text.find(open);
+    const auto to = text.find(close, from) + close.size();
+    std::string part = text.substr(from, to - from);
+    text.erase(from, to - from);
+    return part;
+  };
+  const std::string rigid = cut("  <Rigid>", "</Rigid>\n");
+  const std::string contact = cut("  <Contact>", "</Contact>\n");
+  text.insert(text.find("  <LoadData>"),
+              "  <Step><step id=\"1\" name=\"press\">\n" + rigid + contact + "  </step></Step>\n");
+  const auto top_z = [](const std::string& feb) {
+    FebRun run = test::run_feb_case(feb::parse_feb(feb, "shell_plate.feb"));
+    EXPECT_TRUE(run.report.success) << run.report.failure;
+    const model::Model& m = *run.model;
+    return m.problem->state()[m.dofs.dof(m.fields.u, 4, 2)];
+  };
+  const Real in_step = top_z(text);
+  EXPECT_NEAR(in_step, -0.1, 1e-12);
+  EXPECT_EQ(in_step, top_z(kShellPlate));
+}
+
 INSTANTIATE_TEST_SUITE_P(Facets, FebRigidShell, testing::Values(false, true),
                          [](const auto& info) { return info.param ? "Triangles" : "Quads"; });
 
@@ -1143,6 +1169,36 @@ TEST(FebVerification, EfdNeoHookeanIsTheSolidMixtureOfItsTwoParts) {
   ASSERT_EQ(with_fibres.size(), without.size());
   ASSERT_FALSE(with_fibres.empty());
   EXPECT_GT(with_fibres.front(), 1.5 * without.front()) << "pulled 30 %: the fibres carry load";
+}
+
+// FEBio's EFD Mooney-Rivlin is the uncoupled solid mixture of Mooney-Rivlin and the uncoupled
+// ellipsoidal fibre distribution: the same reactions to the bit; the fibres stiffen the cube.
+TEST(FebVerification, EfdMooneyRivlinIsTheUncoupledMixtureOfItsTwoParts) {
+  const io::CaseSpec efd = two_step_cube(R"(<material id="1" name="Ogden" type="EFD Mooney-Rivlin">
+      <k>30</k><pressure_model>default</pressure_model><c1>0.5</c1><c2>0.1</c2>
+      <beta>2.5,3,3</beta><ksi>3,2,2</ksi></material>)");
+  const io::MaterialSpec& m = efd.materials.at("Ogden");
+  ASSERT_EQ(m.constituents.size(), 2u);
+  EXPECT_EQ(m.constituents[0].type, "mooney-rivlin");
+  EXPECT_EQ(m.constituents[1].type, "ellipsoidal-fibre-distribution-uncoupled");
+  const io::CaseSpec mixture = two_step_cube(
+      R"(<material id="1" name="Ogden" type="uncoupled solid mixture">
+      <k>20</k><solid type="Mooney-Rivlin"><k>10</k><c1>0.5</c1><c2>0.1</c2></solid>
+      <solid type="EFD uncoupled"><beta>2.5,3,3</beta><ksi>3,2,2</ksi></solid></material>)");
+  const io::CaseSpec matrix = two_step_cube(R"(<material id="1" name="Ogden" type="Mooney-Rivlin">
+      <k>30</k><c1>0.5</c1><c2>0.1</c2></material>)");
+  const auto reactions = [](const io::CaseSpec& spec) {
+    std::vector<Real> out;
+    const FebRun r =
+        run(spec, [&](const model::Model& m, Real) { out.push_back(reaction(m, "top", 2)); });
+    EXPECT_TRUE(r.report.success) << r.report.failure;
+    return out;
+  };
+  const std::vector<Real> with_fibres = reactions(efd);
+  EXPECT_EQ(with_fibres, reactions(mixture));
+  const std::vector<Real> without = reactions(matrix);
+  ASSERT_FALSE(with_fibres.empty());
+  EXPECT_GT(with_fibres.front(), 1.5 * without.front());
 }
 
 TEST(FebVerification, TransIsoFibresOtherThanAConstantVectorAndActiveContractionAreRefused) {

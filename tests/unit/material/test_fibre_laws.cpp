@@ -285,8 +285,8 @@ TEST(SolidMixture, StressAndTangentMatchCentralDifferences) {
 TEST(FibreExpPow, RegistryEntries) {
   for (const auto& law : material::registered_laws())
     EXPECT_NE(law.type, "fibre-exp-pow");
-  // and fibre-distribution, fibre-exp-linear (uncoupled and coupled), the ellipsoidal one
-  ASSERT_EQ(material::constituent_laws().size(), 5u);
+  // and fibre-distribution, fibre-exp-linear (uncoupled and coupled), the ellipsoidal ones
+  ASSERT_EQ(material::constituent_laws().size(), 6u);
   EXPECT_EQ(material::constituent_laws()[0].type, "fibre-exp-pow");
   const material::LawEntry& entry = material::find_law("fibre-exp-pow", "m");
   const auto m = material::create_law(entry.type, entry.example, "example");
@@ -533,17 +533,47 @@ Real efd_energy_by_angles(const Mat3& C, const Vec3& ksi, const Vec3& beta, int 
 // S and D against central differences of W and S at states where some fibres are in tension
 // and others not.
 TEST(EllipsoidalFibreDistribution, StressAndTangentAreTheDerivativesOfItsEnergy) {
-  const auto law = material::create_law("ellipsoidal-fibre-distribution",
-                                        efd(Vec3(4.0, 2.0, 1.0), Vec3(2.5, 3.0, 3.5), 8.0), "f");
-  for (std::uint64_t seed : {71u, 72u, 73u}) {
-    const Mat3 F = stretched_along(Vec3(1.0, 2.0, 2.0), 1.1, seed);
-    const Mat3 C = F.transpose() * F;
-    const material::StressTangent st = law->stress_tangent(C);
-    ASSERT_GT(st.S.norm(), 0.0);
-    const Real h = 1e-6;
-    EXPECT_LE((st.S - stress_by_differences(*law, C, h)).norm(), 1e-6 * st.S.norm()) << seed;
-    EXPECT_LE((st.D - tangent_by_differences(*law, C, h)).norm(), 1e-6 * st.D.norm()) << seed;
+  for (const char* type :
+       {"ellipsoidal-fibre-distribution", "ellipsoidal-fibre-distribution-uncoupled"}) {
+    const auto law =
+        material::create_law(type, efd(Vec3(4.0, 2.0, 1.0), Vec3(2.5, 3.0, 3.5), 8.0), "f");
+    EXPECT_EQ(law->type(), type);
+    for (std::uint64_t seed : {71u, 72u, 73u}) {
+      const Mat3 F = stretched_along(Vec3(1.0, 2.0, 2.0), 1.1, seed);
+      const Mat3 C = F.transpose() * F;
+      const material::StressTangent st = law->stress_tangent(C);
+      ASSERT_GT(st.S.norm(), 0.0);
+      const Real h = 1e-6;
+      EXPECT_LE((st.S - stress_by_differences(*law, C, h)).norm(), 1e-6 * st.S.norm())
+          << type << " " << seed;
+      EXPECT_LE((st.D - tangent_by_differences(*law, C, h)).norm(), 1e-6 * st.D.norm())
+          << type << " " << seed;
+    }
   }
+}
+
+// The uncoupled distribution sees the deviatoric deformation only: at J = 1 it has the coupled
+// one's energy, its Cauchy stress is deviatoric, and a dilatation loads no fibre.
+TEST(EllipsoidalFibreDistribution, TheUncoupledOneSeesTheDeviatoricDeformation) {
+  const auto params = efd(Vec3(4.0, 2.0, 1.0), Vec3(2.5, 3.0, 3.5));
+  const auto coupled = material::create_law("ellipsoidal-fibre-distribution", params, "f");
+  const auto uncoupled =
+      material::create_law("ellipsoidal-fibre-distribution-uncoupled", params, "f");
+  for (std::uint64_t seed : {81u, 82u}) {
+    Mat3 F = stretched_along(Vec3(1.0, 2.0, 2.0), 1.15, seed);
+    const Mat3 isochoric = F / std::cbrt(F.determinant());
+    const Mat3 C = isochoric.transpose() * isochoric;
+    EXPECT_NEAR(uncoupled->energy(C), coupled->energy(C), 1e-13 * coupled->energy(C)) << seed;
+    F *= 1.1; // a dilatation on top changes nothing but J
+    const Mat3 sigma = kinematics::cauchy_from_pk2(F, uncoupled->stress(F.transpose() * F));
+    ASSERT_GT(sigma.norm(), 0.0);
+    EXPECT_NEAR(sigma.trace(), 0.0, 1e-12 * sigma.norm()) << seed;
+    EXPECT_NEAR(uncoupled->energy(F.transpose() * F), coupled->energy(C),
+                1e-12 * coupled->energy(C))
+        << seed;
+  }
+  // (J^(-2/3) I_n - 1 is round-off there: the stress is at most ksi times its power)
+  EXPECT_LE(uncoupled->stress(1.2 * Mat3::Identity()).norm(), 1e-14 * 4.0);
 }
 
 // A dilatation C = c^2 I stretches every fibre alike: W = 4 pi ksi (c^2 - 1)^beta and

@@ -144,6 +144,17 @@ TEST(MixtureHex8, TriphasicTangentWithAllStrainDependentLaws) {
   check_tangent(true, "neo-hookean", laws);
 }
 
+// Free-solution diffusivities above the tissue's (FEBio's free_diff > diff: the ions also drag
+// on the solid), with constant and with Mackie-Meares tissue diffusivities
+TEST(MixtureHex8, TriphasicTangentWithFreeDiffusivities) {
+  const material::ParameterValues free = {{"free_d_plus", 9e-4}, {"free_d_minus", 2.5e-3}};
+  check_tangent(true, "neo-hookean", free);
+  material::ParameterValues laws = kMackieMeares;
+  laws.insert(free.begin(), free.end());
+  laws.insert(kHolmesMow.begin(), kHolmesMow.end());
+  check_tangent(true, "neo-hookean", laws);
+}
+
 // [analysis] flux_mass = "lumped": the friction terms with diag(∫ N_a dv), and the shape
 // derivatives of their mass products with the nodal fluxes
 TEST(MixtureHex8, TriphasicTangentWithLumpedFluxMass) {

@@ -586,8 +586,8 @@ io::MaterialSpec biphasic(const Reader& r, pugi::xml_node node) {
   return m;
 }
 
-/// <solute sol="..."> of a triphasic material: the constant diffusivity (FEBio's d must equal
-/// its free diffusivity d0: trifem's ions feel friction with the water only) and the constant
+/// <solute sol="..."> of a triphasic material: the constant diffusivity d and free diffusivity
+/// d0 (d < d0: the ion also drags on the solid, trifem's free_d_plus/minus) and the constant
 /// solubility (trifem's activity coefficient is its inverse).
 void triphasic_solute(const Reader& r, pugi::xml_node node, io::MaterialSpec& m) {
   const std::string ref = r.doc.attribute(node, "sol");
@@ -604,13 +604,14 @@ void triphasic_solute(const Reader& r, pugi::xml_node node, io::MaterialSpec& m)
                                type));
       const Real d = parameter_value(r, r.doc.child(p, "diff"));
       const Real d0 = parameter_value(r, r.doc.child(p, "free_diff"));
-      if (std::abs(d - d0) > 1e-12 * std::abs(d0))
-        r.doc.fail(p, fmt::format("diff = {} differs from free_diff = {}: FEBio then adds a "
-                                  "friction between the solute and the solid, which trifem's "
-                                  "triphasic model does not have (its ions drag on the water "
-                                  "only: diff = free_diff)",
+      if (d > d0 * (1.0 + 1e-12))
+        r.doc.fail(p, fmt::format("diff = {} exceeds free_diff = {}: the diffusivity in the "
+                                  "tissue cannot exceed the free one (the friction of the solute "
+                                  "with the solid would be negative)",
                                   d, d0));
       m.parameters[fmt::format("d_{}", sign)] = d;
+      if (d < d0 * (1.0 - 1e-12))
+        m.parameters[fmt::format("free_d_{}", sign)] = d0;
     } else if (name == "solubility") {
       if (type != "solub-const")
         r.doc.fail(

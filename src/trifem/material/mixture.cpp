@@ -4,6 +4,7 @@
 #include "trifem/core/error.hpp"
 
 #include <map>
+#include <tuple>
 
 namespace trifem::material {
 namespace {
@@ -98,6 +99,14 @@ const std::vector<ParameterSchema>& mixture_schema(bool charged) {
                  Range::closed(0.0, 1.0), 0.0});
     s.push_back({"d_plus", "mm^2/s", "cation (Na+) diffusivity", Range::positive(), std::nullopt});
     s.push_back({"d_minus", "mm^2/s", "anion (Cl-) diffusivity", Range::positive(), std::nullopt});
+    s.push_back({"free_d_plus", "mm^2/s",
+                 "cation diffusivity in free solution, of its friction with the water (0: d_plus, "
+                 "no friction with the solid)",
+                 Range::non_negative(), 0.0});
+    s.push_back({"free_d_minus", "mm^2/s",
+                 "anion diffusivity in free solution, of its friction with the water (0: "
+                 "d_minus, no friction with the solid)",
+                 Range::non_negative(), 0.0});
     s.push_back({"gamma_plus", "", "cation activity coefficient", Range::positive(), 1.0});
     s.push_back({"gamma_minus", "", "anion activity coefficient", Range::positive(), 1.0});
     s.push_back({"osmotic", "", "osmotic coefficient Phi", Range::positive(), 1.0});
@@ -159,6 +168,14 @@ MixtureProperties make_mixture(bool charged, std::shared_ptr<const ElasticLaw> s
   m.d_minus_law = diffusivity_law(s, "d_minus", context);
   m.d_plus = m.d_plus_law->value(m.phi_w0());
   m.d_minus = m.d_minus_law->value(m.phi_w0());
+  m.free_d_plus = v.at("free_d_plus");
+  m.free_d_minus = v.at("free_d_minus");
+  for (const auto& [key, free, d] : {std::tuple{"free_d_plus", m.free_d_plus, m.d_plus},
+                                     std::tuple{"free_d_minus", m.free_d_minus, m.d_minus}})
+    TRIFEM_CHECK(free == 0.0 || free >= d,
+                 "{}.{} = {} is below the diffusivity in the tissue ({} mm^2/s in the reference "
+                 "state): the ion's friction with the solid would be negative",
+                 context, key, free, d);
   m.gamma_plus = v.at("gamma_plus");
   m.gamma_minus = v.at("gamma_minus");
   m.osmotic = v.at("osmotic");

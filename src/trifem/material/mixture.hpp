@@ -30,17 +30,21 @@ struct MixtureProperties {
   Real fixed_charge = 0.0;  ///< cF0 per reference water volume [mEq/mm^3 = mmol/mm^3], >= 0
   Real d_plus = 5e-4;       ///< cation diffusivity d+(phi_w0) [mm^2/s], > 0
   Real d_minus = 8e-4;      ///< anion diffusivity d-(phi_w0) [mm^2/s], > 0
-  Real gamma_plus = 1.0;    ///< cation activity coefficient, > 0
-  Real gamma_minus = 1.0;   ///< anion activity coefficient, > 0
-  Real osmotic = 1.0;       ///< osmotic coefficient Phi, > 0
+  /// Free-solution diffusivities d0+- [mm^2/s] of the water-ion friction RT/(phi_w d0): 0 for
+  /// d0 = d (the ions drag on the water only, the paper's model); d0 > d adds the friction of
+  /// the ion with the solid, RT/(phi_w c) (1/d - 1/d0) (FEBio's free_diff).
+  Real free_d_plus = 0.0, free_d_minus = 0.0;
+  Real gamma_plus = 1.0;  ///< cation activity coefficient, > 0
+  Real gamma_minus = 1.0; ///< anion activity coefficient, > 0
+  Real osmotic = 1.0;     ///< osmotic coefficient Phi, > 0
 
   Real phi_w0() const { return 1.0 - phi_s0; }
 };
 
 /// Parameter schema of the mixture types ("biphasic": phi_s0, permeability; "triphasic": also
-/// fixed_charge, d_plus, d_minus, gamma_plus, gamma_minus, osmotic, fixed_charge_basis
-/// (0 = water, 1 = tissue)). A number for permeability, d_plus or d_minus is the constant law;
-/// see transport_law_key() for a law of the state.
+/// fixed_charge, d_plus, d_minus, free_d_plus, free_d_minus, gamma_plus, gamma_minus, osmotic,
+/// fixed_charge_basis (0 = water, 1 = tissue)). A number for permeability, d_plus or d_minus is the
+/// constant law; see transport_law_key() for a law of the state.
 const std::vector<ParameterSchema>& mixture_schema(bool charged);
 
 /// The laws that the mixture key `key` takes: the permeability laws for "permeability", the

@@ -255,11 +255,12 @@ MixtureChemistry chemistry(const Integrals<Cell>& I,
   c.mu_minus = RT * std::log(mat.gamma_minus * c.c_minus / (ch.gamma_bath * ch.c_ref)) - x.eta;
   c.d_plus = mat.d_plus_law->value(c.phi_w);
   c.d_minus = mat.d_minus_law->value(c.phi_w);
-  c.A_wp = RT / (c.phi_w * c.d_plus);
-  c.A_wm = RT / (c.phi_w * c.d_minus);
+  // the water-ion friction of the free diffusivity d0 (d itself without one), the ion's own of d
+  c.A_wp = RT / (c.phi_w * (mat.free_d_plus > 0.0 ? mat.free_d_plus : c.d_plus));
+  c.A_wm = RT / (c.phi_w * (mat.free_d_minus > 0.0 ? mat.free_d_minus : c.d_minus));
   c.A_ww += c.A_wp * c.c_plus + c.A_wm * c.c_minus;
-  c.A_pp = c.A_wp / c.c_plus;
-  c.A_mm = c.A_wm / c.c_minus;
+  c.A_pp = mat.free_d_plus > 0.0 ? RT / (c.phi_w * c.c_plus * c.d_plus) : c.A_wp / c.c_plus;
+  c.A_mm = mat.free_d_minus > 0.0 ? RT / (c.phi_w * c.c_minus * c.d_minus) : c.A_wm / c.c_minus;
   return c;
 }
 
@@ -364,15 +365,18 @@ ChemistryGradients<Cell> chemistry_gradients(const Integrals<Cell>& I, const Mix
   d.A_wm = (-c.A_wm / c.phi_w) * dphi;
   d.A_pp = -c.A_pp * (dcp / c.c_plus + dphi / c.phi_w);
   d.A_mm = -c.A_mm * (dcm / c.c_minus + dphi / c.phi_w);
-  // d±(phi_w): dA_w± and dA_±± gain -A (dd±/dphi_w / d±) dphi_w (skipped if d± is constant)
+  // d±(phi_w): dA_±± and, if d± is also the water-ion friction's (no free diffusivity), dA_w±
+  // gain -A (dd±/dphi_w / d±) dphi_w (skipped if d± is constant)
   if (!mat.d_plus_law->is_constant()) {
     const Real dlnd = mat.d_plus_law->derivative(c.phi_w) / c.d_plus;
-    d.A_wp -= (c.A_wp * dlnd) * dphi;
+    if (mat.free_d_plus == 0.0)
+      d.A_wp -= (c.A_wp * dlnd) * dphi;
     d.A_pp -= (c.A_pp * dlnd) * dphi;
   }
   if (!mat.d_minus_law->is_constant()) {
     const Real dlnd = mat.d_minus_law->derivative(c.phi_w) / c.d_minus;
-    d.A_wm -= (c.A_wm * dlnd) * dphi;
+    if (mat.free_d_minus == 0.0)
+      d.A_wm -= (c.A_wm * dlnd) * dphi;
     d.A_mm -= (c.A_mm * dlnd) * dphi;
   }
   const Grad dA_ions = c.A_wp * dcp + c.c_plus * d.A_wp + c.A_wm * dcm + c.c_minus * d.A_wm;

@@ -327,6 +327,79 @@ components = ["z"]
 // ---------------------------------------------------------------------------------------------
 // steady permeation driven by a bath pressure
 
+// The triphasic layer of the test below without fixed charge, the reference bath's
+// concentration at both ends, its free-solution diffusivities d0 above the tissue's d (FEBio's
+// free_diff: the ions also drag on the solid). Its concentration stays the bath's and its ion
+// potentials uniform, so each ion's momentum balance A_w w = A_ion j reads j = (d/d0) c w: the
+// ions are carried at the fraction d/d0 of the water's velocity (with d0 = d, with it).
+TEST(Steps, SteadyPermeationCarriesTheIonsAtTheFractionDOverD0OfTheWater) {
+  for (const bool hindered : {true, false}) {
+    const std::string free = hindered ? "free_d_plus = 1.2e-3\nfree_d_minus = 2.0e-3\n" : "";
+    const std::string text = R"(
+[[mesh.box]]
+name = "layer"
+size = [1.0, 1.0, 1.0]
+divisions = [1, 1, 6]
+material = "tissue"
+
+[materials.tissue]
+type = "triphasic"
+phi_s0 = 0.25
+permeability = 1.07e-3
+fixed_charge = 0.0
+d_plus = 6.0e-4
+d_minus = 8.0e-4
+)" + free + R"(
+[materials.tissue.solid]
+type = "neo-hookean"
+E = 0.3
+nu = 0.0
+
+[curves.up]
+points = [[0.0, 0.0], [1.0, 1.0]]
+
+[[boundary.fixed]]
+set = "layer.all"
+components = ["x", "y"]
+[[boundary.fixed]]
+set = "layer.all"
+field = "fluxes"
+components = ["x", "y"]
+[[boundary.fixed]]
+set = "layer.zmin"
+components = ["z"]
+[[boundary.fixed]]
+set = "layer.zmax"
+components = ["z"]
+[[boundary.bath]]
+surface = "layer.zmin"
+pressure = 0.1
+curve = "up"
+
+[[step]]
+name = "permeation"
+end_time = 1.0
+dt = 0.25
+steady = true
+)";
+    const auto run = run_stepped(text);
+    ASSERT_TRUE(run.report.success) << run.report.failure;
+    const model::Model& m = *run.model;
+    const Vector& x = m.problem->state();
+    const Real h_plus = hindered ? 6.0e-4 / 1.2e-3 : 1.0,
+               h_minus = hindered ? 8.0e-4 / 2.0e-3 : 1.0;
+    int checked = 0;
+    for (Index n = 0; n < m.mesh.num_nodes(); ++n) {
+      const Real w = x[m.dofs.dof(m.fields.w, n, 2)]; // j holds j / c_ref, c = c_ref here
+      ASSERT_GT(w, 0.0);
+      EXPECT_NEAR(x[m.dofs.dof(m.fields.j_plus, n, 2)], h_plus * w, 1e-8 * w) << n;
+      EXPECT_NEAR(x[m.dofs.dof(m.fields.j_minus, n, 2)], h_minus * w, 1e-8 * w) << n;
+      ++checked;
+    }
+    EXPECT_EQ(checked, 28);
+  }
+}
+
 // A biphasic layer clamped at both ends (so its current height stays h), confined laterally,
 // with a bath at gauge pressure p0 under it and the reference bath (p = 0) above it, solved by a
 // steady-state step. With a constant permeability the steady Darcy flux is uniform in the

@@ -7,6 +7,7 @@
 #include "solid_model.hpp"
 #include "trifem/fe/reference_element.hpp"
 #include "trifem/mesh/convert_cells.hpp"
+#include "trifem/physics/facet_area_any.hpp"
 #include "trifem/physics/surface_load_term.hpp"
 #include "trifem/tensor/kinematics.hpp"
 
@@ -234,6 +235,22 @@ TEST_P(ElementFamilies, DeadTractionOnTheEndFaceGivesTheClosedFormStretch) {
                                                    kRamp);
   });
   const Real l = stretch_at(T, [](const UniaxialState& u) { return u.P; });
+  expect_uniaxial_displacements(m, l, uniaxial(l).t);
+}
+
+// A force F = 0.2 N x 1 mm^2 spread over the end face's reference area (FEBio's surface force):
+// the face's area by its facets' rules is the bar's cross-section (exact on flat facets), and the
+// dead traction F/A gives P = 0.2 along the bar.
+TEST_P(ElementFamilies, ASurfaceForceOverTheReferenceAreaGivesTheClosedFormStretch) {
+  const Real F = 0.2;
+  test::SolidModel m(bar(GetParam()), "neo-hookean", {{"E", 1.0}, {"nu", 0.3}});
+  const Real area = physics::reference_area(m.mesh, m.mesh.surface("box.xmax").facets);
+  EXPECT_NEAR(area, 1.0, 1e-14);
+  load_bar(m, [&](test::SolidModel& s, auto facets) {
+    return std::make_unique<physics::TractionTerm>(s.mesh, s.dofs, s.u, facets,
+                                                   Vec3(F / area, 0, 0), kRamp);
+  });
+  const Real l = stretch_at(F, [](const UniaxialState& u) { return u.P; });
   expect_uniaxial_displacements(m, l, uniaxial(l).t);
 }
 

@@ -237,6 +237,8 @@ void hash_surface_loads(const std::vector<io::PressureSpec>& pressures,
     h.text(t.curve);
     if (t.per_current_area) // (per reference area: the hash is unchanged)
       h.integer(1);
+    if (t.total_force) // (a traction: the hash is unchanged)
+      h.integer(3);
   }
 }
 

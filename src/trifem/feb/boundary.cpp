@@ -227,6 +227,36 @@ io::TractionSpec traction_load(const Reader& r, pugi::xml_node load) {
   return t;
 }
 
+/// <surface_load type="force">: FEBio's uniform surface force, scale x force spread over the
+/// surface's reference area (a dead traction force/A0; the load curve is that of <scale>).
+io::TractionSpec force_load(const Reader& r, pugi::xml_node load) {
+  io::TractionSpec t;
+  t.surface = r.surface(load);
+  t.total_force = true;
+  Real scale = 1.0;
+  for (pugi::xml_node c : elements(load)) {
+    const std::string_view name = c.name();
+    if (name == "scale") {
+      scale = r.doc.number(c);
+      t.curve = r.curve_of(c);
+    } else if (name == "force") {
+      if (c.attribute("lc"))
+        r.doc.fail(c, "a load curve on the force vector is not supported (put it on <scale>)");
+      t.value = r.doc.vector(c);
+    } else if (name == "shell_bottom") {
+      if (flag(r, c))
+        r.doc.fail(c, "shell_bottom is not supported (trifem has no shells)");
+    } else {
+      r.doc.fail(c, fmt::format("unknown parameter '{}' of a force load (expected one of: scale, "
+                                "force, shell_bottom)",
+                                name));
+    }
+  }
+  r.doc.child(load, "force"); // required: InputError if missing
+  t.value *= scale;
+  return t;
+}
+
 /// Checks the flags of a load that trifem supports at 0 only (linear, shell_bottom), and that
 /// every other child is one of `known`.
 void check_load_children(const Reader& r, pugi::xml_node load,
@@ -440,6 +470,8 @@ void read_loads(Reader& r, pugi::xml_node section, std::vector<io::PressureSpec>
       pressures.push_back(pressure_load(r, load));
     } else if (surface_load && type == "traction") {
       tractions.push_back(traction_load(r, load));
+    } else if (surface_load && type == "force") {
+      tractions.push_back(force_load(r, load));
     } else if (surface_load && type == "normal_traction") {
       if (auto p = normal_traction(r, load))
         pressures.push_back(*p);
@@ -450,9 +482,9 @@ void read_loads(Reader& r, pugi::xml_node section, std::vector<io::PressureSpec>
     } else if (std::string_view(load.name()) == "nodal_load") {
       nodal_force(r, load, step);
     } else {
-      r.doc.fail(load, "only <surface_load> of type pressure, traction, normal_traction and "
-                       "fluidflux are supported in <Loads>, <body_load> of type const and body "
-                       "force, and <nodal_load> of type nodal_force");
+      r.doc.fail(load, "only <surface_load> of type pressure, traction, force, normal_traction "
+                       "and fluidflux are supported in <Loads>, <body_load> of type const and "
+                       "body force, and <nodal_load> of type nodal_force");
     }
   }
 }

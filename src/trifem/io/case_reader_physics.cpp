@@ -285,10 +285,23 @@ void read_loads(const Table& root, CaseSpec& spec) {
   }
   static const Options<bool> areas = {{"reference", false}, {"current", true}};
   for (const Table& t : loads->tables("traction")) {
-    t.allow({"surface", "value", "curve", "area"});
-    spec.tractions.push_back({t.name("surface"), t.vec3("value", {.unit = "MPa"}, std::nullopt),
-                              read_curve_reference(t, spec),
-                              t.choice("area", areas, std::optional(false), "traction area")});
+    t.allow({"surface", "value", "force", "curve", "area"});
+    const bool total = t.find("force") != nullptr;
+    if (total == (t.find("value") != nullptr))
+      fail(t.where(), t.path(),
+           fmt::format("give either value (a traction [MPa]) or force (a total force [N] "
+                       "spread over the surface's reference area), not {}",
+                       total ? "both" : "neither"));
+    TractionSpec load{t.name("surface"),
+                      total ? t.vec3("force", {.unit = "N"}, std::nullopt)
+                            : t.vec3("value", {.unit = "MPa"}, std::nullopt),
+                      read_curve_reference(t, spec),
+                      t.choice("area", areas, std::optional(false), "traction area"), total};
+    if (total && load.per_current_area)
+      fail(t.find("area"), fmt::format("{} = \"current\"", t.path("area")),
+           "a force is spread over the reference area (remove area, or give a traction value "
+           "per current area)");
+    spec.tractions.push_back(std::move(load));
   }
 }
 

@@ -309,9 +309,12 @@ struct ConstraintSpec {
 /// dead load) or per current area (key `area`).
 struct TractionSpec {
   std::string surface;
-  Vec3 value = Vec3::Zero();
+  Vec3 value = Vec3::Zero(); ///< per unit area [MPa]; the total force [N] if total_force
   std::string curve;
   bool per_current_area = false; ///< `area = "current"`
+  /// `force = [...]`: value is a total force spread uniformly over the surface's reference
+  /// area, a traction value / A0 per reference area (FEBio's surface force load).
+  bool total_force = false;
 };
 
 /// [[loads.body_force]]: a dead body force per unit mass (gravity) on the solid and rigid cells

@@ -162,7 +162,7 @@ void write_conditions(const std::vector<FixedSpec>& fixed,
   for (const TractionSpec& p : tractions) {
     t.header(fmt::format("[[{}.traction]]", loads));
     t.string("surface", p.surface);
-    t.vector("value", p.value);
+    t.vector(p.total_force ? "force" : "value", p.value);
     t.optional_string("curve", p.curve);
     if (p.per_current_area)
       t.string("area", "current");

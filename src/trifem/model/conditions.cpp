@@ -8,6 +8,7 @@
 #include "trifem/physics/bath_term.hpp"
 #include "trifem/physics/body_force_term.hpp"
 #include "trifem/physics/cell_mass.hpp"
+#include "trifem/physics/facet_area_any.hpp"
 #include "trifem/physics/surface_load_term.hpp"
 
 #include <algorithm>
@@ -158,8 +159,17 @@ surface_load_terms(const io::CaseSpec& spec, const std::vector<io::PressureSpec>
     const auto& t = tractions[i];
     const auto& surface = with_context(fmt::format("{}loads.traction[{}].surface", prefix, i + 1),
                                        [&] { return model.mesh.surface(t.surface); });
+    Vec3 traction = t.value;
+    if (t.total_force) { // spread over the reference area
+      const Real area = physics::reference_area(model.mesh, surface.facets);
+      TRIFEM_CHECK(area > 0.0,
+                   "{}loads.traction[{}].surface: '{}' has no area to spread the force "
+                   "over",
+                   prefix, i + 1, t.surface);
+      traction /= area;
+    }
     terms.push_back(std::make_unique<physics::TractionTerm>(
-        model.mesh, model.dofs, model.fields.u, surface.facets, t.value, make_curve(spec, t.curve),
+        model.mesh, model.dofs, model.fields.u, surface.facets, traction, make_curve(spec, t.curve),
         t.per_current_area ? physics::TractionArea::Current : physics::TractionArea::Reference));
   }
   return terms;

@@ -37,4 +37,18 @@ FacetVectorX facet_area_vectors(const fe::ReferenceFacet& reference, const Facet
   return a;
 }
 
+Real reference_area(const mesh::Mesh& mesh, const std::vector<mesh::Facet>& facets) {
+  Real area = 0.0;
+  for (const mesh::Facet& f : facets) {
+    const fe::ReferenceFacet& reference = fe::reference_facet(f.type);
+    const FacetPositions X = facet_positions(mesh, f);
+    for (const fe::FacetQuadraturePoint& p : reference.rule().points) {
+      const fe::FacetShapeGrads dN = reference.shape_grad(p.xi);
+      const Vec3 t1 = X.transpose() * dN.col(0), t2 = X.transpose() * dN.col(1);
+      area += t1.cross(t2).norm() * p.weight;
+    }
+  }
+  return area;
+}
+
 } // namespace trifem::physics

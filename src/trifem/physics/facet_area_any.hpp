@@ -32,4 +32,7 @@ FacetPositions facet_positions(const mesh::Mesh& mesh, const mesh::Facet& f,
 FacetVectorX facet_area_vectors(const fe::ReferenceFacet& reference, const FacetPositions& x,
                                 FacetMatrixX* derivative = nullptr);
 
+/// The reference area ∫ |X_s1 × X_s2| ds of `facets`, each by its family's rule [mm²].
+Real reference_area(const mesh::Mesh& mesh, const std::vector<mesh::Facet>& facets);
+
 } // namespace trifem::physics

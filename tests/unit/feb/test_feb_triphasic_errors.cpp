@@ -84,10 +84,19 @@ TEST(FebTriphasic, SolubilityIsTheInverseActivityCoefficient) {
   EXPECT_DOUBLE_EQ(spec.materials.at("Cartilage").parameters.at("gamma_minus"), 1.0);
 }
 
+// diff below free_diff: the solute's friction with the solid (free_d_plus); above it refused
+TEST(FebTriphasic, AFreeDiffusivityAboveTheTissuesIsTheFrictionWithTheSolid) {
+  const io::CaseSpec spec =
+      feb::parse_feb(column_with("<diff>0.0005</diff>", "<diff>0.0004</diff>"), kFile);
+  const auto& p = spec.materials.at("Cartilage").parameters;
+  EXPECT_DOUBLE_EQ(p.at("d_plus"), 0.0004);
+  EXPECT_DOUBLE_EQ(p.at("free_d_plus"), 0.0005);
+}
+
 TEST(FebTriphasic, RefusesWhatItCannotMap) {
-  expect_contains(column_error(column_with("<diff>0.0005</diff>", "<diff>0.0004</diff>")),
+  expect_contains(column_error(column_with("<diff>0.0005</diff>", "<diff>0.0006</diff>")),
                   {"tri.feb:", "/solute[@sol='Na']/diffusivity[@type='diff-const-iso']: ",
-                   "diff = 0.0004 differs from free_diff = 0.0005"});
+                   "diff = 0.0006 exceeds free_diff = 0.0005"});
   expect_contains(column_error(column_with("<charge_number>-1</charge_number>",
                                            "<charge_number>2</charge_number>")),
                   {"/Solutes/solute[@name='Cl']/charge_number: ", "charge number 2"});

@@ -279,6 +279,40 @@ TEST(FebVerification, MooneyRivlinTractionPerReferenceAndPerCurrentArea) {
   }
 }
 
+// The same block under FEBio's surface force (<surface_load type="force">): 0.2 x (0, 0, 0.5) N
+// spread over the top's reference area of 1 mm^2 is the dead traction of 0.1 MPa (linear = 1
+// above): P_zz = 0.1.
+TEST(FebVerification, MooneyRivlinSurfaceForceIsTheDeadTractionForceOverArea) {
+  const auto law = mooney_rivlin(0.2, 0.05, 20.0);
+  const auto nominal = [&](Real c) {
+    const Real a = lateral_stretch(law, c);
+    return law(a, c)[1] * a * a;
+  };
+  Real lo = 1.0, hi = 1.5;
+  for (int i = 0; i < 200; ++i) {
+    const Real c = 0.5 * (lo + hi);
+    (nominal(c) > 0.1 ? hi : lo) = c;
+  }
+  const Real c = 0.5 * (lo + hi);
+  const std::filesystem::path file = kData / "uniaxial_mooney_rivlin_pressure.feb";
+  std::string text = read_file(file);
+  const std::string from = text.substr(
+      text.find("<surface_load"), text.find("</surface_load>") + 15 - text.find("<surface_load"));
+  text.replace(text.find(from), from.size(),
+               "<surface_load name=\"Pull\" surface=\"Top\" type=\"force\">\n"
+               "<scale lc=\"1\">0.2</scale>\n<force>0,0,0.5</force>\n"
+               "<shell_bottom>0</shell_bottom>\n</surface_load>");
+  const io::CaseSpec spec = feb::parse_feb(text, file);
+  ASSERT_EQ(spec.tractions.size(), 1u);
+  EXPECT_TRUE(spec.tractions[0].total_force);
+  EXPECT_FALSE(spec.tractions[0].per_current_area);
+  EXPECT_DOUBLE_EQ(spec.tractions[0].value.z(), 0.1); // scale x force [N]
+  const FebRun r = run(spec);
+  ASSERT_TRUE(r.report.success) << r.report.failure;
+  EXPECT_NEAR(displacement(*r.model, 6, 2), c - 1.0, 1e-8);
+  EXPECT_GT(c, 1.05);
+}
+
 TEST(FebVerification, OgdenTwoSteps) {
   const auto law = ogden({{0.4, 4.0}, {0.2, -2.0}}, 30.0);
   std::map<long, Real> force;

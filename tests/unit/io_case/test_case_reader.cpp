@@ -241,13 +241,14 @@ TEST(CaseReader, TriphasicCaseMaterialsAndOptions) {
   EXPECT_EQ(cart.solid->type, "saint-venant-kirchhoff");
   EXPECT_DOUBLE_EQ(cart.solid->parameters.at("E"), 0.3);
   EXPECT_DOUBLE_EQ(cart.solid->parameters.at("nu"), 0.0);
-  EXPECT_EQ(cart.parameters.size(), 9u); // every key of the triphasic schema, defaults filled in
+  EXPECT_EQ(cart.parameters.size(), 11u); // every key of the triphasic schema, defaults filled in
   EXPECT_DOUBLE_EQ(cart.parameters.at("phi_s0"), 0.25);
   EXPECT_DOUBLE_EQ(cart.parameters.at("permeability"), 1.07e-3);
   EXPECT_DOUBLE_EQ(cart.parameters.at("fixed_charge"), 2.0e-4);
   EXPECT_DOUBLE_EQ(cart.parameters.at("fixed_charge_basis"), 1.0); // "tissue"
   EXPECT_DOUBLE_EQ(cart.parameters.at("d_plus"), 5.0e-4);
   EXPECT_DOUBLE_EQ(cart.parameters.at("d_minus"), 8.0e-4);
+  EXPECT_DOUBLE_EQ(cart.parameters.at("free_d_plus"), 0.0); // d0 = d: the paper's ions
   EXPECT_DOUBLE_EQ(cart.parameters.at("gamma_plus"), 0.9);
   EXPECT_DOUBLE_EQ(cart.parameters.at("gamma_minus"), 1.0); // default
   EXPECT_DOUBLE_EQ(cart.parameters.at("osmotic"), 0.95);
@@ -686,8 +687,8 @@ const std::vector<BadCase> kMixtureBadCases = {
     {"unknown_mixture_key",
      cartilage_with("phi_s0 = 0.2", "phi_s0 = 0.2\nporosity = 0.8"),
      {"materials.cart.porosity: unknown key (expected one of: type, solid, phi_s0, permeability, "
-      "fixed_charge, fixed_charge_basis, d_plus, d_minus, gamma_plus, gamma_minus, osmotic, "
-      "axes, density) (line 22)"}},
+      "fixed_charge, fixed_charge_basis, d_plus, d_minus, free_d_plus, free_d_minus, gamma_plus, "
+      "gamma_minus, osmotic, axes, density) (line 22)"}},
     {"misspelt_mixture_key",
      cartilage_with("permeability", "permeabilty"),
      {"materials.cart.permeabilty: unknown key", "did you mean 'permeability'?"}},

@@ -358,6 +358,32 @@ area = "current"
                        {"loads.traction[1].area = 'deformed'", "reference", "current"}});
 }
 
+TEST(CaseReaderTraction, AForceIsATotalOverTheReferenceAreaAndRoundTrips) {
+  const std::string load = "[[loads.traction]]\nsurface = \"block.xmax\"\n";
+  const CaseSpec c = parse_case(body_case(load + "force = [0.3, 0, 0]\n"), kMemoryFile);
+  ASSERT_EQ(c.tractions.size(), 1u);
+  EXPECT_TRUE(c.tractions[0].total_force);
+  EXPECT_EQ(c.tractions[0].value, Vec3(0.3, 0, 0));
+  const CaseSpec back = parse_case(trifem::io::case_toml(c), kMemoryFile);
+  ASSERT_EQ(back.tractions.size(), 1u);
+  EXPECT_TRUE(back.tractions[0].total_force);
+  const auto fingerprint = [](const std::string& text) {
+    const CaseSpec spec = parse_case(text, kMemoryFile);
+    const auto model = trifem::model::build_model(spec);
+    return trifem::analysis::case_fingerprint(
+        spec, *model)[static_cast<std::size_t>(trifem::analysis::CasePart::BoundaryConditions)];
+  };
+  EXPECT_NE(fingerprint(body_case(load + "force = [0.3, 0, 0]\n")),
+            fingerprint(body_case(load + "value = [0.3, 0, 0]\n")));
+  expect_fails_naming({"both",
+                       body_case(load + "force = [1, 0, 0]\nvalue = [1, 0, 0]\n"),
+                       {"loads.traction[1]", "either value", "force", "not both"}});
+  expect_fails_naming({"neither", body_case(load), {"loads.traction[1]", "not neither"}});
+  expect_fails_naming({"current",
+                       body_case(load + "force = [1, 0, 0]\narea = \"current\"\n"),
+                       {"loads.traction[1].area = \"current\"", "reference area"}});
+}
+
 TEST(CaseReaderPressure, AFollowerByDefaultOrADeadLoadAndRoundTrips) {
   const std::string load = "[[loads.pressure]]\nsurface = \"block.xmax\"\nvalue = 0.1\n";
   const CaseSpec c = parse_case(body_case(load + load + "follower = false\n"), kMemoryFile);

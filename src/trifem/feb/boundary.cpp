@@ -196,63 +196,38 @@ io::PressureSpec pressure_load(const Reader& r, pugi::xml_node load) {
 
 /// <surface_load type="traction">: scale x traction in a fixed direction, integrated as FEBio
 /// does over the current surface (per current area) unless <linear> is 1 (over the reference
-/// surface: a dead load); the load curve is that of <scale>.
-io::TractionSpec traction_load(const Reader& r, pugi::xml_node load) {
+/// surface: a dead load); type="force": scale x force spread over the surface's reference area
+/// (FEBio's uniform surface force, a dead traction force/A0). The load curve is that of <scale>.
+io::TractionSpec fixed_direction_load(const Reader& r, pugi::xml_node load, bool force) {
+  const char* vector = force ? "force" : "traction";
   io::TractionSpec t;
   t.surface = r.surface(load);
-  t.per_current_area = true; // FEBio's default, linear = 0
+  t.per_current_area = !force; // FEBio's traction: linear = 0 by default
+  t.total_force = force;
   Real scale = 1.0;
   for (pugi::xml_node c : elements(load)) {
     const std::string_view name = c.name();
     if (name == "scale") {
       scale = r.doc.number(c);
       t.curve = r.curve_of(c);
-    } else if (name == "traction") {
+    } else if (name == vector) {
       if (c.attribute("lc"))
-        r.doc.fail(c, "a load curve on the traction vector is not supported (put it on <scale>)");
+        r.doc.fail(c, fmt::format("a load curve on the {} vector is not supported (put it on "
+                                  "<scale>)",
+                                  vector));
       t.value = r.doc.vector(c);
     } else if (name == "shell_bottom") {
       if (flag(r, c))
         r.doc.fail(c, "shell_bottom is not supported (trifem has no shells)");
-    } else if (name == "linear") {
+    } else if (name == "linear" && !force) {
       t.per_current_area = !flag(r, c);
     } else {
-      r.doc.fail(c, fmt::format("unknown parameter '{}' of a traction load (expected one of: "
-                                "scale, traction, linear, shell_bottom)",
-                                name));
+      r.doc.fail(c, fmt::format("unknown parameter '{}' of a {} load (expected one of: scale, {}, "
+                                "{}shell_bottom)",
+                                name, vector, vector, force ? "" : "linear, "));
     }
   }
-  r.doc.child(load, "traction"); // required: InputError if missing
-  t.value *= scale;
-  return t;
-}
-
-/// <surface_load type="force">: FEBio's uniform surface force, scale x force spread over the
-/// surface's reference area (a dead traction force/A0; the load curve is that of <scale>).
-io::TractionSpec force_load(const Reader& r, pugi::xml_node load) {
-  io::TractionSpec t;
-  t.surface = r.surface(load);
-  t.total_force = true;
-  Real scale = 1.0;
-  for (pugi::xml_node c : elements(load)) {
-    const std::string_view name = c.name();
-    if (name == "scale") {
-      scale = r.doc.number(c);
-      t.curve = r.curve_of(c);
-    } else if (name == "force") {
-      if (c.attribute("lc"))
-        r.doc.fail(c, "a load curve on the force vector is not supported (put it on <scale>)");
-      t.value = r.doc.vector(c);
-    } else if (name == "shell_bottom") {
-      if (flag(r, c))
-        r.doc.fail(c, "shell_bottom is not supported (trifem has no shells)");
-    } else {
-      r.doc.fail(c, fmt::format("unknown parameter '{}' of a force load (expected one of: scale, "
-                                "force, shell_bottom)",
-                                name));
-    }
-  }
-  r.doc.child(load, "force"); // required: InputError if missing
+  r.doc.child(load, vector); // required: InputError if missing
   t.value *= scale;
   return t;
 }
@@ -469,9 +444,9 @@ void read_loads(Reader& r, pugi::xml_node section, std::vector<io::PressureSpec>
     if (surface_load && type == "pressure") {
       pressures.push_back(pressure_load(r, load));
     } else if (surface_load && type == "traction") {
-      tractions.push_back(traction_load(r, load));
+      tractions.push_back(fixed_direction_load(r, load, false));
     } else if (surface_load && type == "force") {
-      tractions.push_back(force_load(r, load));
+      tractions.push_back(fixed_direction_load(r, load, true));
     } else if (surface_load && type == "normal_traction") {
       if (auto p = normal_traction(r, load))
         pressures.push_back(*p);

@@ -116,6 +116,18 @@ Real parameter_value(const Reader& r, pugi::xml_node p) {
   return r.doc.number(p);
 }
 
+/// `law`, validated by trifem's schema: returned as it is, or the validation's InputError
+/// located at `node`.
+material::LawSpec validated(const Reader& r, pugi::xml_node node, material::LawSpec law,
+                            const std::string& context = "") {
+  try {
+    material::create_law(law, context.empty() ? fmt::format("trifem {}", law.type) : context);
+  } catch (const InputError& e) {
+    r.doc.fail(node, e.what());
+  }
+  return law;
+}
+
 /// A density element `name` of `node`, or FEBio's default for it.
 Real density_child(const Reader& r, pugi::xml_node node, const char* name, Real fallback) {
   const pugi::xml_node d = node.child(name);
@@ -192,12 +204,7 @@ material::LawSpec trans_iso_law(const Reader& r, pugi::xml_node node, const char
   if (!has_fibre)
     r.doc.fail(node, "the fibre direction <fiber> is required");
   material::LawSpec mixture{std::string(material::kSolidMixtureType), {}, {matrix, fibre}};
-  try {
-    material::create_law(mixture, fmt::format("trifem {}", mixture.type));
-  } catch (const InputError& e) {
-    r.doc.fail(node, e.what());
-  }
-  return mixture;
+  return validated(r, node, std::move(mixture));
 }
 
 /// A fibre constituent of a FEBio solid mixture: fiber-exp-pow (its toe stretch lam0 = 1 and
@@ -332,12 +339,7 @@ material::LawSpec solid_mixture_law(const Reader& r, pugi::xml_node node, bool u
       }
     carrier->parameters["k"] += k; // (absent: 0)
   }
-  try {
-    material::create_law(mixture, fmt::format("trifem {}", mixture.type));
-  } catch (const InputError& e) {
-    r.doc.fail(node, e.what());
-  }
-  return mixture;
+  return validated(r, node, std::move(mixture));
 }
 
 /// FEBio's "Arruda-Boyce" (mu, N, k): W = mu sum_i a_i (I1~^i - 3^i)/N^(i-1) + k/2 (ln J)^2 with
@@ -376,12 +378,7 @@ material::LawSpec arruda_boyce_law(const Reader& r, pugi::xml_node node) {
   }
   for (int j = 1; j <= 5; ++j)
     law.parameters[fmt::format("c{}", j)] = c[static_cast<std::size_t>(j - 1)];
-  try {
-    material::create_law(law, "trifem yeoh (Arruda-Boyce)");
-  } catch (const InputError& e) {
-    r.doc.fail(node, e.what());
-  }
-  return law;
+  return validated(r, node, std::move(law), "trifem yeoh (Arruda-Boyce)");
 }
 
 /// FEBio's "EFD neo-Hookean" (neo-Hookean E, v), "EFD Mooney-Rivlin" and "EFD Veronda-Westmann"
@@ -407,12 +404,7 @@ material::LawSpec efd_ground_law(const Reader& r, pugi::xml_node node, const std
     check_pressure_model(r, p);
   material::LawSpec mixture{
       std::string(material::kSolidMixtureType), {}, {matrix, efd_law(r, node, also, !neo)}};
-  try {
-    material::create_law(mixture, fmt::format("trifem {}", mixture.type));
-  } catch (const InputError& e) {
-    r.doc.fail(node, e.what());
-  }
-  return mixture;
+  return validated(r, node, std::move(mixture));
 }
 
 /// <mat_axis type="vector"><a>..</a><d>..</d></mat_axis>: FEBio's constant material axes,
@@ -498,12 +490,7 @@ material::LawSpec solid_law(const Reader& r, pugi::xml_node node,
   }
   if (!validate) // a constituent: validated with its mixture (after its k is set)
     return spec;
-  try {
-    material::create_law(spec, fmt::format("trifem {}", spec.type));
-  } catch (const InputError& e) {
-    r.doc.fail(node, e.what());
-  }
-  return spec;
+  return validated(r, node, std::move(spec));
 }
 
 /// The permeability element of a biphasic material as mixture parameters.
@@ -550,11 +537,7 @@ void validate_mixture(const Reader& r, pugi::xml_node node, io::MaterialSpec& m)
   if (m.solid->type == "porous-neo-hookean" && m.solid->parameters.contains("phi0") &&
       m.solid->parameters.at("phi0") == 1.0)
     m.solid->parameters["phi0"] = m.parameters.at("phi_s0");
-  try {
-    material::create_law(*m.solid, fmt::format("trifem {}", m.solid->type));
-  } catch (const InputError& e) {
-    r.doc.fail(node.child("solid"), e.what());
-  }
+  (void)validated(r, node.child("solid"), *m.solid);
   try {
     m.parameters =
         material::validate_mixture_parameters(m.type == "triphasic", m.parameters, m.type);

@@ -34,17 +34,13 @@ const std::vector<ParameterSchema>& EllipsoidalFibreDistribution::schema() {
        Range::non_negative(), std::nullopt, ParameterKind::Vector},
       {"beta", "", "powers of (I_n - 1) along x, y, z (semi-axes of the power ellipsoid)",
        Range{2.0, 1e300, false, false}, std::nullopt, ParameterKind::Vector},
-      {"resolution", "",
-       "Gauss points along each edge of a cube face of the rule on the sphere (an integer; "
-       "3 resolution^2 directions)",
-       Range::closed(kMinSphereResolution, kMaxSphereResolution), 12.0},
+      resolution_schema(),
   };
   return s;
 }
 
 void EllipsoidalFibreDistribution::check(const ParameterValues& p, const std::string& context) {
-  const Real r = p.at("resolution");
-  TRIFEM_CHECK(r == std::floor(r), "{}.resolution = {}: must be an integer", context, r);
+  check_resolution(p, context);
 }
 
 EllipsoidalFibreDistribution::EllipsoidalFibreDistribution(const ParameterValues& p, bool uncoupled)

@@ -16,17 +16,13 @@ const std::vector<ParameterSchema>& FibreDistribution::schema() {
       {"semi_axes", "",
        "semi-axes of the ellipsoidal fibre density along x, y, z (equal: spherical)",
        Range::positive(), std::nullopt, ParameterKind::Vector},
-      {"resolution", "",
-       "Gauss points along each edge of a cube face of the rule on the sphere (an integer; "
-       "3 resolution^2 directions)",
-       Range::closed(kMinSphereResolution, kMaxSphereResolution), 12.0},
+      resolution_schema(),
   };
   return s;
 }
 
 void FibreDistribution::check(const ParameterValues& p, const std::string& context) {
-  const Real r = p.at("resolution");
-  TRIFEM_CHECK(r == std::floor(r), "{}.resolution = {}: must be an integer", context, r);
+  check_resolution(p, context);
 }
 
 FibreDistribution::FibreDistribution(const ParameterValues& p)

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "trifem/material/sphere_rule.hpp"
 
+#include "trifem/core/error.hpp"
+
 #include <cmath>
 #include <numbers>
 #include <utility>
@@ -76,6 +78,18 @@ SphereRule sphere_rule(int resolution) {
   for (std::size_t i = 0; i < w.size(); ++i)
     rule.weights.push_back(w[i] * (1.0 + eps * g[i]));
   return rule;
+}
+
+ParameterSchema resolution_schema() {
+  return {"resolution", "",
+          "Gauss points along each edge of a cube face of the rule on the sphere (an integer; "
+          "3 resolution^2 directions)",
+          Range::closed(kMinSphereResolution, kMaxSphereResolution), 12.0};
+}
+
+void check_resolution(const ParameterValues& p, const std::string& context) {
+  const Real r = p.at("resolution");
+  TRIFEM_CHECK(r == std::floor(r), "{}.resolution = {}: must be an integer", context, r);
 }
 
 } // namespace trifem::material

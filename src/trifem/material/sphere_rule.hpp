@@ -4,6 +4,9 @@
 #pragma once
 
 #include "trifem/core/types.hpp"
+#include "trifem/material/schema.hpp"
+
+#include <string>
 
 #include <vector>
 
@@ -11,6 +14,11 @@ namespace trifem::material {
 
 /// The resolutions a fibre distribution may ask for.
 inline constexpr Real kMinSphereResolution = 3.0, kMaxSphereResolution = 64.0;
+
+/// The `resolution` parameter of the fibre distributions (default 12).
+ParameterSchema resolution_schema();
+/// InputError naming `context.resolution` unless it is an integer.
+void check_resolution(const ParameterValues& params, const std::string& context);
 
 /// The directions n of the half sphere (n and -n give the same terms) and their weights w of
 /// `resolution` x `resolution` Gauss-Legendre points in equiangular coordinates on each of the

@@ -256,7 +256,7 @@ TEST(FebErrors, UnsupportedSurfaceLoads) {
       feb_error(with_load("traction", "<scale>1</scale>")),
       {"bad.feb:21: ", "surface_load[@type='traction']: the element <traction> is required"});
   expect_contains(feb_error(with_load("heat flux", "<flux>1</flux>")),
-                  {"bad.feb:21: ", "only <surface_load> of type pressure, traction, "
+                  {"bad.feb:21: ", "only <surface_load> of type pressure, traction, force, "
                                    "normal_traction and fluidflux are supported"});
   expect_contains(feb_error(with_load("fluidflux", "<flux>1</flux>")),
                   {"bad.feb:21: ", "a fluid flux needs the biphasic or multiphasic module"});

@@ -928,6 +928,32 @@ io::CaseSpec two_step_cube(const std::string& material) {
   return feb::parse_feb(text, "two_step_cube.feb");
 }
 
+/// Trans iso Mooney-Rivlin (c2 = 0) with its fibre along the pull: the isochoric Kirchhoff
+/// stress along it adds the fibre's F(l~) = c3 (exp(c4 (l~ - 1)) - 1) (below lam_max) or
+/// c5 l~ + c6 to the Mooney-Rivlin part; across it, Mooney-Rivlin alone.
+StressLaw trans_iso_mooney_rivlin(Real c1, Real c3, Real c4, Real c5, Real lam_max, Real k) {
+  const Real c6 = c3 * (std::exp(c4 * (lam_max - 1.0)) - 1.0) - c5 * lam_max;
+  return [=](Real a, Real c) {
+    const Real J = a * a * c, s = std::cbrt(J), la = a / s, lc = c / s;
+    const Real fibre = lc <= 1.0      ? 0.0
+                       : lc < lam_max ? c3 * (std::exp(c4 * (lc - 1.0)) - 1.0)
+                                      : c5 * lc + c6;
+    const Real ta = 2.0 * c1 * la * la, tc = 2.0 * c1 * lc * lc + fibre;
+    const Real mean = (2.0 * ta + tc) / 3.0;
+    return std::array<Real, 2>{(ta - mean + k * std::log(J)) / J,
+                               (tc - mean + k * std::log(J)) / J};
+  };
+}
+
+/// The top reaction after every step of the run of `spec`.
+std::vector<Real> top_reactions(const io::CaseSpec& spec) {
+  std::vector<Real> out;
+  const FebRun r =
+      run(spec, [&](const model::Model& m, Real) { out.push_back(reaction(m, "top", 2)); });
+  EXPECT_TRUE(r.report.success) << r.report.failure;
+  return out;
+}
+
 /// The top reactions at t = 1 (stretch 1.3) and t = 2 (1.1) against `law`.
 void expect_two_step_reactions(const io::CaseSpec& spec, const StressLaw& law) {
   std::map<long, Real> force;
@@ -1071,17 +1097,7 @@ TEST(FebVerification, TransIsoMooneyRivlinAlongItsFibreTwoSteps) {
   EXPECT_EQ(m.type, "solid-mixture");
   ASSERT_EQ(m.constituents.size(), 2u);
   EXPECT_EQ(m.constituents[1].type, "fibre-exp-linear");
-  const Real c6 = c3 * (std::exp(c4 * (lam_max - 1.0)) - 1.0) - c5 * lam_max;
-  expect_two_step_reactions(spec, [=](Real a, Real c) {
-    const Real J = a * a * c, s = std::cbrt(J), la = a / s, lc = c / s;
-    const Real fibre = lc <= 1.0      ? 0.0
-                       : lc < lam_max ? c3 * (std::exp(c4 * (lc - 1.0)) - 1.0)
-                                      : c5 * lc + c6;
-    const Real ta = 2.0 * c1 * la * la, tc = 2.0 * c1 * lc * lc + fibre;
-    const Real mean = (2.0 * ta + tc) / 3.0;
-    return std::array<Real, 2>{(ta - mean + k * std::log(J)) / J,
-                               (tc - mean + k * std::log(J)) / J};
-  });
+  expect_two_step_reactions(spec, trans_iso_mooney_rivlin(c1, c3, c4, c5, lam_max, k));
 }
 
 // FEBio's uncoupled solid mixture of Mooney-Rivlin and an uncoupled fiber-exp-linear is trans
@@ -1101,17 +1117,7 @@ TEST(FebVerification, UncoupledSolidMixtureIsTransIsoMooneyRivlinWithTheSummedBu
   ASSERT_EQ(m.constituents.size(), 2u);
   EXPECT_EQ(m.constituents[0].parameters.at("k"), k);
   EXPECT_EQ(m.constituents[1].type, "fibre-exp-linear");
-  const Real c6 = c3 * (std::exp(c4 * (lam_max - 1.0)) - 1.0) - c5 * lam_max;
-  expect_two_step_reactions(spec, [=](Real a, Real c) {
-    const Real J = a * a * c, s = std::cbrt(J), la = a / s, lc = c / s;
-    const Real fibre = lc <= 1.0      ? 0.0
-                       : lc < lam_max ? c3 * (std::exp(c4 * (lc - 1.0)) - 1.0)
-                                      : c5 * lc + c6;
-    const Real ta = 2.0 * c1 * la * la, tc = 2.0 * c1 * lc * lc + fibre;
-    const Real mean = (2.0 * ta + tc) / 3.0;
-    return std::array<Real, 2>{(ta - mean + k * std::log(J)) / J,
-                               (tc - mean + k * std::log(J)) / J};
-  });
+  expect_two_step_reactions(spec, trans_iso_mooney_rivlin(c1, c3, c4, c5, lam_max, k));
 }
 
 // FEBio's solid mixture of neo-Hookean and the coupled fiber-exp-linear, its fibre given by
@@ -1190,16 +1196,9 @@ TEST(FebVerification, EfdNeoHookeanIsTheSolidMixtureOfItsTwoParts) {
       </material>)");
   const io::CaseSpec matrix = two_step_cube(
       R"(<material id="1" name="Ogden" type="neo-Hookean"><E>1</E><v>0.3</v></material>)");
-  const auto reactions = [](const io::CaseSpec& spec) {
-    std::vector<Real> out;
-    const FebRun r =
-        run(spec, [&](const model::Model& m, Real) { out.push_back(reaction(m, "top", 2)); });
-    EXPECT_TRUE(r.report.success) << r.report.failure;
-    return out;
-  };
-  const std::vector<Real> with_fibres = reactions(efd);
-  EXPECT_EQ(with_fibres, reactions(mixture));
-  const std::vector<Real> without = reactions(matrix);
+  const std::vector<Real> with_fibres = top_reactions(efd);
+  EXPECT_EQ(with_fibres, top_reactions(mixture));
+  const std::vector<Real> without = top_reactions(matrix);
   ASSERT_EQ(with_fibres.size(), without.size());
   ASSERT_FALSE(with_fibres.empty());
   EXPECT_GT(with_fibres.front(), 1.5 * without.front()) << "pulled 30 %: the fibres carry load";
@@ -1221,16 +1220,9 @@ TEST(FebVerification, EfdMooneyRivlinIsTheUncoupledMixtureOfItsTwoParts) {
       <solid type="EFD uncoupled"><beta>2.5,3,3</beta><ksi>3,2,2</ksi></solid></material>)");
   const io::CaseSpec matrix = two_step_cube(R"(<material id="1" name="Ogden" type="Mooney-Rivlin">
       <k>30</k><c1>0.5</c1><c2>0.1</c2></material>)");
-  const auto reactions = [](const io::CaseSpec& spec) {
-    std::vector<Real> out;
-    const FebRun r =
-        run(spec, [&](const model::Model& m, Real) { out.push_back(reaction(m, "top", 2)); });
-    EXPECT_TRUE(r.report.success) << r.report.failure;
-    return out;
-  };
-  const std::vector<Real> with_fibres = reactions(efd);
-  EXPECT_EQ(with_fibres, reactions(mixture));
-  const std::vector<Real> without = reactions(matrix);
+  const std::vector<Real> with_fibres = top_reactions(efd);
+  EXPECT_EQ(with_fibres, top_reactions(mixture));
+  const std::vector<Real> without = top_reactions(matrix);
   ASSERT_FALSE(with_fibres.empty());
   EXPECT_GT(with_fibres.front(), 1.5 * without.front());
 }

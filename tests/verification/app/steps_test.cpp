@@ -327,29 +327,22 @@ components = ["z"]
 // ---------------------------------------------------------------------------------------------
 // steady permeation driven by a bath pressure
 
-// The triphasic layer of the test below without fixed charge, the reference bath's
-// concentration at both ends, its free-solution diffusivities d0 above the tissue's d (FEBio's
-// free_diff: the ions also drag on the solid). Its concentration stays the bath's and its ion
-// potentials uniform, so each ion's momentum balance A_w w = A_ion j reads j = (d/d0) c w: the
-// ions are carried at the fraction d/d0 of the water's velocity (with d0 = d, with it).
-TEST(Steps, SteadyPermeationCarriesTheIonsAtTheFractionDOverD0OfTheWater) {
-  for (const bool hindered : {true, false}) {
-    const std::string free = hindered ? "free_d_plus = 1.2e-3\nfree_d_minus = 2.0e-3\n" : "";
-    const std::string text = R"(
+namespace {
+
+/// A layer 1 mm high of `layers` cells clamped at both ends and confined laterally (its fluxes
+/// too: `fluxes` names the flux field), a bath at gauge pressure 0.1 MPa ramped under it and the
+/// reference bath above it, solved by one steady-state step; `material` is the body of its
+/// [materials.tissue] table.
+std::string permeation_case(int layers, const std::string& material, const std::string& fluxes) {
+  return fmt::format(R"(
 [[mesh.box]]
 name = "layer"
 size = [1.0, 1.0, 1.0]
-divisions = [1, 1, 6]
+divisions = [1, 1, {}]
 material = "tissue"
 
 [materials.tissue]
-type = "triphasic"
-phi_s0 = 0.25
-permeability = 1.07e-3
-fixed_charge = 0.0
-d_plus = 6.0e-4
-d_minus = 8.0e-4
-)" + free + R"(
+{}
 [materials.tissue.solid]
 type = "neo-hookean"
 E = 0.3
@@ -363,7 +356,7 @@ set = "layer.all"
 components = ["x", "y"]
 [[boundary.fixed]]
 set = "layer.all"
-field = "fluxes"
+field = "{}"
 components = ["x", "y"]
 [[boundary.fixed]]
 set = "layer.zmin"
@@ -381,7 +374,28 @@ name = "permeation"
 end_time = 1.0
 dt = 0.25
 steady = true
-)";
+)",
+                     layers, material, fluxes);
+}
+
+} // namespace
+
+// The triphasic layer of the test below without fixed charge, the reference bath's
+// concentration at both ends, its free-solution diffusivities d0 above the tissue's d (FEBio's
+// free_diff: the ions also drag on the solid). Its concentration stays the bath's and its ion
+// potentials uniform, so each ion's momentum balance A_w w = A_ion j reads j = (d/d0) c w: the
+// ions are carried at the fraction d/d0 of the water's velocity (with d0 = d, with it).
+TEST(Steps, SteadyPermeationCarriesTheIonsAtTheFractionDOverD0OfTheWater) {
+  for (const bool hindered : {true, false}) {
+    const std::string free = hindered ? "free_d_plus = 1.2e-3\nfree_d_minus = 2.0e-3\n" : "";
+    const std::string text = permeation_case(6, R"(type = "triphasic"
+phi_s0 = 0.25
+permeability = 1.07e-3
+fixed_charge = 0.0
+d_plus = 6.0e-4
+d_minus = 8.0e-4
+)" + free,
+                                             "fluxes");
     const auto run = run_stepped(text);
     ASSERT_TRUE(run.report.success) << run.report.failure;
     const model::Model& m = *run.model;
@@ -407,49 +421,11 @@ steady = true
 // (p0 = 0.1 MPa against E = 0.3 MPa: strains of tens of percent along the layer).
 TEST(Steps, SteadyPermeationUnderABathPressureGivesDarcysFlux) {
   constexpr Real kappa = 1.07e-3, p0 = 0.1, h = 1.0;
-  const std::string text = R"(
-[[mesh.box]]
-name = "layer"
-size = [1.0, 1.0, 1.0]
-divisions = [1, 1, 8]
-material = "tissue"
-
-[materials.tissue]
-type = "biphasic"
+  const std::string text = permeation_case(8, R"(type = "biphasic"
 phi_s0 = 0.25
 permeability = 1.07e-3
-[materials.tissue.solid]
-type = "neo-hookean"
-E = 0.3
-nu = 0.0
-
-[curves.up]
-points = [[0.0, 0.0], [1.0, 1.0]]
-
-[[boundary.fixed]]
-set = "layer.all"
-components = ["x", "y"]
-[[boundary.fixed]]
-set = "layer.all"
-field = "fluid_flux"
-components = ["x", "y"]
-[[boundary.fixed]]
-set = "layer.zmin"
-components = ["z"]
-[[boundary.fixed]]
-set = "layer.zmax"
-components = ["z"]
-[[boundary.bath]]
-surface = "layer.zmin"
-pressure = 0.1
-curve = "up"
-
-[[step]]
-name = "permeation"
-end_time = 1.0
-dt = 0.25
-steady = true
-)";
+)",
+                                           "fluid_flux");
   std::vector<Real> flux; // w_z at the top nodes, end of the run
   Real stretch_range = 0.0;
   const auto run = run_stepped(text);

@@ -7,6 +7,7 @@
 #include "trifem/material/fibre_exp_linear.hpp"
 #include "trifem/material/fibre_exp_pow.hpp"
 #include "trifem/material/holmes_mow.hpp"
+#include "trifem/material/holmes_mow_uncoupled.hpp"
 #include "trifem/material/mooney_rivlin.hpp"
 #include "trifem/material/neo_hookean.hpp"
 #include "trifem/material/ogden.hpp"
@@ -63,6 +64,10 @@ const std::vector<LawEntry>& registered_laws() {
           {{"c1", 0.2}, {"c2", 1.5}, {"k", 10.0}}),
       entry<Yeoh>("yeoh", "uncoupled Yeoh, W = sum_i c_i (I1~-3)^i + k/2 (lnJ)^2",
                   {{"c1", 0.3}, {"c2", -0.02}, {"c3", 0.005}, {"k", 10.0}}),
+      entry<HolmesMowUncoupled>("holmes-mow-uncoupled",
+                                "uncoupled Holmes-Mow (FEBio form), W = mu/(2 beta) "
+                                "(e^(beta (I1~-3)) - 1) + k/2 (lnJ)^2",
+                                {{"mu", 0.3}, {"beta", 0.5}, {"k", 10.0}}),
       entry<PorousNeoHookean>("porous-neo-hookean",
                               "neo-Hookean whose pores close at J = phi0, W = mu ((I1 (J~/J)^(2/3) "
                               "- 3)/2 - ln J~), J~ = (J - phi0)/(1 - phi0)",

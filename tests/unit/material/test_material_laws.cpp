@@ -553,3 +553,27 @@ TEST(PorousNeoHookean, CauchyStressIsFebiosClosedFormAndEIsItsYoungsModulus) {
   const Real h = 1e-4;
   EXPECT_NEAR((W(1.0 + h) - 2.0 * W(1.0) + W(1.0 - h)) / (h * h), bulk, 1e-6 * bulk);
 }
+
+// Uncoupled Holmes-Mow: FEBio's deviatoric Cauchy stress dev(mu e^(beta (I1~ - 3)) b~)/J plus
+// k ln J / J (FEHolmesMowUC), and the beta = 0 limit, an uncoupled neo-Hookean dev(mu b~)/J.
+TEST(HolmesMowUncoupled, CauchyStressIsFebiosClosedForm) {
+  const Real mu = 0.4, k = 10.0;
+  for (const Real beta : {0.7, 0.0}) {
+    const auto law =
+        material::create_law("holmes-mow-uncoupled", {{"mu", mu}, {"beta", beta}, {"k", k}}, "h");
+    for (const PrincipalState& st : principal_states()) {
+      const Real J = st.l.prod();
+      const Vec3 b_bar = st.l.array().square() / std::cbrt(J * J);
+      const Real eQ = std::exp(beta * (b_bar.sum() - 3.0));
+      const Vec3 s = (mu * eQ / J * (b_bar.array() - b_bar.sum() / 3.0)).matrix() +
+                     Vec3::Constant(k * std::log(J) / J);
+      const Mat3 exact = st.R * s.asDiagonal() * st.R.transpose();
+      EXPECT_LE((cauchy(*law, st.F()) - exact).norm(), 1e-13 * exact.norm())
+          << beta << " " << st.l.transpose();
+    }
+    EXPECT_LE(difference_errors(*law, 1.1 * principal_states()[0].F().transpose() *
+                                          principal_states()[0].F())
+                  .stress,
+              1e-8);
+  }
+}

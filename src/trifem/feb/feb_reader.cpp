@@ -123,6 +123,7 @@ void read_sections(Reader& r) {
     detail::read_globals(r, globals);
   detail::read_materials(r, r.doc.child(root, "Material"));
   detail::read_mesh(r, r.doc.child(root, "Mesh"), root.child("MeshDomains"));
+  detail::add_local_fibre_views(r);
   if (r.version == Version::V4 && !root.child("MeshDomains"))
     r.doc.fail(root, "the element <MeshDomains> is required");
   if (const pugi::xml_node data = root.child("MeshData"))

@@ -174,7 +174,7 @@ Vec3 fibre_vector(const Reader& r, pugi::xml_node fiber) {
   if (type != "vector")
     r.doc.fail(fiber, "type",
                fmt::format("fiber of type '{}' is not supported (supported: vector and angles, "
-                           "a constant direction)",
+                           "a constant direction, and local in trans iso laws)",
                            type));
   const pugi::xml_node vector = fiber.child("vector");
   return r.doc.vector(vector ? vector : fiber);
@@ -183,7 +183,27 @@ Vec3 fibre_vector(const Reader& r, pugi::xml_node fiber) {
 /// FEBio's "trans iso Mooney-Rivlin" and "trans iso Veronda-Westmann": the uncoupled ground
 /// matrix `ground` (c1, c2, k) plus an uncoupled exponential-linear fibre family (c3, c4, c5,
 /// lam_max, fiber), as a trifem solid mixture of the two.
-material::LawSpec trans_iso_law(const Reader& r, pugi::xml_node node, const char* ground) {
+/// <fiber type="local"><local>n1,n2</local></fiber>: FEBio's fibre along each element's edge
+/// from its node n1 to its node n2 (1-based, FEBio's node order; 0,0: 1,2). The material gets
+/// per-cell axes whose e1 is that direction (a cell data view the reader makes once the mesh is
+/// read: local_fibre_view) and the fibre is e1. InputError where the material cannot take axes.
+void local_fibre(const Reader& r, pugi::xml_node fiber, std::optional<material::AxesSpec>* axes,
+                 material::LawSpec& fibre) {
+  if (axes == nullptr)
+    r.doc.fail(fiber, "a local fibre here is not supported (trifem orients a material as a whole)");
+  const std::vector<long> n = r.doc.ids(r.doc.child(fiber, "local"));
+  if (n.size() != 2 || n[0] < 0 || n[1] < 0 || (n[0] == 0) != (n[1] == 0) ||
+      (n[0] > 0 && n[0] == n[1]))
+    r.doc.fail(fiber, "local: expected two different element node numbers (1-based), or 0,0");
+  material::AxesSpec local;
+  local.kind = material::AxesKind::Mesh;
+  local.view = local_fibre_view(n[0] == 0 ? 1 : n[0], n[0] == 0 ? 2 : n[1]);
+  *axes = local;
+  material::set_vector(fibre.parameters, "fibre", Vec3::UnitX());
+}
+
+material::LawSpec trans_iso_law(const Reader& r, pugi::xml_node node, const char* ground,
+                                std::optional<material::AxesSpec>* axes) {
   material::LawSpec matrix{ground, {}, {}}, fibre{"fibre-exp-linear", {}, {}};
   bool has_fibre = false;
   for (pugi::xml_node p : elements(node)) {
@@ -195,7 +215,10 @@ material::LawSpec trans_iso_law(const Reader& r, pugi::xml_node node, const char
     } else if (name == "c3" || name == "c4" || name == "c5" || name == "lam_max") {
       fibre.parameters[name] = parameter_value(r, p);
     } else if (name == "fiber") {
-      material::set_vector(fibre.parameters, "fibre", fibre_vector(r, p));
+      if (std::string_view(p.attribute("type").value()) == "local")
+        local_fibre(r, p, axes, fibre);
+      else
+        material::set_vector(fibre.parameters, "fibre", fibre_vector(r, p));
       has_fibre = true;
     } else if (name == "active_contraction") {
       r.doc.fail(p, "an active contraction is not supported (trifem's fibres are passive)");
@@ -446,9 +469,9 @@ material::LawSpec solid_law(const Reader& r, pugi::xml_node node,
   if (type == "Arruda-Boyce")
     return arruda_boyce_law(r, node);
   if (type == "trans iso Mooney-Rivlin")
-    return trans_iso_law(r, node, "mooney-rivlin");
+    return trans_iso_law(r, node, "mooney-rivlin", axes);
   if (type == "trans iso Veronda-Westmann")
-    return trans_iso_law(r, node, "veronda-westmann");
+    return trans_iso_law(r, node, "veronda-westmann", axes);
   const LawMapping* law = nullptr;
   for (const auto& m : law_mappings())
     if (type == m.febio)

@@ -7,6 +7,7 @@
 #include "trifem/mesh/conformity.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <fmt/format.h>
 #include <optional>
 #include <span>
@@ -405,6 +406,39 @@ void read_mesh(Reader& r, pugi::xml_node mesh, pugi::xml_node domains) {
     if (!r.mesh.mesh.has_node_set(name))
       r.mesh.mesh.add_node_set(name, block_nodes(r.mesh.mesh, name));
   r.drained.assign(r.mesh.mesh.num_nodes(), 0);
+}
+
+std::string local_fibre_view(long n1, long n2) {
+  return fmt::format("febio local fibre {},{}", n1, n2);
+}
+
+void add_local_fibre_views(Reader& r) {
+  mesh::Mesh& mesh = r.mesh.mesh;
+  for (const auto& [name, m] : r.spec.materials) {
+    if (!m.axes || m.axes->kind != material::AxesKind::Mesh ||
+        mesh.cell_data().contains(m.axes->view))
+      continue;
+    long n1 = 0, n2 = 0;
+    if (std::sscanf(m.axes->view.c_str(), "febio local fibre %ld,%ld", &n1, &n2) != 2)
+      continue;
+    mesh::CellData data;
+    data.components = 3;
+    for (Index c = 0; c < mesh.num_cells(); ++c) {
+      const mesh::CellType type = mesh.cell_type(c);
+      const std::span<const int> order = febio_order(type); // trifem node a is FEBio's order[a]
+      const auto at = [&](long febio) -> Vec3 {
+        for (std::size_t a = 0; a < order.size(); ++a)
+          if (order[a] == febio - 1)
+            return mesh.node(mesh.cell_nodes(c)[a]);
+        throw InputError(fmt::format("material '{}': its local fibre names element node {}, and "
+                                     "a {} element has {} nodes",
+                                     name, febio, mesh::name(type), order.size()));
+      };
+      const Vec3 a = (at(n2) - at(n1)).normalized();
+      data.values.insert(data.values.end(), {a.x(), a.y(), a.z()});
+    }
+    mesh.add_cell_data(m.axes->view, std::move(data));
+  }
 }
 
 } // namespace trifem::feb::detail

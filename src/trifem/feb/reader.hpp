@@ -167,6 +167,12 @@ void read_materials(Reader& r, pugi::xml_node section);
 void map_fixed_charges(Reader& r);
 /// Mesh (Nodes, Elements, NodeSet, Surface, ElementSet) and MeshDomains.
 void read_mesh(Reader& r, pugi::xml_node mesh, pugi::xml_node domains);
+/// The name of the cell data of FEBio's local fibres from element node n1 to n2 (1-based).
+std::string local_fibre_view(long n1, long n2);
+/// Makes the cell data of every local fibre view the materials' axes name (the unit vector from
+/// each cell's FEBio node n1 to its node n2 in the reference configuration); InputError at the
+/// material if a cell has fewer nodes.
+void add_local_fibre_views(Reader& r);
 /// MeshData: the shell thickness of the rigid bodies' shell parts (after read_mesh).
 void read_mesh_data(Reader& r, pugi::xml_node section);
 /// LoadData: the load controllers as curves.

@@ -541,6 +541,13 @@ std::string case_toml(const CaseSpec& spec) {
 
 std::vector<std::filesystem::path> write_case(const CaseSpec& spec,
                                               const std::filesystem::path& file) {
+  for (const auto& [name, m] : spec.materials) // the Gmsh writer leaves out per-cell data
+    for (const InlineMeshSpec& inline_mesh : spec.meshes)
+      TRIFEM_CHECK(!m.axes || m.axes->kind != material::AxesKind::Mesh ||
+                       !inline_mesh.mesh.cell_data().contains(m.axes->view),
+                   "materials.{}: axes from the cell data '{}' of the file's mesh (e.g. FEBio's "
+                   "local fibres): writing this to a TOML case is not supported yet",
+                   name, m.axes->view);
   CaseSpec out = spec;
   out.meshes.clear();
   for (GmshMeshSpec& g : out.gmsh)

@@ -7,6 +7,7 @@
 #include "trifem/analysis/case_file.hpp"
 #include "trifem/analysis/run.hpp"
 #include "trifem/feb/feb_reader.hpp"
+#include "trifem/io/case_writer.hpp"
 #include "trifem/linalg/linear_solver.hpp"
 #include "trifem/model/model.hpp"
 #include "trifem/model/rigid_bodies.hpp"
@@ -1227,9 +1228,42 @@ TEST(FebVerification, EfdMooneyRivlinIsTheUncoupledMixtureOfItsTwoParts) {
   EXPECT_GT(with_fibres.front(), 1.5 * without.front());
 }
 
+// FEBio's local fibre (<fiber type="local"><local>1,7</local></fiber>: from each element's node 1
+// to its node 7) on the unit cube is the diagonal (1, 1, 1): the same reactions as that constant
+// vector (to round-off: the local one goes through the material's rotated axes); a local fibre
+// cannot be written to a TOML case (its per-cell data).
+TEST(FebVerification, ALocalFibreIsTheDirectionBetweenTheElementsNodes) {
+  const auto cube = [](const std::string& fibre) {
+    return two_step_cube(R"(<material id="1" name="Ogden" type="trans iso Mooney-Rivlin">
+      <k>30</k><c1>0.5</c1><c2>0</c2><c3>0.2</c3><c4>3</c4><c5>4</c5><lam_max>1.2</lam_max>)" +
+                         fibre + "</material>");
+  };
+  const io::CaseSpec local = cube(R"(<fiber type="local"><local>1,7</local></fiber>)");
+  ASSERT_TRUE(local.materials.at("Ogden").axes.has_value());
+  EXPECT_EQ(local.materials.at("Ogden").axes->kind, material::AxesKind::Mesh);
+  const std::vector<Real> reactions = top_reactions(local);
+  ASSERT_FALSE(reactions.empty());
+  const std::vector<Real> diagonal =
+      top_reactions(cube(R"(<fiber type="vector"><vector>1,1,1</vector></fiber>)"));
+  const std::vector<Real> along_z =
+      top_reactions(cube(R"(<fiber type="vector"><vector>0,0,1</vector></fiber>)"));
+  ASSERT_EQ(diagonal.size(), reactions.size());
+  ASSERT_EQ(along_z.size(), reactions.size());
+  for (std::size_t i = 0; i < reactions.size(); ++i) {
+    EXPECT_NEAR(reactions[i], diagonal[i], 1e-12 * std::abs(diagonal[i])) << i;
+    EXPECT_GT(std::abs(reactions[i] - along_z[i]), 1e-3 * std::abs(along_z[i])) << i;
+  }
+  try {
+    (void)io::write_case(local, std::filesystem::temp_directory_path() / "trifem_local.toml");
+    ADD_FAILURE() << "written";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("local fibres"), std::string::npos) << e.what();
+  }
+}
+
 TEST(FebVerification, TransIsoFibresOtherThanAConstantVectorAndActiveContractionAreRefused) {
   const std::pair<std::string, std::string> cases[] = {
-      {R"(<fiber type="local">1,7</fiber>)", "fiber of type 'local' is not supported"},
+      {R"(<fiber type="map">1,7</fiber>)", "fiber of type 'map' is not supported"},
       {R"(<fiber type="vector"><vector>1,0,0</vector></fiber><active_contraction><Tmax>1</Tmax></active_contraction>)",
        "an active contraction is not supported"},
       {"", "the fibre direction <fiber> is required"}};

@@ -57,17 +57,4 @@ uncoupled::ScalarFunction MooneyRivlin::strain_energy(const Mat3& C, bool with_h
   return W;
 }
 
-Real MooneyRivlin::energy(const Mat3& C) const {
-  return strain_energy(C, false).value;
-}
-
-Mat3 MooneyRivlin::stress(const Mat3& C) const {
-  return 2.0 * strain_energy(C, false).gradient;
-}
-
-StressTangent MooneyRivlin::stress_tangent(const Mat3& C) const {
-  const uncoupled::ScalarFunction W = strain_energy(C, true);
-  return {2.0 * W.gradient, 4.0 * W.hessian};
-}
-
 } // namespace trifem::material

@@ -2,7 +2,7 @@
 // Uncoupled Mooney-Rivlin solid (the FEBio "Mooney-Rivlin" form).
 #pragma once
 
-#include "trifem/material/elastic_law.hpp"
+#include "trifem/material/energy_function_law.hpp"
 #include "trifem/material/schema.hpp"
 #include "trifem/material/uncoupled.hpp"
 
@@ -16,7 +16,7 @@ namespace trifem::material {
 ///   D = 4 d2W/dC2 = 4 c1 d2I1~/dC2 + 4 c2 d2I2~/dC2 + k (C^-1 (x) C^-1 - 2 ln J C^-1 (.) C^-1),
 /// with dI1/dC = I, dI2/dC = I1 I - C, d2I2/dC2 = I (x) I - I (.) I and the isochoric scaling of
 /// uncoupled::isochoric. Small strain: shear modulus mu = 2 (c1 + c2), bulk modulus k.
-class MooneyRivlin final : public ElasticLaw {
+class MooneyRivlin final : public EnergyFunctionLaw {
 public:
   /// Parameters: c1, c2 (MPa, c1 + c2 > 0), k (bulk modulus, MPa, > 0).
   explicit MooneyRivlin(const ParameterValues& params);
@@ -25,16 +25,13 @@ public:
   /// `context.c1` and `context.c2` otherwise.
   static void check(const ParameterValues& params, const std::string& context);
 
-  Real energy(const Mat3& C) const override;
-  Mat3 stress(const Mat3& C) const override;
-  StressTangent stress_tangent(const Mat3& C) const override;
   Real p_wave_modulus() const override { return k_ + 4.0 / 3.0 * shear_modulus(); }
   Real shear_modulus() const override { return 2.0 * (c1_ + c2_); }
   std::string type() const override { return "mooney-rivlin"; }
 
 private:
   /// W(C) with dW/dC and, if `with_hessian`, d2W/dC2.
-  uncoupled::ScalarFunction strain_energy(const Mat3& C, bool with_hessian) const;
+  uncoupled::ScalarFunction strain_energy(const Mat3& C, bool with_hessian) const override;
 
   Real c1_;
   Real c2_;

@@ -2,7 +2,7 @@
 // Uncoupled Ogden solid with up to three terms (the FEBio "Ogden" form).
 #pragma once
 
-#include "trifem/material/elastic_law.hpp"
+#include "trifem/material/energy_function_law.hpp"
 #include "trifem/material/schema.hpp"
 #include "trifem/material/uncoupled.hpp"
 
@@ -24,7 +24,7 @@ namespace trifem::material {
 /// coincidence), so the tangent is smooth through C = I and uniaxial states.
 /// Small strain: shear modulus mu = (c_1 + c_2 + c_3)/2, bulk modulus k. A term with c_i = 0 is
 /// absent.
-class Ogden final : public ElasticLaw {
+class Ogden final : public EnergyFunctionLaw {
 public:
   /// Parameters: c1..c3 (MPa), m1..m3 (nonzero where c_i != 0), k (bulk modulus, MPa, > 0);
   /// c1 + c2 + c3 > 0.
@@ -34,9 +34,6 @@ public:
   /// c1 + c2 + c3 > 0: InputError naming `context.key` otherwise.
   static void check(const ParameterValues& params, const std::string& context);
 
-  Real energy(const Mat3& C) const override;
-  Mat3 stress(const Mat3& C) const override;
-  StressTangent stress_tangent(const Mat3& C) const override;
   Real p_wave_modulus() const override { return k_ + 4.0 / 3.0 * shear_modulus(); }
   Real shear_modulus() const override;
   std::string type() const override { return "ogden"; }
@@ -48,7 +45,7 @@ private:
     Real m;
   };
   /// W(C) with dW/dC and, if `with_hessian`, d2W/dC2.
-  uncoupled::ScalarFunction strain_energy(const Mat3& C, bool with_hessian) const;
+  uncoupled::ScalarFunction strain_energy(const Mat3& C, bool with_hessian) const override;
 
   std::vector<Term> terms_;
   Real k_;

@@ -43,6 +43,17 @@ void accumulate(ScalarFunction& sum, Real weight, const ScalarFunction& f) {
   sum.hessian += weight * f.hessian;
 }
 
+ScalarFunction isochoric_first_invariant(const Mat3& C, bool with_hessian) {
+  return isochoric({C.trace(), Mat3::Identity(), Mat6::Zero()}, -1.0 / 3.0, C, with_hessian);
+}
+
+ScalarFunction compose(const ScalarFunction& f, Real w, Real dw, Real d2w, bool with_hessian) {
+  ScalarFunction W{w, dw * f.gradient, Mat6::Zero()};
+  if (with_hessian)
+    W.hessian = d2w * voigt::outer(f.gradient, f.gradient) + dw * f.hessian;
+  return W;
+}
+
 ScalarFunction isochoric(const ScalarFunction& f, Real q, const Mat3& C, bool with_hessian) {
   const Mat3 Ci = C.inverse();
   const Real scale = std::pow(C.determinant(), q);

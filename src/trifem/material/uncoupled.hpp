@@ -29,6 +29,13 @@ void accumulate(ScalarFunction& sum, Real weight, const ScalarFunction& f);
 /// with (A (.) A)_IJKL = (A_IK A_JL + A_IL A_JK)/2. The hessian only if `with_hessian`.
 ScalarFunction isochoric(const ScalarFunction& f, Real q, const Mat3& C, bool with_hessian);
 
+/// The first deviatoric invariant I1~ = I3^(-1/3) tr C with its derivatives.
+ScalarFunction isochoric_first_invariant(const Mat3& C, bool with_hessian);
+
+/// W(f) of a scalar function f given W = w, dW/df = dw and d2W/df2 = d2w at f: the value w,
+/// dW/dC = dw df/dC and, if `with_hessian`, d2W/dC2 = d2w df/dC (x) df/dC + dw d2f/dC2.
+ScalarFunction compose(const ScalarFunction& f, Real w, Real dw, Real d2w, bool with_hessian);
+
 /// U(J) = (ln J)^2 / 2, dU/dC = ln J C^-1 / 2,
 /// d2U/dC2 = C^-1 (x) C^-1 / 4 - ln J / 2 C^-1 (.) C^-1. The hessian only if `with_hessian`.
 ScalarFunction log_volumetric(const Mat3& C, bool with_hessian);

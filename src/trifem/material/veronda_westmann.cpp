@@ -37,17 +37,4 @@ uncoupled::ScalarFunction VerondaWestmann::strain_energy(const Mat3& C, bool wit
   return W;
 }
 
-Real VerondaWestmann::energy(const Mat3& C) const {
-  return strain_energy(C, false).value;
-}
-
-Mat3 VerondaWestmann::stress(const Mat3& C) const {
-  return 2.0 * strain_energy(C, false).gradient;
-}
-
-StressTangent VerondaWestmann::stress_tangent(const Mat3& C) const {
-  const uncoupled::ScalarFunction W = strain_energy(C, true);
-  return {2.0 * W.gradient, 4.0 * W.hessian};
-}
-
 } // namespace trifem::material

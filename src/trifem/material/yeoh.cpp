@@ -25,8 +25,7 @@ Yeoh::Yeoh(const ParameterValues& p) : k_(p.at("k")) {
 }
 
 uncoupled::ScalarFunction Yeoh::strain_energy(const Mat3& C, bool with_hessian) const {
-  const uncoupled::ScalarFunction I1 = uncoupled::isochoric(
-      {C.trace(), Mat3::Identity(), Mat6::Zero()}, -1.0 / 3.0, C, with_hessian);
+  const uncoupled::ScalarFunction I1 = uncoupled::isochoric_first_invariant(C, with_hessian);
   const Real x = I1.value - 3.0;
   std::array<Real, 7> power{}; // x^0 .. x^6
   power[0] = 1.0;
@@ -40,24 +39,9 @@ uncoupled::ScalarFunction Yeoh::strain_energy(const Mat3& C, bool with_hessian) 
     if (i >= 2)
       d2w += n * (n - 1.0) * c * power[i - 2];
   }
-  uncoupled::ScalarFunction W{w, dw * I1.gradient, Mat6::Zero()};
-  if (with_hessian)
-    W.hessian = d2w * voigt::outer(I1.gradient, I1.gradient) + dw * I1.hessian;
+  uncoupled::ScalarFunction W = uncoupled::compose(I1, w, dw, d2w, with_hessian);
   uncoupled::accumulate(W, k_, uncoupled::log_volumetric(C, with_hessian));
   return W;
-}
-
-Real Yeoh::energy(const Mat3& C) const {
-  return strain_energy(C, false).value;
-}
-
-Mat3 Yeoh::stress(const Mat3& C) const {
-  return 2.0 * strain_energy(C, false).gradient;
-}
-
-StressTangent Yeoh::stress_tangent(const Mat3& C) const {
-  const uncoupled::ScalarFunction W = strain_energy(C, true);
-  return {2.0 * W.gradient, 4.0 * W.hessian};
 }
 
 } // namespace trifem::material

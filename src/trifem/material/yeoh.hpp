@@ -2,7 +2,7 @@
 // Uncoupled Yeoh solid (the FEBio "Yeoh" form).
 #pragma once
 
-#include "trifem/material/elastic_law.hpp"
+#include "trifem/material/energy_function_law.hpp"
 #include "trifem/material/schema.hpp"
 #include "trifem/material/uncoupled.hpp"
 
@@ -17,22 +17,19 @@ namespace trifem::material {
 ///           + k d2U/dC2,
 /// the isochoric I1~ and U = (ln J)^2/2 those of uncoupled::isochoric and log_volumetric.
 /// Small strain: shear modulus mu = 2 c1, bulk modulus k.
-class Yeoh final : public ElasticLaw {
+class Yeoh final : public EnergyFunctionLaw {
 public:
   /// Parameters: c1 (MPa, > 0), c2..c6 (MPa, default 0), k (bulk modulus, MPa, > 0).
   explicit Yeoh(const ParameterValues& params);
   static const std::vector<ParameterSchema>& schema();
 
-  Real energy(const Mat3& C) const override;
-  Mat3 stress(const Mat3& C) const override;
-  StressTangent stress_tangent(const Mat3& C) const override;
   Real p_wave_modulus() const override { return k_ + 4.0 / 3.0 * shear_modulus(); }
   Real shear_modulus() const override { return 2.0 * c_[0]; }
   std::string type() const override { return "yeoh"; }
 
 private:
   /// W(C) with dW/dC and, if `with_hessian`, d2W/dC2.
-  uncoupled::ScalarFunction strain_energy(const Mat3& C, bool with_hessian) const;
+  uncoupled::ScalarFunction strain_energy(const Mat3& C, bool with_hessian) const override;
 
   std::array<Real, 6> c_{};
   Real k_;

@@ -549,6 +549,16 @@ TEST_F(CliParallel, ATet10BarGivesTheOneProcessHistory) {
                                  {"history.csv"});
 }
 
+// The same bar of tet4 cells with a nearly incompressible law (ν = 0.49): their dilatation is
+// averaged over the nodes, so an element reaches the nodes of the cells around it, across the
+// processes' parts.
+TEST_F(CliParallel, ANearlyIncompressibleTet4BarGivesTheOneProcessHistory) {
+  std::string text = tet10_bar_case();
+  text.replace(text.find("cell = \"tet10\""), 14, "cell = \"tet4\"");
+  text.replace(text.find("nu = 0.3"), 8, "nu = 0.49");
+  expect_the_one_process_results(write_file("tet4_bar.toml", text), 1e-10, {"history.csv"});
+}
+
 TEST_F(CliParallel, ATet10BarRestartedOnTwoProcessesContinuesTheOneProcessRun) {
   const History h = expect_a_two_process_restart_to_continue(
       write_file("tet10_bar.toml", tet10_bar_case()), 4, 1, 0.5);

@@ -358,8 +358,9 @@ TEST(MixtureCell, EqualCornerPotentialsGiveTheCellElementOnAStraightTet) {
               1e-13 * r_cell.head(head).cwiseAbs().maxCoeff());
     for (int b = 0; b < 4; ++b) {
       EXPECT_NEAR(r_tet[head + b], 0.25 * r_cell[L.p()], 1e-13 * std::abs(r_cell[L.p()]));
-      if (ions)
+      if (ions) {
         EXPECT_NEAR(r_tet[head + 4 + b], 0.25 * r_cell[L.eta()], 1e-13 * std::abs(r_cell[L.eta()]));
+      }
     }
   }
 }

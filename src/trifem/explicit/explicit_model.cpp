@@ -218,7 +218,8 @@ void ExplicitModel::build_geometry() {
     try {
       geometry_.push_back(physics::reference_geometry(mesh_, c));
     } catch (const InputError&) {
-      throw InputError(fmt::format("explicit model: cell {} is inverted or degenerate", c));
+      throw InputError(
+          fmt::format("explicit model: {} is inverted or degenerate", mesh_.describe(c)));
     }
     Real volume = 0.0;
     std::visit(

@@ -370,6 +370,11 @@ void read_mesh(Reader& r, pugi::xml_node mesh, pugi::xml_node domains) {
   if (r.parts.empty() && r.shell_parts.empty())
     r.doc.fail(mesh, "the mesh has no <Elements>");
   check_conforming(r, mesh);
+  mesh::CellSource source{r.doc.name(), "element", 0,
+                          std::vector<long long>(r.mesh.mesh.num_cells())};
+  for (const auto& [id, c] : r.cell_index)
+    source.tags[static_cast<std::size_t>(c)] = id;
+  r.mesh.mesh.add_cell_source(std::move(source));
   for (pugi::xml_node n : elements(mesh)) {
     const std::string_view kind = n.name();
     if (kind == "NodeSet")

@@ -93,6 +93,7 @@ public:
 
   /// "<file>:<line>" of the current line.
   std::string location() const { return at(line_no_); }
+  const std::string& file() const { return file_; }
   /// "<file>:<line>" of any line.
   std::string at(long line) const { return fmt::format("{}:{}", file_, std::max(line, 1L)); }
   long line() const { return line_no_; }

@@ -768,6 +768,11 @@ Mesh finish(const LineReader& in, GmshData& d) {
                "hexahedron20) and no surface mesh (quad4, type 3, or triangle3, type 2, elements)",
                in.at(d.elements_line));
   check_conforming(in, d);
+  CellSource source{in.file(), "element", 0, std::vector<long long>(d.mesh.num_cells())};
+  for (const auto& [tag, c] : d.element_cells)
+    if (c >= 0)
+      source.tags[static_cast<std::size_t>(c)] = tag;
+  d.mesh.add_cell_source(std::move(source));
   add_cell_blocks(in, d);
   add_surfaces(in, d);
   add_point_sets(in, d);

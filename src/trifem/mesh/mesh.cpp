@@ -165,6 +165,30 @@ Hex8 Mesh::cell(Index c) const {
   return nodes;
 }
 
+void Mesh::add_cell_source(CellSource source) {
+  TRIFEM_VERIFY(source.first >= 0 &&
+                    source.first + static_cast<Index>(source.tags.size()) <= num_cells(),
+                "cell source beyond the mesh's cells");
+  const auto at = std::ranges::upper_bound(cell_sources_, source.first, {}, &CellSource::first);
+  cell_sources_.insert(at, std::move(source));
+}
+
+std::string Mesh::cell_origin(Index c) const {
+  auto at = std::ranges::upper_bound(cell_sources_, c, {}, &CellSource::first);
+  if (at == cell_sources_.begin())
+    return {};
+  --at;
+  const Index i = c - at->first;
+  if (i >= static_cast<Index>(at->tags.size()))
+    return {};
+  return fmt::format("{} {} of '{}'", at->what, at->tags[static_cast<std::size_t>(i)], at->file);
+}
+
+std::string Mesh::describe(Index c) const {
+  const std::string origin = cell_origin(c);
+  return origin.empty() ? fmt::format("cell {}", c) : origin;
+}
+
 Index Mesh::first_non_hex8() const {
   const auto it = std::ranges::find_if_not(cell_types_, is_hex8);
   return it == cell_types_.end() ? -1 : static_cast<Index>(it - cell_types_.begin());
@@ -256,6 +280,10 @@ void Mesh::append(const Mesh& other) {
     add_cell_block(name, std::move(shifted));
   }
   append_cell_data(other, cell_offset);
+  for (CellSource source : other.cell_sources_) {
+    source.first += cell_offset;
+    add_cell_source(std::move(source));
+  }
 }
 
 void Mesh::append_cell_data(const Mesh& other, Index cell_offset) {

@@ -67,6 +67,15 @@ struct CellData {
   }
 };
 
+/// Where a run of cells came from, for messages: cell `first` + i was read from `file` as its
+/// element `tags[i]` (a Gmsh element tag, a .feb element id), called there a `what`.
+struct CellSource {
+  std::string file;
+  std::string what = "element";
+  Index first = 0;
+  std::vector<long long> tags;
+};
+
 /// A mesh with named sets. Names are unique per kind.
 class Mesh {
 public:
@@ -125,6 +134,15 @@ public:
   const CellData& cell_data(const std::string& name) const;
   const std::map<std::string, CellData>& cell_data() const { return cell_data_; }
 
+  /// Records where the cells [source.first, source.first + source.tags.size()) came from.
+  void add_cell_source(CellSource source);
+  /// "element 12 of 'cube.msh'" for a cell read from a file; empty for a cell made otherwise (a
+  /// box, a refinement).
+  std::string cell_origin(Index c) const;
+  /// How messages name cell c: "element 12 of 'cube.msh'" (cell_origin), or "cell 3" for a
+  /// cell of no file.
+  std::string describe(Index c) const;
+
   /// Moves every node: x <- A x + b (e.g. to rotate or translate a part). Cell data is kept as
   /// it is (it is not known to be a vector).
   void transform(const Mat3& A, const Vec3& b = Vec3::Zero());
@@ -169,6 +187,7 @@ private:
   std::map<std::string, Surface> surfaces_;
   std::map<std::string, std::vector<Index>> cell_blocks_;
   std::map<std::string, CellData> cell_data_;
+  std::vector<CellSource> cell_sources_; ///< in increasing `first`
 };
 
 /// Sorted, unique node indices of a surface.

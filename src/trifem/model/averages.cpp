@@ -21,9 +21,9 @@ void check_materials(const io::ProbeQuantity& q, const io::AverageSpec& a, std::
   for (Index c : cells) {
     const auto& mixture = model.materials[c].mixture;
     TRIFEM_CHECK(io::material_has(q, mixture != nullptr, mixture && mixture->charged),
-                 "output.average[{}].quantity = '{}': the material of cell {} of the cell block "
+                 "output.average[{}].quantity = '{}': the material of {} of the cell block "
                  "'{}' has no {} (it needs a {} material)",
-                 i + 1, q.name, c, a.block, q.name, io::required_material(q));
+                 i + 1, q.name, model.mesh.describe(c), a.block, q.name, io::required_material(q));
   }
 }
 

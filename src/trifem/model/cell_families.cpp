@@ -11,9 +11,9 @@ namespace trifem::model {
 std::string describe_cell(const mesh::Mesh& mesh, Index c) {
   for (const auto& [name, cells] : mesh.cell_blocks())
     if (std::find(cells.begin(), cells.end(), c) != cells.end())
-      return fmt::format("a {} cell (cell {} of block '{}')", mesh::name(mesh.cell_type(c)), c,
-                         name);
-  return fmt::format("a {} cell (cell {})", mesh::name(mesh.cell_type(c)), c);
+      return fmt::format("a {} cell ({}, in block '{}')", mesh::name(mesh.cell_type(c)),
+                         mesh.describe(c), name);
+  return fmt::format("a {} cell ({})", mesh::name(mesh.cell_type(c)), mesh.describe(c));
 }
 
 namespace {
@@ -46,22 +46,6 @@ void check_material(const io::CaseSpec& spec, const Model& model, Index c) {
     return; // (its nodes follow the body: any family)
   const io::MaterialSpec& given = spec.materials.at(m.name);
   TRIFEM_CHECK(!given.axes, "materials.{}.axes: {} has this material; {}", m.name, where, kSoFar);
-  if (type != mesh::CellType::Tet4 && type != mesh::CellType::Penta6)
-    return; // hex20 and tet10 take the locking-free mean-dilatation element
-  TRIFEM_CHECK(type != mesh::CellType::Tet4 ||
-                   given.element != io::SolidElementSpec::MeanDilatation,
-               "materials.{}.element: a tet4 has one strain per cell, so the mean-dilatation "
-               "element is its displacement element and locks as it does, and {} has this "
-               "material; use tet10 cells (or hex8, hex20), or element = \"displacement\"",
-               m.name, where);
-  TRIFEM_CHECK(given.element != io::SolidElementSpec::Auto ||
-                   m.element == physics::SolidElement::Displacement,
-               "materials.{}: the law is nearly incompressible (bulk modulus at least {} times "
-               "the shear modulus), and {} has this material: tet4 and penta6 cells lock there "
-               "(too stiff: one volume per tet, or per triangle of a wedge). Mesh the body with "
-               "tet10, hex20 or hex8 cells, which take the locking-free mean-dilatation element, "
-               "or set element = \"displacement\" to run it anyway",
-               m.name, kNearlyIncompressible, where);
 }
 
 } // namespace
@@ -81,10 +65,13 @@ void check_cell_families(const io::CaseSpec& spec, const Model& model) {
 }
 
 physics::SolidElement cell_element(const Model& model, Index c) {
-  // (a tet4 has one strain: its mean-dilatation element is its displacement element)
-  return model.mesh.cell_type(c) == mesh::CellType::Tet4
-             ? physics::SolidElement::Displacement
-             : model.materials[static_cast<std::size_t>(c)].element;
+  const physics::SolidElement element = model.materials[static_cast<std::size_t>(c)].element;
+  const mesh::CellType type = model.mesh.cell_type(c);
+  // one volume per tet, or per triangle of a wedge, locks: theirs is averaged over the nodes
+  const bool averaged = type == mesh::CellType::Tet4 || type == mesh::CellType::Penta6;
+  return averaged && element == physics::SolidElement::MeanDilatation
+             ? physics::SolidElement::NodalDilatation
+             : element;
 }
 
 } // namespace trifem::model

@@ -199,15 +199,15 @@ std::unique_ptr<physics::Term> body_force_term(const io::CaseSpec& spec, const i
   for (Index c : chosen) {
     const CellMaterial& m = model.materials[c];
     TRIFEM_CHECK(!m.mixture,
-                 "{}: cell {} has the mixture material '{}': body forces act on solid and rigid "
+                 "{}: {} has the mixture material '{}': body forces act on solid and rigid "
                  "cells only (in a mixture the force also drives the fluid through Darcy's law, "
                  "which trifem does not model){}",
-                 b.key, c, m.name,
+                 b.key, model.mesh.describe(c), m.name,
                  b.blocks.empty() ? "; name the solid blocks it acts on in 'blocks'" : "");
     TRIFEM_CHECK(m.rigid() || m.density > 0.0,
-                 "{}: the material '{}' of cell {} has no density: give `density` (t/mm^3) in "
+                 "{}: the material '{}' of {} has no density: give `density` (t/mm^3) in "
                  "[materials.{}] (the body force is a force per unit mass)",
-                 b.key, m.name, c, m.name);
+                 b.key, m.name, model.mesh.describe(c), m.name);
     if (m.density > 0.0) { // rigid cells without a density are massless
       cells.push_back(c);
       densities.push_back(m.density);

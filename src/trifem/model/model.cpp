@@ -68,18 +68,18 @@ std::vector<CellMaterial> cell_materials(const io::CaseSpec& spec, const mesh::M
     for (const std::string& block : b.blocks)
       for (Index c : with_context(b.key + ".blocks", [&] { return mesh.cell_block(block); })) {
         TRIFEM_CHECK(per_cell[c].rigid(),
-                     "{}.blocks: cell {} of block '{}' has the material '{}' (the cells of a "
+                     "{}.blocks: {} of block '{}' has the material '{}' (the cells of a "
                      "rigid body have none)",
-                     b.key, c, block, per_cell[c].name);
+                     b.key, mesh.describe(c), block, per_cell[c].name);
         per_cell[c].name = b.name;
         per_cell[c].density = b.density.value_or(0.0); // none: massless
         rigid[c] = 1;
       }
   for (Index c = 0; c < mesh.num_cells(); ++c)
     TRIFEM_CHECK(!per_cell[c].rigid() || rigid[c],
-                 "mesh: cell {} has no material (assign one to its cell block, or name the block "
+                 "mesh: {} has no material (assign one to its cell block, or name the block "
                  "in a [[rigid_body]]'s blocks)",
-                 c);
+                 mesh.describe(c));
   return per_cell;
 }
 

@@ -107,7 +107,8 @@ std::pair<Vec3, Real> cell_first_moment(const io::RigidBodySpec& b, const mesh::
   for (std::size_t a = 0; a < nodes.size(); ++a)
     X.row(static_cast<Index>(a)) = mesh.node(nodes[a]).transpose();
   const std::optional<physics::CellGeometry> geo = physics::cell_geometry(reference, X);
-  TRIFEM_CHECK(geo.has_value(), "{}.blocks: cell {} of block '{}' is inverted", b.key, c, block);
+  TRIFEM_CHECK(geo.has_value(), "{}.blocks: {} of block '{}' is inverted", b.key, mesh.describe(c),
+               block);
   Vec3 moment = Vec3::Zero();
   Real volume = 0.0;
   for (std::size_t q = 0; q < geo->dV.size(); ++q) {
@@ -141,8 +142,8 @@ Vec3 body_center(const io::RigidBodySpec& b, const Model& model, const std::vect
       }
       const fe::HexCoords X = fe::cell_coordinates(model.mesh, c);
       const std::optional<fe::HexGeometry> geo = fe::hex8_geometry(X);
-      TRIFEM_CHECK(geo.has_value(), "{}.blocks: cell {} of block '{}' is inverted", b.key, c,
-                   block);
+      TRIFEM_CHECK(geo.has_value(), "{}.blocks: {} of block '{}' is inverted", b.key,
+                   model.mesh.describe(c), block);
       const auto& points = fe::hex_gauss_2x2x2();
       for (std::size_t q = 0; q < points.size(); ++q) {
         moment += geo->dV[q] * (X.transpose() * fe::hex8_shape(points[q].xi));

@@ -63,9 +63,9 @@ std::vector<MassElement> cell_mass_elements(const mesh::Mesh& mesh, const std::v
     }
     const auto m = consistent_cell_mass(fe::cell_coordinates(mesh, cells[i]), densities[i]);
     TRIFEM_CHECK(m.has_value(),
-                 "cell {} is inverted or degenerate (det(dX/dxi) <= 0 at a Gauss point); "
+                 "{} is inverted or degenerate (det(dX/dxi) <= 0 at a Gauss point); "
                  "check its node order",
-                 cells[i]);
+                 mesh.describe(cells[i]));
     const auto& nodes = mesh.cell(cells[i]);
     out.push_back({{nodes.begin(), nodes.end()}, *m});
   }

@@ -43,12 +43,13 @@ std::string folded_cell_rejection(const mesh::Mesh& mesh, const dofs::DofMap& do
       continue;
     const Vec3 centre = X.colwise().mean().transpose();
     const std::string block = block_of(mesh, c);
-    return fmt::format("cell {}{} (reference centre {:.4g} {:.4g} {:.4g}) turned inside out at "
+    return fmt::format("{}{} (reference centre {:.4g} {:.4g} {:.4g}) turned inside out at "
                        "its node {} (its volume map there is reversed, det ratio {:.3g}): the "
                        "body would pass through itself or its support, which no deformation "
                        "can (check the prescribed motion and the supports)",
-                       c, block.empty() ? "" : fmt::format(" of block '{}'", block), centre.x(),
-                       centre.y(), centre.z(), nodes[reversed->corner], reversed->ratio);
+                       mesh.describe(c), block.empty() ? "" : fmt::format(" of block '{}'", block),
+                       centre.x(), centre.y(), centre.z(), nodes[reversed->corner],
+                       reversed->ratio);
   }
   return {};
 }

@@ -193,7 +193,123 @@ CellStress mean_dilatation_stress(const typename Cell::Geometry& geo,
   return out;
 }
 
+/// The points of a cell at displacement u with the dilatation J̄ given; false if J <= 0.
+bool evaluate_split_state(const CellGeometry& geo, const fe::CellNodeCoords& u,
+                          const material::ElasticLaw& law, Real Jbar, bool tangent,
+                          CellState<AnyCell>& cell) {
+  cell.n = AnyCell::points(geo);
+  cell.Jbar = Jbar;
+  for (int q = 0; q < cell.n; ++q) {
+    PointState& p = cell.points[static_cast<std::size_t>(q)];
+    p.F = AnyCell::deformation(geo, q, u);
+    p.J = p.F.determinant();
+    if (!(p.J > 0.0))
+      return false;
+    p.C = p.F.transpose() * p.F;
+    p.Ci = p.C.inverse();
+    p.w = geo.dV[static_cast<std::size_t>(q)];
+    cell.V += p.w;
+    cell.v += p.J * p.w;
+    p.alpha = std::cbrt(Jbar / p.J);
+    const Mat3 Cbar = p.alpha * p.alpha * p.C;
+    if (tangent)
+      p.st = law.stress_tangent(Cbar);
+    else
+      p.st.S = law.stress(Cbar);
+    p.s = (p.st.S.array() * Cbar.array()).sum();
+  }
+  return true;
+}
+
 } // namespace
+
+bool dilatation_split(const CellGeometry& geo, const fe::CellNodeCoords& u,
+                      const material::ElasticLaw& law, Real Jbar, bool tangent,
+                      DilatationSplit& out) {
+  const int dofs = 3 * geo.num_nodes();
+  out.f_u.setZero(dofs);
+  out.pi = out.pi_J = 0.0;
+  if (tangent) {
+    out.K_uu.setZero(dofs, dofs);
+    out.f_uJ.setZero(dofs);
+  }
+  CellState<AnyCell> cell;
+  if (!evaluate_split_state(geo, u, law, Jbar, tangent, cell))
+    return false;
+  const Mat6 I6 = Mat6::Identity();
+  StrainMatrixX B;
+  for (int q = 0; q < cell.n; ++q) {
+    const PointState& p = cell.points[static_cast<std::size_t>(q)];
+    const Real a2 = p.alpha * p.alpha;
+    const Mat3 T = a2 * p.st.S - (p.s / 3.0) * p.Ci; // the stress at fixed J̄
+    AnyCell::strain(p.F, geo, q, B);
+    out.f_u.noalias() += B.transpose() * voigt::stress(T) * p.w;
+    out.pi += p.s * p.w / (3.0 * Jbar);
+    if (!tangent)
+      continue;
+    // ΔĒ/α² = P ΔE + Cv ΔJ̄/(3 J̄), Δs = α² h · ΔĒ/α² (as the mean-dilatation tangent)
+    const Vec6 c = voigt::stress(p.Ci);
+    const Vec6 Cv = voigt::strain(p.C);
+    const Vec6 S = voigt::stress(p.st.S);
+    const Mat6& D = p.st.D;
+    const Vec6 h = D.transpose() * (a2 * Cv) + 2.0 * S;
+    const Mat6 P = I6 - Cv * c.transpose() / 3.0;
+    const Mat6 A = a2 * a2 * D * P - (2.0 / 3.0) * a2 * S * c.transpose() -
+                   (a2 / 3.0) * c * (h.transpose() * P) +
+                   (2.0 / 3.0) * p.s * voigt::symmetric_product(p.Ci);
+    const Vec6 a = (2.0 * a2 * S + a2 * a2 * D * Cv - (a2 / 3.0) * h.dot(Cv) * c) / (3.0 * Jbar);
+    out.K_uu.noalias() += B.transpose() * (A * p.w) * B;
+    AnyCell::geometric(geo, q, T, p.w, out.K_uu);
+    out.f_uJ.noalias() += B.transpose() * (a * p.w);
+    out.pi_J += (a2 * h.dot(Cv) / 3.0 - p.s) * p.w / (3.0 * Jbar * Jbar);
+  }
+  return true;
+}
+
+CellStress dilatation_split_stress(const CellGeometry& geo, const fe::CellNodeCoords& u,
+                                   const material::ElasticLaw& law, Real Jbar, Real pressure) {
+  CellState<AnyCell> cell;
+  CellStress out;
+  if (!evaluate_split_state(geo, u, law, Jbar, false, cell))
+    return {Mat3::Zero(), 0.0}; // inverted: no converged state is (the residual fails there)
+  for (int q = 0; q < cell.n; ++q) {
+    const PointState& p = cell.points[static_cast<std::size_t>(q)];
+    const Mat3 T = p.alpha * p.alpha * p.st.S + (pressure * p.J - p.s / 3.0) * p.Ci;
+    out.cauchy += p.F * T * p.F.transpose() * p.w;
+  }
+  out.cauchy /= cell.v;
+  out.J = Jbar;
+  return out;
+}
+
+bool cell_volume(const CellGeometry& geo, const fe::CellNodeCoords& u, bool hessian,
+                 CellVolume& out) {
+  const int dofs = 3 * geo.num_nodes();
+  out.v = 0.0;
+  out.grad.setZero(dofs);
+  if (hessian)
+    out.hess.setZero(dofs, dofs);
+  StrainMatrixX B;
+  for (int q = 0; q < AnyCell::points(geo); ++q) {
+    const Mat3 F = AnyCell::deformation(geo, q, u);
+    const Real J = F.determinant();
+    if (!(J > 0.0))
+      return false;
+    const Mat3 Ci = (F.transpose() * F).inverse();
+    const Real w = geo.dV[static_cast<std::size_t>(q)];
+    const Vec6 c = voigt::stress(Ci);
+    AnyCell::strain(F, geo, q, B);
+    out.v += J * w;
+    out.grad.noalias() += B.transpose() * (J * w * c);
+    if (!hessian)
+      continue;
+    // Δ(J C⁻¹) = J (C⁻¹ ⊗ C⁻¹ − 2 C⁻¹ ⊙ C⁻¹) ΔE, and the geometric part of the stress J C⁻¹
+    const Mat6 A = J * (c * c.transpose() - 2.0 * voigt::symmetric_product(Ci));
+    out.hess.noalias() += B.transpose() * (A * w) * B;
+    AnyCell::geometric(geo, q, J * Ci, w, out.hess);
+  }
+  return true;
+}
 
 bool mean_dilatation_hex8(const fe::HexGeometry& geo, const fe::HexCoords& u,
                           const material::ElasticLaw& law, HexVector& f, HexMatrix* K) {

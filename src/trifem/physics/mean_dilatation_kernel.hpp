@@ -36,4 +36,40 @@ bool mean_dilatation_cell(const CellGeometry& geo, const fe::CellNodeCoords& u,
 CellStress mean_dilatation_cell_stress(const CellGeometry& geo, const fe::CellNodeCoords& u,
                                        const material::ElasticLaw& law);
 
+/// The cell's energy Π(u, J̄) = Σ_q W(C̄_q) w_q, C̄ = (J̄/J)^(2/3) C, with the dilatation J̄ an
+/// independent variable (given, not v/V): the pieces from which an element whose J̄ is averaged
+/// over more than one cell builds its force and tangent (nodal_dilatation.hpp). The
+/// mean-dilatation element is f = f_u + π ∇J̄, K = K_uu + f_uJ ∇J̄ᵀ + ∇J̄ f_uJᵀ + π_J ∇J̄ ∇J̄ᵀ +
+/// π ∇²J̄ with J̄ = v/V (docs/theory/elements.md).
+struct DilatationSplit {
+  CellVectorX f_u;  ///< ∂Π/∂u at fixed J̄ = Σ Bᵀ (α² S̄ − s/3 C⁻¹) w [N]
+  CellMatrixX K_uu; ///< ∂²Π/∂u² at fixed J̄ (with tangent)
+  CellVectorX f_uJ; ///< ∂²Π/∂u∂J̄ (with tangent)
+  Real pi = 0.0;    ///< ∂Π/∂J̄ = Σ s w / (3 J̄) [N mm]
+  Real pi_J = 0.0;  ///< ∂²Π/∂J̄² (with tangent)
+};
+
+/// Fills `out` at displacement u and dilatation J̄ > 0; false if J <= 0 at a point of the rule.
+bool dilatation_split(const CellGeometry& geo, const fe::CellNodeCoords& u,
+                      const material::ElasticLaw& law, Real Jbar, bool tangent,
+                      DilatationSplit& out);
+
+/// The Cauchy stress averaged over the cell, (1/v) Σ_q F T Fᵀ w_q with
+/// T = α² S̄ + (P J − s/3) C⁻¹, of a cell of dilatation J̄ whose volume v is loaded by the
+/// pressure P = ∂Π/∂v of the element it belongs to (the homogeneous state: P = s/(3J)).
+CellStress dilatation_split_stress(const CellGeometry& geo, const fe::CellNodeCoords& u,
+                                   const material::ElasticLaw& law, Real Jbar, Real pressure);
+
+/// The current volume v = Σ_q J_q w_q of a cell with its gradient Σ Bᵀ J C⁻¹ w and, with
+/// `hessian`, its second derivative by the nodal displacements.
+struct CellVolume {
+  Real v = 0.0;
+  CellVectorX grad;
+  CellMatrixX hess;
+};
+
+/// Fills `out` at displacement u; false if J <= 0 at a point of the rule.
+bool cell_volume(const CellGeometry& geo, const fe::CellNodeCoords& u, bool hessian,
+                 CellVolume& out);
+
 } // namespace trifem::physics

@@ -379,8 +379,8 @@ void MixtureTerm::initialize(InitialState kind, Real time, Vector& x) {
     prestress_[e] = 0.0;
     if (ions(e)) {
       const Real Vw = h.V_old - m.phi_s0 * h.V0;
-      TRIFEM_CHECK(Vw > 0.0, "cell {}: the initial state has no water volume (J <= phi_s0)",
-                   cells_[e]);
+      TRIFEM_CHECK(Vw > 0.0, "{}: the initial state has no water volume (J <= phi_s0)",
+                   mesh_.describe(cells_[e]));
       const Donnan d = donnan(h.N_fixed / Vw, m, chem_, chem_.c_ref);
       h.N_plus = d.c_plus * Vw;
       h.N_minus = d.c_minus * Vw;

@@ -55,9 +55,9 @@ AnyCellGeometry reference_geometry(const mesh::Mesh& mesh, Index c) {
   if (type == mesh::CellType::Hex8) {
     const auto geo = fe::hex8_geometry(fe::cell_coordinates(mesh, c));
     TRIFEM_CHECK(geo.has_value(),
-                 "cell {} is inverted or degenerate (det(dX/dxi) <= 0 at a Gauss point); "
+                 "{} is inverted or degenerate (det(dX/dxi) <= 0 at a Gauss point); "
                  "check its node order",
-                 c);
+                 mesh.describe(c));
     return *geo;
   }
   const std::span<const Index> nodes = mesh.cell_nodes(c);
@@ -66,9 +66,9 @@ AnyCellGeometry reference_geometry(const mesh::Mesh& mesh, Index c) {
     X.row(static_cast<Index>(a)) = mesh.node(nodes[a]).transpose();
   auto geo = cell_geometry(fe::reference_cell(type), X);
   TRIFEM_CHECK(geo.has_value(),
-               "cell {} ({}) is inverted or degenerate (det(dX/dxi) <= 0 at a quadrature "
+               "{}, a {}, is inverted or degenerate (det(dX/dxi) <= 0 at a quadrature "
                "point); check its node order and its mid-edge nodes",
-               c, mesh::name(type));
+               mesh.describe(c), mesh::name(type));
   return std::move(*geo);
 }
 

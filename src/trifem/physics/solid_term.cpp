@@ -5,6 +5,8 @@
 #include "trifem/physics/folded_cells.hpp"
 #include "trifem/physics/mean_dilatation_kernel.hpp"
 
+#include <algorithm>
+
 namespace trifem::physics {
 
 SolidTerm::SolidTerm(const mesh::Mesh& mesh, const dofs::DofMap& dofs, dofs::FieldId displacement,
@@ -20,10 +22,28 @@ SolidTerm::SolidTerm(const mesh::Mesh& mesh, const dofs::DofMap& dofs, dofs::Fie
   geometry_.reserve(cells_.size());
   for (const Index c : cells_)
     geometry_.push_back(reference_geometry(mesh, c));
+  nodal_index_.assign(cells_.size(), -1);
+  std::vector<Index> nodal_cells;
+  std::vector<const CellGeometry*> nodal_geometry;
+  for (std::size_t e = 0; e < cells_.size(); ++e) {
+    if (elements_[e] != SolidElement::NodalDilatation)
+      continue;
+    const mesh::CellType type = mesh.cell_type(cells_[e]);
+    TRIFEM_CHECK(type == mesh::CellType::Tet4 || type == mesh::CellType::Penta6,
+                 "cell {}: the nodal-dilatation element takes tet4 and penta6 cells, not {}",
+                 cells_[e], mesh::name(type));
+    nodal_index_[e] = static_cast<Index>(nodal_cells.size());
+    nodal_elements_.push_back(static_cast<Index>(e));
+    nodal_cells.push_back(cells_[e]);
+    nodal_geometry.push_back(&std::get<CellGeometry>(geometry_[e]));
+  }
+  if (!nodal_cells.empty())
+    nodal_.emplace(mesh, nodal_cells, std::move(nodal_geometry));
 }
 
 void SolidTerm::element_dofs(Index e, std::vector<Index>& dofs) const {
-  const std::span<const Index> nodes = mesh_.cell_nodes(cells_[e]);
+  const std::span<const Index> nodes =
+      nodal_index_[e] < 0 ? mesh_.cell_nodes(cells_[e]) : nodal_->patch(nodal_index_[e]);
   dofs.resize(3 * nodes.size());
   for (std::size_t a = 0; a < nodes.size(); ++a)
     for (int k = 0; k < 3; ++k)
@@ -48,7 +68,18 @@ fe::CellNodeCoords SolidTerm::cell_displacements(Index e, const Vector& x) const
   return u;
 }
 
+Eigen::MatrixX3d SolidTerm::patch_displacements(Index i, const Vector& x) const {
+  const std::span<const Index> nodes = nodal_->patch(i);
+  Eigen::MatrixX3d u(static_cast<Index>(nodes.size()), 3);
+  for (std::size_t a = 0; a < nodes.size(); ++a)
+    for (int k = 0; k < 3; ++k)
+      u(static_cast<Index>(a), k) = x[dofs_.dof(u_, nodes[a], k)];
+  return u;
+}
+
 bool SolidTerm::evaluate(Index e, const EvalState& state, LocalVector& r, LocalMatrix* K) const {
+  if (const Index i = nodal_index_[e]; i >= 0)
+    return nodal_->evaluate(i, patch_displacements(i, state.x), *laws_[e], r, K);
   if (const auto* geo = std::get_if<CellGeometry>(&geometry_[e])) {
     CellVectorX f;
     CellMatrixX Ke;
@@ -79,7 +110,33 @@ std::string SolidTerm::step_rejection(const EvalState& state) const {
   return folded_cell_rejection(mesh_, dofs_, u_, cells_, state.x);
 }
 
+Real SolidTerm::nodal_pressure(Index i, const Vector& x) const {
+  // P_i = ∂Π/∂v_i = Σ_k π_k ω_ki over the elements k sharing a node with i
+  Real P = 0.0;
+  for (const NodalDilatation::Neighbour& k : nodal_->neighbours(i)) {
+    const auto& weights = nodal_->neighbours(k.element);
+    const auto it = std::find_if(weights.begin(), weights.end(),
+                                 [i](const auto& nb) { return nb.element == i; });
+    const Index e = nodal_elements_[static_cast<std::size_t>(k.element)];
+    const Eigen::MatrixX3d u = patch_displacements(k.element, x);
+    const auto& geo = std::get<CellGeometry>(geometry_[e]);
+    DilatationSplit split;
+    const Real Jbar = nodal_->dilatation(k.element, u);
+    if (!(Jbar > 0.0) ||
+        !dilatation_split(geo, u.topRows(geo.num_nodes()), *laws_[e], Jbar, false, split))
+      return 0.0;
+    P += split.pi * it->weight;
+  }
+  return P;
+}
+
 CellStress SolidTerm::stress(Index e, const Vector& x) const {
+  if (const Index i = nodal_index_[e]; i >= 0) {
+    const Eigen::MatrixX3d u = patch_displacements(i, x);
+    const auto& geo = std::get<CellGeometry>(geometry_[e]);
+    return dilatation_split_stress(geo, u.topRows(geo.num_nodes()), *laws_[e],
+                                   nodal_->dilatation(i, u), nodal_pressure(i, x));
+  }
   if (const auto* geo = std::get_if<CellGeometry>(&geometry_[e]))
     return (elements_[e] == SolidElement::MeanDilatation
                 ? mean_dilatation_cell_stress

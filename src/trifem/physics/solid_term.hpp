@@ -6,11 +6,13 @@
 #include "trifem/fe/hex8.hpp"
 #include "trifem/material/elastic_law.hpp"
 #include "trifem/mesh/mesh.hpp"
+#include "trifem/physics/nodal_dilatation.hpp"
 #include "trifem/physics/solid_cell.hpp"
 #include "trifem/physics/solid_kernel.hpp"
 #include "trifem/physics/term.hpp"
 
 #include <memory>
+#include <optional>
 #include <variant>
 
 namespace trifem::physics {
@@ -19,17 +21,20 @@ namespace trifem::physics {
 enum class SolidElement {
   Displacement,   ///< standard displacement element (locks when nearly incompressible)
   MeanDilatation, ///< mean dilatation, Q1/P0 on a hex8 (mean_dilatation_kernel.hpp)
+  /// the dilatation averaged over the corners' patches: tet4 and penta6 (nodal_dilatation.hpp)
+  NodalDilatation,
 };
 
 /// Internal virtual work of hyperelastic cells: hex8 cells by solid_kernel.hpp and
-/// mean_dilatation_kernel.hpp, the other families by solid_cell.hpp and mean_dilatation_cell.
-/// Each cell has a law (shared, immutable).
+/// mean_dilatation_kernel.hpp, the other families by solid_cell.hpp and mean_dilatation_cell,
+/// tet4 and penta6 cells also by nodal_dilatation.hpp (an element of those reaches the nodes
+/// of the cells around it). Each cell has a law (shared, immutable).
 class SolidTerm final : public Term {
 public:
   /// `cells[i]` uses `laws[i]` and the formulation `elements[i]` (empty: all displacement);
   /// reference geometry is computed once here. Throws
   /// InputError naming the cell if a cell is inverted or degenerate in the reference
-  /// configuration.
+  /// configuration, or if a cell that is not a tet4 or a penta6 asks for NodalDilatation.
   SolidTerm(const mesh::Mesh& mesh, const dofs::DofMap& dofs, dofs::FieldId displacement,
             std::vector<Index> cells, std::vector<std::shared_ptr<const material::ElasticLaw>> laws,
             std::vector<SolidElement> elements = {});
@@ -49,6 +54,9 @@ public:
 private:
   fe::HexCoords displacements(Index e, const Vector& x) const;
   fe::CellNodeCoords cell_displacements(Index e, const Vector& x) const;
+  Eigen::MatrixX3d patch_displacements(Index i, const Vector& x) const;
+  /// P = ∂Π/∂v of the volume of element e of the nodal-dilatation cells (their i-th).
+  Real nodal_pressure(Index i, const Vector& x) const;
 
   const mesh::Mesh& mesh_;
   const dofs::DofMap& dofs_;
@@ -58,6 +66,9 @@ private:
   std::vector<SolidElement> elements_;
   /// Per element: the hex8 kernels' geometry, or that of another family.
   std::vector<AnyCellGeometry> geometry_;
+  /// The nodal-dilatation cells: their element indices and their i among them (−1: none).
+  std::vector<Index> nodal_elements_, nodal_index_;
+  std::optional<NodalDilatation> nodal_;
 };
 
 } // namespace trifem::physics

@@ -103,6 +103,26 @@ TEST(FebErrors, InvertedOrIncompleteCellsOfTheOtherFamilies) {
                    "a tet10 has 10 nodes, got 8"});
 }
 
+// A biphasic material on tet4 elements stops the model build naming the first such element by its
+// id in the file, not by trifem's cell index.
+TEST(FebErrors, AMixtureOnTet4ElementsIsRefusedNamingTheElementId) {
+  const std::string biphasic = R"(    <material id="1" name="m" type="biphasic">
+      <phi0>0.2</phi0>
+      <solid type="neo-Hookean"><E>1</E><v>0</v></solid>
+      <permeability type="perm-const-iso"><perm>0.001</perm></permeability>
+    </material>)";
+  const std::string tets = R"(    <Elements type="tet4" name="P">
+      <elem id="7">1,2,3,5</elem><elem id="9">1,3,4,8</elem>
+    </Elements>)";
+  const io::CaseSpec spec = feb::parse_feb(solid_model_text(biphasic, tets, kFixed), "tets.feb");
+  try {
+    (void)model::build_model(spec);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    expect_contains(e.what(), {"tet4 cells cannot carry it", "element 7 of 'tets.feb'"});
+  }
+}
+
 // One hex beside eight of half its size: the fine cells' nodes hang on its face.
 TEST(FebErrors, ElementsMeetingWithHangingNodes) {
   test::BoxAssembly a;

@@ -228,3 +228,22 @@ TEST(GmshElementDataErrors, ComponentsDifferBetweenSectionsOfOneView) {
 }
 
 } // namespace
+
+// Cells read from a Gmsh file keep their element tags for messages, through Mesh::append; cells
+// of a box are named by their index.
+TEST(MeshCellSources, ElementTagsOfTheFileNameItsCellsThroughAppend) {
+  const std::filesystem::path file = std::filesystem::path(TRIFEM_TEST_DATA_DIR) / "two_hex_v22.msh";
+  const Mesh gmsh = read_gmsh(file);
+  trifem::mesh::BoxSpec spec;
+  spec.name = "box";
+  spec.divisions = {3, 1, 1};
+  Mesh mesh = trifem::mesh::make_box(spec); // cells 0-2
+  mesh.append(gmsh);                        // cells 3-4
+  EXPECT_EQ(mesh.describe(1), "cell 1");
+  EXPECT_EQ(mesh.cell_origin(1), "");
+  EXPECT_EQ(mesh.describe(3), gmsh.describe(0));
+  EXPECT_EQ(mesh.describe(4), gmsh.describe(1));
+  // the hexahedra are the file's elements 1 and 2
+  EXPECT_EQ(gmsh.describe(0), fmt::format("element 1 of '{}'", file.string()));
+  EXPECT_EQ(gmsh.describe(1), fmt::format("element 2 of '{}'", file.string()));
+}

@@ -24,7 +24,7 @@ constexpr Real kTimeStep = 0.5; ///< below 0.8 · 2/ω_iso ≈ 0.65 for unit cel
 constexpr Real kPenalty = 1e4;  ///< α = 1e4 μ
 
 /// The unit-cell cube, bottom clamped, follower pressure 0.05 μ on the top (applied at t = 0).
-const ExplicitModel& model() {
+const ExplicitView& model() {
   static const test::TestModel m = [] {
     mesh::BoxSpec box;
     box.name = "cube";
@@ -40,7 +40,7 @@ const ExplicitModel& model() {
 /// A smooth admissible deformed state (a few per cent of stretch and shear).
 const Vector& deformed_state() {
   static const Vector U = [] {
-    const ExplicitModel& m = model();
+    const ExplicitView& m = model();
     Vector u(m.num_dofs());
     for (Index a = 0; a < m.mesh().num_nodes(); ++a) {
       const Vec3 X = m.mesh().node(a) / kN;

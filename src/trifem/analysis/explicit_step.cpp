@@ -61,8 +61,7 @@ ed::ExplicitSettings settings_of(const io::CaseSpec& part) {
 /// its arrays.
 class ExplicitStep::Results final : public StepResults {
 public:
-  Results(const ed::ExplicitModel& view, const ed::ExplicitSolver& solver,
-          const model::Model& model)
+  Results(const ed::ExplicitView& view, const ed::ExplicitSolver& solver, const model::Model& model)
       : view_(view), solver_(solver), residual_(Vector::Zero(model.dofs.num_dofs())) {}
 
   /// The state after `report` (the model's state is set by the caller), with the velocity if
@@ -99,7 +98,7 @@ public:
   }
 
 private:
-  const ed::ExplicitModel& view_;
+  const ed::ExplicitView& view_;
   const ed::ExplicitSolver& solver_;
   ed::StepReport report_;
   ed::Energies energies_;
@@ -167,7 +166,7 @@ io::CaseSpec explicit_part(const io::CaseSpec& spec, std::optional<std::size_t> 
 }
 
 void check_explicit_model(const model::Model& model) {
-  ed::ExplicitModel::check_cells(model);
+  ed::ExplicitView::check_cells(model);
   for (const model::Probe& p : model.probes)
     TRIFEM_CHECK(p.quantity->name == "displacement" || p.quantity->name == "position",
                  "output.probe '{}': dynamic-explicit analyses probe only 'displacement' and "
@@ -178,7 +177,7 @@ void check_explicit_model(const model::Model& model) {
 ExplicitStep::ExplicitStep(const io::CaseSpec& part, model::Model& model, Real start,
                            const Vector& velocity)
     : part_(part), model_(model), start_(start),
-      view_(std::make_unique<ed::ExplicitModel>(model, model::rigid_shell_masses(part, model))),
+      view_(std::make_unique<ed::ExplicitView>(model, model::rigid_shell_masses(part, model))),
       balance_(*view_) {
   check_explicit_model(model);
   const Vector& x = model.problem->state();
@@ -239,7 +238,7 @@ std::vector<double> ExplicitStep::state() const {
 std::size_t ExplicitStep::state_size(const model::Model& model) {
   return kStepScalars + ed::ExplicitSolver::state_size(3 * model.mesh.num_nodes(),
                                                        model.mesh.num_cells(),
-                                                       ed::ExplicitModel::count_bodies(model));
+                                                       ed::ExplicitView::count_bodies(model));
 }
 
 void ExplicitStep::restore(const std::vector<double>& state) {

@@ -30,7 +30,7 @@ using RestartWriter = std::function<void(const Resume& resume)>;
 /// (nullopt: the whole case, a dynamic-explicit analysis).
 io::CaseSpec explicit_part(const io::CaseSpec& spec, std::optional<std::size_t> k);
 
-/// InputError if `model` has cells the explicit scheme cannot hold (ExplicitModel::check_cells)
+/// InputError if `model` has cells the explicit scheme cannot hold (ExplicitView::check_cells)
 /// or outputs an explicit step cannot write (probes of quantities other than displacement and
 /// position: its stresses would lack the multiplier's pressure).
 void check_explicit_model(const model::Model& model);
@@ -86,7 +86,7 @@ private:
   const io::CaseSpec& part_;
   model::Model& model_;
   Real start_;
-  std::unique_ptr<explicit_dynamics::ExplicitModel> view_;
+  std::unique_ptr<explicit_dynamics::ExplicitView> view_;
   std::unique_ptr<explicit_dynamics::ExplicitSolver> solver_;
   std::unique_ptr<Results> results_;
   explicit_dynamics::EnergyBalance balance_;

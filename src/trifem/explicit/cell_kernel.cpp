@@ -79,7 +79,7 @@ int evaluate_cell(const Geometry& geo, const Coords& u, const material::ElasticL
 }
 
 /// evaluate_cell on cell c of `model` at the displacement U.
-int evaluate_cell(const ExplicitModel& model, Index c, Constraint constraint, const Vector& U,
+int evaluate_cell(const ExplicitView& model, Index c, Constraint constraint, const Vector& U,
                   const CellRequest& req, Real* q, Real* h, Real& psi, Real& W, Real& dJ,
                   Real& dev) {
   const material::ElasticLaw& law = model.law(c);
@@ -93,7 +93,7 @@ int evaluate_cell(const ExplicitModel& model, Index c, Constraint constraint, co
 
 /// The cell scalars of evaluate_cells whole on every process: each process's own cells, the
 /// others taken as 0, summed over the processes in one sum.
-void sum_cell_scalars(const ExplicitModel& model, const CellRequest& request, CellFields& out) {
+void sum_cell_scalars(const ExplicitView& model, const CellRequest& request, CellFields& out) {
   std::vector<Vector*> parts = {&out.volume_change, &out.gauss_volume_change};
   if (request.psi)
     parts.push_back(&out.psi);
@@ -111,7 +111,7 @@ void sum_cell_scalars(const ExplicitModel& model, const CellRequest& request, Ce
 
 } // namespace
 
-void CellFields::resize(const ExplicitModel& model) {
+void CellFields::resize(const ExplicitView& model) {
   const Index n = model.num_cells();
   internal.resize(model.cell_offsets().back());
   gradient.resize(model.cell_offsets().back());
@@ -121,7 +121,7 @@ void CellFields::resize(const ExplicitModel& model) {
   gauss_volume_change.resize(n);
 }
 
-CellStatus evaluate_cells(const ExplicitModel& model, Constraint constraint, const Vector& U,
+CellStatus evaluate_cells(const ExplicitView& model, Constraint constraint, const Vector& U,
                           const CellRequest& request, CellFields& out) {
   const Index n = model.num_cells();
   if (out.internal.size() != model.cell_offsets().back() || out.psi.size() != n)
@@ -166,7 +166,7 @@ CellStatus evaluate_cells(const ExplicitModel& model, Constraint constraint, con
   return {failure, first_bad, kQuantities[code]};
 }
 
-void gather(const ExplicitModel& model, const CellVectors& v, const Vector* weights, Vector& y) {
+void gather(const ExplicitView& model, const CellVectors& v, const Vector* weights, Vector& y) {
   const NodeIncidence& inc = model.incidence();
   const std::vector<Index>& offsets = model.cell_offsets();
   const Index nn = model.mesh().num_nodes();
@@ -188,7 +188,7 @@ void gather(const ExplicitModel& model, const CellVectors& v, const Vector* weig
     parallel::sum(y);
 }
 
-void cell_dot(const ExplicitModel& model, const CellVectors& v, const Vector& x, Vector& z) {
+void cell_dot(const ExplicitView& model, const CellVectors& v, const Vector& x, Vector& z) {
   const Index n = model.num_cells();
   const std::vector<Index>& offsets = model.cell_offsets();
   z.resize(n);

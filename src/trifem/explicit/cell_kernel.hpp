@@ -4,7 +4,7 @@
 // OpenMP-parallel, no assembly.
 #pragma once
 
-#include "trifem/explicit/explicit_model.hpp"
+#include "trifem/explicit/explicit_view.hpp"
 #include "trifem/explicit/settings.hpp"
 
 #include <string>
@@ -13,7 +13,7 @@
 namespace trifem::explicit_dynamics {
 
 /// The nodal vectors of every cell one after another: cell c's 3 values per node, node-major
-/// (a_0x, a_0y, a_0z, a_1x, ...), from ExplicitModel::cell_offsets()[c].
+/// (a_0x, a_0y, a_0z, a_1x, ...), from ExplicitView::cell_offsets()[c].
 using CellVectors = Vector;
 
 /// Which quantities evaluate_cells computes.
@@ -34,7 +34,7 @@ struct CellFields {
   Vector gauss_volume_change; ///< max over the Gauss points of |J − 1| [-]
 
   /// Sized to the cells of `model`.
-  void resize(const ExplicitModel& model);
+  void resize(const ExplicitView& model);
 };
 
 /// Why a cell evaluation failed.
@@ -54,18 +54,18 @@ struct CellStatus {
 
 /// Evaluates the requested quantities of every cell at the displacement U (OpenMP over cells).
 /// Ψ = J − 1 gives ∂Ψ/∂F = J F⁻ᵀ; Ψ = ln J gives F⁻ᵀ. On several processes each evaluates its
-/// cells (ExplicitModel::evaluates): the cell vectors (q_e, h_e) hold those, the scalars are
+/// cells (ExplicitView::evaluates): the cell vectors (q_e, h_e) hold those, the scalars are
 /// whole, and the status is that of the first failing cell of all (collective).
-CellStatus evaluate_cells(const ExplicitModel& model, Constraint constraint, const Vector& U,
+CellStatus evaluate_cells(const ExplicitView& model, Constraint constraint, const Vector& U,
                           const CellRequest& request, CellFields& out);
 
 /// y_{3a+k} = Σ_{(e,l) incident to a} w_e v_e[3l+k] with w_e = weights[e] (or 1 if empty):
 /// the nodal assembly of cell vectors, as a gather (deterministic, no atomics; OpenMP over nodes).
 /// On several processes each gathers its own nodes and the parts are summed (collective).
-void gather(const ExplicitModel& model, const CellVectors& v, const Vector* weights, Vector& y);
+void gather(const ExplicitView& model, const CellVectors& v, const Vector* weights, Vector& y);
 
 /// z_e = Σ_a Σ_k v_e[3a+k] x_{3 node(e,a) + k}: the transpose of gather, per cell (H^T x); on
 /// several processes, each of its own cells, summed (collective).
-void cell_dot(const ExplicitModel& model, const CellVectors& v, const Vector& x, Vector& z);
+void cell_dot(const ExplicitView& model, const CellVectors& v, const Vector& x, Vector& z);
 
 } // namespace trifem::explicit_dynamics

@@ -7,7 +7,7 @@
 
 namespace trifem::explicit_dynamics {
 
-EnergyBalance::EnergyBalance(const ExplicitModel& model) {
+EnergyBalance::EnergyBalance(const ExplicitView& model) {
   Real stiffness_volume = 0.0; // Σ μ_e V_e [mJ]
   for (Index c = 0; c < model.num_cells(); ++c)
     if (model.deformable(c))

@@ -4,8 +4,8 @@
 // time-discretisation error; a large deviation means an unstable step.
 #pragma once
 
-#include "trifem/explicit/explicit_model.hpp"
 #include "trifem/explicit/explicit_solver.hpp"
+#include "trifem/explicit/explicit_view.hpp"
 
 #include <array>
 
@@ -20,7 +20,7 @@ public:
   /// Errors above this fraction of the largest energy are reported.
   static constexpr Real kThreshold = 0.05;
 
-  explicit EnergyBalance(const ExplicitModel& model);
+  explicit EnergyBalance(const ExplicitView& model);
 
   /// Adds the energies at one time; true the first time the error exceeds kThreshold.
   bool record(const Energies& e);

@@ -31,7 +31,7 @@ const char* to_string(StepStatus status) {
   return "?";
 }
 
-ExplicitSolver::ExplicitSolver(const ExplicitModel& model, ExplicitSettings settings,
+ExplicitSolver::ExplicitSolver(const ExplicitView& model, ExplicitSettings settings,
                                const InitialState& initial)
     : model_(model), settings_(std::move(settings)) {
   settings_.verify();

@@ -57,7 +57,7 @@ struct InitialState {
   Vector displacement;            ///< U0 per DOF 3 a + k [mm] (empty: 0); 0 on fixed DOFs
   Vector velocity;                ///< v0 per DOF [mm/s] (empty: 0); set to 0 on fixed DOFs
   Real time = 0.0;                ///< t0 [s]
-  std::vector<BodyMotion> bodies; ///< of ExplicitModel::bodies() (empty: at rest, unturned)
+  std::vector<BodyMotion> bodies; ///< of ExplicitView::bodies() (empty: at rest, unturned)
 };
 
 /// How the step size was chosen.
@@ -78,14 +78,14 @@ struct SolverTimings {
   long factorizations = 0; ///< numeric factorizations of the multiplier matrix
 };
 
-/// Explicit dynamics of one ExplicitModel. The model must outlive the solver.
+/// Explicit dynamics of one ExplicitView. The model must outlive the solver.
 class ExplicitSolver {
 public:
   /// Verifies the settings' ranges, evaluates the initial state (by default U = 0, at rest, t = 0)
   /// and chooses Δt on it. With a multiplier, Λ0 = α Ψ_e(U0)/V_e (0 for α = inf: the first step
   /// then enforces the constraint, with a warning if U0 violates it). InputError if `initial` does
   /// not fit the model (sizes, a displaced fixed DOF).
-  ExplicitSolver(const ExplicitModel& model, ExplicitSettings settings,
+  ExplicitSolver(const ExplicitView& model, ExplicitSettings settings,
                  const InitialState& initial = {});
   ~ExplicitSolver();
 
@@ -102,7 +102,7 @@ public:
   /// Current target step (after halvings) [s].
   Real time_step() const { return dt_current_; }
   const TimeStepInfo& time_step_info() const { return dt_info_; }
-  const ExplicitModel& model() const { return model_; }
+  const ExplicitView& model() const { return model_; }
   const ExplicitSettings& settings() const { return settings_; }
 
   const Vector& displacement() const { return U_; } ///< U^n [mm]
@@ -186,7 +186,7 @@ private:
   /// `r` with a hint at stable_step_interval if the run diverged on a step estimated only once.
   StepReport with_stable_step_hint(StepReport r) const;
 
-  const ExplicitModel& model_;
+  const ExplicitView& model_;
   ExplicitSettings settings_;
   std::unique_ptr<LambdaSystem> system_;
   Vector U_, V_, lambda_, lambda_old_; ///< U^n, v^{n-1/2}, Λ^n, Λ^{n-1}

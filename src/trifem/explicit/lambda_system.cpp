@@ -11,7 +11,7 @@
 #include <algorithm>
 
 namespace trifem::explicit_dynamics {
-LambdaSystem::LambdaSystem(const ExplicitModel& model)
+LambdaSystem::LambdaSystem(const ExplicitView& model)
     : model_(model),
       solver_(model.distributed() ? linalg::make_linear_solver({LinearSolverKind::mumps})
                                   : linalg::make_cholmod_solver()) {

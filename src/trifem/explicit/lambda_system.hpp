@@ -29,7 +29,7 @@ class LambdaSystem {
 public:
   /// Builds the pattern from the model's incidence and runs the symbolic analysis (AMD/METIS
   /// ordering as CHOLMOD chooses; MUMPS's own on several processes).
-  explicit LambdaSystem(const ExplicitModel& model);
+  explicit LambdaSystem(const ExplicitView& model);
 
   /// Assembles A with scale h² [s²/... as in A2.21] and diagonal shift `diagonal` (V_e/α per
   /// cell, size num_cells) and factorizes it. Returns false if A is not positive definite.
@@ -45,7 +45,7 @@ private:
                      const Vector& diagonal);
   void assemble(const CellVectors& h, const Vector& inverse_mass, Real h2, const Vector& diagonal);
 
-  const ExplicitModel& model_;
+  const ExplicitView& model_;
   SparseMatrix A_;                  ///< lower triangle, compressed
   std::vector<Index> slot_offsets_; ///< per column: start of its traversal slots
   std::vector<Index> slots_;        ///< value index of each (column, node, incident cell) visit

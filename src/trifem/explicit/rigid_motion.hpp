@@ -22,7 +22,7 @@ enum class BodyRotation {
   Axis        ///< turns about the coordinate axis `axis`, the other two rotations held at 0
 };
 
-/// A rigid body as the explicit integrator sees it (built once by ExplicitModel).
+/// A rigid body as the explicit integrator sees it (built once by ExplicitView).
 struct ExplicitBody {
   std::string name;
   std::vector<Index> nodes;     ///< mesh nodes it carries

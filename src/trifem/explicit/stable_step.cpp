@@ -32,10 +32,10 @@ bool solid_element(const physics::CellGeometry& geo, const fe::CellNodeCoords& u
 }
 
 /// The nodal displacements of cell c from U, as its geometry's family takes them.
-fe::HexCoords values(const ExplicitModel& model, const fe::HexGeometry&, Index c, const Vector& U) {
+fe::HexCoords values(const ExplicitView& model, const fe::HexGeometry&, Index c, const Vector& U) {
   return model.hex8_values(c, U);
 }
-fe::CellNodeCoords values(const ExplicitModel& model, const physics::CellGeometry&, Index c,
+fe::CellNodeCoords values(const ExplicitView& model, const physics::CellGeometry&, Index c,
                           const Vector& U) {
   return model.node_values(c, U);
 }
@@ -47,7 +47,7 @@ using CellMatrixOf = std::conditional_t<std::is_same_v<Geometry, fe::HexGeometry
 
 /// K_e = K_W,e + K_Λ,e of cell c of geometry `geo` at U (K_Λ left out if `lambda` is empty).
 template <class Geometry>
-CellMatrixOf<Geometry> cell_stiffness(const ExplicitModel& model, const Geometry& geo,
+CellMatrixOf<Geometry> cell_stiffness(const ExplicitView& model, const Geometry& geo,
                                       Constraint constraint, const Vector& U, const Vector& lambda,
                                       Index c) {
   const auto u = values(model, geo, c, U);
@@ -61,7 +61,7 @@ CellMatrixOf<Geometry> cell_stiffness(const ExplicitModel& model, const Geometry
 
 /// The lumped masses of cell c of geometry `geo` (those build_mass gives its nodes), three per
 /// node.
-physics::HexVector cell_mass(const ExplicitModel& model, const fe::HexGeometry& geo, Index c) {
+physics::HexVector cell_mass(const ExplicitView& model, const fe::HexGeometry& geo, Index c) {
   const auto& rule = fe::hex_gauss_2x2x2();
   physics::HexVector m = physics::HexVector::Zero();
   for (int q = 0; q < 8; ++q) {
@@ -71,7 +71,7 @@ physics::HexVector cell_mass(const ExplicitModel& model, const fe::HexGeometry& 
   }
   return m;
 }
-physics::CellVectorX cell_mass(const ExplicitModel& model, const physics::CellGeometry& geo,
+physics::CellVectorX cell_mass(const ExplicitView& model, const physics::CellGeometry& geo,
                                Index c) {
   const Eigen::VectorXd nodal =
       physics::lumped_mass(physics::consistent_cell_mass(geo, model.density(c)));
@@ -82,7 +82,7 @@ physics::CellVectorX cell_mass(const ExplicitModel& model, const physics::CellGe
 }
 
 /// y = K(U) v, element by element (never assembled).
-void apply_stiffness(const ExplicitModel& model, Constraint constraint, const Vector& U,
+void apply_stiffness(const ExplicitView& model, Constraint constraint, const Vector& U,
                      const Vector& lambda, const Vector& v, CellVectors& scratch, Vector& y) {
   const Index n = model.num_cells();
   const std::vector<Index>& offsets = model.cell_offsets();
@@ -115,7 +115,7 @@ void apply_stiffness(const ExplicitModel& model, Constraint constraint, const Ve
 /// The M-orthogonal projection on ker Hᵀ: w ← w − M⁻¹H (HᵀM⁻¹H + δ)⁻¹ Hᵀ w.
 class Projector {
 public:
-  Projector(const ExplicitModel& model, Constraint constraint, const Vector& U)
+  Projector(const ExplicitView& model, Constraint constraint, const Vector& U)
       : model_(model), system_(model) {
     CellFields fields;
     evaluate_cells(model, constraint, U, {false, true, false}, fields);
@@ -148,7 +148,7 @@ public:
   }
 
 private:
-  const ExplicitModel& model_;
+  const ExplicitView& model_;
   LambdaSystem system_;
   CellVectors h_;
   bool ok_ = false;
@@ -156,7 +156,7 @@ private:
 
 /// A deterministic, non-smooth start vector (zero on fixed DOFs and those of rigid bodies): it has
 /// components along the high-frequency modes that the power iteration must find.
-Vector start_vector(const ExplicitModel& model) {
+Vector start_vector(const ExplicitView& model) {
   Vector v(model.num_dofs());
   for (Index i = 0; i < model.num_dofs(); ++i)
     v[i] = model.frequency_inverse_mass()[i] == 0.0
@@ -165,13 +165,13 @@ Vector start_vector(const ExplicitModel& model) {
   return v;
 }
 
-Real mass_norm(const ExplicitModel& model, const Vector& v) {
+Real mass_norm(const ExplicitView& model, const Vector& v) {
   return std::sqrt(v.cwiseAbs2().dot(model.mass()));
 }
 
 } // namespace
 
-FrequencyEstimate power_iteration_omega(const ExplicitModel& model, Constraint constraint,
+FrequencyEstimate power_iteration_omega(const ExplicitView& model, Constraint constraint,
                                         const Vector& U, const Vector& lambda, bool project,
                                         int max_iterations, Real tolerance) {
   std::unique_ptr<Projector> projector;
@@ -206,7 +206,7 @@ FrequencyEstimate power_iteration_omega(const ExplicitModel& model, Constraint c
   return est;
 }
 
-FrequencyEstimate element_bound_omega(const ExplicitModel& model, Constraint constraint,
+FrequencyEstimate element_bound_omega(const ExplicitView& model, Constraint constraint,
                                       const Vector& U, const Vector& lambda) {
   const Index n = model.num_cells();
   Real max_omega2 = 0.0;

@@ -23,7 +23,7 @@ struct FrequencyEstimate {
 /// ker Hᵀ (volume-preserving motions; δ = 1e-10 diag regularises a rank-deficient H).
 /// ω² is the Rayleigh quotient vᵀKv / vᵀMv of the last iterate: a lower bound that converges
 /// from below, hence the safety factor. Stops when ω² changes by < tolerance (relative).
-FrequencyEstimate power_iteration_omega(const ExplicitModel& model, Constraint constraint,
+FrequencyEstimate power_iteration_omega(const ExplicitView& model, Constraint constraint,
                                         const Vector& U, const Vector& lambda, bool project,
                                         int max_iterations, Real tolerance);
 
@@ -31,7 +31,7 @@ FrequencyEstimate power_iteration_omega(const ExplicitModel& model, Constraint c
 /// eigenvalue theorem for the row-sum lumped mass, which holds for indefinite K_e too; fixed
 /// DOFs only lower ω). Includes the volumetric modes of W, so it is sharp only for laws whose
 /// W is soft in volume (ν = 0 neo-Hookean). `lambda` empty: K_Λ left out.
-FrequencyEstimate element_bound_omega(const ExplicitModel& model, Constraint constraint,
+FrequencyEstimate element_bound_omega(const ExplicitView& model, Constraint constraint,
                                       const Vector& U, const Vector& lambda);
 
 } // namespace trifem::explicit_dynamics

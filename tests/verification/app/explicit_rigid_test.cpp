@@ -14,7 +14,7 @@
 #include "history_csv.hpp"
 #include "trifem/analysis/run.hpp"
 #include "trifem/core/error.hpp"
-#include "trifem/explicit/explicit_model.hpp"
+#include "trifem/explicit/explicit_view.hpp"
 #include "trifem/io/case_reader.hpp"
 #include "trifem/parallel/communicator.hpp"
 
@@ -578,7 +578,7 @@ TEST(ExplicitRigid, ACellStiffenedPastTheStartsStableStepStopsTheRunWithTheWayOu
 std::string explicit_model_error(const std::string& text) {
   const auto model = model::build_model(io::parse_case(text, work_dir() / "bad.toml"));
   try {
-    explicit_dynamics::ExplicitModel view(*model);
+    explicit_dynamics::ExplicitView view(*model);
   } catch (const InputError& e) {
     return e.what();
   }

@@ -209,7 +209,7 @@ ExplicitSettings two_bodies_settings() {
 }
 
 /// The history columns of a direct run stepped to the same output times as the application.
-Columns direct_history(const ExplicitModel& model) {
+Columns direct_history(const ExplicitView& model) {
   ExplicitSolver solver(model, two_bodies_settings());
   const Index soft_tip = node_at(model.mesh(), Vec3(2.0, 1.0, 1.0));
   const Index stiff_tip = node_at(model.mesh(), Vec3(2.0, 4.0, 1.0));

@@ -83,7 +83,7 @@ test::TestModel family_beam(mesh::CellType type) {
 }
 
 /// Deterministic displacement of amplitude `amplitude` (zero on fixed DOFs).
-Vector family_wobble(const ExplicitModel& model, Real amplitude) {
+Vector family_wobble(const ExplicitView& model, Real amplitude) {
   Vector U(model.num_dofs());
   for (Index i = 0; i < U.size(); ++i)
     U[i] = model.fixed()[i] ? 0.0 : amplitude * std::sin(3.7 * i + 0.3 * (i % 5));

@@ -3,8 +3,8 @@
 // as every case is (io::CaseSpec → model::build_model), with the explicit view of the model.
 #pragma once
 
-#include "trifem/explicit/explicit_model.hpp"
 #include "trifem/explicit/explicit_solver.hpp"
+#include "trifem/explicit/explicit_view.hpp"
 #include "trifem/io/case_spec.hpp"
 #include "trifem/material/registry.hpp"
 #include "trifem/model/model.hpp"
@@ -114,9 +114,9 @@ struct SharedModel {
 };
 
 /// A model built from a test case with its explicit view (the view refers to the model it owns).
-struct TestModel : SharedModel, explicit_dynamics::ExplicitModel {
+struct TestModel : SharedModel, explicit_dynamics::ExplicitView {
   explicit TestModel(std::unique_ptr<model::Model> model)
-      : SharedModel{std::move(model)}, explicit_dynamics::ExplicitModel(*shared) {}
+      : SharedModel{std::move(model)}, explicit_dynamics::ExplicitView(*shared) {}
   explicit TestModel(const ExplicitTestCase& c) : TestModel(c.build()) {}
 };
 

@@ -70,10 +70,10 @@ struct PatchResult {
   Vector U, lambda, psi;
   Real max_step_residual = 0.0;
   StepReport last;
-  const ExplicitModel* model = nullptr;
+  const ExplicitView* model = nullptr;
 };
 
-PatchResult run_patch(const ExplicitModel& model, Real alpha, Constraint constraint) {
+PatchResult run_patch(const ExplicitView& model, Real alpha, Constraint constraint) {
   ExplicitSettings s;
   s.penalty = alpha;
   s.constraint = constraint;
@@ -97,7 +97,7 @@ test::TestModel uniaxial_model(Real P) {
   return test::TestModel(c);
 }
 
-void expect_homogeneous(const ExplicitModel& model, const PatchResult& r, const Uniaxial& exact,
+void expect_homogeneous(const ExplicitView& model, const PatchResult& r, const Uniaxial& exact,
                         Real alpha) {
   ASSERT_TRUE(r.last.ok()) << r.last.message;
   EXPECT_LT(r.max_step_residual, 1e-12) << "constraint not at round-off in some step";

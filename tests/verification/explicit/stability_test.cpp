@@ -35,7 +35,7 @@ test::TestModel cantilever(Vec3 size, std::array<int, 3> divisions, Real mu, Rea
 }
 
 /// Deterministic pseudo-random displacement of amplitude `amplitude` (zero on fixed DOFs).
-Vector wobble(const ExplicitModel& model, Real amplitude) {
+Vector wobble(const ExplicitView& model, Real amplitude) {
   Vector U(model.num_dofs());
   for (Index i = 0; i < U.size(); ++i)
     U[i] = model.fixed()[i] ? 0.0 : amplitude * std::sin(3.7 * i + 0.3 * (i % 5));

@@ -30,7 +30,7 @@ struct NodeIncidence {
 /// (tet4 and penta6 cells lock under the volume constraint: the model refuses them). Vectors are
 /// indexed 3 a + k for node a, component k (mapped to the model's DOFs where loads are evaluated).
 /// The model must outlive the view.
-class ExplicitModel {
+class ExplicitView {
 public:
   /// The solid cells (laws, densities) of `model`; the DOFs it constrains in its current step
   /// follow their prescribed values (prescribe()); its load terms give F_S. The nodes of a rigid
@@ -39,8 +39,8 @@ public:
   /// InputError if a solid cell has no density, a cell is a mixture's, a free node belongs to
   /// no cell, a cell is inverted, the model has rigid connectors, or a body's drive is not one
   /// the explicit integrator takes (docs/theory/explicit.md §9).
-  explicit ExplicitModel(const model::Model& model,
-                         const std::vector<physics::MassElement>& shells = {});
+  explicit ExplicitView(const model::Model& model,
+                        const std::vector<physics::MassElement>& shells = {});
 
   /// InputError naming the first cell that is not rigid and is a tet4 or a penta6: they lock
   /// under the one volume multiplier per cell of the explicit scheme (tet10 and hex20 cells take

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "trifem/explicit/explicit_model.hpp"
+#include "trifem/explicit/explicit_view.hpp"
 
 #include "trifem/core/error.hpp"
 #include "trifem/fe/quadrature.hpp"
@@ -16,7 +16,7 @@
 
 namespace trifem::explicit_dynamics {
 
-void ExplicitModel::check_cells(const model::Model& model) {
+void ExplicitView::check_cells(const model::Model& model) {
   for (Index c = 0; c < model.mesh.num_cells(); ++c) {
     const mesh::CellType type = model.mesh.cell_type(c);
     TRIFEM_CHECK(model.materials[static_cast<std::size_t>(c)].rigid() ||
@@ -29,8 +29,8 @@ void ExplicitModel::check_cells(const model::Model& model) {
   }
 }
 
-ExplicitModel::ExplicitModel(const model::Model& model,
-                             const std::vector<physics::MassElement>& shells)
+ExplicitView::ExplicitView(const model::Model& model,
+                           const std::vector<physics::MassElement>& shells)
     : model_(model), mesh_(model.mesh) {
   TRIFEM_CHECK(mesh_.num_cells() > 0, "explicit model: the mesh has no cells");
   for (const model::CellMaterial& m : model.materials)
@@ -83,9 +83,9 @@ ExplicitModel::ExplicitModel(const model::Model& model,
   build_partition();
 }
 
-void ExplicitModel::external_force(const Vector& U, Real time, Vector& f,
-                                   const std::vector<BodyMotion>& motions,
-                                   std::vector<BodyLoad>* loads) const {
+void ExplicitView::external_force(const Vector& U, Real time, Vector& f,
+                                  const std::vector<BodyMotion>& motions,
+                                  std::vector<BodyLoad>* loads) const {
   f.setZero(num_dofs());
   if (loads)
     loads->assign(bodies_.size(), BodyLoad{});
@@ -116,8 +116,8 @@ void ExplicitModel::external_force(const Vector& U, Real time, Vector& f,
       (*loads)[b] = applied_load(b, motions[b], generalized, x);
 }
 
-BodyLoad ExplicitModel::applied_load(std::size_t b, const BodyMotion& motion,
-                                     const Vector& generalized, const Vector& x) const {
+BodyLoad ExplicitView::applied_load(std::size_t b, const BodyMotion& motion,
+                                    const Vector& generalized, const Vector& x) const {
   if (rotating_[b] < 0) // the forces on a body that only translates act on its nodes
     return {};
   const dofs::RigidBodyDofs& r =
@@ -133,7 +133,7 @@ BodyLoad ExplicitModel::applied_load(std::size_t b, const BodyMotion& motion,
   return {force, moment + (motion.R * (body.center - body.pivot)).cross(force)};
 }
 
-void ExplicitModel::prescribe(Real time, Vector& U) const {
+void ExplicitView::prescribe(Real time, Vector& U) const {
   Vector x = Vector::Zero(model_.dofs.num_dofs());
   dofs::prescribed_values(model_.problem->conditions(), time, x);
   model_.problem->rigid_map().apply(x); // the nodes of the bodies whose motion is prescribed
@@ -142,8 +142,8 @@ void ExplicitModel::prescribe(Real time, Vector& U) const {
       U[i] = x[dofs_[i]];
 }
 
-void ExplicitModel::scatter_state(const Vector& U, const std::vector<BodyMotion>& motions,
-                                  Real time, Vector& x) const {
+void ExplicitView::scatter_state(const Vector& U, const std::vector<BodyMotion>& motions, Real time,
+                                 Vector& x) const {
   if (!model_.rigid_bodies.empty()) // the unknowns of the bodies that move as prescribed
     dofs::prescribed_values(model_.problem->conditions(), time, x);
   scatter(U, x);
@@ -151,27 +151,27 @@ void ExplicitModel::scatter_state(const Vector& U, const std::vector<BodyMotion>
     scatter_body(b, motions[b], x);
 }
 
-void ExplicitModel::scatter(const Vector& v, Vector& x) const {
+void ExplicitView::scatter(const Vector& v, Vector& x) const {
   for (Index i = 0; i < num_dofs(); ++i)
     x[dofs_[i]] = v[i];
 }
 
-Vector ExplicitModel::gather(const Vector& x) const {
+Vector ExplicitView::gather(const Vector& x) const {
   Vector v(num_dofs());
   for (Index i = 0; i < num_dofs(); ++i)
     v[i] = x[dofs_[i]];
   return v;
 }
 
-const material::ElasticLaw& ExplicitModel::law(Index c) const {
+const material::ElasticLaw& ExplicitView::law(Index c) const {
   return *model_.materials[c].solid;
 }
 
-Real ExplicitModel::density(Index c) const {
+Real ExplicitView::density(Index c) const {
   return model_.materials[c].density;
 }
 
-fe::HexCoords ExplicitModel::hex8_values(Index c, const Vector& U) const {
+fe::HexCoords ExplicitView::hex8_values(Index c, const Vector& U) const {
   const mesh::Hex8& nodes = mesh_.cell(c);
   fe::HexCoords u;
   for (int a = 0; a < 8; ++a)
@@ -179,7 +179,7 @@ fe::HexCoords ExplicitModel::hex8_values(Index c, const Vector& U) const {
   return u;
 }
 
-fe::CellNodeCoords ExplicitModel::node_values(Index c, const Vector& U) const {
+fe::CellNodeCoords ExplicitView::node_values(Index c, const Vector& U) const {
   const std::span<const Index> nodes = mesh_.cell_nodes(c);
   fe::CellNodeCoords u(static_cast<Index>(nodes.size()), 3);
   for (std::size_t a = 0; a < nodes.size(); ++a)
@@ -207,7 +207,7 @@ Real largest_face_area(const mesh::Mesh& mesh, Index c) {
 
 } // namespace
 
-void ExplicitModel::build_geometry() {
+void ExplicitView::build_geometry() {
   const Index n = mesh_.num_cells();
   geometry_.clear();
   geometry_.reserve(static_cast<std::size_t>(n));
@@ -235,7 +235,7 @@ void ExplicitModel::build_geometry() {
   }
 }
 
-void ExplicitModel::build_mass() {
+void ExplicitView::build_mass() {
   const auto& rule = fe::hex_gauss_2x2x2();
   Vector nodal = Vector::Zero(mesh_.num_nodes());
   for (Index c = 0; c < mesh_.num_cells(); ++c) {
@@ -259,7 +259,7 @@ void ExplicitModel::build_mass() {
     mass_.segment<3>(3 * a).setConstant(nodal[a]);
 }
 
-void ExplicitModel::build_partition() {
+void ExplicitView::build_partition() {
   if (!parallel::active())
     return;
   const Index nn = mesh_.num_nodes();
@@ -289,7 +289,7 @@ void ExplicitModel::build_partition() {
   }
 }
 
-void ExplicitModel::build_incidence() {
+void ExplicitView::build_incidence() {
   const Index nn = mesh_.num_nodes();
   incidence_.offsets.assign(nn + 1, 0);
   for (Index c = 0; c < mesh_.num_cells(); ++c)
@@ -342,13 +342,13 @@ bool moves_itself(const model::Model& model, const model::RigidBody& rigid) {
 
 } // namespace
 
-std::size_t ExplicitModel::count_bodies(const model::Model& model) {
+std::size_t ExplicitView::count_bodies(const model::Model& model) {
   return static_cast<std::size_t>(
       std::count_if(model.rigid_bodies.begin(), model.rigid_bodies.end(),
                     [&](const model::RigidBody& b) { return moves_itself(model, b); }));
 }
 
-void ExplicitModel::build_bodies() {
+void ExplicitView::build_bodies() {
   carrier_.assign(mesh_.num_nodes(), -1);
   for (std::size_t i = 0; i < model_.rigid_bodies.size(); ++i) {
     const model::RigidBody& rigid = model_.rigid_bodies[i];
@@ -362,7 +362,7 @@ void ExplicitModel::build_bodies() {
   }
 }
 
-void ExplicitModel::add_rotating_body(const model::RigidBody& rigid) {
+void ExplicitView::add_rotating_body(const model::RigidBody& rigid) {
   const dofs::RigidBodyDofs& r =
       model_.problem->rigid_map().bodies()[static_cast<std::size_t>(rigid.rotating)];
   std::array<bool, 3> driven{}, held{};
@@ -408,7 +408,7 @@ void ExplicitModel::add_rotating_body(const model::RigidBody& rigid) {
   bodies_.push_back(std::move(body));
 }
 
-void ExplicitModel::add_translating_body(const model::RigidBody& rigid) {
+void ExplicitView::add_translating_body(const model::RigidBody& rigid) {
   ExplicitBody body;
   body.name = rigid.name;
   std::array<Index, 3> leaders{-1, -1, -1};
@@ -427,7 +427,7 @@ void ExplicitModel::add_translating_body(const model::RigidBody& rigid) {
   bodies_.push_back(std::move(body));
 }
 
-void ExplicitModel::set_mass_properties(ExplicitBody& body, bool center_is_pivot) const {
+void ExplicitView::set_mass_properties(ExplicitBody& body, bool center_is_pivot) const {
   Vec3 first_moment = Vec3::Zero();
   for (Index a : body.nodes) {
     body.mass += mass_[3 * a];
@@ -458,7 +458,7 @@ void ExplicitModel::set_mass_properties(ExplicitBody& body, bool center_is_pivot
                  body.name, kAxes[body.axis]);
 }
 
-void ExplicitModel::set_deformable() {
+void ExplicitView::set_deformable() {
   deformable_.assign(static_cast<std::size_t>(mesh_.num_cells()), 0);
   for (Index c = 0; c < mesh_.num_cells(); ++c) {
     const std::span<const Index> nodes = mesh_.cell_nodes(c);
@@ -470,7 +470,7 @@ void ExplicitModel::set_deformable() {
   }
 }
 
-BodyTarget ExplicitModel::target(std::size_t b, Real time) const {
+BodyTarget ExplicitView::target(std::size_t b, Real time) const {
   BodyTarget t;
   if (rotating_[b] < 0)
     return t; // a body that only translates has no driven component
@@ -498,7 +498,7 @@ BodyTarget ExplicitModel::target(std::size_t b, Real time) const {
   return t;
 }
 
-BodyMotion ExplicitModel::motion(std::size_t b, const Vector& x, const Vector& v) const {
+BodyMotion ExplicitView::motion(std::size_t b, const Vector& x, const Vector& v) const {
   const ExplicitBody& body = bodies_[b];
   BodyMotion m;
   if (rotating_[b] < 0) {
@@ -532,7 +532,7 @@ BodyMotion ExplicitModel::motion(std::size_t b, const Vector& x, const Vector& v
   return m;
 }
 
-void ExplicitModel::scatter_body(std::size_t b, const BodyMotion& motion, Vector& x) const {
+void ExplicitView::scatter_body(std::size_t b, const BodyMotion& motion, Vector& x) const {
   if (rotating_[b] < 0)
     return;
   const ExplicitBody& body = bodies_[b];
@@ -546,9 +546,9 @@ void ExplicitModel::scatter_body(std::size_t b, const BodyMotion& motion, Vector
   }
 }
 
-void ExplicitModel::scatter_body_velocity(std::size_t b, const BodyMotion& motion,
-                                          const Vec3& pivot_velocity, const Vec3& omega,
-                                          Vector& v) const {
+void ExplicitView::scatter_body_velocity(std::size_t b, const BodyMotion& motion,
+                                         const Vec3& pivot_velocity, const Vec3& omega,
+                                         Vector& v) const {
   if (rotating_[b] < 0)
     return;
   const ExplicitBody& body = bodies_[b];

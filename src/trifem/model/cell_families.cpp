@@ -18,8 +18,6 @@ std::string describe_cell(const mesh::Mesh& mesh, Index c) {
 
 namespace {
 
-constexpr const char* kSoFar = "for now only hex8 cells take it";
-
 void check_material(const io::CaseSpec& spec, const Model& model, Index c) {
   const CellMaterial& m = model.materials[static_cast<std::size_t>(c)];
   const std::string where = describe_cell(model.mesh, c);
@@ -42,10 +40,6 @@ void check_material(const io::CaseSpec& spec, const Model& model, Index c) {
                "cells only, and {} has the mixture material '{}'; use \"selfp\" or a direct "
                "solver",
                where, m.name);
-  if (m.rigid())
-    return; // (its nodes follow the body: any family)
-  const io::MaterialSpec& given = spec.materials.at(m.name);
-  TRIFEM_CHECK(!given.axes, "materials.{}.axes: {} has this material; {}", m.name, where, kSoFar);
 }
 
 } // namespace

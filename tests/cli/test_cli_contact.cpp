@@ -543,6 +543,8 @@ TEST_F(ContactCli, FrictionHoldsABlockBelowTheLimitAndDragsItAtTheLimit) {
     EXPECT_NEAR(friction_x[i], fx[i], 1e-10 * kLoad) << "row " << i; // the interface is flat
     EXPECT_NEAR(friction_z[i], 0.0, 1e-10 * kLoad) << "row " << i;
     EXPECT_EQ(slipping_nodes[i], 0.0) << "row " << i;
+    EXPECT_LE(std::abs(h.column("contact1.friction_dissipation [mJ]")[i]), 1e-12 * kLoad * kEdge)
+        << "row " << i;
   }
   const CsvTable stuck = read_csv(last_surface_file(output()));
   ASSERT_EQ(stuck.rows.size(), 15u);
@@ -583,6 +585,21 @@ TEST_F(ContactCli, FrictionHoldsABlockBelowTheLimitAndDragsItAtTheLimit) {
   for (const double s : slid.column("contact_slipping"))
     EXPECT_EQ(s, 1.0);
   EXPECT_NEAR(h.last("plate.ux [mm]"), 0.5, 1e-12);
+  // friction's work: while every node slides with the plate, each step dissipates μ F_n times
+  // the plate's travel; every slave node's accumulated slip is its travel over the fixed base
+  const std::vector<double> dissipation = h.column("contact1.friction_dissipation [mJ]");
+  const std::vector<double> ux = h.column("plate.ux [mm]");
+  for (std::size_t i = 1; i < t2.size(); ++i) {
+    EXPECT_GE(dissipation[i], dissipation[i - 1] - 1e-15) << "row " << i;
+    if (t2[i - 1] >= 1.2)
+      EXPECT_NEAR(dissipation[i] - dissipation[i - 1], kMu * kLoad * (ux[i] - ux[i - 1]),
+                  1e-8 * kMu * kLoad * (ux[i] - ux[i - 1]))
+          << "row " << i;
+  }
+  const std::vector<double> X2 = slid.column("X [mm]"), x2 = slid.column("x [mm]");
+  const std::vector<double> slip = slid.column("accumulated_slip [mm]");
+  for (std::size_t k = 0; k < X2.size(); ++k)
+    EXPECT_NEAR(slip[k], x2[k] - X2[k], 1e-10 * kEdge) << "slave node " << k;
 }
 
 TEST_F(ContactCli, FrictionBetweenMixturesIsRefusedNamingThePair) {

@@ -166,6 +166,8 @@ std::vector<io::DataArray> contact_arrays(const model::Model& model,
     out.push_back(std::move(friction));
     out.push_back(scalar_array("contact_slipping", states,
                                [](const SlaveNodeState& s) { return s.slipping ? 1.0 : 0.0; }));
+    out.push_back(scalar_array("accumulated_slip [mm]", states,
+                               [](const SlaveNodeState& s) { return s.accumulated_slip; }));
   }
   io::DataArray normal{"normal", 3, std::vector<double>(3 * states.size())};
   for (std::size_t k = 0; k < states.size(); ++k)
@@ -214,6 +216,7 @@ std::vector<std::string> contact_history_columns(const model::Model& model) {
     for (const char* c : {"Fx", "Fy", "Fz"})
       cols.push_back(fmt::format("contact{}.friction_{} [N]", i, c));
     cols.push_back(fmt::format("contact{}.slipping_nodes", i));
+    cols.push_back(fmt::format("contact{}.friction_dissipation [mJ]", i));
   }
   return cols;
 }
@@ -233,6 +236,7 @@ void append_contact_history(const model::Model& model, std::vector<double>& row)
     for (Index k = 0; k < pair->slave().num_nodes(); ++k)
       slipping += pair->active_set().slipping(k) ? 1 : 0;
     row.push_back(static_cast<double>(slipping));
+    row.push_back(pair->friction_dissipation());
   }
 }
 

@@ -53,6 +53,7 @@ std::vector<SlaveNodeState> ContactTerm::slave_states(const Vector& x) const {
     s.active = active_.active(k);
     s.frictional = law_->frictional();
     s.slipping = active_.slipping(k);
+    s.accumulated_slip = accumulated_slip(k);
     set_projection(projections[k], s);
     s.multiplier.resize(law_->num_components());
     const std::array<Index, 2> ends = slave_.edge_corners(k);
@@ -64,6 +65,30 @@ std::vector<SlaveNodeState> ContactTerm::slave_states(const Vector& x) const {
       s.edge_corners = {slave_.nodes()[ends[0]], slave_.nodes()[ends[1]]};
   }
   return states;
+}
+
+void ContactTerm::accumulate_slip(const physics::EvalState& state) {
+  slip_.resize(static_cast<std::size_t>(slave_.num_nodes()), 0.0);
+  const NodePositions now([this, &state](Index n) { return position(n, state.x); });
+  const NodePositions before([this, &state](Index n) { return position(n, state.x_old); });
+  const std::vector<Vec3> area = nodal_area_vectors(slave_, now);
+  for (Index k = 0; k < slave_.num_nodes(); ++k) {
+    const std::optional<Projection>& p = slave_proj_[k];
+    if (!active_.active(k) || !p)
+      continue;
+    // the slave node's motion over the step relative to the (material) master point it meets
+    const Index node = slave_.nodes()[k];
+    const Vec3 master_motion =
+        master_.evaluate(p->facet, p->xi, now).x - master_.evaluate(p->facet, p->xi, before).x;
+    const Vec3 relative = now(node) - before(node) - master_motion;
+    const Vec3 tangential = relative - relative.dot(p->normal) * p->normal;
+    slip_[k] += tangential.norm();
+    Vec3 traction = Vec3::Zero(); // the friction multipliers: components 1-3
+    for (int c = 1; c < law_->num_components(); ++c)
+      if (const int axis = law_->work_axis(c); axis >= 0)
+        traction[axis] = state.x[multiplier_dof(k, c)];
+    dissipation_ -= traction.dot(tangential) * area[k].norm();
+  }
 }
 
 Real ContactTerm::contact_area(const Vector& x) const {

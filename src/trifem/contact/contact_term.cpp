@@ -184,6 +184,8 @@ bool ContactTerm::prepare(const physics::EvalState& state) {
 }
 
 void ContactTerm::commit(const physics::EvalState& state) {
+  if (law_->frictional())
+    accumulate_slip(state);
   active_.commit();
   committed_active_ = active_;
   committed_projected_ = admissible_projections();
@@ -203,14 +205,29 @@ std::vector<double> ContactTerm::history() const {
     out[3 * k + 2] =
         k < static_cast<Index>(committed_pressure_.size()) ? committed_pressure_[k] : 0;
   }
+  if (law_->frictional()) {
+    for (Index k = 0; k < n; ++k)
+      out.push_back(accumulated_slip(k));
+    out.push_back(dissipation_);
+  }
   return out;
 }
 
 void ContactTerm::restore_history(const std::vector<double>& values) {
   const Index n = slave_.num_nodes();
-  TRIFEM_CHECK(values.size() == 3 * static_cast<std::size_t>(n),
+  // a frictional pair's slips and dissipation follow (absent from files written before them)
+  const std::size_t with_slips = law_->frictional() ? 4 * static_cast<std::size_t>(n) + 1 : 0;
+  TRIFEM_CHECK(values.size() == 3 * static_cast<std::size_t>(n) || values.size() == with_slips,
                "the restart file holds {} contact history values, this contact pair needs {}",
-               values.size(), 3 * n);
+               values.size(), law_->frictional() ? with_slips : 3 * static_cast<std::size_t>(n));
+  if (values.size() == with_slips) {
+    slip_.assign(values.begin() + 3 * n, values.begin() + 4 * n);
+    dissipation_ = values.back();
+    TRIFEM_CHECK(std::isfinite(dissipation_) &&
+                     std::all_of(slip_.begin(), slip_.end(),
+                                 [](Real s) { return std::isfinite(s) && s >= 0.0; }),
+                 "the restart file holds an invalid accumulated slip or frictional dissipation");
+  }
   std::vector<char> flags(n);
   committed_projected_.assign(n, 0);
   committed_pressure_.assign(n, 0.0);

@@ -69,6 +69,7 @@ struct SlaveNodeState {
   bool frictional = false;         ///< of a frictional law: multipliers 1-3 are the friction
                                    ///< traction on the slave body [stress]
   bool slipping = false;           ///< active and slipping (frictional laws)
+  Real accumulated_slip = 0;       ///< frictional laws: ContactTerm::accumulated_slip [length]
   Real gap = 0;                    ///< g = (x - x^m(ξ))·n^m(ξ) [length]: ≥ 0 separated
   Vec3 master_normal = Vec3::Zero(); ///< n^m(ξ) at the projection (outward from the master)
   Vector multiplier; ///< λ_k as stored (components and units: the ContactLaw); at a mid-edge
@@ -132,7 +133,7 @@ public:
   /// step size accepted with a warning (the node left the edge of the master surface).
   std::string step_caution(const physics::EvalState& state) const override;
   /// The committed active set, admissible projections and contact pressures (3 numbers per
-  /// slave node).
+  /// slave node); of a frictional law then the accumulated slips and the dissipation.
   std::vector<double> history() const override;
   void restore_history(const std::vector<double>& values) override;
   /// Fraction of the peak contact pressure above which losing the projection rejects a step.
@@ -159,6 +160,14 @@ public:
   Vec3 slave_force(const Vector& x, bool friction_only = false) const;
   /// Whether the pair's law has friction tractions (FrictionalLaw).
   bool frictional() const { return law_->frictional(); }
+  /// Of a frictional law: the slip of slave node k summed over the converged steps, Σ |Δg_T|,
+  /// with Δg_T the tangential part (normal to the master) of its motion over a step relative to
+  /// the master point it projects onto [length]; 0 for a frictionless law.
+  Real accumulated_slip(Index k) const { return slip_.empty() ? 0.0 : slip_[k]; }
+  /// Of a frictional law: the work dissipated by friction over the converged steps,
+  /// Σ_steps Σ_k −t_k · Δg_T,k |a_k| over the active slave nodes (t_k the friction traction on
+  /// the slave body, a_k its area vector at the step end) [force × length].
+  Real friction_dissipation() const { return dissipation_; }
   /// Total interface force (as slave_force) on the master body in the state x (projections of
   /// the last prepare()): ∫ λ^m n da (BothSurfaces) or -Σ_k λ_k a_k over the slave nodes that
   /// transfer their force (SlaveNodes, = -slave_force). The both-surface scheme does not
@@ -209,6 +218,8 @@ private:
   void master_facet_work(Index f, const Vector& x, Real dt, LocalSystem& out) const;
   void slave_point_forces(Index f, const Vector& x, Real dt, LocalSystem& out) const;
   void slave_node_rows(Index k, const physics::EvalState& state, LocalSystem& out) const;
+  /// Adds the slips and the frictional work of the converged step from state.x_old to state.x.
+  void accumulate_slip(const physics::EvalState& state);
   /// Slave node k as its law sees it in `state` (without local positions and derivatives).
   void describe_node(Index k, const physics::EvalState& state, SlaveNodeRows& node) const;
 
@@ -229,6 +240,8 @@ private:
   std::vector<Real> committed_pressure_;  ///< |λ_k,0| of active nodes at the step start
   ActiveSet committed_active_;            ///< the active set at the last commit
   std::vector<char> committed_projected_; ///< admissible projection at the last commit
+  std::vector<Real> slip_;                ///< accumulated slip per slave node (frictional laws)
+  Real dissipation_ = 0;                  ///< accumulated frictional work
 };
 
 } // namespace trifem::contact

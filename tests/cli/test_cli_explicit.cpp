@@ -156,6 +156,42 @@ TEST_F(CliExplicit, IntervalZeroWritesEveryStep) {
   EXPECT_GT(rows, 30u);
 }
 
+// history_interval thins the history rows: the first step at or after each multiple of 2e-4 s,
+// the output times and the end, each row the every-step run's row of the same step, bit for bit
+// (the integration does not depend on the rows written).
+TEST_F(CliExplicit, HistoryIntervalWritesTheEveryStepRowsAtItsMultiples) {
+  const fs::path every = output() / "every", thinned = output() / "thinned";
+  ASSERT_EQ(trifem({"-q", "run", kBox.string(), "-o", every.string()}).exit_code, kSuccess);
+  const fs::path file =
+      variant("thinned.toml", "interval = 2.5e-4", "interval = 2.5e-4\nhistory_interval = 2e-4");
+  ASSERT_EQ(trifem({"-q", "run", file.string(), "-o", thinned.string()}).exit_code, kSuccess);
+  const std::vector<std::string> all = lines_of(read_text(every / "history.csv"));
+  const std::vector<std::string> some = lines_of(read_text(thinned / "history.csv"));
+  ASSERT_GT(all.size(), 2 * some.size()) << "rows are left out";
+  EXPECT_EQ(some.front(), all.front()); // the header
+  const int step = column_index(all.front(), "step");
+  ASSERT_GE(step, 0);
+  std::size_t at = 1;
+  double last = -1.0;
+  for (std::size_t i = 1; i < some.size(); ++i) {
+    while (at < all.size() && numbers(all[at])[step] != numbers(some[i])[step])
+      ++at;
+    ASSERT_LT(at, all.size()) << "row " << i << " is no step of the every-step run";
+    EXPECT_EQ(some[i], all[at]) << "row " << i;
+    const double t = numbers(some[i])[0];
+    if (i > 1) // no multiple of 2e-4 s passes without a row (the steps are below 3e-5 s)
+      EXPECT_LE(t - last, 2e-4 + 3e-5) << "row " << i;
+    last = t;
+  }
+  EXPECT_EQ(some.back(), all.back());
+  // only dynamic-explicit steps take it
+  const fs::path quasi = write_file("quasi.toml", read_text(kData / "friction_block.toml") +
+                                                      "history_interval = 0.5\n");
+  const Result r = trifem({"check", quasi.string()});
+  EXPECT_EQ(r.exit_code, kInvalidInput) << r;
+  EXPECT_TRUE(contains(r.err, "output.history_interval")) << r;
+}
+
 TEST_F(CliExplicit, ExactConstraintIsAccepted) {
   const fs::path file = variant("inf.toml", "penalty = 4000.0", "penalty = inf");
   const Result r = trifem({"check", file.string()});

@@ -267,6 +267,12 @@ void ExplicitStep::write(OutputWriter& output, const ed::StepReport& report, boo
 void ExplicitStep::advance(OutputWriter& output, solver::RunReport& run,
                            const RestartWriter& restart) {
   const bool every_step = explicit_output_interval(part_, start_) <= 0.0;
+  // history rows: every step, or the first step at or after each multiple of history_interval
+  const Real rows = part_.output.history_interval;
+  const auto next_row_after = [&](Real t) {
+    return start_ + (std::floor((t - start_) / rows * (1.0 + 1e-12)) + 1.0) * rows;
+  };
+  Real next_row = rows > 0.0 ? next_row_after(solver_->time()) : 0.0;
   for (const StepTarget& target : explicit_step_targets(part_, start_)) {
     const Real eps = 1e-12 * std::max(target.time, solver_->time_step_info().used);
     while (solver_->time() < target.time - eps) {
@@ -287,6 +293,10 @@ void ExplicitStep::advance(OutputWriter& output, solver::RunReport& run,
       run.end_time = solver_->time();
       const bool reached = solver_->time() >= target.time - eps;
       const bool volume = every_step || (reached && target.output);
+      if (rows > 0.0 && !volume && !reached && solver_->time() < next_row - eps)
+        continue; // no history row at this step
+      if (rows > 0.0)
+        next_row = next_row_after(solver_->time());
       write(output, r, volume);
       if (volume && restart) { // the run from this file and this one factorize anew alike
         restart({solver_->time(), solver_->time_step(), static_cast<int>(solver_->step_count()),

@@ -669,12 +669,22 @@ void read_output(const Table& root, CaseSpec& spec) {
   const auto t = root.table("output");
   if (!t)
     return;
-  t->allow({"interval", "times", "vtu", "restart", "reaction", "probe", "average"});
+  t->allow(
+      {"interval", "history_interval", "times", "vtu", "restart", "reaction", "probe", "average"});
   OutputSpec& s = spec.output;
   s.interval_given = t->find("interval") != nullptr;
   s.interval =
       t->number("interval", {.range = Range::non_negative(), .fallback = s.interval, .unit = "s"});
   s.times = read_output_times(*t, spec.time.end_time);
+  if (const toml::node* node = t->find("history_interval")) {
+    if (!spec.is_explicit() && !spec.has_explicit_step())
+      fail(node, t->path("history_interval"),
+           "only dynamic-explicit steps thin their history rows (a quasi-static or implicit "
+           "dynamic step writes one per step); remove the key");
+    s.history_interval =
+        t->number("history_interval",
+                  {.range = Range::non_negative(), .fallback = s.history_interval, .unit = "s"});
+  }
   s.vtu = t->get<bool>("vtu").value_or(s.vtu);
   s.restart = t->get<bool>("restart").value_or(s.restart);
   for (const Table& r : t->tables("reaction"))

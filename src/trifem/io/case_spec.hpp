@@ -493,6 +493,9 @@ struct OutputSpec {
   /// or after each of kDefaultOutputCount equal parts of the run (and at every step end).
   bool interval_given = false;
   std::vector<Real> times; ///< extra output times (must points)
+  /// history.csv rows of dynamic-explicit steps every this many seconds (the first step at or
+  /// after each multiple, every VTU state and the step's end); 0: every step
+  Real history_interval = 0.0;
   bool vtu = true;
   bool restart = false; ///< write a restart file with every VTU state (quasi-static runs)
   std::vector<ReactionSpec> reactions;

@@ -485,6 +485,8 @@ void write_output(const OutputSpec& o, TomlText& t) {
       times += fmt::format("{}{}", i ? ", " : "", TomlText::number(o.times[i]));
     t.raw("times", times + "]");
   }
+  if (o.history_interval > 0.0)
+    t.number("history_interval", o.history_interval);
   t.raw("vtu", o.vtu ? "true" : "false");
   if (o.restart)
     t.raw("restart", "true");

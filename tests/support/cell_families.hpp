@@ -35,4 +35,12 @@ inline fe::CellNodeCoords distorted_cell(fe::CellType type, unsigned seed, Real 
   return X;
 }
 
+/// The nodal vectors of a cell (3 per node, node-major) as rows of node coordinates.
+inline fe::CellNodeCoords as_rows(const Eigen::VectorXd& v) {
+  fe::CellNodeCoords u(v.size() / 3, 3);
+  for (Index a = 0; a < u.rows(); ++a)
+    u.row(a) = v.segment<3>(3 * a).transpose();
+  return u;
+}
+
 } // namespace trifem::test

@@ -18,18 +18,12 @@
 #include <cmath>
 
 using namespace trifem;
+using test::as_rows;
 using test::kCellFamilies;
 using test::Noise;
 
 namespace nodal_dilatation_test {
 namespace {
-
-fe::CellNodeCoords as_rows(const Eigen::VectorXd& v) {
-  fe::CellNodeCoords u(v.size() / 3, 3);
-  for (Index a = 0; a < u.rows(); ++a)
-    u.row(a) = v.segment<3>(3 * a).transpose();
-  return u;
-}
 
 Eigen::VectorXd random_state(Index n, unsigned seed, Real amplitude) {
   Noise noise(seed);

@@ -13,17 +13,11 @@
 #include <cmath>
 
 using namespace trifem;
+using test::as_rows;
 using test::kCellFamilies;
 using test::Noise;
 
 namespace {
-
-fe::CellNodeCoords as_rows(const Eigen::VectorXd& v) {
-  fe::CellNodeCoords u(v.size() / 3, 3);
-  for (Index a = 0; a < u.rows(); ++a)
-    u.row(a) = v.segment<3>(3 * a).transpose();
-  return u;
-}
 
 /// Π(u) = Σ_q W(C_q) dV_q, from its definition.
 Real cell_stored_energy(const physics::CellGeometry& geo, const fe::CellNodeCoords& u,

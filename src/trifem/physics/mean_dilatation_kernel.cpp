@@ -72,11 +72,11 @@ struct CellState {
   Real pbar = 0.0; ///< Σ s w / (3 v): the mean Cauchy pressure-like stress of the cell
 };
 
-/// Fills `cell` at displacement u; false if J <= 0 somewhere. With `tangent` the laws'
-/// tangents are evaluated too.
+/// The kinematics of every point of `cell` at displacement u and its volumes V, v; false if
+/// J <= 0 somewhere.
 template <class Cell>
-bool evaluate_state(const typename Cell::Geometry& geo, const typename Cell::Displacements& u,
-                    const material::ElasticLaw& law, bool tangent, CellState<Cell>& cell) {
+bool evaluate_kinematics(const typename Cell::Geometry& geo, const typename Cell::Displacements& u,
+                         CellState<Cell>& cell) {
   cell.n = Cell::points(geo);
   for (int q = 0; q < cell.n; ++q) {
     PointState& p = cell.points[static_cast<std::size_t>(q)];
@@ -90,17 +90,34 @@ bool evaluate_state(const typename Cell::Geometry& geo, const typename Cell::Dis
     cell.V += p.w;
     cell.v += p.J * p.w;
   }
+  return true;
+}
+
+/// The modified deformation of point p at the cell's dilatation J̄: α, S̄ (and with `tangent`
+/// D̄) at C̄ = α² C, and s = S̄ : C̄.
+void evaluate_modified_stress(Real Jbar, const material::ElasticLaw& law, bool tangent,
+                              PointState& p) {
+  p.alpha = std::cbrt(Jbar / p.J);
+  const Mat3 Cbar = p.alpha * p.alpha * p.C;
+  if (tangent)
+    p.st = law.stress_tangent(Cbar);
+  else
+    p.st.S = law.stress(Cbar);
+  p.s = (p.st.S.array() * Cbar.array()).sum();
+}
+
+/// Fills `cell` at displacement u; false if J <= 0 somewhere. With `tangent` the laws'
+/// tangents are evaluated too.
+template <class Cell>
+bool evaluate_state(const typename Cell::Geometry& geo, const typename Cell::Displacements& u,
+                    const material::ElasticLaw& law, bool tangent, CellState<Cell>& cell) {
+  if (!evaluate_kinematics<Cell>(geo, u, cell))
+    return false;
   cell.Jbar = cell.v / cell.V;
   Real sum_s = 0.0;
   for (int q = 0; q < cell.n; ++q) {
     PointState& p = cell.points[static_cast<std::size_t>(q)];
-    p.alpha = std::cbrt(cell.Jbar / p.J);
-    const Mat3 Cbar = p.alpha * p.alpha * p.C;
-    if (tangent)
-      p.st = law.stress_tangent(Cbar);
-    else
-      p.st.S = law.stress(Cbar);
-    p.s = (p.st.S.array() * Cbar.array()).sum();
+    evaluate_modified_stress(cell.Jbar, law, tangent, p);
     sum_s += p.s * p.w;
   }
   cell.pbar = sum_s / (3.0 * cell.v);
@@ -197,27 +214,11 @@ CellStress mean_dilatation_stress(const typename Cell::Geometry& geo,
 bool evaluate_split_state(const CellGeometry& geo, const fe::CellNodeCoords& u,
                           const material::ElasticLaw& law, Real Jbar, bool tangent,
                           CellState<AnyCell>& cell) {
-  cell.n = AnyCell::points(geo);
+  if (!evaluate_kinematics<AnyCell>(geo, u, cell))
+    return false;
   cell.Jbar = Jbar;
-  for (int q = 0; q < cell.n; ++q) {
-    PointState& p = cell.points[static_cast<std::size_t>(q)];
-    p.F = AnyCell::deformation(geo, q, u);
-    p.J = p.F.determinant();
-    if (!(p.J > 0.0))
-      return false;
-    p.C = p.F.transpose() * p.F;
-    p.Ci = p.C.inverse();
-    p.w = geo.dV[static_cast<std::size_t>(q)];
-    cell.V += p.w;
-    cell.v += p.J * p.w;
-    p.alpha = std::cbrt(Jbar / p.J);
-    const Mat3 Cbar = p.alpha * p.alpha * p.C;
-    if (tangent)
-      p.st = law.stress_tangent(Cbar);
-    else
-      p.st.S = law.stress(Cbar);
-    p.s = (p.st.S.array() * Cbar.array()).sum();
-  }
+  for (int q = 0; q < cell.n; ++q)
+    evaluate_modified_stress(Jbar, law, tangent, cell.points[static_cast<std::size_t>(q)]);
   return true;
 }
 
